@@ -1,0 +1,269 @@
+#include "mode_table.hpp"
+
+#include <hdf5.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+#include <unistd.h>
+
+namespace rc {
+namespace {
+
+// RAII for HDF5 identifiers; the close function depends on the kind of object.
+class Hid {
+ public:
+  Hid(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
+  Hid(const Hid&) = delete;
+  Hid& operator=(const Hid&) = delete;
+  ~Hid() { if (id_ >= 0) close_(id_); }
+  hid_t get() const { return id_; }
+  bool ok() const { return id_ >= 0; }
+ private:
+  hid_t id_;
+  herr_t (*close_)(hid_t);
+};
+
+void quiet_hdf5() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
+
+void put_double(hid_t loc, const std::string& name, double v) {
+  Hid space(H5Screate(H5S_SCALAR), H5Sclose);
+  Hid attr(H5Acreate2(loc, name.c_str(), H5T_NATIVE_DOUBLE, space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+  if (!attr.ok() || H5Awrite(attr.get(), H5T_NATIVE_DOUBLE, &v) < 0)
+    throw std::runtime_error("cannot write attribute " + name);
+}
+
+void put_long(hid_t loc, const std::string& name, long v) {
+  Hid space(H5Screate(H5S_SCALAR), H5Sclose);
+  Hid attr(H5Acreate2(loc, name.c_str(), H5T_NATIVE_LONG, space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+  if (!attr.ok() || H5Awrite(attr.get(), H5T_NATIVE_LONG, &v) < 0)
+    throw std::runtime_error("cannot write attribute " + name);
+}
+
+void put_string(hid_t loc, const std::string& name, const std::string& v) {
+  Hid type(H5Tcopy(H5T_C_S1), H5Tclose);
+  H5Tset_size(type.get(), std::max<std::size_t>(v.size(), 1));
+  H5Tset_strpad(type.get(), H5T_STR_NULLTERM);
+  Hid space(H5Screate(H5S_SCALAR), H5Sclose);
+  Hid attr(H5Acreate2(loc, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+  std::string buf = v.empty() ? std::string(1, '\0') : v;
+  if (!attr.ok() || H5Awrite(attr.get(), type.get(), buf.data()) < 0)
+    throw std::runtime_error("cannot write attribute " + name);
+}
+
+template <class T>
+void put_vector(hid_t loc, const std::string& name, const std::vector<T>& v, hid_t mem_type) {
+  hsize_t n = v.size();
+  Hid space(H5Screate_simple(1, &n, nullptr), H5Sclose);
+  Hid set(H5Dcreate2(loc, name.c_str(), mem_type, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose);
+  if (!set.ok() || (n > 0 && H5Dwrite(set.get(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0))
+    throw std::runtime_error("cannot write dataset " + name);
+}
+
+bool has_attr(hid_t loc, const std::string& name) { return H5Aexists(loc, name.c_str()) > 0; }
+
+double get_double(hid_t loc, const std::string& name) {
+  if (!has_attr(loc, name)) throw std::runtime_error("missing attribute '" + name + "'");
+  Hid attr(H5Aopen(loc, name.c_str(), H5P_DEFAULT), H5Aclose);
+  double v = 0;
+  if (!attr.ok() || H5Aread(attr.get(), H5T_NATIVE_DOUBLE, &v) < 0)
+    throw std::runtime_error("attribute '" + name + "' is not a number");
+  return v;
+}
+
+long get_long(hid_t loc, const std::string& name) {
+  if (!has_attr(loc, name)) throw std::runtime_error("missing attribute '" + name + "'");
+  Hid attr(H5Aopen(loc, name.c_str(), H5P_DEFAULT), H5Aclose);
+  long v = 0;
+  if (!attr.ok() || H5Aread(attr.get(), H5T_NATIVE_LONG, &v) < 0)
+    throw std::runtime_error("attribute '" + name + "' is not an integer");
+  return v;
+}
+
+std::string get_string(hid_t loc, const std::string& name) {
+  if (!has_attr(loc, name)) throw std::runtime_error("missing attribute '" + name + "'");
+  Hid attr(H5Aopen(loc, name.c_str(), H5P_DEFAULT), H5Aclose);
+  Hid ftype(H5Aget_type(attr.get()), H5Tclose);
+  if (H5Tget_class(ftype.get()) != H5T_STRING) throw std::runtime_error("attribute '" + name + "' is not a string");
+  if (H5Tis_variable_str(ftype.get()) > 0) {
+    Hid mtype(H5Tcopy(H5T_C_S1), H5Tclose);
+    H5Tset_size(mtype.get(), H5T_VARIABLE);
+    char* p = nullptr;
+    if (H5Aread(attr.get(), mtype.get(), &p) < 0) throw std::runtime_error("cannot read attribute '" + name + "'");
+    std::string s = p ? p : "";
+    free(p);
+    return s;
+  }
+  std::size_t n = H5Tget_size(ftype.get());
+  std::string buf(n + 1, '\0');
+  Hid mtype(H5Tcopy(H5T_C_S1), H5Tclose);
+  H5Tset_size(mtype.get(), n + 1);
+  if (H5Aread(attr.get(), mtype.get(), buf.data()) < 0) throw std::runtime_error("cannot read attribute '" + name + "'");
+  return std::string(buf.c_str());
+}
+
+template <class T>
+std::vector<T> get_vector(hid_t loc, const std::string& name, hid_t mem_type, bool required) {
+  if (H5Lexists(loc, name.c_str(), H5P_DEFAULT) <= 0) {
+    if (required) throw std::runtime_error("missing dataset '/modes/" + name + "'");
+    return {};
+  }
+  Hid set(H5Dopen2(loc, name.c_str(), H5P_DEFAULT), H5Dclose);
+  Hid space(H5Dget_space(set.get()), H5Sclose);
+  if (!set.ok() || H5Sget_simple_extent_ndims(space.get()) != 1)
+    throw std::runtime_error("dataset '/modes/" + name + "' is not one-dimensional");
+  hsize_t n = 0;
+  H5Sget_simple_extent_dims(space.get(), &n, nullptr);
+  std::vector<T> v(n);
+  if (n > 0 && H5Dread(set.get(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0)
+    throw std::runtime_error("cannot read dataset '/modes/" + name + "'");
+  return v;
+}
+
+}  // namespace
+
+void ModeTable::validate() const {
+  const std::size_t n = E.size();
+  auto check = [&](const std::vector<double>& v, const char* name, bool optional) {
+    if (optional && v.empty()) return;
+    if (v.size() != n) throw std::runtime_error(std::string("/modes/") + name + " has " + std::to_string(v.size()) +
+                                                " entries, /modes/E has " + std::to_string(n));
+    for (double x : v)
+      if (!std::isfinite(x)) throw std::runtime_error(std::string("/modes/") + name + " holds a non-finite value");
+  };
+  check(kappa, "kappa", false);
+  check(lambda, "lambda", false);
+  check(a, "a", false);
+  check(N2, "N2", false);
+  check(residual, "residual", false);
+  check(spread, "spread", true);
+  if (!members.empty() && members.size() != n) throw std::runtime_error("/modes/members has the wrong length");
+  for (double x : {volume, A_f, C_f, J_zh, sum_rule, coverage})
+    if (!std::isfinite(x)) throw std::runtime_error("a root attribute holds a non-finite value");
+  for (double e : E)
+    if (e < 0) throw std::runtime_error("/modes/E holds a negative value");
+}
+
+void ModeTable::sort_by_energy() {
+  std::vector<std::size_t> idx(E.size());
+  std::iota(idx.begin(), idx.end(), 0);
+  std::stable_sort(idx.begin(), idx.end(), [&](std::size_t i, std::size_t j) { return E[i] > E[j]; });
+  auto permute = [&](auto& v) {
+    if (v.empty()) return;
+    auto old = v;
+    for (std::size_t k = 0; k < idx.size(); ++k) v[k] = old[idx[k]];
+  };
+  permute(kappa); permute(lambda); permute(E); permute(a); permute(N2); permute(residual);
+  permute(spread); permute(members);
+}
+
+void write_mode_table(const ModeTable& t, const std::filesystem::path& path) {
+  t.validate();
+  quiet_hdf5();
+  const std::filesystem::path tmp = path.string() + ".tmp" + std::to_string(::getpid());
+  try {
+    {
+      Hid file(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+      if (!file.ok()) throw std::runtime_error("cannot create " + path.string());
+      hid_t root = file.get();
+      put_string(root, "format", kModeTableFormat);
+      put_long(root, "version", kModeTableVersion);
+      put_string(root, "shape", t.shape);
+      std::string dims;
+      for (const auto& [k, v] : t.dimensions) {
+        put_double(root, k, v);
+        dims += (dims.empty() ? "" : ",") + k;
+      }
+      put_string(root, "dimension_names", dims);
+      put_long(root, "fe_order", t.fe_order);
+      put_double(root, "mesh_h", t.mesh_h);
+      put_long(root, "ndof", t.ndof);
+      put_long(root, "m", t.m);
+      put_double(root, "volume", t.volume);
+      put_double(root, "centroid_z", t.centroid_z);
+      put_double(root, "A_f", t.A_f);
+      put_double(root, "C_f", t.C_f);
+      put_double(root, "J_zh", t.J_zh);
+      put_double(root, "sum_rule", t.sum_rule);
+      put_double(root, "coverage", t.coverage);
+      put_string(root, "solver", t.solver);
+      put_double(root, "tolerance", t.tolerance);
+      put_double(root, "wall_seconds", t.wall_seconds);
+      put_string(root, "normalisation", t.normalisation);
+      Hid modes(H5Gcreate2(root, "modes", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+      put_vector(modes.get(), "kappa", t.kappa, H5T_NATIVE_DOUBLE);
+      put_vector(modes.get(), "lambda", t.lambda, H5T_NATIVE_DOUBLE);
+      put_vector(modes.get(), "E", t.E, H5T_NATIVE_DOUBLE);
+      put_vector(modes.get(), "a", t.a, H5T_NATIVE_DOUBLE);
+      put_vector(modes.get(), "N2", t.N2, H5T_NATIVE_DOUBLE);
+      put_vector(modes.get(), "residual", t.residual, H5T_NATIVE_DOUBLE);
+      if (!t.spread.empty()) put_vector(modes.get(), "spread", t.spread, H5T_NATIVE_DOUBLE);
+      if (!t.members.empty()) put_vector(modes.get(), "members", t.members, H5T_NATIVE_INT);
+    }
+    std::filesystem::rename(tmp, path);
+  } catch (...) {
+    std::error_code ec;
+    std::filesystem::remove(tmp, ec);
+    throw;
+  }
+}
+
+ModeTable read_mode_table(const std::filesystem::path& path) {
+  quiet_hdf5();
+  try {
+    if (!std::filesystem::exists(path)) throw std::runtime_error("no such file");
+    if (H5Fis_hdf5(path.c_str()) <= 0) throw std::runtime_error("not an HDF5 file");
+    Hid file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+    if (!file.ok()) throw std::runtime_error("cannot open");
+    hid_t root = file.get();
+    if (!has_attr(root, "format") || get_string(root, "format") != kModeTableFormat)
+      throw std::runtime_error("not a mode table (root attribute format != \"cavity-mode-table\")");
+    ModeTable t;
+    if (get_long(root, "version") > kModeTableVersion)
+      throw std::runtime_error("mode table version is newer than this program understands");
+    t.shape = get_string(root, "shape");
+    if (has_attr(root, "dimension_names")) {
+      std::string names = get_string(root, "dimension_names");
+      std::size_t pos = 0;
+      while (pos < names.size()) {
+        std::size_t end = names.find(',', pos);
+        if (end == std::string::npos) end = names.size();
+        std::string k = names.substr(pos, end - pos);
+        if (!k.empty()) t.dimensions[k] = get_double(root, k);
+        pos = end + 1;
+      }
+    }
+    t.fe_order = static_cast<int>(get_long(root, "fe_order"));
+    t.mesh_h = get_double(root, "mesh_h");
+    t.ndof = get_long(root, "ndof");
+    t.m = static_cast<int>(get_long(root, "m"));
+    t.volume = get_double(root, "volume");
+    t.centroid_z = get_double(root, "centroid_z");
+    t.A_f = get_double(root, "A_f");
+    t.C_f = get_double(root, "C_f");
+    t.J_zh = get_double(root, "J_zh");
+    t.sum_rule = get_double(root, "sum_rule");
+    t.coverage = get_double(root, "coverage");
+    t.solver = get_string(root, "solver");
+    t.tolerance = get_double(root, "tolerance");
+    t.wall_seconds = get_double(root, "wall_seconds");
+    if (has_attr(root, "normalisation")) t.normalisation = get_string(root, "normalisation");
+    if (H5Lexists(root, "modes", H5P_DEFAULT) <= 0) throw std::runtime_error("missing group /modes");
+    Hid modes(H5Gopen2(root, "modes", H5P_DEFAULT), H5Gclose);
+    t.kappa = get_vector<double>(modes.get(), "kappa", H5T_NATIVE_DOUBLE, true);
+    t.lambda = get_vector<double>(modes.get(), "lambda", H5T_NATIVE_DOUBLE, true);
+    t.E = get_vector<double>(modes.get(), "E", H5T_NATIVE_DOUBLE, true);
+    t.a = get_vector<double>(modes.get(), "a", H5T_NATIVE_DOUBLE, true);
+    t.N2 = get_vector<double>(modes.get(), "N2", H5T_NATIVE_DOUBLE, true);
+    t.residual = get_vector<double>(modes.get(), "residual", H5T_NATIVE_DOUBLE, true);
+    t.spread = get_vector<double>(modes.get(), "spread", H5T_NATIVE_DOUBLE, false);
+    t.members = get_vector<int>(modes.get(), "members", H5T_NATIVE_INT, false);
+    t.validate();
+    return t;
+  } catch (const std::exception& e) {
+    throw std::runtime_error(path.string() + ": " + e.what());
+  }
+}
+
+}  // namespace rc

@@ -1,0 +1,57 @@
+// The mode table: the contract between cavity-modes (writer) and chain-rom (reader).
+// Layout is SPEC §4: root attributes + datasets under /modes, one entry per mode (spectral
+// cluster), sorted by E descending. All values for rho = 1 in the geometry's length unit, omega0 = 1.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace rc {
+
+inline constexpr const char* kModeTableFormat = "cavity-mode-table";
+inline constexpr int kModeTableVersion = 1;
+
+struct ModeTable {
+  // --- root attributes -------------------------------------------------------------------
+  std::string shape;                         // "sphere", "spheroid", "cylinder", "cone", "section"
+  std::map<std::string, double> dimensions;  // e.g. {"radius", 1}, {"height", 2}; each is a root attribute
+  int fe_order = 0;
+  double mesh_h = 0;
+  long ndof = 0;
+  int m = 1;                 // azimuthal number (1: the modes that couple to tilt)
+  double volume = 0;         // fluid volume (= mass for rho = 1)
+  double centroid_z = 0;     // fluid centroid on the axis, in the geometry's coordinates
+  double A_f = 0;            // frozen fluid transverse inertia about the centroid
+  double C_f = 0;            // frozen fluid axial inertia
+  double J_zh = 0;           // Zhukovsky transverse inertia about the centroid
+  double sum_rule = 0;       // A_f - J_zh = sum of E over all m = 1 modes (SPEC §2)
+  double coverage = 0;       // sum of the kept E / sum_rule
+  std::string solver;        // human-readable description of the eigen-solver used
+  double tolerance = 0;      // solver tolerance
+  double wall_seconds = 0;
+  std::string normalisation; // how a and N2 are normalised (free text, stored in the file)
+
+  // --- /modes datasets, one entry per mode ------------------------------------------------
+  std::vector<double> kappa, lambda, E, a, N2, residual;
+  std::vector<double> spread;  // E-weighted spread of lambda within the cluster (error indicator)
+  std::vector<int> members;    // number of discrete eigenpairs in the cluster
+
+  std::size_t size() const { return E.size(); }
+  // Throws std::runtime_error if the arrays disagree in length or hold non-finite values.
+  void validate() const;
+  // Sorts every /modes array by E descending.
+  void sort_by_energy();
+};
+
+// Writes to a temporary name beside `path` and renames it into place, so a failure never leaves a
+// partial table. Throws std::runtime_error with a one-line cause.
+void write_mode_table(const ModeTable& table, const std::filesystem::path& path);
+
+// Reads and validates a table; throws std::runtime_error("<path>: <cause>") on any problem
+// (missing file, not HDF5, wrong format attribute, missing dataset, inconsistent lengths).
+// Optional datasets (spread, members) are read when present and left empty otherwise.
+ModeTable read_mode_table(const std::filesystem::path& path);
+
+}  // namespace rc

@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Installs every Debian package the build, the tests and the plotting scripts need.
+# Idempotent: packages already present are skipped, so repeat runs cost a second.
+set -euo pipefail
+
+PACKAGES=(
+  build-essential cmake pkg-config
+  libpetsc-real-dev libslepc-real-dev   # PETSc/SLEPc, real scalars (the problem is real symmetric)
+  libgmsh-dev                           # gmsh C++ API for meshing meridian sections
+  libeigen3-dev                         # chain-rom linear algebra
+  libhdf5-openmpi-dev                   # the HDF5 flavour PETSc links
+  libcli11-dev libtomlplusplus-dev libfmt-dev nlohmann-json3-dev
+  libgtest-dev
+  python3-h5py python3-matplotlib python3-numpy   # plotting scripts (Debian's /usr/bin/python3)
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#PACKAGES[@]} packages present"
+  exit 0
+fi
+echo "install-deps: installing ${missing[*]}"
+SUDO=""
+[ "$(id -u)" -eq 0 ] || SUDO="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -q
+$SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"

@@ -1,0 +1,64 @@
+// Round trip and rejection tests for the HDF5 mode table (SPEC §4).
+#include "mode_table.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace fs = std::filesystem;
+
+namespace {
+rc::ModeTable sample() {
+  rc::ModeTable t;
+  t.shape = "cylinder";
+  t.dimensions = {{"radius", 1.0}, {"height", 2.0}};
+  t.fe_order = 3; t.mesh_h = 0.1; t.ndof = 1234; t.m = 1;
+  t.volume = 6.28; t.centroid_z = 0; t.A_f = 2.5; t.C_f = 3.1; t.J_zh = 0.3;
+  t.sum_rule = 2.2; t.coverage = 0.97; t.solver = "test"; t.tolerance = 1e-12; t.wall_seconds = 0.1;
+  t.kappa = {2.5, 2.00897}; t.lambda = {0.8, 2 / 2.00897}; t.E = {0.01, 2.0544};
+  t.a = {0.1, 1.0}; t.N2 = {1.0, 0.5}; t.residual = {1e-12, 1e-13};
+  t.spread = {0, 1e-9}; t.members = {1, 3};
+  return t;
+}
+}  // namespace
+
+TEST(ModeTable, RoundTripSortsByEnergyAndKeepsAttributes) {
+  auto t = sample();
+  t.sort_by_energy();
+  EXPECT_DOUBLE_EQ(t.E[0], 2.0544);
+  EXPECT_EQ(t.members[0], 3);
+  fs::path p = fs::temp_directory_path() / "rc_mode_table_roundtrip.h5";
+  rc::write_mode_table(t, p);
+  auto r = rc::read_mode_table(p);
+  EXPECT_EQ(r.shape, "cylinder");
+  EXPECT_DOUBLE_EQ(r.dimensions.at("height"), 2.0);
+  EXPECT_EQ(r.ndof, 1234);
+  EXPECT_DOUBLE_EQ(r.J_zh, 0.3);
+  ASSERT_EQ(r.size(), 2u);
+  EXPECT_DOUBLE_EQ(r.kappa[0], 2.00897);
+  EXPECT_EQ(r.members[1], 1);
+  fs::remove(p);
+}
+
+TEST(ModeTable, RejectsNonTablesWithACause) {
+  fs::path p = fs::temp_directory_path() / "rc_not_a_table.h5";
+  { std::ofstream(p) << "hello"; }
+  try {
+    rc::read_mode_table(p);
+    FAIL() << "a text file was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("not an HDF5 file"), std::string::npos) << e.what();
+  }
+  fs::remove(p);
+  EXPECT_THROW(rc::read_mode_table("/nonexistent/x.h5"), std::runtime_error);
+}
+
+TEST(ModeTable, InvalidTableLeavesNoFile) {
+  auto t = sample();
+  t.E.pop_back();  // inconsistent lengths
+  fs::path p = fs::temp_directory_path() / "rc_bad_table.h5";
+  fs::remove(p);
+  EXPECT_THROW(rc::write_mode_table(t, p), std::runtime_error);
+  EXPECT_FALSE(fs::exists(p));
+}
