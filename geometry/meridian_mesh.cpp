@@ -1,0 +1,359 @@
+// mesh_meridian: build or read the CAD model, mesh it with gmsh, then turn gmsh's tagged data into
+// the compact, checked MeridianMesh the FE solver consumes.
+#include "meridian_mesh.hpp"
+
+#include "gmsh_session.hpp"
+#include "shapes.hpp"
+
+#include <gmsh.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <unordered_map>
+
+namespace rc::geometry {
+namespace {
+
+constexpr int kMaxOrder = 6;
+constexpr double kDefaultSizeFraction = 1.0 / 8.0;  // default size = this × smallest dimension
+constexpr double kMaxCellsPerExtent = 1e4;         // larger ratios would mean >~1e8 triangles
+constexpr double kAxisTolerance = 1e-12;            // relative to max(1, model extent)
+
+std::string number(double v) {
+  std::ostringstream os;
+  os.precision(10);
+  os << v;
+  return os.str();
+}
+
+int nodes_per_triangle(int order) { return (order + 1) * (order + 2) / 2; }
+
+void check_options(const MeshOptions& options) {
+  if (options.order < 1 || options.order > kMaxOrder)
+    throw std::runtime_error("mesh order " + std::to_string(options.order) + " is outside 1.." +
+                             std::to_string(kMaxOrder));
+  if (!std::isfinite(options.size) || options.size < 0)
+    throw std::runtime_error("mesh size " + number(options.size) + " must be positive and finite (0 = default)");
+}
+
+// ---------------------------------------------------------------------------------------------
+// gmsh side: everything here runs inside a GmshSession.
+
+// What gmsh returns, still in gmsh node tags.
+struct GmshMesh {
+  int order = 0;
+  double size = 0;
+  std::unordered_map<std::size_t, std::array<double, 2>> coords;  // node tag -> (r, z)
+  std::vector<std::size_t> triangles, wall_edges, axis_nodes;
+  std::vector<double> local_nodes;  // (u, v) of the triangle's local nodes
+  double extent = 1;                // largest |coordinate| of the model, for tolerances
+};
+
+double model_extent() {
+  double x0, y0, z0, x1, y1, z1;
+  gmsh::model::getBoundingBox(-1, -1, x0, y0, z0, x1, y1, z1);
+  return std::max({std::abs(x0), std::abs(y0), std::abs(x1), std::abs(y1)});
+}
+
+// Smallest side of the model's bounding box: the characteristic length of a user section.
+double model_smallest_side() {
+  double x0, y0, z0, x1, y1, z1;
+  gmsh::model::getBoundingBox(-1, -1, x0, y0, z0, x1, y1, z1);
+  return std::min(x1 - x0, y1 - y0);
+}
+
+void generate(int order, double size, const std::string& where) {
+  if (model_extent() / size > kMaxCellsPerExtent)
+    throw std::runtime_error(where + ": mesh size " + number(size) + " is too small for a model of extent " +
+                             number(model_extent()));
+  gmsh::option::setNumber("Mesh.MeshSizeMax", size);
+  gmsh::model::mesh::generate(2);
+  // Only after the linear mesh exists: setOrder places the new edge nodes on the CAD curves
+  // (exact arcs) by their parametrisation; interior nodes are interpolated.
+  gmsh::model::mesh::setOrder(order);
+}
+
+int physical_tag(int dim, const std::string& name, const std::string& where) {
+  gmsh::vectorpair groups;
+  gmsh::model::getPhysicalGroups(groups, dim);
+  for (const auto& [d, tag] : groups) {
+    std::string n;
+    gmsh::model::getPhysicalName(d, tag, n);
+    if (n == name) return tag;
+  }
+  throw std::runtime_error(where + ": no " + std::to_string(dim) + "D physical group named '" + name +
+                           "' (a section needs 2D \"fluid\", 1D \"wall\" and 1D \"axis\")");
+}
+
+// The one element type of dimension `dim` over the entities of a physical group.
+int single_element_type(int dim, const std::vector<int>& entities, const std::string& group,
+                        const std::string& where) {
+  std::vector<int> all;
+  for (int e : entities) {
+    std::vector<int> types;
+    gmsh::model::mesh::getElementTypes(types, dim, e);
+    all.insert(all.end(), types.begin(), types.end());
+  }
+  std::sort(all.begin(), all.end());
+  all.erase(std::unique(all.begin(), all.end()), all.end());
+  if (all.empty()) throw std::runtime_error(where + ": physical group '" + group + "' has no elements");
+  if (all.size() > 1) throw std::runtime_error(where + ": physical group '" + group + "' mixes element types");
+  return all.front();
+}
+
+std::vector<std::size_t> element_nodes(int type, const std::vector<int>& entities) {
+  std::vector<std::size_t> nodes;
+  for (int e : entities) {
+    std::vector<std::size_t> tags, n;
+    gmsh::model::mesh::getElementsByType(type, tags, n, e);
+    nodes.insert(nodes.end(), n.begin(), n.end());
+  }
+  return nodes;
+}
+
+std::vector<int> group_entities(int dim, int tag) {
+  std::vector<int> entities;
+  gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
+  return entities;
+}
+
+// Triangles of "fluid": one complete Lagrange order, returned with their local node coordinates.
+void read_triangles(GmshMesh& m, const std::string& where) {
+  const auto entities = group_entities(2, physical_tag(2, "fluid", where));
+  const int type = single_element_type(2, entities, "fluid", where);
+  std::string name;
+  int dim = 0, order = 0, num_nodes = 0, num_primary = 0;
+  std::vector<double> local;  // must be empty: gmsh 4.8 appends to it
+  gmsh::model::mesh::getElementProperties(type, name, dim, order, num_nodes, local, num_primary);
+  if (name.rfind("Triangle", 0) != 0 || order < 1 || order > kMaxOrder || num_nodes != nodes_per_triangle(order))
+    throw std::runtime_error(where + ": 'fluid' elements are '" + name +
+                             "', expected complete Lagrange triangles of order 1.." + std::to_string(kMaxOrder));
+  m.order = order;
+  m.local_nodes.clear();
+  for (int a = 0; a < num_nodes; ++a) {
+    m.local_nodes.push_back(local[2 * a]);
+    m.local_nodes.push_back(local[2 * a + 1]);
+  }
+  m.triangles = element_nodes(type, entities);
+  if (m.triangles.empty()) throw std::runtime_error(where + ": no triangles in physical group 'fluid'");
+}
+
+void read_wall_and_axis(GmshMesh& m, const std::string& where) {
+  const auto wall = group_entities(1, physical_tag(1, "wall", where));
+  const int type = single_element_type(1, wall, "wall", where);
+  if (type != gmsh::model::mesh::getElementType("Line", m.order))
+    throw std::runtime_error(where + ": 'wall' elements are not lines of the triangles' order " +
+                             std::to_string(m.order));
+  m.wall_edges = element_nodes(type, wall);
+  std::vector<double> coord;
+  gmsh::model::mesh::getNodesForPhysicalGroup(1, physical_tag(1, "axis", where), m.axis_nodes, coord);
+  if (m.axis_nodes.empty()) throw std::runtime_error(where + ": physical group 'axis' has no nodes");
+}
+
+GmshMesh read_mesh(const std::string& where) {
+  GmshMesh m;
+  read_triangles(m, where);
+  read_wall_and_axis(m, where);
+  std::vector<std::size_t> tags;
+  std::vector<double> xyz, param;
+  gmsh::model::mesh::getNodes(tags, xyz, param, -1, -1, false, false);
+  for (std::size_t i = 0; i < tags.size(); ++i) m.coords[tags[i]] = {xyz[3 * i], xyz[3 * i + 1]};
+  m.extent = std::max(1.0, model_extent());
+  return m;
+}
+
+GmshMesh mesh_builtin(const ShapeSpec& shape, const MeshOptions& options) {
+  const std::string where = shape.kind;
+  return detail::with_gmsh(where, [&](detail::GmshSession& session) {
+    const double size = options.size > 0 ? options.size : kDefaultSizeFraction * detail::smallest_dimension(shape);
+    gmsh::model::add("meridian");
+    detail::build_shape(shape, size);
+    session.throw_if_error(where);
+    generate(options.order, size, where);
+    session.throw_if_error(where);
+    GmshMesh m = read_mesh(where);
+    m.size = size;
+    return m;
+  });
+}
+
+// Longest straight side over all triangles: the "h" of a mesh we did not generate.
+double longest_side(const GmshMesh& m) {
+  const std::size_t npe = nodes_per_triangle(m.order);
+  double h = 0;
+  for (std::size_t t = 0; t < m.triangles.size(); t += npe)
+    for (int i = 0; i < 3; ++i) {
+      const auto& p = m.coords.at(m.triangles[t + i]);
+      const auto& q = m.coords.at(m.triangles[t + (i + 1) % 3]);
+      h = std::max(h, std::hypot(p[0] - q[0], p[1] - q[1]));
+    }
+  return h;
+}
+
+GmshMesh mesh_section(const ShapeSpec& shape, const MeshOptions& options) {
+  const std::string path = shape.file.string();
+  const std::string where = "section '" + path + "'";
+  const std::string ext = shape.file.extension().string();
+  if (ext != ".geo" && ext != ".msh") throw std::runtime_error(where + ": expected a .geo or .msh file");
+  // gmsh::open silently ignores a missing file, so check first.
+  if (std::filesystem::is_directory(shape.file) || !std::ifstream(shape.file))
+    throw std::runtime_error(where + ": cannot read the file");
+  return detail::with_gmsh(where, [&](detail::GmshSession& session) {
+    gmsh::open(path);
+    session.throw_if_error(where);
+    for (const auto& [dim, name] : {std::pair{2, "fluid"}, {1, "wall"}, {1, "axis"}}) physical_tag(dim, name, where);
+    if (ext == ".msh") {
+      GmshMesh m = read_mesh(where);
+      m.size = longest_side(m);
+      return m;
+    }
+    const double size = options.size > 0 ? options.size : kDefaultSizeFraction * model_smallest_side();
+    generate(options.order, size, where);
+    session.throw_if_error(where);
+    GmshMesh m = read_mesh(where);
+    m.size = size;
+    return m;
+  });
+}
+
+// ---------------------------------------------------------------------------------------------
+// Plain C++ side: compact numbering and checks.
+
+// Nodes numbered 0.. in order of first use by the triangles (good locality for assembly).
+MeridianMesh compact(const GmshMesh& g, std::unordered_map<std::size_t, int>& index, const std::string& where) {
+  MeridianMesh m;
+  m.order = g.order;
+  m.nodes_per_element = nodes_per_triangle(g.order);
+  m.size = g.size;
+  const double tol = kAxisTolerance * g.extent;
+  for (std::size_t tag : g.triangles) {
+    auto [it, is_new] = index.try_emplace(tag, static_cast<int>(m.nodes.size()));
+    if (is_new) {
+      auto p = g.coords.at(tag);
+      if (p[0] < -tol)
+        throw std::runtime_error(where + ": node at r = " + number(p[0]) + ", z = " + number(p[1]) + " has r < 0");
+      p[0] = std::max(p[0], 0.0);
+      m.nodes.push_back(p);
+    }
+    m.triangles.push_back(it->second);
+  }
+  return m;
+}
+
+int mapped(const std::unordered_map<std::size_t, int>& index, std::size_t tag, const char* group,
+           const std::string& where) {
+  const auto it = index.find(tag);
+  if (it == index.end())
+    throw std::runtime_error(where + ": a node of '" + group + "' belongs to no 'fluid' triangle");
+  return it->second;
+}
+
+// Axis nodes must lie on r = 0 up to rounding; they are snapped to exactly 0.
+void add_axis(MeridianMesh& m, const GmshMesh& g, const std::unordered_map<std::size_t, int>& index,
+              const std::string& where) {
+  const double tol = kAxisTolerance * g.extent;
+  for (std::size_t tag : g.axis_nodes) {
+    const int i = mapped(index, tag, "axis", where);
+    if (std::abs(m.nodes[i][0]) > tol)
+      throw std::runtime_error(where + ": 'axis' has a node at r = " + number(m.nodes[i][0]) + ", not on r = 0");
+    m.nodes[i][0] = 0.0;
+    m.axis_nodes.push_back(i);
+  }
+  std::sort(m.axis_nodes.begin(), m.axis_nodes.end());
+  m.axis_nodes.erase(std::unique(m.axis_nodes.begin(), m.axis_nodes.end()), m.axis_nodes.end());
+}
+
+// Local node permutation of the reflection (u, v) -> (v, u), which swaps vertices 1 and 2 and so
+// reverses the orientation while keeping gmsh's local order.
+std::vector<int> flip_permutation(const std::vector<double>& local) {
+  const int n = static_cast<int>(local.size() / 2);
+  std::vector<int> perm(n, -1);
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; b < n; ++b)
+      if (std::abs(local[2 * b] - local[2 * a + 1]) < 1e-9 && std::abs(local[2 * b + 1] - local[2 * a]) < 1e-9)
+        perm[a] = b;
+  return perm;
+}
+
+double signed_area(const MeridianMesh& m, std::size_t t) {
+  const int* v = &m.triangles[t * m.nodes_per_element];
+  const auto &a = m.nodes[v[0]], &b = m.nodes[v[1]], &c = m.nodes[v[2]];
+  return 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]));
+}
+
+// gmsh orients triangles by the surface normal, which for a user section may point along -z.
+void orient_triangles(MeridianMesh& m, const std::vector<double>& local) {
+  const auto perm = flip_permutation(local);
+  const int npe = m.nodes_per_element;
+  for (std::size_t t = 0; t < m.num_triangles(); ++t) {
+    if (signed_area(m, t) >= 0) continue;
+    int* v = &m.triangles[t * npe];
+    const std::vector<int> old(v, v + npe);
+    for (int a = 0; a < npe; ++a) v[a] = old[perm[a]];
+  }
+}
+
+// det(d(r,z)/d(u,v)) > 0 at every quadrature point of a rule finer than any FE use.
+void check_jacobians(const MeridianMesh& m, const std::string& where) {
+  const ReferenceTriangle ref = reference_triangle(m.order, 3 * m.order);
+  const int npe = m.nodes_per_element;
+  for (std::size_t t = 0; t < m.num_triangles(); ++t) {
+    const int* v = &m.triangles[t * npe];
+    for (std::size_t q = 0; q < ref.weights.size(); ++q) {
+      double j[2][2] = {{0, 0}, {0, 0}};
+      for (int a = 0; a < npe; ++a)
+        for (int c = 0; c < 2; ++c)
+          for (int d = 0; d < 2; ++d) j[c][d] += m.nodes[v[a]][c] * ref.dN[(q * npe + a) * 2 + d];
+      if (j[0][0] * j[1][1] - j[0][1] * j[1][0] <= 0)
+        throw std::runtime_error(where + ": triangle " + std::to_string(t) + " near r = " +
+                                 number(m.nodes[v[0]][0]) + ", z = " + number(m.nodes[v[0]][1]) +
+                                 " is inverted (non-positive Jacobian); use a smaller mesh size or a lower order");
+    }
+  }
+}
+
+// Wall edges run counter-clockwise around the fluid (fluid on the left), like the triangles'
+// own edges; a reversed gmsh line [v0, v1, e1..e(p-1)] is [v1, v0, e(p-1)..e1].
+void add_wall(MeridianMesh& m, const GmshMesh& g, const std::unordered_map<std::size_t, int>& index,
+              const std::string& where) {
+  std::map<std::pair<int, int>, bool> directed;  // vertex edges of the (counter-clockwise) triangles
+  for (std::size_t t = 0; t < m.num_triangles(); ++t) {
+    const int* v = &m.triangles[t * m.nodes_per_element];
+    for (int i = 0; i < 3; ++i) directed[{v[i], v[(i + 1) % 3]}] = true;
+  }
+  const std::size_t npe = g.order + 1;
+  for (std::size_t e = 0; e < g.wall_edges.size(); e += npe) {
+    std::vector<int> edge;
+    for (std::size_t a = 0; a < npe; ++a) edge.push_back(mapped(index, g.wall_edges[e + a], "wall", where));
+    if (!directed.count({edge[0], edge[1]})) {
+      if (!directed.count({edge[1], edge[0]}))
+        throw std::runtime_error(where + ": a 'wall' edge is not a side of a 'fluid' triangle");
+      std::swap(edge[0], edge[1]);
+      std::reverse(edge.begin() + 2, edge.end());
+    }
+    m.wall_edges.insert(m.wall_edges.end(), edge.begin(), edge.end());
+  }
+}
+
+}  // namespace
+
+MeridianMesh mesh_meridian(const ShapeSpec& shape, const MeshOptions& options) {
+  detail::validate_shape(shape);
+  check_options(options);
+  const bool section = shape.kind == "section";
+  const std::string where = section ? "section '" + shape.file.string() + "'" : shape.kind;
+  const GmshMesh g = section ? mesh_section(shape, options) : mesh_builtin(shape, options);
+  std::unordered_map<std::size_t, int> index;  // gmsh node tag -> our node
+  MeridianMesh m = compact(g, index, where);
+  add_axis(m, g, index, where);
+  orient_triangles(m, g.local_nodes);
+  check_jacobians(m, where);
+  add_wall(m, g, index, where);
+  return m;
+}
+
+}  // namespace rc::geometry

@@ -1,0 +1,67 @@
+// Meridian half-sections (r >= 0) of axisymmetric cavities, meshed with the gmsh C++ API into
+// high-order isoparametric Lagrange triangles. Coordinates: x = r (distance from the axis), y = z.
+//
+// Placement conventions (the solver measures everything from the fluid centroid afterwards):
+//   sphere    radius R            centre at the origin
+//   spheroid  a (equatorial), c (polar)  centre at the origin
+//   cylinder  radius R, height H (full)  z in [-H/2, H/2]
+//   cone      radius R, height H  apex at z = 0 pointing down, flat lid at z = H
+//   section   a user .geo or .msh file with physical groups "fluid" (2D), "wall" (1D), "axis" (1D)
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace rc::geometry {
+
+struct ShapeSpec {
+  std::string kind;                      // sphere | spheroid | cylinder | cone | section
+  std::map<std::string, double> dims;    // sphere: radius; spheroid: a, c; cylinder, cone: radius, height
+  std::filesystem::path file;            // section only
+};
+
+struct MeshOptions {
+  int order = 3;        // Lagrange order of the triangles (geometry and field), 1..6
+  double size = 0.0;    // target element size in the shape's length unit; 0 = default (see docs)
+};
+
+struct MeridianMesh {
+  int order = 0;                                // Lagrange order of every triangle
+  int nodes_per_element = 0;                    // (order+1)(order+2)/2
+  std::vector<std::array<double, 2>> nodes;     // (r, z) of every node, 0-based
+  std::vector<int> triangles;                   // nodes_per_element node indices per triangle, gmsh local order
+  std::vector<int> axis_nodes;                  // nodes on r = 0 (sorted, unique)
+  std::vector<int> wall_edges;                  // (order+1) node indices per wall edge, gmsh local order
+  double size = 0.0;                            // element size actually requested
+  std::size_t num_triangles() const { return triangles.size() / nodes_per_element; }
+};
+
+// Builds, meshes and returns the meridian half-section. Throws std::runtime_error with a one-line cause
+// on bad input: unknown kind, a missing, zero, negative or non-finite dimension, an unreadable file, a
+// section without the three physical groups, with nodes at r < 0, or with no triangles.
+MeridianMesh mesh_meridian(const ShapeSpec& shape, const MeshOptions& options);
+
+// The reference triangle of a given order with a Gauss rule exact to `degree`: basis values and
+// gradients at the quadrature points, in the same local node order as MeridianMesh::triangles.
+struct ReferenceTriangle {
+  int order = 0;
+  int nodes_per_element = 0;
+  std::vector<std::array<double, 2>> points;   // (u, v) on the reference triangle (0,0),(1,0),(0,1)
+  std::vector<double> weights;                 // sum of weights = 1/2 (reference area)
+  std::vector<double> N;                       // N[q * nodes_per_element + a]
+  std::vector<double> dN;                      // dN[(q * nodes_per_element + a) * 2 + d], d = du, dv
+};
+ReferenceTriangle reference_triangle(int order, int quadrature_degree);
+
+// The same for a reference edge [0, 1] of the wall (for boundary integrals).
+struct ReferenceEdge {
+  int order = 0;
+  std::vector<double> points, weights;   // on [0, 1], weights sum to 1
+  std::vector<double> N, dN;             // N[q * (order+1) + a], dN likewise (d/ds)
+};
+ReferenceEdge reference_edge(int order, int quadrature_degree);
+
+}  // namespace rc::geometry

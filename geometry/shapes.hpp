@@ -1,0 +1,20 @@
+// Internal to rc_geometry: the built-in shapes as gmsh CAD models.
+#pragma once
+
+#include "meridian_mesh.hpp"
+
+namespace rc::geometry::detail {
+
+// Checks the kind and dimensions of a shape (file existence for sections is checked when opened).
+// Throws std::runtime_error naming the offending kind, dimension or value.
+void validate_shape(const ShapeSpec& shape);
+
+// Smallest characteristic length of a built-in shape (sphere: radius; spheroid: min(a, c);
+// cylinder, cone: min(radius, height)); the default mesh size is a fraction of it.
+double smallest_dimension(const ShapeSpec& shape);
+
+// Builds the meridian half-section of a built-in shape in the current gmsh model with the physical
+// groups "fluid", "wall" and "axis", every point carrying `size` as its mesh size.
+void build_shape(const ShapeSpec& shape, double size);
+
+}  // namespace rc::geometry::detail
