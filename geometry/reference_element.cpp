@@ -13,7 +13,9 @@ namespace rc::geometry {
 namespace {
 
 constexpr int kMaxOrder = 6;
-constexpr int kMaxDegree = 40;  // far beyond any FE need; guards against typos
+// gmsh 4.8's Gauss line rules stop at degree 31 (16 points) and crash above; the collapsed
+// triangle rule needs degree + 1. 30 is far beyond any FE need.
+constexpr int kMaxDegree = 30;
 
 void check_arguments(const char* what, int order, int degree) {
   if (order < 1 || order > kMaxOrder)
@@ -23,8 +25,6 @@ void check_arguments(const char* what, int order, int degree) {
     throw std::runtime_error(std::string(what) + ": quadrature degree " + std::to_string(degree) +
                              " is outside 0.." + std::to_string(kMaxDegree));
 }
-
-constexpr int kMaxGmshTriangleDegree = 8;
 
 struct GmshRule {
   std::vector<double> uvw, weights;  // points as (u, v, w) triplets, as gmsh takes them
@@ -39,6 +39,8 @@ GmshRule gauss_rule(int element_type, int degree) {
   gmsh::model::mesh::getIntegrationPoints(element_type, "Gauss" + std::to_string(degree), rule.uvw, rule.weights);
   return rule;
 }
+
+constexpr int kMaxGmshTriangleDegree = 8;
 
 // gmsh 4.8's tabulated triangle rules above degree 8 are only accurate to ~5e-12, and some put
 // points outside the triangle (degrees 11, 15, 16, 18, 20) or are wrong (degree 20: 3e-8), which

@@ -16,7 +16,7 @@ double triangle_moment(int i, int j) {
 }
 
 TEST(ReferenceTriangle, IntegratesPolynomialsOfItsDegreeExactly) {
-  for (int degree : {1, 2, 4, 7, 12, 18}) {
+  for (int degree : {1, 2, 4, 7, 8, 9, 12, 18, 20, 30}) {
     const auto ref = reference_triangle(1, degree);
     for (int i = 0; i <= degree; ++i)
       for (int j = 0; i + j <= degree; ++j) {
@@ -28,8 +28,21 @@ TEST(ReferenceTriangle, IntegratesPolynomialsOfItsDegreeExactly) {
   }
 }
 
+// gmsh's own rules of degree 9..20 put points outside the triangle (r < 0 near the axis); ours
+// must not, at any degree.
+TEST(ReferenceTriangle, PointsInsideAndWeightsPositiveAboveDegreeEight) {
+  for (int degree = 9; degree <= 30; ++degree) {
+    const auto ref = reference_triangle(2, degree);
+    for (std::size_t q = 0; q < ref.weights.size(); ++q) {
+      const auto [u, v] = ref.points[q];
+      EXPECT_GT(ref.weights[q], 0.0) << "degree " << degree;
+      EXPECT_TRUE(u > 0 && v > 0 && u + v < 1) << "degree " << degree << ": (" << u << ", " << v << ")";
+    }
+  }
+}
+
 TEST(ReferenceEdge, IntegratesPolynomialsOfItsDegreeExactly) {
-  for (int degree : {0, 1, 3, 6, 11, 18}) {
+  for (int degree : {0, 1, 3, 6, 11, 18, 30}) {
     const auto ref = reference_edge(2, degree);
     for (int i = 0; i <= degree; ++i) {
       double sum = 0;
@@ -94,6 +107,8 @@ TEST(ReferenceTriangle, RejectsBadArguments) {
   EXPECT_THROW(reference_triangle(0, 2), std::runtime_error);
   EXPECT_THROW(reference_triangle(7, 2), std::runtime_error);
   EXPECT_THROW(reference_triangle(2, -1), std::runtime_error);
+  EXPECT_THROW(reference_triangle(2, 31), std::runtime_error);  // gmsh would crash
+  EXPECT_THROW(reference_edge(2, 31), std::runtime_error);
   EXPECT_THROW(reference_edge(0, 2), std::runtime_error);
 }
 
