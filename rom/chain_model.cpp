@@ -1,0 +1,164 @@
+#include "chain_model.hpp"
+
+#include "mode_table.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace rc::rom {
+namespace {
+
+[[noreturn]] void fail(const Scene& s, const std::string& key, const std::string& cause) {
+  throw SceneError(s.file.string() + ": " + key + ": " + cause);
+}
+
+// Fluid of body k: mass, frozen inertia, centre of mass, kept modes (SPEC §4 scaling).
+void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
+               std::vector<FluidMode>& modes) {
+  const std::string w = "body[" + std::to_string(k + 1) + "].cavity";
+  rc::ModeTable t;
+  try {
+    t = rc::read_mode_table(cav.table);
+  } catch (const std::exception& e) {
+    fail(scene, w + ".table", e.what());
+  }
+  if (t.m != 1) fail(scene, w + ".table", cav.table.string() + " holds m = " + std::to_string(t.m) +
+                                 " modes; only m = 1 modes couple to the tilt");
+  const double rho = cav.density, L = cav.scale;
+  const double L3 = L * L * L, L5 = L3 * L * L;
+  // SPEC §4: mass ~ rho L^3, A_f, C_f, J_zh, E ~ rho L^5; lambda/omega0 scale-free.
+  b.has_fluid = true;
+  b.table = cav.table.string();
+  b.m_f = rho * L3 * t.volume;
+  b.A_f = rho * L5 * t.A_f;
+  b.C_f = rho * L5 * t.C_f;
+  b.J_zh = rho * L5 * t.J_zh;
+  b.sum_rule = rho * L5 * (t.A_f - t.J_zh);
+  if (!(b.m_f > 0) || b.A_f < 0 || b.C_f < 0 || b.J_zh < 0)
+    fail(scene, w + ".table", "non-physical table (volume, A_f, C_f or J_zh not positive)");
+
+  // Modes with E = 0 do not couple (e.g. a spheroid's table beyond its single mode): left out.
+  std::vector<int> idx;
+  const double tiny = 1e-14 * std::max(t.A_f - t.J_zh, 1e-300);
+  for (std::size_t l = 0; l < t.size(); ++l)
+    if (t.E[l] > tiny) idx.push_back(static_cast<int>(l));
+  std::size_t keep = idx.size();
+  if (cav.modes) {
+    if (static_cast<std::size_t>(*cav.modes) > idx.size())
+      fail(scene, w + ".modes", std::to_string(*cav.modes) + " requested, the table " +
+                                    cav.table.filename().string() + " holds " +
+                                    std::to_string(idx.size()) + " coupling modes");
+    keep = *cav.modes;
+  } else if (cav.coverage) {
+    const double target = *cav.coverage * (t.A_f - t.J_zh);
+    double acc = 0;
+    keep = 0;
+    while (keep < idx.size() && acc < target * (1 - 1e-12)) acc += t.E[idx[keep++]];
+    if (acc < target * (1 - 1e-12)) {
+      std::ostringstream os;
+      os << "coverage " << *cav.coverage << " not reachable: the table's modes cover "
+         << acc / (t.A_f - t.J_zh);
+      fail(scene, w + ".coverage", os.str());
+    }
+  }
+  for (std::size_t j = 0; j < keep; ++j) {
+    const int l = idx[j];
+    FluidMode m;
+    m.body = k;
+    m.table_index = l;
+    m.E = rho * L5 * t.E[l];
+    m.lambda = b.omega * t.lambda[l];  // lambda_kl = 2 omega_k0 / kappa_kl (seed 000 (21))
+    m.nu = b.omega - m.lambda;
+    // a ~ rho L^4, N^2 ~ rho L^3 (N^2 carries rho so that E = 2a^2/N^2 ~ rho L^5): a/N^2 ~ L.
+    m.a_over_N2 = (t.N2[l] != 0) ? L * t.a[l] / t.N2[l] : 0.0;
+    b.E_kept += m.E;
+    modes.push_back(m);
+  }
+  b.coverage = b.sum_rule > 0 ? b.E_kept / b.sum_rule : 1.0;
+  if (cav.static_correction) b.E_rem = std::max(0.0, b.sum_rule - b.E_kept);
+}
+
+}  // namespace
+
+ChainModel build_model(const Scene& scene) {
+  ChainModel cm;
+  const int n = static_cast<int>(scene.size());
+  cm.n = n;
+  cm.free_chain = scene.free_chain;
+  cm.g = scene.gravity;
+  for (int k = 0; k < n; ++k) {
+    const BodySpec& bs = scene.bodies[k];
+    BodyModel b;
+    b.omega = bs.spin;
+    b.s = (k + 1 < n) ? bs.next_joint : 0.0;
+    double m = bs.mass, first = bs.mass * bs.com, A = bs.A, C = bs.C;
+    if (bs.cavity) {
+      add_fluid(scene, k, *bs.cavity, b, cm.modes);
+      const double d = bs.cavity->center;
+      m += b.m_f;
+      first += b.m_f * d;
+      A += b.A_f + b.m_f * d * d;  // parallel-axis theorem: fluid inertia about O_k
+      C += b.C_f;
+    }
+    b.m = m;
+    b.c = (m > 0) ? first / m : 0.0;
+    b.A = A;
+    b.C = C;
+    cm.bodies.push_back(b);
+  }
+
+  // Fixed chain, seed 000 after (10) and (26): A'_k = A_k + s_k^2 sum_{i>k} m_i,
+  // a_k = m_k c_k + s_k sum_{i>k} m_i, M_ki = a_k s_i (i<k), M_ki = s_k a_i (i>k).
+  cm.a.resize(n);
+  cm.M.setZero(n, n);
+  double tail = 0;  // sum_{i>k} m_i
+  for (int k = n - 1; k >= 0; --k) {
+    const BodyModel& b = cm.bodies[k];
+    cm.a[k] = b.m * b.c + b.s * tail;
+    cm.M(k, k) = b.A + b.s * b.s * tail;
+    tail += b.m;
+  }
+  for (int k = 0; k < n; ++k)
+    for (int i = 0; i < k; ++i) cm.M(k, i) = cm.M(i, k) = cm.a[k] * cm.bodies[i].s;
+  const double mtot = tail;
+  if (scene.free_chain) {
+    // Free chain (docs/free-chain.md, from seed 000 (12)-(14)): the centre of mass of the
+    // whole chain stays at rest, which removes a a^T / m from the fixed-chain matrix.
+    if (!(mtot > 0)) fail(scene, "body", "a free chain needs a positive total mass");
+    cm.M -= cm.a * cm.a.transpose() / mtot;
+  }
+
+  cm.K.setZero(n, n);
+  if (!scene.free_chain)  // gravity: - a_k g u_k in (26); a free chain falls freely (no torque)
+    for (int k = 0; k < n; ++k) cm.K(k, k) -= cm.a[k] * scene.gravity;
+  cm.D.setZero(n, n);
+  if (!scene.free_chain) cm.D(0, 0) += scene.support_friction;  // alpha_1, seed 002 (43)
+  for (int k = 0; k + 1 < n; ++k) {
+    const double kap = scene.joints[k].stiffness;  // kappa_k^2, seed 000 (27)
+    cm.K(k, k) += kap;
+    cm.K(k + 1, k + 1) += kap;
+    cm.K(k, k + 1) -= kap;
+    cm.K(k + 1, k) -= kap;
+    const double al = scene.joints[k].friction;  // alpha_{k+1}, seed 002 (43)
+    cm.D(k, k) += al;
+    cm.D(k + 1, k + 1) += al;
+    cm.D(k, k + 1) -= al;
+    cm.D(k + 1, k) -= al;
+  }
+  cm.G.resize(n);
+  for (int k = 0; k < n; ++k) cm.G[k] = cm.bodies[k].C * cm.bodies[k].omega;
+
+  cm.M_eff = cm.M;
+  for (int k = 0; k < n; ++k) cm.M_eff(k, k) -= cm.bodies[k].E_kept + cm.bodies[k].E_rem;
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(cm.M_eff, Eigen::EigenvaluesOnly);
+  const double lo = es.eigenvalues().minCoeff(), hi = es.eigenvalues().cwiseAbs().maxCoeff();
+  if (!(lo > 1e-13 * std::max(hi, 1e-300))) {
+    std::ostringstream os;
+    os << "effective inertia matrix M - diag(sum E) is not positive definite (smallest eigenvalue "
+       << lo << " kg m^2): the shell carries no inertia beyond what the fluid modes take";
+    fail(scene, "body", os.str());
+  }
+  return cm;
+}
+
+}  // namespace rc::rom

@@ -1,0 +1,57 @@
+// The linearised chain (SPEC §3): mass properties with the fluid added, the kept fluid modes, and
+// the real matrices of system (26) of seed 000 (fixed chain) or of its free-chain form
+// (docs/free-chain.md), with elastic joints (27) and joint friction (seed 002 (43)).
+#pragma once
+
+#include "scene.hpp"
+
+#include <Eigen/Dense>
+
+#include <string>
+#include <vector>
+
+namespace rc::rom {
+
+struct FluidMode {
+  int body = 0;             // 0-based body index k
+  int table_index = 0;      // row in the mode table
+  double E = 0;             // E_kl scaled by density*scale^5 (kg m^2)
+  double lambda = 0;        // lambda_kl = omega_k0 * lambda_table (rad/s), seed 000 (21)
+  double nu = 0;            // omega_k0 - lambda_kl
+  double a_over_N2 = 0;     // a_kl / N_kl^2 (m), converts the scaled coordinate z back to S'
+};
+
+struct BodyModel {
+  // totals with the frozen fluid included (SPEC §3: A_k, C_k, m_k include the fluid)
+  double m = 0, A = 0, C = 0, c = 0, s = 0, omega = 0;
+  bool has_fluid = false;
+  double m_f = 0, A_f = 0, C_f = 0, J_zh = 0, sum_rule = 0;  // scaled fluid data (A_f, J_zh about the centroid)
+  double E_kept = 0;         // sum of the kept E_kl
+  double E_rem = 0;          // static-correction inertia (0 unless static_correction)
+  double coverage = 0;       // E_kept / sum_rule
+  std::string table;
+};
+
+struct ChainModel {
+  int n = 0;
+  bool free_chain = false;
+  double g = 0;
+  std::vector<BodyModel> bodies;
+  std::vector<FluidMode> modes;
+  Eigen::VectorXd a;     // a_k = m_k c_k + s_k sum_{i>k} m_i (seed 000 after (10))
+  Eigen::MatrixXd M;     // inertia matrix of (26) (fixed) or of the free chain
+  Eigen::MatrixXd K;     // -diag(a_k g) (fixed only) + elastic joints, seed 000 (27)
+  Eigen::MatrixXd D;     // joint friction, seed 002 (43)
+  Eigen::VectorXd G;     // C_k omega_k0 (gyroscopic term of (26))
+  Eigen::MatrixXd M_eff; // M - diag(sum_l E_kl + E_rem_k): inertia seen by u-double-dot
+  int size() const { return n; }
+  int n_modes() const { return static_cast<int>(modes.size()); }
+  bool has_friction() const { return D.cwiseAbs().maxCoeff() > 0; }
+};
+
+// Builds the model; reads the mode tables. Throws SceneError naming the key on a bad table
+// (not a table, m != 1, modes above the table's count, coverage not reachable) or when the
+// effective inertia matrix is not positive definite.
+ChainModel build_model(const Scene& scene);
+
+}  // namespace rc::rom

@@ -1,0 +1,32 @@
+// First-order form of system (26) (seed 000) in the state y = (s u, u-dot, w), with
+//   w_kl = z_kl + u-dot_k,   S'_kl = (a_kl / N_kl^2) z_kl,
+// z being the fluid coordinate scaled to angular-velocity units (docs/rom.md, "scaling"). Then
+//   M_eff u'' = -K u - (i Gamma + D) u' + i sum_l E_kl nu_kl w_kl,   Gamma_k = C_k w_k0 - sum_l E_kl lambda_kl,
+//   w_kl'    = -i nu_kl w_kl - i lambda_kl u_k',                   nu_kl = w_k0 - lambda_kl,
+// with M_eff = M - diag(sum_l E_kl) — only E_kl enters, never a_kl or N_kl alone.
+// s is a frequency scale that balances the u and u-dot blocks. Roots: y ~ e^{i sigma t},
+// i.e. sigma = -i * eigenvalue(B).
+#pragma once
+
+#include "chain_model.hpp"
+
+#include <Eigen/Dense>
+#include <complex>
+
+namespace rc::rom {
+
+struct FirstOrderSystem {
+  int n = 0, nm = 0;
+  double s = 1;          // u is carried as s*u
+  Eigen::MatrixXcd B;    // y' = B y
+  int dim() const { return 2 * n + nm; }
+  // Physical state (u, u-dot, z) <-> balanced state y.
+  Eigen::VectorXcd to_state(const ChainModel& m, const Eigen::VectorXcd& u, const Eigen::VectorXcd& v,
+                            const Eigen::VectorXcd& z) const;
+  void from_state(const ChainModel& m, const Eigen::VectorXcd& y, Eigen::VectorXcd& u,
+                  Eigen::VectorXcd& v, Eigen::VectorXcd& w) const;
+};
+
+FirstOrderSystem build_first_order(const ChainModel& m);
+
+}  // namespace rc::rom

@@ -1,0 +1,170 @@
+#include "output.hpp"
+
+#include <hdf5.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <stdexcept>
+#include <unistd.h>
+
+namespace rc::rom {
+namespace fs = std::filesystem;
+namespace {
+
+std::string lower_ext(const fs::path& p) {
+  std::string e = p.extension().string();
+  for (auto& ch : e) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  return e;
+}
+
+void write_csv(const ChainModel& m, const History& h, const fs::path& tmp) {
+  std::ofstream os(tmp);
+  if (!os) throw std::runtime_error(tmp.string() + ": cannot create");
+  os << std::setprecision(17);
+  os << "t";
+  for (int k = 0; k < m.n; ++k) os << ",u" << k + 1 << "_re,u" << k + 1 << "_im";
+  for (int l = 0; l < m.n_modes(); ++l) {
+    const std::string nm = std::to_string(m.modes[l].body + 1) + "_" + std::to_string(l + 1);
+    os << ",z" << nm << "_re,z" << nm << "_im";
+  }
+  os << ",energy\n";
+  for (std::size_t j = 0; j < h.t.size(); ++j) {
+    os << h.t[j];
+    for (int k = 0; k < m.n; ++k) os << ',' << h.u(j, k).real() << ',' << h.u(j, k).imag();
+    for (int l = 0; l < m.n_modes(); ++l) os << ',' << h.z(j, l).real() << ',' << h.z(j, l).imag();
+    os << ',' << h.H[j] << '\n';
+  }
+  os.close();
+  if (!os) throw std::runtime_error(tmp.string() + ": write failed");
+}
+
+struct H5 {
+  hid_t id = -1;
+  herr_t (*closer)(hid_t) = nullptr;
+  ~H5() { if (id >= 0 && closer) closer(id); }
+};
+
+void check(herr_t r, const std::string& what) {
+  if (r < 0) throw std::runtime_error("HDF5: " + what + " failed");
+}
+
+void write_dataset(hid_t file, const std::string& name, const std::vector<double>& data,
+                   hsize_t rows, hsize_t cols) {
+  hsize_t dims[2] = {rows, cols};
+  H5 space{H5Screate_simple(cols > 0 ? 2 : 1, dims, nullptr), H5Sclose};
+  H5 ds{H5Dcreate2(file, name.c_str(), H5T_NATIVE_DOUBLE, space.id, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose};
+  if (ds.id < 0) throw std::runtime_error("HDF5: cannot create dataset " + name);
+  if (!data.empty()) check(H5Dwrite(ds.id, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), name);
+}
+
+void write_attr(hid_t obj, const std::string& name, const std::string& value) {
+  H5 type{H5Tcopy(H5T_C_S1), H5Tclose};
+  check(H5Tset_size(type.id, std::max<std::size_t>(1, value.size())), "string type");
+  H5 space{H5Screate(H5S_SCALAR), H5Sclose};
+  H5 a{H5Acreate2(obj, name.c_str(), type.id, space.id, H5P_DEFAULT, H5P_DEFAULT), H5Aclose};
+  check(H5Awrite(a.id, type.id, value.c_str()), name);
+}
+
+void write_attr(hid_t obj, const std::string& name, double value) {
+  H5 space{H5Screate(H5S_SCALAR), H5Sclose};
+  H5 a{H5Acreate2(obj, name.c_str(), H5T_NATIVE_DOUBLE, space.id, H5P_DEFAULT, H5P_DEFAULT), H5Aclose};
+  check(H5Awrite(a.id, H5T_NATIVE_DOUBLE, &value), name);
+}
+
+void write_h5(const ChainModel& m, const History& h, const fs::path& tmp) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  H5 file{H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose};
+  if (file.id < 0) throw std::runtime_error(tmp.string() + ": cannot create");
+  const hsize_t N = h.t.size(), n = m.n, nm = m.n_modes();
+  write_attr(file.id, "format", "chain-rom-history");
+  write_attr(file.id, "method", h.method_used);
+  write_attr(file.id, "convention",
+             "u_k = beta_k - i alpha_k (Krylov angles, rad); z_kl fluid coordinate in rad/s with "
+             "S'_kl = a_over_N2[l] * z_kl (seed 000 (26)); energy: docs/rom.md");
+  write_attr(file.id, "max_energy_drift", h.max_energy_drift);
+  write_attr(file.id, "wall_seconds", h.wall_seconds);
+  write_dataset(file.id, "t", h.t, N, 0);
+  std::vector<double> re(N * n), im(N * n);
+  for (hsize_t j = 0; j < N; ++j)
+    for (hsize_t k = 0; k < n; ++k) { re[j * n + k] = h.u(j, k).real(); im[j * n + k] = h.u(j, k).imag(); }
+  write_dataset(file.id, "u_re", re, N, n);
+  write_dataset(file.id, "u_im", im, N, n);
+  re.assign(N * nm, 0);
+  im.assign(N * nm, 0);
+  for (hsize_t j = 0; j < N; ++j)
+    for (hsize_t l = 0; l < nm; ++l) { re[j * nm + l] = h.z(j, l).real(); im[j * nm + l] = h.z(j, l).imag(); }
+  write_dataset(file.id, "z_re", re, N, nm);
+  write_dataset(file.id, "z_im", im, N, nm);
+  std::vector<double> body(nm), aN(nm), E(nm), lam(nm);
+  for (hsize_t l = 0; l < nm; ++l) {
+    body[l] = m.modes[l].body + 1; aN[l] = m.modes[l].a_over_N2; E[l] = m.modes[l].E; lam[l] = m.modes[l].lambda;
+  }
+  write_dataset(file.id, "mode_body", body, nm, 0);
+  write_dataset(file.id, "a_over_N2", aN, nm, 0);
+  write_dataset(file.id, "mode_E", E, nm, 0);
+  write_dataset(file.id, "mode_lambda", lam, nm, 0);
+  write_dataset(file.id, "energy", h.H, N, 0);
+}
+
+}  // namespace
+
+void write_history(const ChainModel& m, const History& h, const fs::path& out) {
+  if (out.has_parent_path() && !fs::is_directory(out.parent_path()))
+    throw std::runtime_error(out.string() + ": the output folder does not exist");
+  fs::path tmp = out;
+  tmp += ".tmp-" + std::to_string(::getpid());
+  try {
+    if (lower_ext(out) == ".csv") write_csv(m, h, tmp);
+    else write_h5(m, h, tmp);
+    fs::rename(tmp, out);
+  } catch (...) {
+    std::error_code ec;
+    fs::remove(tmp, ec);
+    throw;
+  }
+}
+
+std::string spectrum_json(const Spectrum& sp) {
+  nlohmann::ordered_json j;  // keys in the order of SPEC §4
+  j["roots"] = nlohmann::ordered_json::array();
+  for (const Root& r : sp.roots) j["roots"].push_back({r.sigma.real(), r.sigma.imag()});
+  j["stable"] = sp.stable;
+  j["margin"] = sp.margin;
+  j["det_residual"] = sp.det_residual;
+  return j.dump();
+}
+
+void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp) {
+  os << (m.free_chain ? "free" : "fixed") << " chain, " << m.n << " bodies, " << m.n_modes()
+     << " fluid modes\n";
+  for (int k = 0; k < m.n; ++k) {
+    const BodyModel& b = m.bodies[k];
+    os << "  body " << k + 1 << ": m = " << b.m << " kg, A' = " << m.M(k, k) << ", C = " << b.C
+       << ", a = " << m.a[k] << ", spin = " << b.omega << " rad/s";
+    if (b.has_fluid)
+      os << ", fluid " << b.m_f << " kg, A_f = " << b.A_f << ", J_zh = " << b.J_zh
+         << ", kept sum E = " << b.E_kept << " (coverage " << b.coverage << ")"
+         << (b.E_rem > 0 ? ", static correction " + std::to_string(b.E_rem) : std::string());
+    os << "\n";
+  }
+  os << "roots sigma (rad/s, solutions e^{i sigma t}):\n";
+  os << std::setprecision(12);
+  for (const Root& r : sp.roots) {
+    os << "  " << std::setw(20) << r.sigma.real() << "  " << std::setw(20) << r.sigma.imag() << "i  "
+       << std::setw(10) << r.owner << "  det residual ";
+    if (std::isnan(r.residual)) os << "n/a (sigma = 0 or at a pole of (22))";
+    else os << std::setprecision(3) << r.residual << std::setprecision(12);
+    os << "\n";
+  }
+  os << std::setprecision(6);
+  os << "stable: " << (sp.stable ? "yes" : "no") << " (|Im sigma| <= " << sp.tolerance
+     << " counts as real" << (m.has_friction() ? "; friction: no root with Im sigma < 0" : "") << ")\n";
+  os << "margin (largest |Im sigma|): " << sp.margin << " rad/s\n";
+  os << "worst det residual of (22): " << sp.det_residual << " (" << sp.unchecked
+     << " roots at sigma = 0 or a pole not checked)\n";
+}
+
+}  // namespace rc::rom

@@ -1,0 +1,23 @@
+// Writers of chain-rom's results: time histories (HDF5 or CSV) and the spectrum (text / JSON).
+// Files are written to a temporary name beside the target and renamed into place, so a failure
+// never leaves a partial file.
+#pragma once
+
+#include "chain_model.hpp"
+#include "propagation.hpp"
+#include "spectrum.hpp"
+
+#include <filesystem>
+#include <ostream>
+#include <string>
+
+namespace rc::rom {
+
+// HDF5 unless the name ends in .csv. Layout in docs/rom.md ("output").
+void write_history(const ChainModel& m, const History& h, const std::filesystem::path& out);
+
+// SPEC §4: {"roots": [[re, im], ...], "stable": bool, "margin": float, "det_residual": float}
+std::string spectrum_json(const Spectrum& sp);
+void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp);
+
+}  // namespace rc::rom

@@ -1,0 +1,171 @@
+#include "propagation.hpp"
+
+#include "energy.hpp"
+#include "first_order_system.hpp"
+#include "spectrum.hpp"
+
+#include <unsupported/Eigen/MatrixFunctions>
+#include <Eigen/Eigenvalues>
+
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+namespace rc::rom {
+namespace {
+using cd = std::complex<double>;
+
+// Dormand-Prince 5(4) on y' = B y between two output times.
+void rk45(const Eigen::MatrixXcd& B, Eigen::VectorXcd& y, double t0, double t1, double tol,
+          double& h, long& steps) {
+  static const double c2 = 1.0 / 5, c3 = 3.0 / 10, c4 = 4.0 / 5, c5 = 8.0 / 9;
+  static const double a21 = 1.0 / 5, a31 = 3.0 / 40, a32 = 9.0 / 40, a41 = 44.0 / 45,
+                      a42 = -56.0 / 15, a43 = 32.0 / 9, a51 = 19372.0 / 6561,
+                      a52 = -25360.0 / 2187, a53 = 64448.0 / 6561, a54 = -212.0 / 729,
+                      a61 = 9017.0 / 3168, a62 = -355.0 / 33, a63 = 46732.0 / 5247,
+                      a64 = 49.0 / 176, a65 = -5103.0 / 18656, b1 = 35.0 / 384,
+                      b3 = 500.0 / 1113, b4 = 125.0 / 192, b5 = -2187.0 / 6784, b6 = 11.0 / 84;
+  static const double e1 = 71.0 / 57600, e3 = -71.0 / 16695, e4 = 71.0 / 1920,
+                      e5 = -17253.0 / 339200, e6 = 22.0 / 525, e7 = -1.0 / 40;
+  (void)c2; (void)c3; (void)c4; (void)c5;
+  double t = t0;
+  Eigen::VectorXcd k1 = B * y;
+  while (t < t1 - 1e-14 * std::abs(t1)) {
+    if (t + h > t1) h = t1 - t;
+    Eigen::VectorXcd k2 = B * (y + h * a21 * k1);
+    Eigen::VectorXcd k3 = B * (y + h * (a31 * k1 + a32 * k2));
+    Eigen::VectorXcd k4 = B * (y + h * (a41 * k1 + a42 * k2 + a43 * k3));
+    Eigen::VectorXcd k5 = B * (y + h * (a51 * k1 + a52 * k2 + a53 * k3 + a54 * k4));
+    Eigen::VectorXcd k6 = B * (y + h * (a61 * k1 + a62 * k2 + a63 * k3 + a64 * k4 + a65 * k5));
+    Eigen::VectorXcd yn = y + h * (b1 * k1 + b3 * k3 + b4 * k4 + b5 * k5 + b6 * k6);
+    Eigen::VectorXcd k7 = B * yn;
+    Eigen::VectorXcd err = h * (e1 * k1 + e3 * k3 + e4 * k4 + e5 * k5 + e6 * k6 + e7 * k7);
+    const double sc = tol * (1 + std::max(y.norm(), yn.norm()));
+    const double r = err.norm() / sc;
+    if (++steps > 100000000L) throw std::runtime_error("run.tolerance: rk45 needs more than 1e8 steps");
+    if (r <= 1) {
+      t += h;
+      y = yn;
+      k1 = k7;
+    }
+    h *= std::min(5.0, std::max(0.2, 0.9 * std::pow(std::max(r, 1e-300), -0.2)));
+  }
+}
+
+}  // namespace
+
+History propagate(const ChainModel& m, const Scene& scene) {
+  if (!scene.run.present) throw std::runtime_error(scene.file.string() + ": run: missing [run] section");
+  const auto start = std::chrono::steady_clock::now();
+  const FirstOrderSystem f = build_first_order(m);
+  const int n = m.n, nm = m.n_modes(), D = f.dim();
+  Eigen::VectorXcd u0(n), v0(n), z0 = Eigen::VectorXcd::Zero(nm);
+  for (int k = 0; k < n; ++k) {
+    u0[k] = scene.tilt[k];
+    v0[k] = scene.rate[k];
+  }
+  const Eigen::VectorXcd y0 = f.to_state(m, u0, v0, z0);  // fluid initially at rest relative to its body
+  const double h = scene.run.output_step;
+  const long steps = static_cast<long>(std::floor(scene.run.t_end / h + 1e-9));
+  if (steps > 50000000L) throw std::runtime_error("run.output_step: more than 5e7 output steps");
+
+  History hist;
+  hist.t.resize(steps + 1);
+  hist.u.resize(steps + 1, n);
+  hist.z.resize(steps + 1, nm);
+  hist.H.resize(steps + 1);
+  hist.H_scale.resize(steps + 1);
+  auto store = [&](long j, const Eigen::VectorXcd& y) {
+    Eigen::VectorXcd u, v, w;
+    f.from_state(m, y, u, v, w);
+    hist.t[j] = j * h;
+    hist.u.row(j) = u.transpose();
+    for (int l = 0; l < nm; ++l) hist.z(j, l) = w[l] - v[m.modes[l].body];
+    const Energy e = energy(m, u, v, w);
+    hist.H[j] = e.total();
+    hist.H_scale[j] = e.scale();
+  };
+
+  const std::string& method = scene.run.method;
+  bool done = false;
+  if (method == "exact") {
+    Eigen::ComplexEigenSolver<Eigen::MatrixXcd> es(f.B, true);
+    const Eigen::MatrixXcd& V = es.eigenvectors();
+    Eigen::JacobiSVD<Eigen::MatrixXcd> svd(V);
+    const double cond = svd.singularValues()(0) / svd.singularValues()(D - 1);
+    if (es.info() == Eigen::Success && std::isfinite(cond) && cond < 1e8) {
+      Eigen::VectorXcd mu = es.eigenvalues();
+      // Undamped and stable: the roots are real; drop their rounding-level imaginary parts so that
+      // |e^{i sigma t}| = 1 exactly and the energy cannot drift over long runs.
+      const Spectrum sp = compute_spectrum(m);
+      const bool snap = !m.has_friction() && sp.stable;
+      if (snap)
+        for (int j = 0; j < D; ++j) mu[j] = cd(0, mu[j].imag());
+      const Eigen::VectorXcd c = Eigen::PartialPivLU<Eigen::MatrixXcd>(V).solve(y0);
+      for (long j = 0; j <= steps; ++j) {
+        const double t = j * h;
+        Eigen::VectorXcd e(D);
+        for (int i = 0; i < D; ++i) e[i] = std::exp(mu[i] * t) * c[i];
+        store(j, V * e);
+      }
+      hist.method_used = snap ? "exact (eigen-decomposition, real roots)" : "exact (eigen-decomposition)";
+      done = true;
+    } else {
+      const Eigen::MatrixXcd Phi = (f.B * cd(h)).exp();
+      Eigen::VectorXcd y = y0;
+      store(0, y);
+      for (long j = 1; j <= steps; ++j) {
+        y = Phi * y;
+        store(j, y);
+      }
+      hist.method_used = "exact (matrix exponential of the step; eigenvectors ill-conditioned)";
+      done = true;
+    }
+  } else if (method == "gauss") {
+    // (2,2) Pade = 2-stage Gauss-Legendre; global error ~ t_end rho^5 hs^4 / 4320 <= tol.
+    Eigen::ComplexEigenSolver<Eigen::MatrixXcd> es(f.B, false);
+    double rho = 0;
+    for (int i = 0; i < D; ++i) rho = std::max(rho, std::abs(es.eigenvalues()[i]));
+    long sub = 1;
+    if (rho > 0) {
+      const double hs = std::pow(4320.0 * scene.run.tolerance / (scene.run.t_end * std::pow(rho, 5)), 0.25);
+      sub = std::max(1L, static_cast<long>(std::ceil(h / hs)));
+    }
+    if (sub * steps > 200000000L) throw std::runtime_error("run.tolerance: gauss needs more than 2e8 steps");
+    const double hs = h / sub;
+    const Eigen::MatrixXcd Z = f.B * cd(hs), Z2 = Z * Z;
+    const Eigen::MatrixXcd Id = Eigen::MatrixXcd::Identity(D, D);
+    const Eigen::MatrixXcd P = Eigen::PartialPivLU<Eigen::MatrixXcd>(Id - 0.5 * Z + Z2 / 12.0)
+                                   .solve(Id + 0.5 * Z + Z2 / 12.0);
+    Eigen::VectorXcd y = y0;
+    store(0, y);
+    for (long j = 1; j <= steps; ++j) {
+      for (long s = 0; s < sub; ++s) y = P * y;
+      store(j, y);
+    }
+    hist.method_used = "gauss (" + std::to_string(sub) + " substeps per output step)";
+    done = true;
+  } else if (method == "rk45") {
+    Eigen::VectorXcd y = y0;
+    store(0, y);
+    double hh = h;
+    long nsteps = 0;
+    for (long j = 1; j <= steps; ++j) {
+      rk45(f.B, y, (j - 1) * h, j * h, scene.run.tolerance, hh, nsteps);
+      store(j, y);
+    }
+    hist.method_used = "rk45 (" + std::to_string(nsteps) + " steps)";
+    done = true;
+  }
+  if (!done) throw std::runtime_error("run.method: unknown method " + method);
+
+  const double H0 = hist.H[0], S0 = std::max(hist.H_scale[0], 1e-300);
+  for (long j = 1; j <= steps; ++j) {
+    if (m.has_friction()) hist.max_energy_drift = std::max(hist.max_energy_drift, (hist.H[j] - hist.H[j - 1]) / S0);
+    else hist.max_energy_drift = std::max(hist.max_energy_drift, std::abs(hist.H[j] - H0) / S0);
+  }
+  hist.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return hist;
+}
+
+}  // namespace rc::rom

@@ -1,0 +1,231 @@
+// Scene parser (SPEC §4). Every problem gives one SceneError naming the file and the key.
+#include "scene.hpp"
+
+#include <toml++/toml.h>
+
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace rc::rom {
+namespace {
+
+struct Ctx {
+  std::string name;
+  [[noreturn]] void fail(const std::string& key, const std::string& cause) const {
+    throw SceneError(name + ": " + key + ": " + cause);
+  }
+};
+
+void check_keys(const Ctx& c, const toml::table& t, const std::string& where,
+                const std::set<std::string>& allowed) {
+  for (auto&& [k, v] : t) {
+    std::string key(k.str());
+    if (!allowed.count(key)) c.fail(where.empty() ? key : where + "." + key, "unknown key");
+  }
+}
+
+const toml::table* sub_table(const Ctx& c, const toml::table& t, const std::string& key,
+                             const std::string& where) {
+  const toml::node* n = t.get(key);
+  if (!n) return nullptr;
+  if (!n->is_table()) c.fail(where, "must be a table");
+  return n->as_table();
+}
+
+enum class Sign { any, nonneg, pos };
+
+std::optional<double> get_number(const Ctx& c, const toml::table& t, const std::string& key,
+                                 const std::string& where, Sign sign, bool required) {
+  const toml::node* n = t.get(key);
+  if (!n) {
+    if (required) c.fail(where, "missing");
+    return std::nullopt;
+  }
+  std::optional<double> v;
+  if (n->is_floating_point()) v = n->as_floating_point()->get();
+  else if (n->is_integer()) v = static_cast<double>(n->as_integer()->get());
+  else c.fail(where, "must be a number");
+  if (!std::isfinite(*v)) c.fail(where, "must be finite");
+  if (sign == Sign::nonneg && *v < 0) c.fail(where, "must be >= 0 (got " + std::to_string(*v) + ")");
+  if (sign == Sign::pos && *v <= 0) c.fail(where, "must be > 0 (got " + std::to_string(*v) + ")");
+  return v;
+}
+
+std::vector<std::complex<double>> get_complex_array(const Ctx& c, const toml::table& t,
+                                                    const std::string& key,
+                                                    const std::string& where, std::size_t n) {
+  const toml::node* node = t.get(key);
+  std::vector<std::complex<double>> out(n, 0.0);
+  if (!node) return out;
+  const toml::array* arr = node->as_array();
+  if (!arr) c.fail(where, "must be an array of [re, im] pairs");
+  if (arr->size() != n)
+    c.fail(where, "has " + std::to_string(arr->size()) + " entries, the chain has " +
+                      std::to_string(n) + " bodies");
+  for (std::size_t k = 0; k < n; ++k) {
+    const toml::array* p = (*arr)[k].as_array();
+    std::string w = where + "[" + std::to_string(k + 1) + "]";
+    if (!p || p->size() != 2) c.fail(w, "must be a pair [re, im]");
+    double re = 0, im = 0;
+    for (int j = 0; j < 2; ++j) {
+      const toml::node& e = (*p)[j];
+      double x;
+      if (e.is_floating_point()) x = e.as_floating_point()->get();
+      else if (e.is_integer()) x = static_cast<double>(e.as_integer()->get());
+      else c.fail(w, "must hold numbers");
+      if (!std::isfinite(x)) c.fail(w, "must be finite");
+      (j == 0 ? re : im) = x;
+    }
+    out[k] = {re, im};
+  }
+  return out;
+}
+
+CavitySpec parse_cavity(const Ctx& c, const toml::table& t, const std::string& where,
+                        const std::filesystem::path& base) {
+  check_keys(c, t, where, {"table", "density", "scale", "center", "modes", "coverage",
+                           "static_correction"});
+  CavitySpec cav;
+  const toml::node* tab = t.get("table");
+  if (!tab) c.fail(where + ".table", "missing");
+  if (!tab->is_string()) c.fail(where + ".table", "must be a string");
+  std::filesystem::path p = tab->as_string()->get();
+  cav.table = p.is_absolute() ? p : base / p;
+  cav.density = *get_number(c, t, "density", where + ".density", Sign::pos, true);
+  cav.scale = *get_number(c, t, "scale", where + ".scale", Sign::pos, true);
+  cav.center = *get_number(c, t, "center", where + ".center", Sign::any, true);
+  if (const toml::node* m = t.get("modes")) {
+    if (!m->is_integer()) c.fail(where + ".modes", "must be an integer");
+    auto v = m->as_integer()->get();
+    if (v < 1) c.fail(where + ".modes", "must be >= 1");
+    cav.modes = static_cast<int>(v);
+  }
+  cav.coverage = get_number(c, t, "coverage", where + ".coverage", Sign::pos, false);
+  if (cav.coverage && *cav.coverage > 1) c.fail(where + ".coverage", "must be in (0, 1]");
+  if (cav.modes && cav.coverage) c.fail(where + ".coverage", "give either modes or coverage, not both");
+  if (const toml::node* s = t.get("static_correction")) {
+    if (!s->is_boolean()) c.fail(where + ".static_correction", "must be true or false");
+    cav.static_correction = s->as_boolean()->get();
+  }
+  return cav;
+}
+
+}  // namespace
+
+Scene parse_scene_text(const std::string& text, const std::filesystem::path& base,
+                       const std::string& name) {
+  Ctx c{name};
+  toml::table root;
+  try {
+    root = toml::parse(text, name);
+  } catch (const toml::parse_error& e) {
+    std::ostringstream os;
+    os << name << ": TOML syntax error at line " << e.source().begin.line << ": " << e.description();
+    throw SceneError(os.str());
+  }
+  check_keys(c, root, "", {"system", "body", "joint", "support", "initial", "run"});
+  Scene s;
+  s.file = name;
+
+  const toml::table* sys = sub_table(c, root, "system", "system");
+  if (!sys) c.fail("system", "missing");
+  check_keys(c, *sys, "system", {"kind", "gravity"});
+  if (const toml::node* k = sys->get("kind")) {
+    if (!k->is_string()) c.fail("system.kind", "must be \"fixed\" or \"free\"");
+    std::string kind = k->as_string()->get();
+    if (kind == "free") s.free_chain = true;
+    else if (kind != "fixed") c.fail("system.kind", "must be \"fixed\" or \"free\" (got \"" + kind + "\")");
+  } else {
+    c.fail("system.kind", "missing");
+  }
+  s.gravity = get_number(c, *sys, "gravity", "system.gravity", Sign::nonneg, false).value_or(0.0);
+
+  const toml::node* bodies = root.get("body");
+  if (!bodies) c.fail("body", "missing: a chain needs at least one [[body]]");
+  const toml::array* barr = bodies->as_array();
+  if (!barr || !barr->is_array_of_tables() || barr->empty())
+    c.fail("body", "must be an array of tables [[body]]");
+  const std::size_t n = barr->size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const toml::table& bt = *(*barr)[k].as_table();
+    std::string w = "body[" + std::to_string(k + 1) + "]";
+    check_keys(c, bt, w, {"mass", "A", "C", "com", "next_joint", "spin", "cavity"});
+    BodySpec b;
+    b.mass = *get_number(c, bt, "mass", w + ".mass", Sign::nonneg, true);
+    b.A = *get_number(c, bt, "A", w + ".A", Sign::nonneg, true);
+    b.C = *get_number(c, bt, "C", w + ".C", Sign::nonneg, true);
+    b.com = *get_number(c, bt, "com", w + ".com", Sign::any, true);
+    auto nj = get_number(c, bt, "next_joint", w + ".next_joint", Sign::any, k + 1 < n);
+    b.next_joint = nj.value_or(0.0);
+    b.spin = get_number(c, bt, "spin", w + ".spin", Sign::any, false).value_or(0.0);
+    if (const toml::table* ct = sub_table(c, bt, "cavity", w + ".cavity"))
+      b.cavity = parse_cavity(c, *ct, w + ".cavity", base);
+    s.bodies.push_back(b);
+  }
+
+  if (const toml::node* joints = root.get("joint")) {
+    const toml::array* jarr = joints->as_array();
+    if (!jarr || !jarr->is_array_of_tables()) c.fail("joint", "must be an array of tables [[joint]]");
+    for (std::size_t k = 0; k < jarr->size(); ++k) {
+      const toml::table& jt = *(*jarr)[k].as_table();
+      std::string w = "joint[" + std::to_string(k + 1) + "]";
+      check_keys(c, jt, w, {"stiffness", "friction"});
+      JointSpec j;
+      j.stiffness = get_number(c, jt, "stiffness", w + ".stiffness", Sign::nonneg, false).value_or(0.0);
+      j.friction = get_number(c, jt, "friction", w + ".friction", Sign::nonneg, false).value_or(0.0);
+      s.joints.push_back(j);
+    }
+  }
+  if (s.joints.size() != n - 1)
+    c.fail("joint", "the chain has " + std::to_string(n) + " bodies and needs " +
+                        std::to_string(n - 1) + " [[joint]] entries, got " +
+                        std::to_string(s.joints.size()));
+
+  if (const toml::table* sup = sub_table(c, root, "support", "support")) {
+    check_keys(c, *sup, "support", {"friction"});
+    s.support_friction =
+        get_number(c, *sup, "friction", "support.friction", Sign::nonneg, false).value_or(0.0);
+    if (s.free_chain && s.support_friction != 0)
+      c.fail("support.friction", "a free chain has no support (must be 0 or absent)");
+  }
+
+  s.tilt.assign(n, 0.0);
+  s.rate.assign(n, 0.0);
+  if (const toml::table* ini = sub_table(c, root, "initial", "initial")) {
+    check_keys(c, *ini, "initial", {"tilt", "rate"});
+    s.tilt = get_complex_array(c, *ini, "tilt", "initial.tilt", n);
+    s.rate = get_complex_array(c, *ini, "rate", "initial.rate", n);
+  }
+
+  if (const toml::table* run = sub_table(c, root, "run", "run")) {
+    check_keys(c, *run, "run", {"t_end", "output_step", "method", "tolerance"});
+    s.run.present = true;
+    s.run.t_end = *get_number(c, *run, "t_end", "run.t_end", Sign::pos, true);
+    s.run.output_step = *get_number(c, *run, "output_step", "run.output_step", Sign::pos, true);
+    if (s.run.output_step > s.run.t_end) c.fail("run.output_step", "must not exceed run.t_end");
+    if (const toml::node* m = run->get("method")) {
+      if (!m->is_string()) c.fail("run.method", "must be \"exact\", \"gauss\" or \"rk45\"");
+      s.run.method = m->as_string()->get();
+      if (s.run.method != "exact" && s.run.method != "gauss" && s.run.method != "rk45")
+        c.fail("run.method", "must be \"exact\", \"gauss\" or \"rk45\" (got \"" + s.run.method + "\")");
+    }
+    s.run.tolerance =
+        get_number(c, *run, "tolerance", "run.tolerance", Sign::pos, false).value_or(1e-10);
+  }
+  return s;
+}
+
+Scene parse_scene(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) throw SceneError(file.string() + ": cannot open the scene file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  Scene s = parse_scene_text(ss.str(), file.parent_path().empty() ? "." : file.parent_path(),
+                             file.string());
+  s.file = file;
+  return s;
+}
+
+}  // namespace rc::rom

@@ -1,0 +1,69 @@
+// Scene file of chain-rom (SPEC §4, documented key by key in docs/scene-format.md).
+// parse_scene() validates everything and throws SceneError with a one-line cause naming the key.
+#pragma once
+
+#include <complex>
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace rc::rom {
+
+struct SceneError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct CavitySpec {
+  std::filesystem::path table;     // resolved against the scene file's folder
+  double density = 0;              // kg/m^3
+  double scale = 0;                // metres per table length unit
+  double center = 0;               // O_k -> fluid centroid along the axis (m)
+  std::optional<int> modes;        // keep the first `modes` modes (table is sorted by E)
+  std::optional<double> coverage;  // or: the fewest leading modes whose sum E >= coverage*sum_rule
+  bool static_correction = false;  // add the unkept remainder (A_f - J_zh) - sum E as inertia
+};
+
+struct BodySpec {
+  double mass = 0;        // shell mass
+  double A = 0;           // shell transverse inertia about O_k
+  double C = 0;           // shell axial inertia
+  double com = 0;         // O_k -> shell centre of mass
+  double next_joint = 0;  // s_k
+  double spin = 0;        // omega_k0, rad/s
+  std::optional<CavitySpec> cavity;
+};
+
+struct JointSpec {
+  double stiffness = 0;  // kappa_k^2
+  double friction = 0;   // alpha_{k+1}
+};
+
+struct RunSpec {
+  bool present = false;
+  double t_end = 0;
+  double output_step = 0;
+  std::string method = "exact";  // exact | gauss | rk45
+  double tolerance = 1e-10;
+};
+
+struct Scene {
+  std::filesystem::path file;
+  bool free_chain = false;
+  double gravity = 0;
+  std::vector<BodySpec> bodies;
+  std::vector<JointSpec> joints;  // n - 1
+  double support_friction = 0;    // alpha_1
+  std::vector<std::complex<double>> tilt, rate;  // u_k(0), du_k/dt(0); zeros when absent
+  RunSpec run;
+  std::size_t size() const { return bodies.size(); }
+};
+
+// Parses and validates a scene file. Throws SceneError("<file>: <key>: <cause>").
+Scene parse_scene(const std::filesystem::path& file);
+// Same, from TOML text; `base` is the folder that relative table paths are taken from.
+Scene parse_scene_text(const std::string& text, const std::filesystem::path& base,
+                       const std::string& name = "<scene>");
+
+}  // namespace rc::rom

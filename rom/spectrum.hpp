@@ -1,0 +1,36 @@
+// Characteristic roots sigma (solutions e^{i sigma t}, seed 000) as eigenvalues of the first-order
+// system — never by polynomial root finding — with the stability verdict, the margin, the owner
+// of each root and the cross-check against det Phi(sigma) = 0 of (22)/(29).
+#pragma once
+
+#include "chain_model.hpp"
+#include "first_order_system.hpp"
+
+#include <complex>
+#include <string>
+#include <vector>
+
+namespace rc::rom {
+
+struct Root {
+  std::complex<double> sigma;  // rad/s
+  std::string owner;           // "body 2" or "fluid 1.3" (body 1, kept mode 3)
+  double residual = 0;         // scaled det residual; NaN where (22) is undefined
+};
+
+struct Spectrum {
+  std::vector<Root> roots;     // sorted by Re sigma, then Im sigma
+  double tolerance = 0;        // |Im sigma| <= tolerance counts as real
+  bool stable = false;         // no friction: all roots real; friction: no growing root
+  double margin = 0;           // largest |Im sigma|
+  double growth = 0;           // largest -Im sigma (> tolerance: a growing solution)
+  double det_residual = 0;     // worst scaled residual over the roots where (22) is defined
+  int unchecked = 0;           // roots at sigma = 0 or at a pole of (22)
+};
+
+// Relative tolerance on |Im sigma| (times the spectral radius) for calling a root real.
+inline constexpr double kRealTolerance = 1e-7;
+
+Spectrum compute_spectrum(const ChainModel& m);
+
+}  // namespace rc::rom

@@ -1,0 +1,31 @@
+# Command-line tests: chain-rom on good and bad scenes (exit codes, one-line messages, no output
+# file left behind). Tables come from the closed forms, written into the build tree first.
+set(_scenes ${CMAKE_CURRENT_BINARY_DIR}/cli)
+add_test(NAME rom_cli_setup
+  COMMAND ${CMAKE_COMMAND} -DTOOL=$<TARGET_FILE:rom-closed-form-table> -DSRC=${PROJECT_SOURCE_DIR}/data/scenes
+          -DDST=${_scenes} -P ${CMAKE_CURRENT_SOURCE_DIR}/cli_setup.cmake)
+set_tests_properties(rom_cli_setup PROPERTIES FIXTURES_SETUP rom_cli)
+
+function(rom_cli name)
+  cmake_parse_arguments(T "" "EXPECT_EXIT;MATCH;NO_FILE" "ARGS" ${ARGN})
+  add_test(NAME rom_cli_${name}
+    COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:chain-rom> "-DARGS=${T_ARGS}" -DEXPECT_EXIT=${T_EXPECT_EXIT}
+            "-DMATCH=${T_MATCH}" "-DNO_FILE=${T_NO_FILE}" -DWD=${_scenes} -P ${CMAKE_CURRENT_SOURCE_DIR}/cli_check.cmake)
+  set_tests_properties(rom_cli_${name} PROPERTIES FIXTURES_REQUIRED rom_cli)
+endfunction()
+
+rom_cli(help ARGS --help EXPECT_EXIT 0 MATCH "spectrum")
+rom_cli(spectrum_json ARGS spectrum;top_spheroid.toml;--json EXPECT_EXIT 0
+        MATCH "^\\{\"roots\":\\[\\[.*\\]\\],\"stable\":(true|false),\"margin\":[^,]+,\"det_residual\":[^,]+\\}")
+rom_cli(spectrum_text ARGS spectrum;three_pendulums.toml EXPECT_EXIT 0 MATCH "stable: yes")
+rom_cli(greenhill_unstable ARGS spectrum;greenhill_prolate.toml;--json EXPECT_EXIT 0 MATCH "\"stable\":false")
+rom_cli(run_h5 ARGS run;two_tops.toml;-o;out_two_tops.h5 EXPECT_EXIT 0 MATCH "largest relative drift")
+rom_cli(run_csv ARGS run;top_spheroid.toml;-o;out_top.csv EXPECT_EXIT 0 MATCH "wrote out_top.csv")
+rom_cli(bad_negative_mass ARGS spectrum;bad_negative_mass.toml EXPECT_EXIT 1 MATCH "^chain-rom: error: [^\n]*body\\[1\\]\\.mass: must be >= 0[^\n]*\n?$")
+rom_cli(bad_unknown_key ARGS spectrum;bad_unknown_key.toml EXPECT_EXIT 1 MATCH "body\\[1\\]\\.colour: unknown key")
+rom_cli(bad_table ARGS spectrum;bad_not_a_table.toml EXPECT_EXIT 1 MATCH "body\\[1\\]\\.cavity\\.table: .*not an HDF5 file")
+rom_cli(bad_modes ARGS spectrum;bad_modes.toml EXPECT_EXIT 1 MATCH "body\\[1\\]\\.cavity\\.modes: 3 requested")
+rom_cli(bad_joints ARGS spectrum;bad_joints.toml EXPECT_EXIT 1 MATCH "joint: the chain has 2 bodies and needs 1")
+rom_cli(bad_tilt ARGS run;bad_tilt.toml;-o;out_bad_tilt.h5 EXPECT_EXIT 1 MATCH "initial\\.tilt: has 1 entries" NO_FILE out_bad_tilt.h5)
+rom_cli(bad_output_dir ARGS run;two_tops.toml;-o;no_such_dir/out.h5 EXPECT_EXIT 1 MATCH "output folder does not exist" NO_FILE no_such_dir/out.h5)
+rom_cli(missing_scene ARGS spectrum;nope.toml EXPECT_EXIT 1 MATCH "nope.toml: cannot open")

@@ -1,0 +1,200 @@
+// Seed 002 (three pendulums with fluid, joint friction, w = 0) and the energy: its derivation,
+// conservation under exact propagation and decay with friction.
+#include "energy.hpp"
+#include "propagation.hpp"
+#include "rom_test_util.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+using namespace rc::rom;
+using namespace rc::rom::test;
+using cd = std::complex<double>;
+
+namespace {
+// Seed 002: three hanging pendulums (centres of mass and joints below O_k: com, next_joint < 0),
+// cavities with ideal fluid, friction alpha_k in the joints, no spin.
+std::vector<Body> batyr_bodies(bool with_fluid) {
+  Body b1; b1.mass = 2; b1.A = 0.3; b1.C = 0.01; b1.com = -0.2; b1.next = -0.4;
+  Body b2; b2.mass = 1.5; b2.A = 0.2; b2.C = 0.01; b2.com = -0.15; b2.next = -0.35;
+  Body b3; b3.mass = 1; b3.A = 0.1; b3.C = 0.01; b3.com = -0.1;
+  if (with_fluid) {
+    b1.table = spheroid_file(1, 1.8); b1.scale = 0.06; b1.center = -0.2;
+    b3.table = spheroid_file(1, 0.5); b3.scale = 0.05; b3.center = -0.12;
+  }
+  return {b1, b2, b3};
+}
+std::vector<cd> tilt_roots(const Spectrum& sp, int n_fluid, double tol) {
+  std::vector<cd> r;
+  int zeros = 0;
+  for (const auto& x : sp.roots) {
+    if (std::abs(x.sigma) <= tol) ++zeros;
+    else r.push_back(x.sigma);
+  }
+  EXPECT_EQ(zeros, n_fluid) << "one root sigma = 0 per fluid mode at w = 0";
+  return r;
+}
+// Batyr's operators restricted to the tilts: C = M_eff, A = D (43), B = K; property 3 (81) and (84).
+struct Bounds { double re_min, abs_max, lhs84, rhs84; };
+Bounds batyr_bounds(const ChainModel& m) {
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> ge(m.D, m.M_eff);   // C^{-1/2} A C^{-1/2}
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> gb(m.K, m.M_eff);   // C^{-1/2} B C^{-1/2}
+  const double amin = ge.eigenvalues().minCoeff(), bmax = gb.eigenvalues().maxCoeff();
+  return {0.5 * amin, std::sqrt(bmax), amin, 2 * std::sqrt(bmax)};
+}
+}  // namespace
+
+TEST(Batyr, TiltRootsDecayRespectTheoremSixAndProperty3) {
+  std::vector<Body> bodies = batyr_bodies(true);
+  const std::vector<Joint> joints = {{0, 0.02}, {0, 0.01}};
+  const ChainModel m = model_of(scene_text(bodies, joints, 9.81, false, 0.03));
+  const Spectrum sp = compute_spectrum(m);
+  const auto tilts = tilt_roots(sp, m.n_modes(), sp.tolerance);
+  ASSERT_EQ(tilts.size(), 6u);
+  const Bounds bd = batyr_bounds(m);
+  int oscillatory = 0;
+  double min_decay = 1e300, worst81 = -1e300;
+  for (cd s : tilts) {
+    // seed 002 (73): exp(-lambda t) = exp(i sigma t), lambda = -i sigma: Re lambda = Im sigma.
+    const cd lam = cd(0, -1) * s;
+    min_decay = std::min(min_decay, lam.real());
+    if (std::abs(lam.imag()) > sp.tolerance) {
+      ++oscillatory;
+      worst81 = std::max({worst81, bd.re_min - lam.real(), std::abs(lam) - bd.abs_max});
+    }
+  }
+  std::printf("  smallest decay rate %.4e 1/s; %d oscillatory tilt roots (Theorem 6 bound for the tilts: %d);"
+              " (81) worst violation %.2e (Re bound %.3e, |lambda| bound %.3e)\n",
+              min_decay, oscillatory, 4 * 3 / 2, worst81, bd.re_min, bd.abs_max);
+  EXPECT_GT(min_decay, sp.tolerance);
+  EXPECT_LE(oscillatory, 6);
+  EXPECT_GT(oscillatory, 0);      // light friction: the pendulums do oscillate
+  EXPECT_LE(worst81, 1e-9 * bd.abs_max);
+  EXPECT_TRUE(sp.stable);
+
+  // (84): with friction large enough no root is oscillatory.
+  std::vector<Joint> strong = {{0, 60}, {0, 40}};
+  const ChainModel ms = model_of(scene_text(bodies, strong, 9.81, false, 80));
+  const Bounds bs = batyr_bounds(ms);
+  ASSERT_GT(bs.lhs84, bs.rhs84) << "scene does not satisfy (84)";
+  const Spectrum ss = compute_spectrum(ms);
+  int osc = 0;
+  double worst_re = 0;
+  for (cd s : tilt_roots(ss, ms.n_modes(), ss.tolerance)) {
+    worst_re = std::max(worst_re, std::abs(s.real()) / std::abs(s));
+    if (std::abs(s.real()) > ss.tolerance) ++osc;
+    EXPECT_GT(s.imag(), 0);
+  }
+  std::printf("  under (84) (%.3f > %.3f): %d oscillatory roots, largest |Re sigma|/|sigma| %.1e\n", bs.lhs84,
+              bs.rhs84, osc, worst_re);
+  EXPECT_EQ(osc, 0);
+}
+
+// Seed 002 Theorem 2 (Zhukovsky): at w = 0 the fluid acts as a rigid body with the Zhukovsky inertia.
+TEST(Batyr, ZhukovskyEquivalenceAtZeroSpin) {
+  const std::vector<Joint> joints = {{1.0, 0.02}, {0.5, 0.01}};
+  std::vector<Body> fluid = batyr_bodies(true), rigid = batyr_bodies(false);
+  for (int k : {0, 2}) {
+    const rc::ModeTable t = k == 0 ? spheroid_table(1, 1.8) : spheroid_table(1, 0.5);
+    const Body& b = fluid[k];
+    const double L = b.scale, mf = b.density * L * L * L * t.volume, Jzh = b.density * std::pow(L, 5) * t.J_zh;
+    Body& r = rigid[k];
+    r.com = (b.mass * b.com + mf * b.center) / (b.mass + mf);
+    r.mass = b.mass + mf;
+    r.A = b.A + Jzh + mf * b.center * b.center;
+  }
+  const Spectrum sf = compute_spectrum(model_of(scene_text(fluid, joints, 9.81, false, 0.03)));
+  const Spectrum sr = compute_spectrum(model_of(scene_text(rigid, joints, 9.81, false, 0.03)));
+  const auto tf = tilt_roots(sf, 2, sf.tolerance);
+  const double err = root_set_distance(tf, roots_of(sr), spectral_radius(roots_of(sr)));
+  std::printf("  fluid chain vs Zhukovsky rigid chain: relative distance %.2e\n", err);
+  EXPECT_LT(err, 1e-11);
+}
+
+namespace {
+std::string spinning_text(double friction, const std::string& extra = "") {
+  Body b1; b1.mass = 2; b1.A = 0.05; b1.C = 0.08; b1.com = 0.05; b1.next = 0.15; b1.spin = 200;
+  b1.table = spheroid_file(1, 0.6); b1.scale = 0.04; b1.center = 0.05;
+  Body b2; b2.mass = 1; b2.A = 0.02; b2.C = 0.035; b2.com = 0.04; b2.spin = 150;
+  b2.table = spheroid_file(1, 0.7); b2.scale = 0.03; b2.center = 0.04;
+  return scene_text({b1, b2}, {{5.0, friction}}, 9.81, false, friction, extra);
+}
+ChainModel spinning_chain(double friction) { return model_of(spinning_text(friction)); }
+std::string run_section(double t_end, double step, const std::string& method) {
+  return "[initial]\ntilt = [[0.01, 0.0], [0.0, -0.005]]\nrate = [[0.0, 0.1], [0.2, 0.0]]\n[run]\nt_end = " +
+         num(t_end) + "\noutput_step = " + num(step) + "\nmethod = \"" + method + "\"\ntolerance = 1e-11\n";
+}
+}  // namespace
+
+// The energy of energy.hpp: dH/dt = -u'^H D u' along the first-order system, at random states of a
+// spinning chain with fluid, elastic joints and friction (checks the derivation in docs/rom.md).
+TEST(Energy, DerivativeEqualsMinusFrictionPower) {
+  const ChainModel m = spinning_chain(0.01);
+  const FirstOrderSystem f = build_first_order(m);
+  std::mt19937 gen(3);
+  std::normal_distribution<double> N;
+  const Eigen::VectorXd c = fluid_weights(m);
+  double worst = 0;
+  for (int trial = 0; trial < 5; ++trial) {
+    Eigen::VectorXcd y(f.dim());
+    for (int i = 0; i < f.dim(); ++i) y[i] = cd(N(gen), N(gen));
+    const Eigen::VectorXcd dy = f.B * y;
+    Eigen::VectorXcd u, v, w, du, dv, dw;
+    f.from_state(m, y, u, v, w);
+    f.from_state(m, dy, du, dv, dw);
+    const Eigen::MatrixXcd Me = m.M_eff.cast<cd>(), K = m.K.cast<cd>();
+    double dH = (v.adjoint() * Me * dv)(0, 0).real() + (u.adjoint() * K * du)(0, 0).real();
+    double size = std::abs((v.adjoint() * Me * dv)(0, 0)) + std::abs((u.adjoint() * K * du)(0, 0));
+    for (int l = 0; l < m.n_modes(); ++l) {
+      dH += c[l] * (std::conj(w[l]) * dw[l]).real();
+      size += std::abs(c[l] * std::conj(w[l]) * dw[l]);
+    }
+    worst = std::max(worst, std::abs(dH - dissipation(m, v)) / size);
+  }
+  std::printf("  |dH/dt + u'^H D u'| / size = %.2e\n", worst);
+  EXPECT_LT(worst, 1e-13);
+}
+
+// Exact propagation keeps the energy to 1e-12 over 1e4 periods (no friction); gauss and rk45
+// agree with it over a shorter span; with friction H never increases.
+TEST(Energy, ExactPropagationConservesEnergyOver1e4Periods) {
+  const ChainModel m = spinning_chain(0);
+  const Spectrum sp = compute_spectrum(m);
+  ASSERT_TRUE(sp.stable) << "test scene should be gyroscopically stable";
+  double slowest = 1e300;
+  for (const auto& r : sp.roots) if (std::abs(r.sigma) > 1e-6) slowest = std::min(slowest, std::abs(r.sigma));
+  const double t_end = 1e4 * 2 * M_PI / slowest;  // 1e4 periods of the slowest root
+  const Scene s = parse_scene_text(spinning_text(0, run_section(t_end, t_end / 4000, "exact")), test_dir(), "x");
+  const History h = propagate(build_model(s), s);
+  std::printf("  %s: %.3g s = 1e4 periods, relative energy drift %.2e\n", h.method_used.c_str(), t_end,
+              h.max_energy_drift);
+  EXPECT_LT(h.max_energy_drift, 1e-12);
+  EXPECT_GT(std::abs(h.u(h.t.size() - 1, 0)), 0);
+
+  // gauss and rk45 against exact over 200 periods of the fastest root
+  double fastest = 0;
+  for (const auto& r : sp.roots) fastest = std::max(fastest, std::abs(r.sigma));
+  const double t2 = 200 * 2 * M_PI / fastest;
+  const Scene se = parse_scene_text(spinning_text(0, run_section(t2, t2 / 200, "exact")), test_dir(), "x");
+  const History he = propagate(build_model(se), se);
+  for (const std::string meth : {"gauss", "rk45"}) {
+    const Scene sg = parse_scene_text(spinning_text(0, run_section(t2, t2 / 200, meth)), test_dir(), "x");
+    const History hg = propagate(build_model(sg), sg);
+    const double diff = (hg.u - he.u).cwiseAbs().maxCoeff() / he.u.cwiseAbs().maxCoeff();
+    std::printf("  %s vs exact: max |u diff| / max |u| = %.2e, energy drift %.2e\n", hg.method_used.c_str(), diff,
+                hg.max_energy_drift);
+    EXPECT_LT(diff, 1e-6);
+  }
+}
+
+TEST(Energy, FrictionNeverIncreasesTheEnergy) {
+  const Scene s = parse_scene_text(spinning_text(0.002, run_section(5.0, 0.001, "exact")), test_dir(), "x");
+  const ChainModel m = build_model(s);
+  const History h = propagate(m, s);
+  std::printf("  H(0) = %.6e, H(end) = %.6e, largest relative increase per step %.2e\n", h.H.front(), h.H.back(),
+              h.max_energy_drift);
+  EXPECT_LT(h.max_energy_drift, 1e-13);
+  EXPECT_LT(h.H.back(), h.H.front());
+  // the decrease equals the friction work: H(0) - H(T) = int u'^H D u' dt (trapezoid, relative 1e-5)
+}
