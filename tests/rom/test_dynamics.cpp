@@ -196,5 +196,32 @@ TEST(Energy, FrictionNeverIncreasesTheEnergy) {
               h.max_energy_drift);
   EXPECT_LT(h.max_energy_drift, 1e-13);
   EXPECT_LT(h.H.back(), h.H.front());
-  // the decrease equals the friction work: H(0) - H(T) = int u'^H D u' dt (trapezoid, relative 1e-5)
+}
+
+// SPEC §3: at w0 = 0 only sum E = A_f - J_zh matters. One kept mode + static correction must give the
+// tilt roots of all four modes of a synthetic table (written in test_scene.cpp's table test).
+TEST(Energy, StaticCorrectionRestoresZhukovskyInertiaAtZeroSpin) {
+  rc::ModeTable t = spheroid_table(1, 1.5);
+  const double S = t.A_f - t.J_zh;
+  t.E = {0.5 * S, 0.3 * S, 0.15 * S, 0.05 * S};
+  t.lambda = {0.9, -0.5, 0.3, 0.01};
+  t.kappa = {2 / 0.9, 2 / -0.5, 2 / 0.3, 2 / 0.01};
+  t.a = {1, 1, 1, 1}; t.N2 = {2 / t.E[0], 2 / t.E[1], 2 / t.E[2], 2 / t.E[3]};
+  t.residual = {0, 0, 0, 0};
+  write_table(t, test_dir() / "four_modes_b.h5");
+  std::vector<Body> bodies = batyr_bodies(false);
+  bodies[0].table = "four_modes_b.h5"; bodies[0].scale = 0.06; bodies[0].center = -0.2;
+  const std::vector<Joint> joints = {{0, 0.02}, {0, 0.01}};
+  const Spectrum all = compute_spectrum(model_of(scene_text(bodies, joints, 9.81, false, 0.03)));
+  bodies[0].modes = 1; bodies[0].static_correction = true;
+  const Spectrum one = compute_spectrum(model_of(scene_text(bodies, joints, 9.81, false, 0.03)));
+  bodies[0].static_correction = false;
+  const Spectrum bare = compute_spectrum(model_of(scene_text(bodies, joints, 9.81, false, 0.03)));
+  const auto ta = tilt_roots(all, 4, all.tolerance), t1 = tilt_roots(one, 1, one.tolerance);
+  const auto tb = tilt_roots(bare, 1, bare.tolerance);
+  const double R = spectral_radius(ta);
+  const double err = root_set_distance(t1, ta, R), err_bare = root_set_distance(tb, ta, R);
+  std::printf("  1 mode + static correction vs 4 modes: %.2e; without the correction: %.2e\n", err, err_bare);
+  EXPECT_LT(err, 1e-12);
+  EXPECT_GT(err_bare, 1e-6);  // the correction matters
 }
