@@ -1,0 +1,123 @@
+#include "cavity_table.hpp"
+
+#include "fe_space.hpp"
+#include "poincare_forms.hpp"
+#include "stiffness_solver.hpp"
+#include "zhukovsky.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace rc::modes {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+void validate(const ModeSelection& s) {
+  if (s.modes && *s.modes < 1) throw std::runtime_error(fmt::format("--modes must be at least 1 (got {})", *s.modes));
+  if (s.coverage && !(*s.coverage > 0 && *s.coverage <= 1))
+    throw std::runtime_error(fmt::format("--coverage must be in (0, 1] (got {})", *s.coverage));
+}
+
+// Survey nodes worth refining, heaviest first.
+std::vector<GaussNode> candidate_nodes(const SpectralSurvey& survey, const ModeSelection& sel, double sum_rule) {
+  std::vector<GaussNode> nodes;
+  for (const auto& n : survey.nodes)
+    if (std::abs(n.lambda) >= sel.geostrophic_cutoff && n.E > 1e-14 * sum_rule) nodes.push_back(n);
+  std::sort(nodes.begin(), nodes.end(), [](const GaussNode& a, const GaussNode& b) { return a.E > b.E; });
+  std::size_t keep = nodes.size();
+  if (sel.modes) {
+    keep = static_cast<std::size_t>(*sel.modes) + std::max(5, *sel.modes / 2);  // spares for merged duplicates
+  } else if (sel.coverage) {
+    double sum = 0;
+    keep = 0;
+    while (keep < nodes.size() && sum < *sel.coverage * sum_rule) sum += nodes[keep++].E;
+    keep += 5;  // a node's weight only approximates its cluster's E
+  } else {
+    keep = std::count_if(nodes.begin(), nodes.end(), [&](const GaussNode& n) { return n.E >= sel.default_threshold * sum_rule; });
+  }
+  nodes.resize(std::min({keep, nodes.size(), static_cast<std::size_t>(std::max(sel.max_clusters, sel.modes.value_or(0) + 10))}));
+  return nodes;
+}
+
+std::vector<Cluster> select_clusters(std::vector<Cluster> clusters, const ModeSelection& sel, double sum_rule) {
+  std::sort(clusters.begin(), clusters.end(), [](const Cluster& a, const Cluster& b) { return a.E > b.E; });
+  std::size_t keep = clusters.size();
+  if (sel.modes) {
+    keep = std::min<std::size_t>(keep, *sel.modes);
+  } else if (sel.coverage) {
+    double sum = 0;
+    keep = 0;
+    while (keep < clusters.size() && sum < *sel.coverage * sum_rule) sum += clusters[keep++].E;
+  } else {
+    keep = std::count_if(clusters.begin(), clusters.end(), [&](const Cluster& c) { return c.E >= sel.default_threshold * sum_rule; });
+    keep = std::max<std::size_t>(keep, std::min<std::size_t>(1, clusters.size()));
+  }
+  clusters.resize(keep);
+  return clusters;
+}
+
+}  // namespace
+
+ModeTable compute_mode_table(const TableRequest& req, const ProgressFn& progress) {
+  validate(req.selection);
+  const auto start = Clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+  auto report = [&](const std::string& what) { if (progress && elapsed() > 1.0) progress(fmt::format("[{:6.2f} s] {}", elapsed(), what)); };
+
+  const FESpace space(geometry::mesh_meridian(req.shape, req.mesh));
+  const FluidIntegrals fluid = integrate_fluid(space);
+  const PoincareForms forms = assemble_poincare_forms(space, fluid.centroid_z);
+  const StiffnessSolver stiffness(forms.M);
+  const ZhukovskyResult zh = zhukovsky_inertia(forms, stiffness);
+  const double sum_rule = fluid.A_f - zh.J_zh;
+  report(fmt::format("assembled {} dofs, J_zh = {:.10g}", space.ndof(), zh.J_zh));
+
+  const SpectralSurvey survey = survey_spectral_measure(space, fluid.centroid_z, stiffness, req.survey);
+  report(fmt::format("spectral survey: {} Lanczos steps", survey.steps));
+  const auto nodes = candidate_nodes(survey, req.selection, sum_rule);
+  std::string solver;
+  auto clusters = refine_clusters(forms, nodes, req.clusters, [&](std::size_t done, std::size_t total) {
+    report(fmt::format("cluster {}/{}", done, total));
+  }, &solver);
+  clusters = select_clusters(std::move(clusters), req.selection, sum_rule);
+
+  ModeTable t;
+  t.shape = req.shape.kind;
+  t.dimensions = req.shape.dims;
+  t.fe_order = space.order();
+  t.mesh_h = space.mesh().size;
+  t.ndof = space.ndof();
+  t.m = 1;
+  t.volume = fluid.volume;
+  t.centroid_z = fluid.centroid_z;
+  t.A_f = fluid.A_f;
+  t.C_f = fluid.C_f;
+  t.J_zh = zh.J_zh;
+  t.sum_rule = sum_rule;
+  t.solver = solver.empty() ? "no cluster needed refinement" : solver;
+  t.tolerance = req.clusters.qep.tolerance;
+  t.normalisation = "rho = 1, omega0 = 1; each cluster's V is normalised to N2 = |V|^2 = 1, a = (e1 x r, V), "
+                    "so E = 2 a^2 / N2 (SPEC section 2)";
+  double kept = 0;
+  for (const auto& c : clusters) {
+    t.lambda.push_back(c.lambda);
+    t.kappa.push_back(2 / c.lambda);
+    t.E.push_back(c.E);
+    t.a.push_back(std::sqrt(c.E / 2));
+    t.N2.push_back(1.0);
+    t.residual.push_back(c.residual);
+    t.spread.push_back(c.spread);
+    t.members.push_back(c.members);
+    kept += c.E;
+  }
+  t.coverage = sum_rule > 0 ? kept / sum_rule : 1.0;
+  t.sort_by_energy();
+  t.wall_seconds = elapsed();
+  return t;
+}
+
+}  // namespace rc::modes

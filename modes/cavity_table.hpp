@@ -1,0 +1,42 @@
+// The whole cavity-modes pipeline for one cavity: mesh -> forms -> Zhukovsky inertia -> spectral survey
+// -> clusters -> mode table (SPEC §2 and §4).
+#pragma once
+
+#include "clusters.hpp"
+#include "meridian_mesh.hpp"
+#include "mode_table.hpp"
+#include "spectral_survey.hpp"
+
+#include <functional>
+#include <optional>
+#include <string>
+
+namespace rc::modes {
+
+// Which clusters a table keeps (docs/modes.md):
+//   modes = N     the N clusters of largest E;
+//   coverage = c  clusters in order of E until their E sums to c (A_f − J_zh);
+//   neither       every cluster whose survey weight is at least default_threshold (A_f − J_zh),
+//                 which keeps every mode that moves a stability boundary by more than ~0.1 %.
+struct ModeSelection {
+  std::optional<int> modes;
+  std::optional<double> coverage;
+  double default_threshold = 1e-3;
+  int max_clusters = 60;
+  double geostrophic_cutoff = 0.02;  // survey nodes with |λ| below this are not refined (λ≈0 continuum)
+};
+
+struct TableRequest {
+  geometry::ShapeSpec shape;
+  geometry::MeshOptions mesh;
+  ModeSelection selection;
+  SurveySettings survey;
+  ClusterSettings clusters;
+};
+
+using ProgressFn = std::function<void(const std::string&)>;
+
+// Throws std::runtime_error with a one-line cause on bad input or solver failure.
+ModeTable compute_mode_table(const TableRequest& request, const ProgressFn& progress = {});
+
+}  // namespace rc::modes

@@ -1,0 +1,125 @@
+// cavity-modes: mode tables of the rotating ideal fluid in an axisymmetric cavity (SPEC §2, §4).
+//
+//   cavity-modes cylinder --radius 1 --height 2 [--order 4] [--mesh-size 0.2] [--modes N | --coverage c] -o cyl.h5
+//   cavity-modes info cyl.h5 [--json]
+// PETSc/SLEPc options (-pep_type ..., -log_view) pass through.
+#include "cavity_table.hpp"
+#include "command_line.hpp"
+#include "mode_table_report.hpp"
+#include "petsc_handles.hpp"
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+
+namespace {
+
+using rc::modes::TableRequest;
+
+struct ShapeCommand {
+  CLI::App* app = nullptr;
+  std::string kind;
+  std::map<std::string, double> dims;
+};
+
+void add_common_options(CLI::App* cmd, TableRequest& req, std::string& output) {
+  cmd->add_option("--order", req.mesh.order, "Lagrange order of the isoparametric triangles (1..6)")
+      ->capture_default_str();
+  cmd->add_option("--mesh-size", req.mesh.size, "target element size in the shape's length unit (0: 1/8 of the "
+                                                "smallest dimension)")->capture_default_str();
+  auto* modes = cmd->add_option("--modes", req.selection.modes, "keep the N clusters of largest E");
+  auto* coverage = cmd->add_option("--coverage", req.selection.coverage,
+                                   "keep clusters until their E sums to this fraction of A_f - J_zh");
+  modes->excludes(coverage);
+  cmd->add_option("--survey-steps", req.survey.max_steps, "Lanczos steps of the spectral survey (at most)")
+      ->capture_default_str();
+  cmd->add_option("--tolerance", req.clusters.qep.tolerance, "eigensolver tolerance")->capture_default_str();
+  cmd->add_option("-o,--output", output, "mode table to write (HDF5)")->required();
+}
+
+int run(int argc, char** argv) {
+  auto args = rc::modes::split_arguments(argc, argv);
+  CLI::App app{"cavity-modes: inertial-mode tables (kappa, lambda, E, a, N2, J_zh, coverage) of a rotating "
+               "ideal fluid in an axisymmetric cavity. PETSc/SLEPc options (-pep_type, -log_view) pass through."};
+  app.require_subcommand(1);
+  TableRequest req;
+  req.mesh.order = 6;
+  std::string output;
+  std::vector<ShapeCommand> shapes;
+  auto shape = [&](const std::string& kind, const std::string& help,
+                   std::vector<std::pair<std::string, std::string>> dims) {
+    ShapeCommand s;
+    s.kind = kind;
+    s.app = app.add_subcommand(kind, help);
+    shapes.push_back(std::move(s));
+    for (auto& [name, what] : dims)
+      shapes.back().app->add_option("--" + name, shapes.back().dims[name], what)->required();
+  };
+  shape("sphere", "sphere of radius R", {{"radius", "radius R"}});
+  shape("spheroid", "spheroid with equatorial semi-axis a and polar semi-axis c",
+        {{"a", "equatorial semi-axis"}, {"c", "polar semi-axis"}});
+  shape("cylinder", "circular cylinder", {{"radius", "radius"}, {"height", "full height"}});
+  shape("cone", "cone, apex down, flat lid on top", {{"radius", "lid radius"}, {"height", "height"}});
+  auto* section = app.add_subcommand("section", "the user's meridian section (.geo or .msh; see docs/geometry.md)");
+  section->add_option("file", req.shape.file, "section file")->required();
+  for (auto& s : shapes) add_common_options(s.app, req, output);
+  add_common_options(section, req, output);
+
+  std::string info_file;
+  bool json = false;
+  auto* info = app.add_subcommand("info", "print a mode table's attributes and modes");
+  info->add_option("file", info_file, "mode table (HDF5)")->required();
+  info->add_flag("--json", json, "print SPEC section 4's JSON object");
+
+  const auto commands = app.get_subcommands([](CLI::App*) { return true; });
+  const bool known = std::any_of(commands.begin(), commands.end(), [&](CLI::App* c) {
+    return args.ours.size() > 1 && c->get_name() == args.ours[1];
+  });
+  if (args.ours.size() > 1 && args.ours[1][0] != '-' && !known)
+    throw std::runtime_error("unknown shape or command '" + args.ours[1] +
+                             "' (expected sphere, spheroid, cylinder, cone, section or info)");
+  std::vector<char*> ours;
+  for (auto& a : args.ours) ours.push_back(a.data());
+  try {
+    app.parse(static_cast<int>(ours.size()), ours.data());
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "cavity-modes: error: " << e.what() << " (see --help)\n";
+    return e.get_exit_code() != 0 ? e.get_exit_code() : 2;
+  }
+
+  if (info->parsed()) {
+    auto table = rc::read_mode_table(info_file);
+    std::cout << (json ? rc::modes::table_json(table) : rc::modes::table_text(table)) << std::flush;
+    return 0;
+  }
+  if (section->parsed()) req.shape.kind = "section";
+  for (auto& s : shapes)
+    if (s.app->parsed()) { req.shape.kind = s.kind; req.shape.dims = s.dims; }
+
+  int petsc_argc = static_cast<int>(args.petsc.size());
+  std::vector<char*> petsc_argv;
+  for (auto& a : args.petsc) petsc_argv.push_back(a.data());
+  petsc_argv.push_back(nullptr);
+  char** pargv = petsc_argv.data();
+  rc::modes::PetscSession session(&petsc_argc, &pargv);
+  auto table = rc::modes::compute_mode_table(req, [](const std::string& line) { std::cerr << line << "\n"; });
+  rc::write_mode_table(table, output);
+  std::cout << rc::modes::table_text(table) << std::flush;
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const std::exception& e) {
+    std::cerr << "cavity-modes: error: " << e.what() << "\n";
+    return 1;
+  }
+}

@@ -1,0 +1,61 @@
+#include "mode_table_report.hpp"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+namespace rc::modes {
+
+std::string table_text(const ModeTable& t) {
+  std::string dims;
+  for (const auto& [k, v] : t.dimensions) dims += fmt::format(" {}={:g}", k, v);
+  std::string s = fmt::format(
+      "{}{}: order {}, h = {:g}, {} dofs, m = {}\n"
+      "volume {:.12g}  centroid_z {:.6g}  A_f {:.12g}  C_f {:.12g}\n"
+      "J_zh {:.12g}  sum rule A_f - J_zh {:.12g}  coverage {:.10f}\n"
+      "solver: {} (tol {:g}), {:.2f} s\n",
+      t.shape, dims, t.fe_order, t.mesh_h, t.ndof, t.m, t.volume, t.centroid_z, t.A_f, t.C_f, t.J_zh, t.sum_rule,
+      t.coverage, t.solver, t.tolerance, t.wall_seconds);
+  s += fmt::format("{:>4} {:>18} {:>18} {:>18} {:>10} {:>10} {:>4}\n", "#", "kappa", "lambda", "E", "spread",
+                   "residual", "n");
+  for (std::size_t i = 0; i < t.size(); ++i)
+    s += fmt::format("{:>4} {:>18.12f} {:>18.12f} {:>18.12e} {:>10.2e} {:>10.2e} {:>4}\n", i + 1, t.kappa[i],
+                     t.lambda[i], t.E[i], t.spread.empty() ? 0.0 : t.spread[i], t.residual[i],
+                     t.members.empty() ? 1 : t.members[i]);
+  return s;
+}
+
+std::string table_json(const ModeTable& t) {
+  nlohmann::json j;
+  j["format"] = kModeTableFormat;
+  j["version"] = kModeTableVersion;
+  j["shape"] = t.shape;
+  for (const auto& [k, v] : t.dimensions) j[k] = v;
+  j["fe_order"] = t.fe_order;
+  j["mesh_h"] = t.mesh_h;
+  j["ndof"] = t.ndof;
+  j["m"] = t.m;
+  j["volume"] = t.volume;
+  j["centroid_z"] = t.centroid_z;
+  j["A_f"] = t.A_f;
+  j["C_f"] = t.C_f;
+  j["J_zh"] = t.J_zh;
+  j["sum_rule"] = t.sum_rule;
+  j["coverage"] = t.coverage;
+  j["solver"] = t.solver;
+  j["tolerance"] = t.tolerance;
+  j["wall_seconds"] = t.wall_seconds;
+  j["normalisation"] = t.normalisation;
+  nlohmann::json m;
+  m["kappa"] = t.kappa;
+  m["lambda"] = t.lambda;
+  m["E"] = t.E;
+  m["a"] = t.a;
+  m["N2"] = t.N2;
+  m["residual"] = t.residual;
+  if (!t.spread.empty()) m["spread"] = t.spread;
+  if (!t.members.empty()) m["members"] = t.members;
+  j["modes"] = m;
+  return j.dump(2) + "\n";
+}
+
+}  // namespace rc::modes

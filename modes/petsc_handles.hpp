@@ -1,0 +1,53 @@
+// Small RAII owners for PETSc/SLEPc objects and an error check that turns a PETSc error code into a
+// one-line C++ exception (PETSc's own tracebacks are switched off by PetscSession).
+#pragma once
+
+#include <petscksp.h>
+#include <slepcpep.h>
+
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace rc::modes {
+
+// Throws std::runtime_error("<what>: PETSc error <code>: <message>") when ierr != 0.
+void petsc_check(PetscErrorCode ierr, const char* what);
+
+template <class T, PetscErrorCode (*Destroy)(T*)>
+class PetscHandle {
+ public:
+  PetscHandle() = default;
+  explicit PetscHandle(T obj) : obj_(obj) {}
+  PetscHandle(const PetscHandle&) = delete;
+  PetscHandle& operator=(const PetscHandle&) = delete;
+  PetscHandle(PetscHandle&& o) noexcept : obj_(std::exchange(o.obj_, nullptr)) {}
+  PetscHandle& operator=(PetscHandle&& o) noexcept {
+    if (this != &o) { reset(); obj_ = std::exchange(o.obj_, nullptr); }
+    return *this;
+  }
+  ~PetscHandle() { reset(); }
+  void reset() { if (obj_) Destroy(&obj_); obj_ = nullptr; }
+  T get() const { return obj_; }
+  T* out() { reset(); return &obj_; }   // for PETSc "create" calls that fill a T*
+  operator T() const { return obj_; }   // NOLINT: handles read like the raw objects in PETSc calls
+ private:
+  T obj_ = nullptr;
+};
+
+using PMat = PetscHandle<Mat, MatDestroy>;
+using PVec = PetscHandle<Vec, VecDestroy>;
+using PKSP = PetscHandle<KSP, KSPDestroy>;
+using PPEP = PetscHandle<PEP, PEPDestroy>;
+
+// Initialises SLEPc (and PETSc, MPI) for the lifetime of the object, passing command-line options
+// such as -pep_type or -log_view through to PETSc's options database.
+class PetscSession {
+ public:
+  PetscSession(int* argc, char*** argv);
+  ~PetscSession();
+  PetscSession(const PetscSession&) = delete;
+  PetscSession& operator=(const PetscSession&) = delete;
+};
+
+}  // namespace rc::modes

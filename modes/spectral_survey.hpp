@@ -1,0 +1,43 @@
+// Spectral survey: the Gauss quadrature of the coupling's spectral measure μ = Σ_l E_l δ(λ − λ_l)
+// (SPEC §2), computed by a Lanczos process started from the coupling vector.
+//
+// Why: the discrete spectrum fills (−2, 2) densely (about 2·ndof eigenvalues), but E sits on a few of
+// them. The k-point Gauss rule of μ locates where E sits at the cost of k Lanczos steps, with no
+// eigen-solve; the clusters are then resolved exactly by narrow spectrum slices (clusters.hpp).
+//
+// How: the discrete QEP is the eigenproblem of the self-adjoint operator A = P_H S on the discretely
+// solenoidal fields H_h = {V : Gᵀ Ω V = 0} of the quadrature-point velocity space (V = (i a, b, i c)
+// e^{iφ}, stored as real (a, b, c) at each quadrature point, with inner product Σ ω (a a' + b b' + c c'),
+// ω = w r). Here S(a, b, c) = (−2b, −2a, 0) is the Coriolis term 2iẑ×, G p = (p_r, −p/r, p_z) the
+// gradient of an m = 1 pressure and P_H = I − G M⁻¹ Gᵀ Ω the projection (M = Gᵀ Ω G = Kh + Kz).
+// The coupling vector is W = e1 × r = (z', −z', −r); μ has total mass π‖P_H W‖² = A_f − J_zh.
+#pragma once
+
+#include "fe_space.hpp"
+#include "stiffness_solver.hpp"
+
+#include <vector>
+
+namespace rc::modes {
+
+struct GaussNode {
+  double lambda = 0;  // node of the Gauss rule
+  double E = 0;       // its weight (sums to A_f − J_zh over all nodes)
+};
+
+struct SurveySettings {
+  int max_steps = 200;          // Lanczos steps (nodes of the Gauss rule)
+  double tolerance = 1e-6;      // stop when the heaviest nodes move less than this (relative): they only
+                                // need to land inside their cluster slice, which the eigensolver then resolves
+};
+
+struct SpectralSurvey {
+  std::vector<GaussNode> nodes;  // sorted by λ
+  int steps = 0;
+  bool exhausted = false;        // the Krylov space became invariant: the rule is exact
+};
+
+SpectralSurvey survey_spectral_measure(const FESpace& space, double centroid_z, const StiffnessSolver& solver,
+                                       const SurveySettings& settings);
+
+}  // namespace rc::modes

@@ -1,0 +1,43 @@
+#include "stiffness_solver.hpp"
+
+#include <algorithm>
+#include <string>
+
+namespace rc::modes {
+
+StiffnessSolver::StiffnessSolver(Mat M) {
+  petsc_check(KSPCreate(PETSC_COMM_SELF, ksp_.out()), "KSPCreate");
+  petsc_check(KSPSetOptionsPrefix(ksp_, "stiff_"), "KSPSetOptionsPrefix");
+  petsc_check(KSPSetOperators(ksp_, M, M), "KSPSetOperators");
+  petsc_check(KSPSetType(ksp_, KSPPREONLY), "KSPSetType");
+  PC pc;
+  petsc_check(KSPGetPC(ksp_, &pc), "KSPGetPC");
+  petsc_check(PCSetType(pc, PCCHOLESKY), "PCSetType");
+  petsc_check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
+  petsc_check(KSPSetFromOptions(ksp_), "KSPSetFromOptions");
+  petsc_check(KSPSetUp(ksp_), "factorising the stiffness matrix");
+  petsc_check(MatCreateVecs(M, x_.out(), b_.out()), "MatCreateVecs");
+}
+
+void StiffnessSolver::solve(Vec b, Vec x) const {
+  petsc_check(KSPSolve(ksp_, b, x), "stiffness solve");
+  KSPConvergedReason reason;
+  petsc_check(KSPGetConvergedReason(ksp_, &reason), "KSPGetConvergedReason");
+  if (reason < 0)
+    throw std::runtime_error("the stiffness factorisation failed (KSP reason " +
+                             std::to_string(static_cast<int>(reason)) + ")");
+}
+
+void StiffnessSolver::solve(const std::vector<double>& b, std::vector<double>& x) const {
+  PetscScalar* a = nullptr;
+  petsc_check(VecGetArray(b_, &a), "VecGetArray");
+  std::copy(b.begin(), b.end(), a);
+  petsc_check(VecRestoreArray(b_, &a), "VecRestoreArray");
+  solve(b_.get(), x_.get());
+  const PetscScalar* c = nullptr;
+  petsc_check(VecGetArrayRead(x_, &c), "VecGetArrayRead");
+  x.assign(c, c + b.size());
+  petsc_check(VecRestoreArrayRead(x_, &c), "VecRestoreArrayRead");
+}
+
+}  // namespace rc::modes

@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# Command-line behaviour of cavity-modes: help, a good run with info --json, and every bad-input case
+# of issue 2 giving a one-line error, a non-zero exit and no file left behind.
+set -u
+BIN=$1
+SECTIONS=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+pass=0
+fail=0
+ok() { echo "ok: $1"; pass=$((pass + 1)); }
+bad() { echo "FAILED: $1"; fail=$((fail + 1)); }
+
+expect_error() {  # name, expected text in the message, command...
+  local name=$1 text=$2
+  shift 2
+  rm -f out.h5
+  "$@" > stdout.txt 2> stderr.txt
+  local rc=$?
+  local lines
+  lines=$(wc -l < stderr.txt)
+  if [ "$rc" -eq 0 ]; then bad "$name: exit 0"; return; fi
+  if [ "$lines" -ne 1 ]; then bad "$name: $lines lines on stderr: $(cat stderr.txt)"; return; fi
+  if ! grep -q -- "$text" stderr.txt; then bad "$name: message lacks '$text': $(cat stderr.txt)"; return; fi
+  if ls out.h5* > /dev/null 2>&1; then bad "$name: left a file behind"; return; fi
+  ok "$name ($(cat stderr.txt))"
+}
+
+"$BIN" --help > help.txt 2>&1 && grep -q cylinder help.txt && ok "--help" || bad "--help"
+
+expect_error "unknown shape" "unknown shape" "$BIN" torus --radius 1 -o out.h5
+expect_error "zero radius" "radius = 0" "$BIN" sphere --radius 0 -o out.h5
+expect_error "negative height" "height = -2" "$BIN" cylinder --radius 1 --height -2 -o out.h5
+expect_error "NaN dimension" "nan" "$BIN" spheroid --a nan --c 1 -o out.h5
+expect_error "missing dimension" "--c" "$BIN" spheroid --a 1 -o out.h5
+expect_error "unreadable section" "cannot read" "$BIN" section "$work/none.geo" -o out.h5
+echo 'Point(1) = {0, 0, 0};' > nogroups.geo
+expect_error "section without physical groups" "fluid" "$BIN" section nogroups.geo -o out.h5
+echo 'garbage(' > broken.geo
+expect_error "malformed section" "syntax error" "$BIN" section broken.geo -o out.h5
+expect_error "bad coverage" "coverage" "$BIN" sphere --radius 1 --coverage 2 -o out.h5
+expect_error "solver failure" "eigensolver" "$BIN" sphere --radius 1 --order 3 -o out.h5 -pep_max_it 1 -pep_tol 1e-30
+expect_error "unwritable output" "cannot create" "$BIN" sphere --radius 1 --order 3 -o /nonexistent-dir/out.h5
+expect_error "info on a non-table" "not an HDF5 file" "$BIN" info stderr.txt
+
+# A good run, its table, and info --json (parsed by Python's json module).
+if "$BIN" spheroid --a 1 --c 0.5 --order 4 -o good.h5 > run.txt 2>&1 && [ -f good.h5 ]; then
+  ok "spheroid table written"
+  if "$BIN" info good.h5 --json > info.json && python3 -c '
+import json, sys
+j = json.load(open("info.json"))
+assert j["format"] == "cavity-mode-table" and j["shape"] == "spheroid"
+for k in ("kappa", "lambda", "E", "a", "N2", "residual"):
+    assert len(j["modes"][k]) == len(j["modes"]["E"]) >= 1, k
+E = j["modes"]["E"]
+assert E == sorted(E, reverse=True)
+err = abs(j["modes"]["lambda"][0] - 1.6) / 1.6
+print("info --json: lambda_1 rel err %.2e" % err)
+assert err < 1e-8
+'; then ok "info --json"; else bad "info --json"; fi
+else
+  bad "spheroid table written: $(cat run.txt)"
+fi
+# A user section (the capsule example) runs end to end.
+if "$BIN" section "$SECTIONS/capsule.geo" --order 4 --modes 3 -o capsule.h5 > cap.txt 2>&1 && [ -f capsule.h5 ]; then
+  ok "capsule section"
+else
+  bad "capsule section: $(tail -1 cap.txt)"
+fi
+
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]

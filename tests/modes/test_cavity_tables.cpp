@@ -1,0 +1,93 @@
+// cavity-modes against SPEC §2's closed forms, at default settings unless a test says otherwise.
+// Every comparison prints its error.
+#include "cavity_table.hpp"
+#include "closed_forms.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+using namespace rc::modes;
+
+namespace {
+
+TableRequest request(const std::string& kind, std::map<std::string, double> dims) {
+  TableRequest r;
+  r.shape.kind = kind;
+  r.shape.dims = std::move(dims);
+  r.mesh.order = 6;  // the program's default
+  return r;
+}
+
+double rel(double got, double want) { return std::abs(got - want) / std::abs(want); }
+
+void expect_spheroid(double a, double c) {
+  auto req = request("spheroid", {{"a", a}, {"c", c}});
+  const auto t = compute_mode_table(req);
+  const auto x = exact::spheroid(a, c);
+  ASSERT_GE(t.size(), 1u);
+  std::printf("spheroid a=%g c=%g: lambda err %.2e, E err %.2e, J_zh err %.2e, coverage %.12f (%.2f s)\n", a, c,
+              rel(t.lambda[0], x.mode.lambda), rel(t.E[0], x.mode.E), rel(t.J_zh, x.J_zh), t.coverage,
+              t.wall_seconds);
+  EXPECT_LE(rel(t.lambda[0], x.mode.lambda), 1e-8);
+  EXPECT_LE(rel(t.E[0], x.mode.E), 1e-8);
+  EXPECT_LE(rel(t.J_zh, x.J_zh), 1e-8);
+  EXPECT_LE(rel(t.A_f, x.A_f), 1e-9);
+  for (std::size_t i = 1; i < t.size(); ++i) EXPECT_LE(t.E[i], 1e-8 * t.E[0]) << "cluster " << i;
+}
+
+// Matches each of the five largest computed clusters to the exact mode of nearest κ.
+void expect_cylinder(double height) {
+  auto req = request("cylinder", {{"radius", 1.0}, {"height", height}});
+  const auto t = compute_mode_table(req);
+  const auto modes = exact::cylinder_modes(1.0, height);
+  const double jzh = exact::cylinder_zhukovsky(1.0, height);
+  std::printf("cylinder 2h/a=%g: %ld dofs, J_zh err %.2e, coverage %.6f, %.2f s\n", height, t.ndof,
+              rel(t.J_zh, jzh), t.coverage, t.wall_seconds);
+  EXPECT_LE(rel(t.J_zh, jzh), 1e-7);
+  ASSERT_GE(t.size(), 5u);
+  for (std::size_t i = 0; i < 5; ++i) {
+    const auto nearest = std::min_element(modes.begin(), modes.end(), [&](const auto& a, const auto& b) {
+      return std::abs(a.kappa - t.kappa[i]) < std::abs(b.kappa - t.kappa[i]);
+    });
+    std::printf("  #%zu kappa %.12f (exact %.12f, n=%d j=%d) err %.2e   E %.12e err %.2e\n", i + 1, t.kappa[i],
+                nearest->kappa, nearest->axial, nearest->radial, rel(t.kappa[i], nearest->kappa), t.E[i],
+                rel(t.E[i], nearest->E));
+    EXPECT_LE(rel(t.kappa[i], nearest->kappa), 1e-6) << "cluster " << i + 1;
+    EXPECT_LE(rel(t.E[i], nearest->E), 1e-6) << "cluster " << i + 1;
+  }
+  // The five largest exact modes are the five largest clusters (none missed by the survey).
+  for (std::size_t i = 0; i < 5; ++i) EXPECT_LE(rel(t.E[i], modes[i].E), 1e-6) << "exact mode " << i + 1;
+}
+
+}  // namespace
+
+TEST(CavityTables, SphereHasOneCouplingCluster) {
+  auto req = request("sphere", {{"radius", 1.0}});
+  req.selection.modes = 5;
+  const auto t = compute_mode_table(req);
+  const double E = 8 * std::numbers::pi / 15;
+  ASSERT_GE(t.size(), 1u);
+  std::printf("sphere: lambda err %.2e, E err %.2e, J_zh %.2e, coverage - 1 = %.2e, next E/E1 %.2e\n",
+              std::abs(t.lambda[0] - 1), rel(t.E[0], E), t.J_zh, t.coverage - 1,
+              t.size() > 1 ? t.E[1] / t.E[0] : 0.0);
+  EXPECT_LE(std::abs(t.lambda[0] - 1), 1e-8);
+  EXPECT_LE(rel(t.E[0], E), 1e-8);
+  EXPECT_LE(std::abs(t.J_zh), 1e-10);
+  EXPECT_LE(std::abs(t.coverage - 1), 1e-8);
+  for (std::size_t i = 1; i < t.size(); ++i) EXPECT_LE(t.E[i], 1e-8 * t.E[0]) << "cluster " << i;
+}
+
+TEST(CavityTables, OblateSpheroid) { expect_spheroid(1.0, 0.5); }
+TEST(CavityTables, ProlateSpheroid) { expect_spheroid(1.0, 2.0); }
+TEST(CavityTables, CylinderHeightOne) { expect_cylinder(1.0); }
+TEST(CavityTables, CylinderHeightTwo) { expect_cylinder(2.0); }
+TEST(CavityTables, CylinderHeightFour) { expect_cylinder(4.0); }
+
+TEST(CavityTables, RejectsBadSelection) {
+  auto req = request("sphere", {{"radius", 1.0}});
+  req.selection.coverage = 1.5;
+  EXPECT_THROW(compute_mode_table(req), std::runtime_error);
+}

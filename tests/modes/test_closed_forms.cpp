@@ -1,0 +1,44 @@
+// The closed forms themselves (modes/closed_forms.hpp) against numbers published independently of them.
+#include "closed_forms.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+using namespace rc::modes;
+
+TEST(ClosedForms, SpheroidWithEqualAxesIsTheSphere) {
+  const auto s = exact::spheroid(1.0, 1.0);
+  EXPECT_DOUBLE_EQ(s.mode.lambda, 1.0);
+  EXPECT_NEAR(s.mode.E, 8 * std::numbers::pi / 15, 1e-15);
+  EXPECT_NEAR(s.A_f, 8 * std::numbers::pi / 15, 1e-15);
+  EXPECT_EQ(s.J_zh, 0.0);
+}
+
+TEST(ClosedForms, CylinderDominantModeMatchesSpecValues) {
+  // SPEC §2: for a = 1, 2h = 2 the dominant mode has κ ≈ 2.00897, E ≈ 2.0544 (Stewartson).
+  const auto modes = exact::cylinder_modes(1.0, 2.0, 3, 40.0);
+  ASSERT_FALSE(modes.empty());
+  std::printf("dominant cylinder mode: kappa %.12f (SPEC 2.00897), E %.12f (SPEC 2.0544)\n", modes[0].kappa,
+              modes[0].E);
+  EXPECT_NEAR(modes[0].kappa, 2.00897, 5e-6);
+  EXPECT_NEAR(modes[0].E, 2.0544, 5e-5);
+  EXPECT_EQ(modes[0].axial, 0);
+  EXPECT_EQ(modes[0].radial, 1);
+  // Every root satisfies the dispersion relation ξ J1′(ξ) + κ J1(ξ) = 0 with ξ² = (ka)²(κ² − 1).
+  for (const auto& m : modes) {
+    const double k = (2 * m.axial + 1) * std::numbers::pi / 2.0, xi = k * std::sqrt(m.kappa * m.kappa - 1);
+    const double j0 = std::cyl_bessel_j(0.0, xi), j1 = std::cyl_bessel_j(1.0, xi);
+    EXPECT_NEAR(xi * j0 - j1 + m.kappa * j1, 0.0, 1e-10 * std::max(1.0, xi));
+  }
+}
+
+TEST(ClosedForms, CylinderZhukovskySeriesHasTheTallCylinderLimit) {
+  // A tall cylinder rotates almost like a rigid body about a transverse axis, except near the lids:
+  // J_zh/m_f → h²/3 − 3a²/4 + O(a³/h) from the series itself; check the series converged in its terms.
+  const double j1 = exact::cylinder_zhukovsky(1.0, 2.0, 2000), j2 = exact::cylinder_zhukovsky(1.0, 2.0, 4000);
+  EXPECT_NEAR(j1, j2, 1e-9 * j2);
+  const double tall = exact::cylinder_zhukovsky(1.0, 200.0) / (std::numbers::pi * 200.0);
+  EXPECT_NEAR(tall / (100.0 * 100.0 / 3 - 0.75), 1.0, 1e-3);
+}
