@@ -66,7 +66,14 @@ ModeTable compute_mode_table(const TableRequest& req, const ProgressFn& progress
   validate(req.selection);
   const auto start = Clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
-  auto report = [&](const std::string& what) { if (progress && elapsed() > 1.0) progress(fmt::format("[{:6.2f} s] {}", elapsed(), what)); };
+  // Progress only on runs that take a while, and at most about once a second.
+  double last_report = 0;
+  auto report = [&](const std::string& what) {
+    const double t = elapsed();
+    if (!progress || t < 1.0 || t - last_report < 1.0) return;
+    last_report = t;
+    progress(fmt::format("[{:6.2f} s] {}", t, what));
+  };
 
   const FESpace space(geometry::mesh_meridian(req.shape, req.mesh));
   const FluidIntegrals fluid = integrate_fluid(space);

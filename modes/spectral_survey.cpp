@@ -35,14 +35,14 @@ class VelocitySpace {
   std::size_t size() const { return W_.size(); }
   const std::vector<double>& coupling_vector() const { return W_; }
 
-  double dot(const std::vector<double>& u, const std::vector<double>& v) const {
-    double s = 0;
-    for (std::size_t g = 0; g < omega_.size(); ++g)
-      s += omega_[g] * (u[3 * g] * v[3 * g] + u[3 * g + 1] * v[3 * g + 1] + u[3 * g + 2] * v[3 * g + 2]);
-    return s;
+  // ω repeated for the three components: ⟨u, v⟩ = Σ weights ∘ u ∘ v.
+  Eigen::VectorXd component_weights() const {
+    Eigen::VectorXd w(W_.size());
+    for (std::size_t g = 0; g < omega_.size(); ++g) w.segment<3>(3 * g).setConstant(omega_[g]);
+    return w;
   }
   // Coriolis term S = 2iẑ× in the (a, b, c) representation.
-  void coriolis(const std::vector<double>& v, std::vector<double>& out) const {
+  void coriolis(const Eigen::VectorXd& v, Eigen::VectorXd& out) const {
     out.resize(v.size());
     for (std::size_t g = 0; g < omega_.size(); ++g) {
       out[3 * g] = -2 * v[3 * g + 1];
@@ -51,7 +51,7 @@ class VelocitySpace {
     }
   }
   // v <- P_H v = v − G M⁻¹ Gᵀ Ω v.
-  void project(std::vector<double>& v, const StiffnessSolver& solver) const {
+  void project(Eigen::VectorXd& v, const StiffnessSolver& solver) const {
     std::vector<double> g(ndof_, 0.0), p;
     for (std::size_t q = 0; q < omega_.size(); ++q)
       for (int i = 0; i < npe_; ++i) {
@@ -95,15 +95,16 @@ std::vector<GaussNode> gauss_rule(const std::vector<double>& alpha, const std::v
   return nodes;
 }
 
-// Largest relative move of the heavy nodes (weight > 1e-8 of the mass) between two rules.
-double rule_change(const std::vector<GaussNode>& now, const std::vector<GaussNode>& before, double mass) {
+// Largest move of the heavy nodes between two rules, relative to the slice scale max(|λ|, 0.1) used when
+// they are refined. Weights are not compared: a cluster's E comes from the eigen-solve, not from the rule.
+double rule_change(const std::vector<GaussNode>& now, const std::vector<GaussNode>& before, double mass,
+                   const SurveySettings& settings) {
   double change = 0;
   for (const auto& n : now) {
-    if (n.E < 1e-8 * mass) continue;
-    double best = std::numeric_limits<double>::infinity(), dE = 0;
-    for (const auto& b : before)
-      if (std::abs(b.lambda - n.lambda) < best) { best = std::abs(b.lambda - n.lambda); dE = std::abs(b.E - n.E); }
-    change = std::max({change, best / std::max(std::abs(n.lambda), 1e-3), dE / mass});
+    if (n.E < settings.weight_floor * mass || std::abs(n.lambda) < settings.lambda_floor) continue;
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto& b : before) best = std::min(best, std::abs(b.lambda - n.lambda));
+    change = std::max(change, best / std::max(std::abs(n.lambda), 0.1));
   }
   return change;
 }
@@ -112,42 +113,46 @@ double rule_change(const std::vector<GaussNode>& now, const std::vector<GaussNod
 
 SpectralSurvey survey_spectral_measure(const FESpace& space, double centroid_z, const StiffnessSolver& solver,
                                        const SurveySettings& settings) {
-  VelocitySpace V(space, centroid_z);
-  std::vector<double> q = V.coupling_vector();
+  const VelocitySpace V(space, centroid_z);
+  const Eigen::VectorXd weights = V.component_weights();
+  auto dot = [&](const Eigen::VectorXd& u, const Eigen::VectorXd& v) { return u.dot(weights.cwiseProduct(v)); };
+  Eigen::VectorXd q = Eigen::Map<const Eigen::VectorXd>(V.coupling_vector().data(), V.size());
   V.project(q, solver);
-  const double norm0 = std::sqrt(V.dot(q, q));
+  const double norm0 = std::sqrt(dot(q, q));
   SpectralSurvey survey;
   if (!(norm0 > 0)) { survey.exhausted = true; return survey; }  // no solenoidal coupling at all
   const double mass = std::numbers::pi * norm0 * norm0;  // = A_f − J_zh
-  for (double& x : q) x /= norm0;
-
-  std::vector<std::vector<double>> basis{q};
-  std::vector<double> alpha, beta, v;
+  const int kmax = std::max(settings.max_steps, 1);
+  Eigen::MatrixXd basis(V.size(), kmax);  // Lanczos vectors, one per column
+  basis.col(0) = q / norm0;
+  std::vector<double> alpha, beta;
   std::vector<GaussNode> previous;
-  for (int j = 0; j < settings.max_steps; ++j) {
-    V.coriolis(basis.back(), v);
+  Eigen::VectorXd v, h;
+  for (int j = 0; j < kmax; ++j) {
+    V.coriolis(basis.col(j), v);
     V.project(v, solver);
-    alpha.push_back(V.dot(basis.back(), v));
+    alpha.push_back(dot(basis.col(j), v));
     // Full re-orthogonalisation, twice (the spectrum is dense: plain Lanczos would lose orthogonality).
-    for (int pass = 0; pass < 2; ++pass)
-      for (const auto& b : basis) {
-        const double c = V.dot(b, v);
-        for (std::size_t i = 0; i < v.size(); ++i) v[i] -= c * b[i];
-      }
-    const double bnorm = std::sqrt(V.dot(v, v));
+    const auto Q = basis.leftCols(j + 1);
+    for (int pass = 0; pass < 2; ++pass) {
+      h.noalias() = Q.transpose() * weights.cwiseProduct(v);
+      v.noalias() -= Q * h;
+    }
+    const double bnorm = std::sqrt(dot(v, v));
     survey.steps = j + 1;
     if (bnorm < 1e-12 * 2) { survey.exhausted = true; break; }  // ‖A‖ <= 2: invariant subspace found
     if ((j + 1) % 10 == 0) {
       auto rule = gauss_rule(alpha, beta, mass);
-      const bool settled = !previous.empty() && rule_change(rule, previous, mass) < settings.tolerance;
+      const bool settled =
+          !previous.empty() && rule_change(rule, previous, mass, settings) < settings.tolerance;
       previous = std::move(rule);
       if (settled) break;
     }
+    if (j + 1 == kmax) break;
     beta.push_back(bnorm);
-    for (double& x : v) x /= bnorm;
-    basis.push_back(v);
+    basis.col(j + 1) = v / bnorm;
   }
-  if (beta.size() >= alpha.size()) beta.resize(alpha.size() - 1);
+  beta.resize(alpha.size() - 1);
   survey.nodes = gauss_rule(alpha, beta, mass);
   return survey;
 }

@@ -27,8 +27,11 @@ struct GaussNode {
 
 struct SurveySettings {
   int max_steps = 200;          // Lanczos steps (nodes of the Gauss rule)
-  double tolerance = 1e-6;      // stop when the heaviest nodes move less than this (relative): they only
+  double tolerance = 5e-4;      // stop when the heavy nodes move less than this (relative): they only
                                 // need to land inside their cluster slice, which the eigensolver then resolves
+  double weight_floor = 1e-3;   // "heavy": weight above this fraction of A_f − J_zh ...
+  double lambda_floor = 0.05;   // ... and |λ| above this: nodes inside the λ ≈ 0 accumulation keep moving
+                                // as the rule grows and are not refined anyway
 };
 
 struct SpectralSurvey {
