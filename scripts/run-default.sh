@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# The default job of README.md, runnable from any folder:
+#   1. install what is missing and build (scripts/build.sh -> build/),
+#   2. make the three mode tables of data/scenes/default.toml with cavity-modes into out/tables/
+#      (the "# recipe:" lines of the scene; a table is remade only when it is missing or older than
+#      the cavity-modes binary or the scene),
+#   3. chain-rom spectrum on the scene: roots and stability verdict (also saved to out/default-spectrum.txt),
+#   4. chain-rom run: time history out/default-trajectory.h5,
+#   5. plot it: out/default-trajectory.png (scripts/plot_trajectory.py, Debian's /usr/bin/python3).
+# Exits non-zero on the first failure.
+set -euo pipefail
+
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+SCENE="$ROOT/data/scenes/default.toml"
+OUT="$ROOT/out"
+TABLES="$OUT/tables"
+MODES="$ROOT/build/modes/cavity-modes"
+ROM="$ROOT/build/rom/chain-rom"
+PY=/usr/bin/python3
+START=$SECONDS
+
+step() { printf '\n[run-default %3ds] %s\n' "$((SECONDS - START))" "$*"; }
+fail() { printf '[run-default] FAILED: %s\n' "$*" >&2; exit 1; }
+
+step "1/5 install and build (scripts/build.sh)"
+bash "$ROOT/scripts/build.sh" || fail "scripts/build.sh"
+[ -x "$MODES" ] || fail "$MODES was not built (RC_BUILD_MODES off?)"
+[ -x "$ROM" ] || fail "$ROM was not built (RC_BUILD_ROM off?)"
+[ -x "$PY" ] || fail "$PY not found (Debian python3 with python3-h5py, python3-matplotlib)"
+
+step "2/5 mode tables -> ${TABLES#"$ROOT"/}"
+mkdir -p "$TABLES"
+mapfile -t RECIPES < <(sed -n 's/^# recipe: //p' "$SCENE")
+[ "${#RECIPES[@]}" -gt 0 ] || fail "no '# recipe:' lines in $SCENE"
+for recipe in "${RECIPES[@]}"; do
+  name="${recipe%%:*}"
+  read -r -a args <<< "${recipe#*:}"
+  table="$TABLES/$name"
+  if [ -f "$table" ] && [ "$table" -nt "$MODES" ] && [ "$table" -nt "$SCENE" ]; then
+    echo "  $name: up to date, kept (cavity-modes ${args[*]})"
+    continue
+  fi
+  echo "  $name: cavity-modes ${args[*]} ..."
+  t0=$SECONDS
+  if ! "$MODES" "${args[@]}" -o "$table" > "$TABLES/${name%.h5}.log" 2>&1; then
+    tail -n 20 "$TABLES/${name%.h5}.log" >&2
+    fail "cavity-modes ${args[*]} (log: $TABLES/${name%.h5}.log)"
+  fi
+  # one-line summary: mesh and dofs, coverage, number of clusters
+  summary=$(grep -m1 'dofs' "$TABLES/${name%.h5}.log" || true)
+  coverage=$(grep -o 'coverage [0-9.eE+-]*' "$TABLES/${name%.h5}.log" | head -n1 || true)
+  echo "  $name: written in $((SECONDS - t0)) s; $summary; $coverage"
+done
+
+step "3/5 chain-rom spectrum ${SCENE#"$ROOT"/}"
+"$ROM" spectrum "$SCENE" > "$OUT/default-spectrum.txt" || { cat "$OUT/default-spectrum.txt"; fail "chain-rom spectrum"; }
+cat "$OUT/default-spectrum.txt"
+
+step "4/5 chain-rom run -> out/default-trajectory.h5"
+"$ROM" run "$SCENE" -o "$OUT/default-trajectory.h5" || fail "chain-rom run"
+
+step "5/5 plot -> out/default-trajectory.png"
+"$PY" "$ROOT/scripts/plot_trajectory.py" "$OUT/default-trajectory.h5" "$OUT/default-trajectory.png" \
+  --title "default scene (data/scenes/default.toml)" || fail "scripts/plot_trajectory.py"
+
+verdict=$(grep -m1 '^stable:' "$OUT/default-spectrum.txt" || true)
+step "done in $((SECONDS - START)) s: $verdict"
+echo "  outputs: out/tables/{cylinder,cone,spheroid}.h5, out/default-spectrum.txt,"
+echo "           out/default-trajectory.h5, out/default-trajectory.png"
