@@ -35,19 +35,23 @@ std::vector<Cluster> refine_clusters(const PoincareForms& forms, const std::vect
                                      std::string* solver_description) {
   std::vector<Cluster> clusters;
   const QuadraticEigenSolver solver(forms, settings.qep);
+  if (solver_description)
+    *solver_description = "survey (Lanczos Gauss rule of the coupling measure) + SLEPc PEP stoar spectrum slicing "
+                          "(MUMPS LDL^T inertia) around each node";
   for (std::size_t i = 0; i < nodes.size(); ++i) {
     const double theta = nodes[i].lambda;
-    const double half = settings.slice_width * std::max(std::abs(theta), 0.1);
-    // Stay inside (−2, 2), where every eigenvalue lies; D = 4 − λ² > 0 there.
-    const double lo = std::max(theta - half, -1.999999), hi = std::min(theta + half, 1.999999);
-    QepSolution sol = solver.solve_interval(lo, hi);
-    if (solver_description && solver_description->empty()) {
-      *solver_description = "survey (Lanczos Gauss rule of the coupling measure) + " + sol.description +
-                            " slices around each node";
+    Cluster c;
+    double half = settings.slice_width * std::max(std::abs(theta), 0.1);
+    for (int attempt = 0; attempt <= settings.widenings; ++attempt, half *= 4) {
+      // Stay inside (−2, 2), where every eigenvalue lies; D = 4 − λ² > 0 there.
+      const double lo = std::max(theta - half, -1.999999), hi = std::min(theta + half, 1.999999);
+      QepSolution sol = solver.solve_interval(lo, hi);
+      if (sol.pairs.empty()) continue;
+      c = cluster_around_peak(sol.pairs, settings.cluster_width);
+      if (c.E >= 0.5 * nodes[i].E) break;  // the slice holds the mode the node stands for
     }
     if (progress) progress(i + 1, nodes.size());
-    if (sol.pairs.empty()) continue;
-    Cluster c = cluster_around_peak(sol.pairs, settings.cluster_width);
+    if (c.members == 0) continue;
     c.survey_lambda = theta;
     c.survey_E = nodes[i].E;
     const bool duplicate = std::any_of(clusters.begin(), clusters.end(), [&](const Cluster& o) {

@@ -18,6 +18,20 @@ namespace rc::rom::test {
 
 inline std::filesystem::path test_dir() { return std::filesystem::path(RC_ROM_TEST_DIR) / "tables"; }
 
+// A synthetic table of four modes that share the sum rule of a spheroid a = 1, c = 1.5 (0.5, 0.3, 0.15,
+// 0.05 of it), for the selection and static-correction tests.
+inline rc::ModeTable four_mode_table() {
+  rc::ModeTable t = spheroid_table(1, 1.5);
+  const double S = t.A_f - t.J_zh;
+  t.E = {0.5 * S, 0.3 * S, 0.15 * S, 0.05 * S};
+  t.lambda = {0.9, -0.5, 0.3, 0.01};
+  t.kappa = {2 / 0.9, 2 / -0.5, 2 / 0.3, 2 / 0.01};
+  t.a = {1, 1, 1, 1};
+  t.N2 = {2 / t.E[0], 2 / t.E[1], 2 / t.E[2], 2 / t.E[3]};
+  t.residual = {0, 0, 0, 0};
+  return t;
+}
+
 inline std::string num(double x) {
   std::ostringstream os;
   os.precision(17);

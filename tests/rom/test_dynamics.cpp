@@ -201,13 +201,7 @@ TEST(Energy, FrictionNeverIncreasesTheEnergy) {
 // SPEC §3: at w0 = 0 only sum E = A_f - J_zh matters. One kept mode + static correction must give the
 // tilt roots of all four modes of a synthetic table (written in test_scene.cpp's table test).
 TEST(Energy, StaticCorrectionRestoresZhukovskyInertiaAtZeroSpin) {
-  rc::ModeTable t = spheroid_table(1, 1.5);
-  const double S = t.A_f - t.J_zh;
-  t.E = {0.5 * S, 0.3 * S, 0.15 * S, 0.05 * S};
-  t.lambda = {0.9, -0.5, 0.3, 0.01};
-  t.kappa = {2 / 0.9, 2 / -0.5, 2 / 0.3, 2 / 0.01};
-  t.a = {1, 1, 1, 1}; t.N2 = {2 / t.E[0], 2 / t.E[1], 2 / t.E[2], 2 / t.E[3]};
-  t.residual = {0, 0, 0, 0};
+  const rc::ModeTable t = four_mode_table();
   write_table(t, test_dir() / "four_modes_b.h5");
   std::vector<Body> bodies = batyr_bodies(false);
   bodies[0].table = "four_modes_b.h5"; bodies[0].scale = 0.06; bodies[0].center = -0.2;

@@ -54,13 +54,8 @@ TEST(Scene, FluidMassPropertiesFollowSpecScaling) {
 
 TEST(Scene, OnlyWhatTheSceneUsesEntersTheModel) {
   // A 4-mode synthetic table; modes = 2 keeps the two largest, coverage picks the fewest modes.
-  rc::ModeTable t = spheroid_table(1, 1.5);
+  const rc::ModeTable t = four_mode_table();
   const double S = t.A_f - t.J_zh;
-  t.E = {0.5 * S, 0.3 * S, 0.15 * S, 0.05 * S};
-  t.lambda = {0.9, -0.5, 0.3, 0.01};
-  t.kappa = {2 / 0.9, 2 / -0.5, 2 / 0.3, 2 / 0.01};
-  t.a = {1, 1, 1, 1}; t.N2 = {2 / t.E[0], 2 / t.E[1], 2 / t.E[2], 2 / t.E[3]};
-  t.residual = {0, 0, 0, 0};
   write_table(t, test_dir() / "four_modes.h5");
   Body with; with.table = "four_modes.h5"; with.spin = 10;
   Body without;
