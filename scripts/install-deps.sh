@@ -12,6 +12,7 @@ PACKAGES=(
   libcli11-dev libtomlplusplus-dev libfmt-dev nlohmann-json3-dev
   libgtest-dev
   python3-h5py python3-matplotlib python3-numpy   # plotting scripts (Debian's /usr/bin/python3)
+  python3-scipy                         # bench/cavity_modes_bench.py: Bessel functions for the exact cylinder modes
 )
 
 missing=()
