@@ -299,7 +299,10 @@ def time_targets(binary, rows, exact, repeat, log):
     `repeat` times (with the target's extra arguments, e.g. --modes 1 for the dominant mode alone); the fastest
     median that still meets the accuracy is reported."""
     results = []
+    swept = {r["shape"] for r in rows}
     for name, shape, cols, tol, tmax, extra in TARGETS:
+        if shape not in swept:
+            continue
         ok = sorted((r for r in rows if r["shape"] == shape and meets(r, cols, tol)), key=lambda r: fnum(r["process_s"]))
         best = None
         for r in ok[:3]:
