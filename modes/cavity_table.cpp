@@ -22,41 +22,41 @@ void validate(const ModeSelection& s) {
     throw std::runtime_error(fmt::format("--coverage must be in (0, 1] (got {})", *s.coverage));
 }
 
-// Survey nodes worth refining, heaviest first.
+// How many of the items, sorted by E descending, the selection keeps (cavity_table.hpp).
+template <class Item>
+std::size_t selected_count(const std::vector<Item>& items, const ModeSelection& sel, double sum_rule) {
+  if (sel.modes) return std::min<std::size_t>(items.size(), *sel.modes);
+  std::size_t keep = 0;
+  if (sel.coverage) {
+    for (double sum = 0; keep < items.size() && sum < *sel.coverage * sum_rule;) sum += items[keep++].E;
+    return keep;
+  }
+  while (keep < items.size() && items[keep].E >= sel.default_threshold * sum_rule) ++keep;
+  return keep;
+}
+
+template <class Item>
+void sort_by_energy(std::vector<Item>& items) {
+  std::sort(items.begin(), items.end(), [](const Item& a, const Item& b) { return a.E > b.E; });
+}
+
+// Survey nodes worth refining, heaviest first. A node's weight only approximates its cluster's E, and two
+// nodes may refine to one cluster, so a few spare nodes are refined beyond what the selection asks for.
 std::vector<GaussNode> candidate_nodes(const SpectralSurvey& survey, const ModeSelection& sel, double sum_rule) {
   std::vector<GaussNode> nodes;
   for (const auto& n : survey.nodes)
     if (std::abs(n.lambda) >= sel.geostrophic_cutoff && n.E > 1e-14 * sum_rule) nodes.push_back(n);
-  std::sort(nodes.begin(), nodes.end(), [](const GaussNode& a, const GaussNode& b) { return a.E > b.E; });
-  std::size_t keep = nodes.size();
-  if (sel.modes) {
-    keep = static_cast<std::size_t>(*sel.modes) + std::max(5, *sel.modes / 2);  // spares for merged duplicates
-  } else if (sel.coverage) {
-    double sum = 0;
-    keep = 0;
-    while (keep < nodes.size() && sum < *sel.coverage * sum_rule) sum += nodes[keep++].E;
-    keep += 5;  // a node's weight only approximates its cluster's E
-  } else {
-    keep = std::count_if(nodes.begin(), nodes.end(), [&](const GaussNode& n) { return n.E >= sel.default_threshold * sum_rule; });
-  }
-  nodes.resize(std::min({keep, nodes.size(), static_cast<std::size_t>(std::max(sel.max_clusters, sel.modes.value_or(0) + 10))}));
+  sort_by_energy(nodes);
+  const std::size_t spares = sel.modes ? std::max(5, *sel.modes / 2) : sel.coverage ? 5 : 0;
+  const std::size_t cap = std::max(sel.max_clusters, sel.modes.value_or(0) + 10);
+  nodes.resize(std::min({selected_count(nodes, sel, sum_rule) + spares, nodes.size(), cap}));
   return nodes;
 }
 
 std::vector<Cluster> select_clusters(std::vector<Cluster> clusters, const ModeSelection& sel, double sum_rule) {
-  std::sort(clusters.begin(), clusters.end(), [](const Cluster& a, const Cluster& b) { return a.E > b.E; });
-  std::size_t keep = clusters.size();
-  if (sel.modes) {
-    keep = std::min<std::size_t>(keep, *sel.modes);
-  } else if (sel.coverage) {
-    double sum = 0;
-    keep = 0;
-    while (keep < clusters.size() && sum < *sel.coverage * sum_rule) sum += clusters[keep++].E;
-  } else {
-    keep = std::count_if(clusters.begin(), clusters.end(), [&](const Cluster& c) { return c.E >= sel.default_threshold * sum_rule; });
-    keep = std::max<std::size_t>(keep, std::min<std::size_t>(1, clusters.size()));
-  }
-  clusters.resize(keep);
+  sort_by_energy(clusters);
+  // A table always has its heaviest cluster, even if it falls below the default threshold.
+  clusters.resize(std::max(selected_count(clusters, sel, sum_rule), std::min<std::size_t>(1, clusters.size())));
   return clusters;
 }
 
