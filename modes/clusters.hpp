@@ -30,7 +30,6 @@ struct Cluster {
   double spread = 0;     // E-weighted standard deviation of the members' λ
   double residual = 0;   // worst backward error of the members
   int members = 0;
-  double survey_lambda = 0, survey_E = 0;  // the Gauss node it was refined from
 };
 
 struct ClusterSettings {

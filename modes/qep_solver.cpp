@@ -58,9 +58,6 @@ QepSolution QuadraticEigenSolver::solve_interval(double lo, double hi) const {
   petsc_check(PEPSolve(pep), where);
 
   QepSolution sol = collect(pep);
-  char buf[160];
-  std::snprintf(buf, sizeof buf, "SLEPc PEP stoar, spectrum slicing [%.6g, %.6g], MUMPS LDL^T", lo, hi);
-  sol.description = buf;
   return sol;
 }
 
@@ -72,7 +69,6 @@ QepSolution QuadraticEigenSolver::collect(PEP pep) const {
     throw std::runtime_error("the eigensolver did not converge (SLEPc reason " +
                              std::to_string(static_cast<int>(reason)) + ")");
   QepSolution sol;
-  petsc_check(PEPGetIterationNumber(pep, &sol.iterations), "PEPGetIterationNumber");
   PetscInt nconv = 0;
   petsc_check(PEPGetConverged(pep, &nconv), "PEPGetConverged");
   PVec xr, xi;
@@ -113,7 +109,6 @@ QepSolution QuadraticEigenSolver::solve_all_dense(int max_dense_dofs) const {
   if (static_cast<PetscInt>(sol.pairs.size()) != 2 * n)
     throw std::runtime_error("dense eigen-solve returned " + std::to_string(sol.pairs.size()) + " of " +
                              std::to_string(2 * n) + " eigenpairs");
-  sol.description = "SLEPc PEP linear + LAPACK (all eigenpairs)";
   return sol;
 }
 

@@ -28,8 +28,6 @@ struct QepSettings {
 
 struct QepSolution {
   std::vector<Eigenpair> pairs;  // sorted by λ ascending
-  std::string description;       // e.g. "SLEPc PEP stoar, spectrum slicing [0.05, 1.99], MUMPS LDLt"
-  int iterations = 0;
 };
 
 class QuadraticEigenSolver {
