@@ -2,11 +2,13 @@
 //
 //   cavity-modes cylinder --radius 1 --height 2 [--order 4] [--mesh-size 0.2] [--modes N | --coverage c] -o cyl.h5
 //   cavity-modes info cyl.h5 [--json]
+//   cavity-modes compare cyl.h5 data/reference/cylinder_radius1_height2.csv [--tolerance 1e-6]
 // PETSc/SLEPc options (-pep_type ..., -log_view) pass through.
 #include "cavity_table.hpp"
 #include "command_line.hpp"
 #include "mode_table_report.hpp"
 #include "petsc_handles.hpp"
+#include "reference_table.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -74,13 +76,23 @@ int run(int argc, char** argv) {
   info->add_option("file", info_file, "mode table (HDF5)")->required();
   info->add_flag("--json", json, "print SPEC section 4's JSON object");
 
+  std::string compare_table, compare_reference;
+  double compare_tolerance = 1e-6;
+  auto* compare = app.add_subcommand("compare", "compare a table's kappa and E with a reference CSV (published or "
+                                                "closed-form values, docs/reference-tables.md); fails past the "
+                                                "tolerance");
+  compare->add_option("file", compare_table, "mode table (HDF5)")->required();
+  compare->add_option("reference", compare_reference, "reference table (CSV)")->required();
+  compare->add_option("--tolerance", compare_tolerance, "largest relative difference of kappa and E accepted")
+      ->capture_default_str();
+
   const auto commands = app.get_subcommands([](CLI::App*) { return true; });
   const bool known = std::any_of(commands.begin(), commands.end(), [&](CLI::App* c) {
     return args.ours.size() > 1 && c->get_name() == args.ours[1];
   });
   if (args.ours.size() > 1 && args.ours[1][0] != '-' && !known)
     throw std::runtime_error("unknown shape or command '" + args.ours[1] +
-                             "' (expected sphere, spheroid, cylinder, cone, section or info)");
+                             "' (expected sphere, spheroid, cylinder, cone, section, info or compare)");
   std::vector<char*> ours;
   for (auto& a : args.ours) ours.push_back(a.data());
   try {
@@ -95,6 +107,14 @@ int run(int argc, char** argv) {
   if (info->parsed()) {
     auto table = rc::read_mode_table(info_file);
     std::cout << (json ? rc::modes::table_json(table) : rc::modes::table_text(table)) << std::flush;
+    return 0;
+  }
+  if (compare->parsed()) {
+    const auto table = rc::read_mode_table(compare_table);
+    const auto cmp = rc::modes::compare_with_reference(table, rc::modes::read_reference_csv(compare_reference),
+                                                       compare_tolerance, compare_reference);
+    std::cout << rc::modes::comparison_text(cmp, table, compare_table, compare_reference) << std::flush;
+    if (cmp.failing > 0) throw std::runtime_error(rc::modes::comparison_failure(cmp, compare_reference));
     return 0;
   }
   if (section->parsed()) req.shape.kind = "section";
