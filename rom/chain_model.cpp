@@ -14,14 +14,17 @@ namespace {
 
 // Fluid of body k: mass, frozen inertia, centre of mass, kept modes (SPEC §4 scaling).
 void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
-               std::vector<FluidMode>& modes) {
+               std::vector<FluidMode>& modes, TableCache* tables) {
   const std::string w = "body[" + std::to_string(k + 1) + "].cavity";
-  rc::ModeTable t;
+  rc::ModeTable own;
+  const rc::ModeTable* tp = &own;
   try {
-    t = rc::read_mode_table(cav.table);
+    if (tables) tp = &tables->get(cav.table);
+    else own = rc::read_mode_table(cav.table);
   } catch (const std::exception& e) {
     fail(scene, w + ".table", e.what());
   }
+  const rc::ModeTable& t = *tp;
   if (t.m != 1) fail(scene, w + ".table", cav.table.string() + " holds m = " + std::to_string(t.m) +
                                  " modes; only m = 1 modes couple to the tilt");
   const double rho = cav.density, L = cav.scale;
@@ -80,7 +83,14 @@ void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
 
 }  // namespace
 
-ChainModel build_model(const Scene& scene) {
+const rc::ModeTable& TableCache::get(const std::filesystem::path& file) {
+  const std::string key = file.lexically_normal().string();
+  auto it = tables_.find(key);
+  if (it == tables_.end()) it = tables_.emplace(key, rc::read_mode_table(file)).first;
+  return it->second;
+}
+
+ChainModel build_model(const Scene& scene, TableCache* tables) {
   ChainModel cm;
   const int n = static_cast<int>(scene.size());
   cm.n = n;
@@ -93,7 +103,7 @@ ChainModel build_model(const Scene& scene) {
     b.s = (k + 1 < n) ? bs.next_joint : 0.0;
     double m = bs.mass, first = bs.mass * bs.com, A = bs.A, C = bs.C;
     if (bs.cavity) {
-      add_fluid(scene, k, *bs.cavity, b, cm.modes);
+      add_fluid(scene, k, *bs.cavity, b, cm.modes, tables);
       const double d = bs.cavity->center;
       m += b.m_f;
       first += b.m_f * d;

@@ -3,10 +3,12 @@
 // (docs/free-chain.md), with elastic joints (27) and joint friction (seed 002 (43)).
 #pragma once
 
+#include "mode_table.hpp"
 #include "scene.hpp"
 
 #include <Eigen/Dense>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -49,9 +51,21 @@ struct ChainModel {
   bool has_friction() const { return D.cwiseAbs().maxCoeff() > 0; }
 };
 
-// Builds the model; reads the mode tables. Throws SceneError naming the key on a bad table
-// (not a table, m != 1, modes above the table's count, coverage not reachable) or when the
-// effective inertia matrix is not positive definite.
-ChainModel build_model(const Scene& scene);
+// Mode tables read once and kept, for callers that build many models from one scene (sweeps).
+// get() reads a file the first time it is asked for (throws what rc::read_mode_table throws);
+// once every table is in, concurrent get() calls only read the map.
+class TableCache {
+ public:
+  const rc::ModeTable& get(const std::filesystem::path& file);
+  std::size_t size() const { return tables_.size(); }
+
+ private:
+  std::map<std::string, rc::ModeTable> tables_;
+};
+
+// Builds the model; reads the mode tables (through `tables` when given, else from disk). Throws
+// SceneError naming the key on a bad table (not a table, m != 1, modes above the table's count,
+// coverage not reachable) or when the effective inertia matrix is not positive definite.
+ChainModel build_model(const Scene& scene, TableCache* tables = nullptr);
 
 }  // namespace rc::rom

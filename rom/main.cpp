@@ -5,10 +5,50 @@
 #include "propagation.hpp"
 #include "scene.hpp"
 #include "spectrum.hpp"
+#include "sweep.hpp"
 
 #include <CLI/CLI.hpp>
 
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <iostream>
+#include <optional>
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+
+extern char** environ;
+
+namespace {
+
+// Runs argv[0] with the arguments (no shell); returns its exit status, or -1 if it cannot start.
+int run_program(const std::vector<std::string>& args, bool quiet = false) {
+  std::vector<char*> argv;
+  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  if (quiet) {
+    posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&fa, 2, "/dev/null", O_WRONLY, 0);
+  }
+  pid_t pid;
+  const int rc = posix_spawn(&pid, argv[0], &fa, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&fa);
+  if (rc != 0) return -1;
+  int status = 0;
+  if (waitpid(pid, &status, 0) < 0) return -1;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
+}
+
+// The Python that draws sweep maps: Debian's (python3-matplotlib), or $CHAIN_ROM_PYTHON.
+std::string plot_python() {
+  const char* env = std::getenv("CHAIN_ROM_PYTHON");
+  return env && *env ? env : "/usr/bin/python3";
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"chain-rom: stability and motion of a chain of n spinning bodies with fluid-filled "
@@ -22,12 +62,97 @@ int main(int argc, char** argv) {
   auto* run = app.add_subcommand("run", "time histories of u_k and the fluid coordinates with the energy monitored");
   run->add_option("SCENE", scene_file, "scene file (TOML)")->required();
   run->add_option("-o,--output", out_file, "output file: HDF5, or CSV when the name ends in .csv")->required();
+
+  auto* sweep = app.add_subcommand(
+      "sweep", "stability map: verdict, margin and number of non-real roots over one or two scene values "
+               "(keys like body[1].spin, joint[2].stiffness, body[3].cavity.density, system.gravity; docs/rom.md)");
+  std::string key1, key2, png_file;
+  double from1 = 0, to1 = 0, from2 = 0, to2 = 0;
+  int steps1 = 0, steps2 = 0, threads = 0;
+  sweep->add_option("SCENE", scene_file, "scene file (TOML)")->required();
+  sweep->add_option("--param", key1, "scene value to sweep, e.g. body[1].spin (1-based indices)")->required();
+  sweep->add_option("--from", from1, "first value")->required();
+  sweep->add_option("--to", to1, "last value")->required();
+  sweep->add_option("--steps", steps1, "number of values, from..to inclusive (>= 1)")->required();
+  sweep->add_option("--param2", key2, "second scene value (2D map)");
+  auto* f2 = sweep->add_option("--from2", from2, "first value of --param2");
+  auto* t2 = sweep->add_option("--to2", to2, "last value of --param2");
+  auto* s2 = sweep->add_option("--steps2", steps2, "number of values of --param2 (>= 1)");
+  sweep->add_option("-o,--output", out_file, "CSV: <key>[,<key2>],stable,margin,nonreal, one row per point")->required();
+  sweep->add_option("--png", png_file, "also draw the map (scripts/plot_sweep.py with /usr/bin/python3 + matplotlib)");
+  sweep->add_option("--threads", threads, "worker threads (default: all cores)");
+
+  app.failure_message([](const CLI::App*, const CLI::Error& e) {
+    std::string msg = e.what();
+    for (auto& ch : msg) if (ch == '\n') ch = ' ';
+    return "chain-rom: error: " + msg + " (--help for usage)\n";
+  });
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }
   try {
+    if (sweep->parsed()) {
+      using namespace rc::rom;
+      const bool two = !key2.empty();
+      if (two != (f2->count() > 0) || two != (t2->count() > 0) || two != (s2->count() > 0))
+        throw SweepError("--param2, --from2, --to2 and --steps2 go together");
+      if (steps1 < 1) throw SweepError("--steps " + std::to_string(steps1) + ": must be >= 1");
+      if (two && steps2 < 1) throw SweepError("--steps2 " + std::to_string(steps2) + ": must be >= 1");
+      if (two && key2 == key1) throw SweepError("--param2 " + key2 + ": same key as --param");
+      const Scene scene = parse_scene(scene_file);
+      SweepAxis a1{parse_param_key(key1, scene, "--param"), from1, to1, steps1};
+      check_param_value(a1.key, from1, "--from (--param)");
+      check_param_value(a1.key, to1, "--to (--param)");
+      std::optional<SweepAxis> a2;
+      if (two) {
+        a2 = SweepAxis{parse_param_key(key2, scene, "--param2"), from2, to2, steps2};
+        check_param_value(a2->key, from2, "--from2 (--param2)");
+        check_param_value(a2->key, to2, "--to2 (--param2)");
+      }
+      const std::filesystem::path out(out_file);
+      if (out.has_parent_path() && !std::filesystem::is_directory(out.parent_path()))
+        throw std::runtime_error(out_file + ": the output folder does not exist");
+      const std::string script = RC_PLOT_SWEEP_SCRIPT, python = plot_python();
+      if (!png_file.empty()) {  // fail before the sweep, not after it
+        if (!std::filesystem::exists(script))
+          throw std::runtime_error("--png: " + script + " not found (the source tree's scripts/)");
+        if (run_program({python, "-c", "import matplotlib, numpy"}, true) != 0)
+          throw std::runtime_error("--png: " + python + " with matplotlib and numpy is needed to draw the map "
+                                   "(apt-get install python3-matplotlib); nothing written");
+      }
+      TableCache tables;
+      (void)build_model(scene, &tables);  // validates the scene as given and reads its tables once
+      const SweepResult r = run_sweep(scene, tables, a1, a2, threads, [](long d, long total, double el) {
+        std::fprintf(stderr, "chain-rom sweep: %ld/%ld points, %.1f s, about %.0f s left\n", d, total, el,
+                     el * static_cast<double>(total - d) / static_cast<double>(d));
+      });
+      write_sweep_csv(r, a1, a2, out);
+      int stable = 0;
+      for (const auto& p : r.points) stable += (p.ok && p.verdict.stable) ? 1 : 0;
+      std::printf("wrote %s: %zu points (%d stable, %d unstable, %d failed), %.3g s on %d thread%s\n",
+                  out_file.c_str(), r.points.size(), stable, static_cast<int>(r.points.size()) - stable - r.failed,
+                  r.failed, r.wall_seconds, r.threads, r.threads == 1 ? "" : "s");
+      std::fflush(stdout);
+      if (r.failed > 0)
+        for (const auto& p : r.points)
+          if (!p.ok) {
+            std::string msg = p.error;
+            for (auto& ch : msg) if (ch == '\n') ch = ' ';
+            std::fprintf(stderr, "chain-rom sweep: warning: %d points not evaluated (nan in the CSV); first at %s = %g: %s\n",
+                         r.failed, key1.c_str(), p.v1, msg.c_str());
+            break;
+          }
+      if (!png_file.empty()) {
+        const int rc = run_program({python, script, out_file, png_file});
+        if (rc != 0)
+          throw std::runtime_error("--png: " + script + " failed (exit " + std::to_string(rc) + "); the CSV " +
+                                   out_file + " was written, no PNG");
+        std::printf("wrote %s\n", png_file.c_str());
+      }
+      return 0;
+    }
     const rc::rom::Scene scene = rc::rom::parse_scene(scene_file);
     const rc::rom::ChainModel model = rc::rom::build_model(scene);
     if (spec->parsed()) {

@@ -26,11 +26,22 @@ struct Spectrum {
   double growth = 0;           // largest -Im sigma (> tolerance: a growing solution)
   double det_residual = 0;     // worst scaled residual over the roots where (22) is defined
   int unchecked = 0;           // roots at sigma = 0 or at a pole of (22)
+  int nonreal = 0;             // roots with |Im sigma| > tolerance
+};
+
+// The verdict alone (eigenvalues only: no eigenvectors, owners or det residuals), by the same
+// rules as compute_spectrum; what `chain-rom sweep` evaluates at every point.
+struct Verdict {
+  bool stable = false;
+  double margin = 0, growth = 0, tolerance = 0;
+  int nonreal = 0;
+  int roots = 0;
 };
 
 // Relative tolerance on |Im sigma| (times the spectral radius) for calling a root real.
 inline constexpr double kRealTolerance = 1e-7;
 
 Spectrum compute_spectrum(const ChainModel& m);
+Verdict compute_verdict(const ChainModel& m);
 
 }  // namespace rc::rom

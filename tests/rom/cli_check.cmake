@@ -1,5 +1,9 @@
 # Runs EXE with ARGS in WD; checks the exit code, that stdout+stderr match MATCH, and that NO_FILE
-# (if given) does not exist afterwards (no partial output file).
+# (if given) does not exist afterwards (no partial output file). PYTHON sets CHAIN_ROM_PYTHON (the
+# interpreter `sweep --png` runs); LINES_FILE, if given, must have LINES lines.
+if(NOT "${PYTHON}" STREQUAL "")
+  set(ENV{CHAIN_ROM_PYTHON} "${PYTHON}")
+endif()
 execute_process(COMMAND ${EXE} ${ARGS} WORKING_DIRECTORY ${WD} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message("exit ${rc}\nstdout: ${out}\nstderr: ${err}")
 if(NOT rc EQUAL EXPECT_EXIT)
@@ -20,6 +24,13 @@ if(NOT EXPECT_EXIT EQUAL 0)
 endif()
 if(NOT "${NO_FILE}" STREQUAL "" AND EXISTS ${WD}/${NO_FILE})
   message(FATAL_ERROR "${NO_FILE} was left behind")
+endif()
+if(NOT "${LINES_FILE}" STREQUAL "")
+  file(STRINGS ${WD}/${LINES_FILE} _lines)
+  list(LENGTH _lines _n)
+  if(NOT _n EQUAL LINES)
+    message(FATAL_ERROR "${LINES_FILE} has ${_n} lines, expected ${LINES}")
+  endif()
 endif()
 file(GLOB leftovers ${WD}/*.tmp-*)
 if(leftovers)

@@ -7,10 +7,11 @@ add_test(NAME rom_cli_setup
 set_tests_properties(rom_cli_setup PROPERTIES FIXTURES_SETUP rom_cli)
 
 function(rom_cli name)
-  cmake_parse_arguments(T "" "EXPECT_EXIT;MATCH;NO_FILE" "ARGS" ${ARGN})
+  cmake_parse_arguments(T "" "EXPECT_EXIT;MATCH;NO_FILE;PYTHON;LINES;LINES_FILE" "ARGS" ${ARGN})
   add_test(NAME rom_cli_${name}
     COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:chain-rom> "-DARGS=${T_ARGS}" -DEXPECT_EXIT=${T_EXPECT_EXIT}
-            "-DMATCH=${T_MATCH}" "-DNO_FILE=${T_NO_FILE}" -DWD=${_scenes} -P ${CMAKE_CURRENT_SOURCE_DIR}/cli_check.cmake)
+            "-DMATCH=${T_MATCH}" "-DNO_FILE=${T_NO_FILE}" "-DPYTHON=${T_PYTHON}" "-DLINES=${T_LINES}"
+            "-DLINES_FILE=${T_LINES_FILE}" -DWD=${_scenes} -P ${CMAKE_CURRENT_SOURCE_DIR}/cli_check.cmake)
   set_tests_properties(rom_cli_${name} PROPERTIES FIXTURES_REQUIRED rom_cli)
 endfunction()
 
@@ -29,3 +30,34 @@ rom_cli(bad_joints ARGS spectrum;bad_joints.toml EXPECT_EXIT 1 MATCH "joint: the
 rom_cli(bad_tilt ARGS run;bad_tilt.toml;-o;out_bad_tilt.h5 EXPECT_EXIT 1 MATCH "initial\\.tilt: has 1 entries" NO_FILE out_bad_tilt.h5)
 rom_cli(bad_output_dir ARGS run;two_tops.toml;-o;no_such_dir/out.h5 EXPECT_EXIT 1 MATCH "output folder does not exist" NO_FILE no_such_dir/out.h5)
 rom_cli(missing_scene ARGS spectrum;nope.toml EXPECT_EXIT 1 MATCH "nope.toml: cannot open")
+
+# Stability maps (chain-rom sweep): a 2D sweep writes K x K2 rows (+ header); bad keys, indices and
+# step counts give one line naming the cause, exit 1 and no file.
+set(_sw sweep;top_spheroid.toml)
+rom_cli(sweep_1d ARGS ${_sw};--param;body[1].spin;--from;50;--to;300;--steps;6;-o;out_sweep1.csv EXPECT_EXIT 0
+        MATCH "wrote out_sweep1.csv: 6 points" LINES 7 LINES_FILE out_sweep1.csv)
+rom_cli(sweep_2d ARGS ${_sw};--param;body[1].spin;--from;50;--to;300;--steps;4;--param2;body[1].cavity.density;--from2;500;--to2;1500;--steps2;3;-o;out_sweep2.csv
+        EXPECT_EXIT 0 MATCH "wrote out_sweep2.csv: 12 points" LINES 13 LINES_FILE out_sweep2.csv)
+rom_cli(sweep_bad_key ARGS ${_sw};--param;body[1].colour;--from;0;--to;1;--steps;3;-o;out_bad_sweep.csv EXPECT_EXIT 1
+        MATCH "^chain-rom: error: --param body\\[1\\]\\.colour: unknown key" NO_FILE out_bad_sweep.csv)
+rom_cli(sweep_non_numeric ARGS ${_sw};--param;body[1].cavity.table;--from;0;--to;1;--steps;3;-o;out_bad_sweep.csv EXPECT_EXIT 1
+        MATCH "--param body\\[1\\]\\.cavity\\.table: not a sweepable number" NO_FILE out_bad_sweep.csv)
+rom_cli(sweep_bad_index ARGS ${_sw};--param;body[2].spin;--from;0;--to;1;--steps;3;-o;out_bad_sweep.csv EXPECT_EXIT 1
+        MATCH "--param body\\[2\\]\\.spin: body index 2 out of range 1\\.\\.1" NO_FILE out_bad_sweep.csv)
+rom_cli(sweep_bad_index2 ARGS ${_sw};--param;body[1].spin;--from;0;--to;1;--steps;3;--param2;joint[1].stiffness;--from2;0;--to2;1;--steps2;2;-o;out_bad_sweep.csv
+        EXPECT_EXIT 1 MATCH "--param2 joint\\[1\\]\\.stiffness: the scene has no joints" NO_FILE out_bad_sweep.csv)
+rom_cli(sweep_bad_steps ARGS ${_sw};--param;body[1].spin;--from;0;--to;1;--steps;0;-o;out_bad_sweep.csv EXPECT_EXIT 1
+        MATCH "--steps 0: must be >= 1" NO_FILE out_bad_sweep.csv)
+rom_cli(sweep_bad_steps2 ARGS ${_sw};--param;body[1].spin;--from;0;--to;1;--steps;2;--param2;system.gravity;--from2;0;--to2;1;--steps2;-3;-o;out_bad_sweep.csv
+        EXPECT_EXIT 1 MATCH "--steps2 -3: must be >= 1" NO_FILE out_bad_sweep.csv)
+rom_cli(sweep_bad_value ARGS ${_sw};--param;body[1].mass;--from;-1;--to;1;--steps;3;-o;out_bad_sweep.csv EXPECT_EXIT 1
+        MATCH "--from \\(--param\\) body\\[1\\]\\.mass: value -1 out of range: must be >= 0" NO_FILE out_bad_sweep.csv)
+rom_cli(sweep_no_python ARGS ${_sw};--param;body[1].spin;--from;50;--to;300;--steps;3;-o;out_bad_sweep.csv;--png;out_bad_sweep.png
+        PYTHON /nonexistent/python3 EXPECT_EXIT 1 MATCH "--png: /nonexistent/python3 with matplotlib" NO_FILE out_bad_sweep.csv)
+execute_process(COMMAND /usr/bin/python3 -c "import matplotlib, numpy" RESULT_VARIABLE _no_mpl OUTPUT_QUIET ERROR_QUIET)
+if(_no_mpl EQUAL 0)
+  rom_cli(sweep_png ARGS ${_sw};--param;body[1].spin;--from;50;--to;300;--steps;4;--param2;system.gravity;--from2;0;--to2;20;--steps2;3;-o;out_sweep3.csv;--png;out_sweep3.png
+          EXPECT_EXIT 0 MATCH "wrote out_sweep3.png")
+else()
+  message(STATUS "rom_cli_sweep_png not registered: /usr/bin/python3 lacks matplotlib or numpy")
+endif()

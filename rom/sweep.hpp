@@ -1,0 +1,75 @@
+// Stability maps (`chain-rom sweep`): the verdict and margin of a scene over one or two of its
+// numeric values. The scene is parsed once and its mode tables read once; each point changes the
+// value in the parsed Scene and rebuilds only the model (docs/rom.md, "Stability maps").
+#pragma once
+
+#include "chain_model.hpp"
+#include "scene.hpp"
+#include "spectrum.hpp"
+
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace rc::rom {
+
+struct SweepError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// A numeric scene value named by a key such as `body[2].spin`, `joint[1].stiffness`,
+// `body[3].cavity.density`, `system.gravity`, `support.friction` (1-based indices).
+struct ParamKey {
+  std::string text;   // as the user wrote it
+  enum class Where { system, support, body, cavity, joint } where = Where::system;
+  int index = 0;      // 0-based body or joint index
+  std::string field;  // e.g. "spin", "density"
+};
+
+// Parses KEY and checks it against the scene (index in range, the body has a cavity, ...).
+// Throws SweepError("<option> <KEY>: <cause>") — one line naming the key.
+ParamKey parse_param_key(const std::string& key, const Scene& scene, const std::string& option = "--param");
+// The value the key names, in the scene (read and write).
+double& param_ref(Scene& scene, const ParamKey& key);
+// Throws SweepError if `value` is outside the key's allowed range (docs/scene-format.md).
+void check_param_value(const ParamKey& key, double value, const std::string& option);
+
+struct SweepAxis {
+  ParamKey key;
+  double from = 0, to = 0;
+  int steps = 1;  // >= 1 points from `from` to `to` inclusive (1: `from` only)
+  double value(int i) const { return steps == 1 ? from : from + (to - from) * i / (steps - 1); }
+};
+
+struct SweepPoint {
+  double v1 = 0, v2 = 0;
+  bool ok = false;    // false: the model could not be built or solved there (see error)
+  Verdict verdict;
+  std::string error;
+};
+
+struct SweepResult {
+  std::vector<SweepPoint> points;  // axis-1 index outer, axis-2 index inner
+  int failed = 0;
+  double wall_seconds = 0;
+  int threads = 1;
+};
+
+// Progress callback: (points done, total, seconds elapsed).
+using SweepProgress = std::function<void(long, long, double)>;
+
+// Runs the sweep on `threads` threads (0: std::thread::hardware_concurrency()). `tables` must
+// already hold every table the scene names (build the model of `base` through it once first).
+SweepResult run_sweep(const Scene& base, TableCache& tables, const SweepAxis& a1,
+                      const std::optional<SweepAxis>& a2, int threads = 0,
+                      const SweepProgress& progress = {});
+
+// CSV: header `<KEY1>[,<KEY2>],stable,margin,nonreal`, one row per point; points where the model
+// could not be built have stable, margin and nonreal = nan. Temporary name, then rename.
+void write_sweep_csv(const SweepResult& r, const SweepAxis& a1, const std::optional<SweepAxis>& a2,
+                     const std::filesystem::path& out);
+
+}  // namespace rc::rom

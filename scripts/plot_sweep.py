@@ -1,0 +1,96 @@
+#!/usr/bin/python3
+"""Draws a chain-rom stability map (CSV from `chain-rom sweep ... -o OUT.csv`) as a PNG.
+
+    /usr/bin/python3 scripts/plot_sweep.py SWEEP.csv OUT.png [--title TEXT]
+
+One swept value: the margin (largest |Im sigma|, rad/s) against the value, unstable points marked.
+Two: a map over both values, the margin in colour (log scale) on the unstable points, stable points
+white, the stability boundary drawn. Points the sweep could not evaluate (nan) are grey.
+`chain-rom sweep --png` runs this script. Uses Debian's python3-matplotlib and python3-numpy.
+"""
+import argparse
+import os
+import sys
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("csv", help="CSV written by chain-rom sweep")
+    ap.add_argument("png", help="PNG to write")
+    ap.add_argument("--title", default=None, help="figure title (default: the CSV's file name)")
+    args = ap.parse_args()
+    try:
+        import matplotlib
+
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        from matplotlib.colors import LogNorm
+        import numpy as np
+    except ImportError as e:
+        print(f"plot_sweep: error: {e} (apt-get install python3-matplotlib python3-numpy)", file=sys.stderr)
+        return 2
+
+    try:
+        with open(args.csv) as f:
+            header = f.readline().strip().split(",")
+        data = np.genfromtxt(args.csv, delimiter=",", skip_header=1, ndmin=2)
+        if header[-3:] != ["stable", "margin", "nonreal"] or len(header) not in (4, 5):
+            raise ValueError("not a chain-rom sweep CSV (header must end in stable,margin,nonreal)")
+        if data.size == 0 or data.shape[1] != len(header):
+            raise ValueError("no rows, or rows do not match the header")
+    except (OSError, ValueError) as e:
+        print(f"plot_sweep: error: {args.csv}: {e}", file=sys.stderr)
+        return 1
+
+    keys = header[:-3]
+    stable, margin = data[:, -3], data[:, -2]
+    title = args.title or os.path.basename(args.csv)
+    fig, ax = plt.subplots(figsize=(7, 5), dpi=110)
+    if len(keys) == 1:
+        x = data[:, 0]
+        ax.plot(x, margin, "-", color="0.3", lw=1, label="margin")
+        uns = stable == 0
+        ax.plot(x[uns], margin[uns], "o", ms=3, color="tab:red", label="unstable")
+        ax.plot(x[stable == 1], margin[stable == 1], "o", ms=3, color="tab:green", label="stable")
+        ax.set_xlabel(keys[0])
+        ax.set_ylabel("margin: largest |Im σ| (rad/s)")
+        ax.legend(loc="best")
+        ax.grid(alpha=0.3)
+    else:
+        x, y = np.unique(data[:, 0]), np.unique(data[:, 1])
+        if len(x) * len(y) != len(data):
+            print(f"plot_sweep: error: {args.csv}: 2D sweep rows do not form a grid", file=sys.stderr)
+            return 1
+        # rows: first value outer, second inner
+        S = stable.reshape(len(x), len(y)).T
+        Mg = margin.reshape(len(x), len(y)).T
+        shown = np.where(S == 0, Mg, np.nan)
+        ax.set_facecolor("0.75")  # nan: not evaluated
+        ax.pcolormesh(x, y, np.where(S == 1, 1.0, np.nan), cmap="Greys", vmin=0, vmax=100, shading="nearest")
+        pos = shown[np.isfinite(shown) & (shown > 0)]
+        if pos.size:
+            im = ax.pcolormesh(x, y, np.where(shown > 0, shown, np.nan), cmap="magma_r", shading="nearest",
+                               norm=LogNorm(vmin=pos.min(), vmax=pos.max()))
+            fig.colorbar(im, ax=ax, label="margin of unstable points: largest |Im σ| (rad/s)")
+        if len(x) > 1 and len(y) > 1 and np.nanmin(S) < 1 <= np.nanmax(S):
+            ax.contour(x, y, np.nan_to_num(S, nan=0.5), levels=[0.5], colors="tab:blue", linewidths=1.2)
+        ax.set_xlabel(keys[0])
+        ax.set_ylabel(keys[1])
+        ax.text(0.01, 0.01, "white: stable; colour: unstable (margin); blue: boundary; grey: not evaluated",
+                transform=ax.transAxes, fontsize=8, va="bottom")
+    ax.set_title(title)
+    fig.tight_layout()
+    tmp = args.png + f".tmp-{os.getpid()}.png"
+    try:
+        fig.savefig(tmp)
+        os.replace(tmp, args.png)
+    except OSError as e:
+        if os.path.exists(tmp):
+            os.remove(tmp)
+        print(f"plot_sweep: error: {args.png}: {e}", file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
