@@ -106,18 +106,18 @@ std::string get_string(hid_t loc, const std::string& name) {
 template <class T>
 std::vector<T> get_vector(hid_t loc, const std::string& name, hid_t mem_type, bool required) {
   if (H5Lexists(loc, name.c_str(), H5P_DEFAULT) <= 0) {
-    if (required) throw std::runtime_error("missing dataset '/modes/" + name + "'");
+    if (required) throw std::runtime_error("missing dataset '" + name + "'");
     return {};
   }
   Hid set(H5Dopen2(loc, name.c_str(), H5P_DEFAULT), H5Dclose);
   Hid space(H5Dget_space(set.get()), H5Sclose);
   if (!set.ok() || H5Sget_simple_extent_ndims(space.get()) != 1)
-    throw std::runtime_error("dataset '/modes/" + name + "' is not one-dimensional");
+    throw std::runtime_error("dataset '" + name + "' is not one-dimensional");
   hsize_t n = 0;
   H5Sget_simple_extent_dims(space.get(), &n, nullptr);
   std::vector<T> v(n);
   if (n > 0 && H5Dread(set.get(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0)
-    throw std::runtime_error("cannot read dataset '/modes/" + name + "'");
+    throw std::runtime_error("cannot read dataset '" + name + "'");
   return v;
 }
 
@@ -138,7 +138,13 @@ void ModeTable::validate() const {
   check(N2, "N2", false);
   check(residual, "residual", false);
   check(spread, "spread", true);
+  check(dlambda, "dlambda", true);
+  check(dE, "dE", true);
   if (!members.empty() && members.size() != n) throw std::runtime_error("/modes/members has the wrong length");
+  if (!converged.empty() && converged.size() != n) throw std::runtime_error("/modes/converged has the wrong length");
+  const std::size_t nb = bands.E.size();
+  if (bands.lo.size() != nb || bands.hi.size() != nb || bands.lambda_mean.size() != nb)
+    throw std::runtime_error("/bands datasets differ in length");
   for (double x : {volume, A_f, C_f, J_zh, sum_rule, coverage})
     if (!std::isfinite(x)) throw std::runtime_error("a root attribute holds a non-finite value");
   for (double e : E)
@@ -155,7 +161,7 @@ void ModeTable::sort_by_energy() {
     for (std::size_t k = 0; k < idx.size(); ++k) v[k] = old[idx[k]];
   };
   permute(kappa); permute(lambda); permute(E); permute(a); permute(N2); permute(residual);
-  permute(spread); permute(members);
+  permute(spread); permute(members); permute(dlambda); permute(dE); permute(converged);
 }
 
 void write_mode_table(const ModeTable& t, const std::filesystem::path& path) {
@@ -200,6 +206,20 @@ void write_mode_table(const ModeTable& t, const std::filesystem::path& path) {
       put_vector(modes.get(), "residual", t.residual, H5T_NATIVE_DOUBLE);
       if (!t.spread.empty()) put_vector(modes.get(), "spread", t.spread, H5T_NATIVE_DOUBLE);
       if (!t.members.empty()) put_vector(modes.get(), "members", t.members, H5T_NATIVE_INT);
+      if (!t.dlambda.empty()) put_vector(modes.get(), "dlambda", t.dlambda, H5T_NATIVE_DOUBLE);
+      if (!t.dE.empty()) put_vector(modes.get(), "dE", t.dE, H5T_NATIVE_DOUBLE);
+      if (!t.converged.empty()) put_vector(modes.get(), "converged", t.converged, H5T_NATIVE_INT);
+      if (!t.convergence_reference.empty()) {
+        put_string(root, "convergence_reference", t.convergence_reference);
+        put_double(root, "convergence_tolerance", t.convergence_tolerance);
+      }
+      if (t.bands.size() > 0) {
+        Hid bands(H5Gcreate2(root, "bands", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+        put_vector(bands.get(), "lo", t.bands.lo, H5T_NATIVE_DOUBLE);
+        put_vector(bands.get(), "hi", t.bands.hi, H5T_NATIVE_DOUBLE);
+        put_vector(bands.get(), "E", t.bands.E, H5T_NATIVE_DOUBLE);
+        put_vector(bands.get(), "lambda_mean", t.bands.lambda_mean, H5T_NATIVE_DOUBLE);
+      }
     }
     std::filesystem::rename(tmp, path);
   } catch (...) {
@@ -259,6 +279,20 @@ ModeTable read_mode_table(const std::filesystem::path& path) {
     t.residual = get_vector<double>(modes.get(), "residual", H5T_NATIVE_DOUBLE, true);
     t.spread = get_vector<double>(modes.get(), "spread", H5T_NATIVE_DOUBLE, false);
     t.members = get_vector<int>(modes.get(), "members", H5T_NATIVE_INT, false);
+    t.dlambda = get_vector<double>(modes.get(), "dlambda", H5T_NATIVE_DOUBLE, false);
+    t.dE = get_vector<double>(modes.get(), "dE", H5T_NATIVE_DOUBLE, false);
+    t.converged = get_vector<int>(modes.get(), "converged", H5T_NATIVE_INT, false);
+    if (has_attr(root, "convergence_reference")) {
+      t.convergence_reference = get_string(root, "convergence_reference");
+      t.convergence_tolerance = get_double(root, "convergence_tolerance");
+    }
+    if (H5Lexists(root, "bands", H5P_DEFAULT) > 0) {
+      Hid bands(H5Gopen2(root, "bands", H5P_DEFAULT), H5Gclose);
+      t.bands.lo = get_vector<double>(bands.get(), "lo", H5T_NATIVE_DOUBLE, true);
+      t.bands.hi = get_vector<double>(bands.get(), "hi", H5T_NATIVE_DOUBLE, true);
+      t.bands.E = get_vector<double>(bands.get(), "E", H5T_NATIVE_DOUBLE, true);
+      t.bands.lambda_mean = get_vector<double>(bands.get(), "lambda_mean", H5T_NATIVE_DOUBLE, true);
+    }
     t.validate();
     return t;
   } catch (const std::exception& e) {

@@ -32,11 +32,23 @@ struct ModeTable {
   double tolerance = 0;      // solver tolerance
   double wall_seconds = 0;
   std::string normalisation; // how a and N2 are normalised (free text, stored in the file)
+  std::string convergence_reference;  // the coarser discretisation the clusters were compared with
+  double convergence_tolerance = 0;   // a cluster is "converged" if its λ and E moved less than this (relative)
 
   // --- /modes datasets, one entry per mode ------------------------------------------------
   std::vector<double> kappa, lambda, E, a, N2, residual;
   std::vector<double> spread;  // E-weighted spread of lambda within the cluster (error indicator)
   std::vector<int> members;    // number of discrete eigenpairs in the cluster
+  std::vector<double> dlambda, dE;  // relative change of λ and E against the coarser discretisation
+  std::vector<int> converged;       // 1 if both changes are within convergence_tolerance
+
+  // --- /bands: the spectral weight in λ-bands covering (−2, 2) (optional) ---------------------
+  struct Bands {
+    std::vector<double> lo, hi;        // band edges
+    std::vector<double> E;             // spectral weight Σ E in the band
+    std::vector<double> lambda_mean;   // E-weighted mean λ in the band (0 where E = 0)
+    std::size_t size() const { return E.size(); }
+  } bands;
 
   std::size_t size() const { return E.size(); }
   // Throws std::runtime_error if the arrays disagree in length or hold non-finite values.
@@ -51,7 +63,8 @@ void write_mode_table(const ModeTable& table, const std::filesystem::path& path)
 
 // Reads and validates a table; throws std::runtime_error("<path>: <cause>") on any problem
 // (missing file, not HDF5, wrong format attribute, missing dataset, inconsistent lengths).
-// Optional datasets (spread, members) are read when present and left empty otherwise.
+// Optional datasets (spread, members, dlambda, dE, converged, /bands) are read when present and left empty
+// otherwise.
 ModeTable read_mode_table(const std::filesystem::path& path);
 
 }  // namespace rc

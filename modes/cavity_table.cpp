@@ -1,5 +1,6 @@
 #include "cavity_table.hpp"
 
+#include "convergence.hpp"
 #include "fe_space.hpp"
 #include "poincare_forms.hpp"
 #include "stiffness_solver.hpp"
@@ -91,6 +92,13 @@ ModeTable compute_mode_table(const TableRequest& req, const ProgressFn& progress
     report(fmt::format("cluster {}/{}", done, total));
   }, &solver);
   clusters = select_clusters(std::move(clusters), req.selection, sum_rule);
+  ConvergenceCheck convergence;
+  if (req.check_convergence) {
+    report("convergence check on a coarser discretisation");
+    geometry::MeshOptions used = req.mesh;
+    used.size = space.mesh().size;
+    convergence = check_convergence(req.shape, used, clusters, req.clusters, req.convergence_tolerance);
+  }
 
   ModeTable t;
   t.shape = req.shape.kind;
@@ -109,6 +117,20 @@ ModeTable compute_mode_table(const TableRequest& req, const ProgressFn& progress
   t.tolerance = req.clusters.qep.tolerance;
   t.normalisation = "rho = 1, omega0 = 1; each cluster's V is normalised to N2 = |V|^2 = 1, a = (e1 x r, V), "
                     "so E = 2 a^2 / N2 (SPEC section 2)";
+  if (req.check_convergence) {
+    t.convergence_reference = convergence.reference;
+    t.convergence_tolerance = req.convergence_tolerance;
+    for (const auto& ch : convergence.changes) {
+      t.dlambda.push_back(ch.dlambda);
+      t.dE.push_back(ch.dE);
+      t.converged.push_back(ch.converged ? 1 : 0);
+    }
+  }
+  const BandWeights bands = band_weights(survey.nodes);
+  t.bands.lo = bands.lo;
+  t.bands.hi = bands.hi;
+  t.bands.E = bands.E;
+  t.bands.lambda_mean = bands.lambda_mean;
   double kept = 0;
   for (const auto& c : clusters) {
     t.lambda.push_back(c.lambda);

@@ -32,6 +32,8 @@ struct TableRequest {
   ModeSelection selection;
   SurveySettings survey;
   ClusterSettings clusters;
+  double convergence_tolerance = 1e-6;  // per-cluster flag against a coarser discretisation (convergence.hpp)
+  bool check_convergence = true;
 };
 
 using ProgressFn = std::function<void(const std::string&)>;

@@ -29,6 +29,20 @@ Cluster cluster_around_peak(const std::vector<Eigenpair>& pairs, double cluster_
 
 }  // namespace
 
+Cluster refine_node(const QuadraticEigenSolver& solver, const GaussNode& node, const ClusterSettings& settings) {
+  Cluster c;
+  double half = settings.slice_width * std::max(std::abs(node.lambda), 0.1);
+  for (int attempt = 0; attempt <= settings.widenings; ++attempt, half *= 4) {
+    // Stay inside (−2, 2), where every eigenvalue lies; D = 4 − λ² > 0 there.
+    const double lo = std::max(node.lambda - half, -1.999999), hi = std::min(node.lambda + half, 1.999999);
+    QepSolution sol = solver.solve_interval(lo, hi);
+    if (sol.pairs.empty()) continue;
+    c = cluster_around_peak(sol.pairs, settings.cluster_width);
+    if (c.E >= 0.5 * node.E) break;  // the slice holds the mode the node stands for
+  }
+  return c;
+}
+
 std::vector<Cluster> refine_clusters(const PoincareForms& forms, const std::vector<GaussNode>& nodes,
                                      const ClusterSettings& settings,
                                      const std::function<void(std::size_t, std::size_t)>& progress,
@@ -39,17 +53,7 @@ std::vector<Cluster> refine_clusters(const PoincareForms& forms, const std::vect
     *solver_description = "survey (Lanczos Gauss rule of the coupling measure) + SLEPc PEP stoar spectrum slicing "
                           "(MUMPS LDL^T inertia) around each node";
   for (std::size_t i = 0; i < nodes.size(); ++i) {
-    const double theta = nodes[i].lambda;
-    Cluster c;
-    double half = settings.slice_width * std::max(std::abs(theta), 0.1);
-    for (int attempt = 0; attempt <= settings.widenings; ++attempt, half *= 4) {
-      // Stay inside (−2, 2), where every eigenvalue lies; D = 4 − λ² > 0 there.
-      const double lo = std::max(theta - half, -1.999999), hi = std::min(theta + half, 1.999999);
-      QepSolution sol = solver.solve_interval(lo, hi);
-      if (sol.pairs.empty()) continue;
-      c = cluster_around_peak(sol.pairs, settings.cluster_width);
-      if (c.E >= 0.5 * nodes[i].E) break;  // the slice holds the mode the node stands for
-    }
+    const Cluster c = refine_node(solver, nodes[i], settings);
     if (progress) progress(i + 1, nodes.size());
     if (c.members == 0) continue;
     const bool duplicate = std::any_of(clusters.begin(), clusters.end(), [&](const Cluster& o) {

@@ -39,6 +39,10 @@ struct ClusterSettings {
   QepSettings qep;
 };
 
+// Refines one survey node into its cluster with `solver` (steps 1-3 above); no cluster (members = 0) if no
+// slice held an eigenpair.
+Cluster refine_node(const QuadraticEigenSolver& solver, const GaussNode& node, const ClusterSettings& settings);
+
 // Refines the given survey nodes (in the order given) into clusters; `progress` (may be empty) is told
 // after each node. Returns the clusters, duplicates merged, in the order of first appearance.
 std::vector<Cluster> refine_clusters(const PoincareForms& forms, const std::vector<GaussNode>& nodes,

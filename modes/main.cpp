@@ -39,6 +39,11 @@ void add_common_options(CLI::App* cmd, TableRequest& req, std::string& output) {
   cmd->add_option("--survey-steps", req.survey.max_steps, "Lanczos steps of the spectral survey (at most)")
       ->capture_default_str();
   cmd->add_option("--tolerance", req.clusters.qep.tolerance, "eigensolver tolerance")->capture_default_str();
+  cmd->add_option("--convergence-tolerance", req.convergence_tolerance,
+                  "a cluster is flagged converged if its lambda and E change by less than this against the same "
+                  "order on a mesh twice as coarse")->capture_default_str();
+  cmd->add_flag("--no-convergence-check", [&req](std::int64_t) { req.check_convergence = false; },
+                "skip the per-cluster comparison with a coarser discretisation");
   cmd->add_option("-o,--output", output, "mode table to write (HDF5)")->required();
 }
 

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+
 namespace rc::modes {
 
 std::string table_text(const ModeTable& t) {
@@ -15,12 +17,20 @@ std::string table_text(const ModeTable& t) {
       "solver: {} (tol {:g}), {:.2f} s\n",
       t.shape, dims, t.fe_order, t.mesh_h, t.ndof, t.m, t.volume, t.centroid_z, t.A_f, t.C_f, t.J_zh, t.sum_rule,
       t.coverage, t.solver, t.tolerance, t.wall_seconds);
-  s += fmt::format("{:>4} {:>18} {:>18} {:>18} {:>10} {:>10} {:>4}\n", "#", "kappa", "lambda", "E", "spread",
+  const bool conv = !t.converged.empty();
+  if (conv)
+    s += fmt::format("convergence: against {}, tolerance {:g}; {} of {} clusters converged\n", t.convergence_reference,
+                     t.convergence_tolerance, std::count(t.converged.begin(), t.converged.end(), 1), t.size());
+  s += fmt::format("{:>4} {:>18} {:>18} {:>18} {:>10} {:>10} {:>4}", "#", "kappa", "lambda", "E", "spread",
                    "residual", "n");
-  for (std::size_t i = 0; i < t.size(); ++i)
-    s += fmt::format("{:>4} {:>18.12f} {:>18.12f} {:>18.12e} {:>10.2e} {:>10.2e} {:>4}\n", i + 1, t.kappa[i],
+  s += conv ? fmt::format(" {:>9} {:>9} {:>5}\n", "dlambda", "dE", "conv") : "\n";
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    s += fmt::format("{:>4} {:>18.12f} {:>18.12f} {:>18.12e} {:>10.2e} {:>10.2e} {:>4}", i + 1, t.kappa[i],
                      t.lambda[i], t.E[i], t.spread.empty() ? 0.0 : t.spread[i], t.residual[i],
                      t.members.empty() ? 1 : t.members[i]);
+    s += conv ? fmt::format(" {:>9.1e} {:>9.1e} {:>5}\n", t.dlambda[i], t.dE[i], t.converged[i] ? "yes" : "NO")
+              : "\n";
+  }
   return s;
 }
 
@@ -54,6 +64,15 @@ std::string table_json(const ModeTable& t) {
   m["residual"] = t.residual;
   if (!t.spread.empty()) m["spread"] = t.spread;
   if (!t.members.empty()) m["members"] = t.members;
+  if (!t.converged.empty()) {
+    j["convergence_reference"] = t.convergence_reference;
+    j["convergence_tolerance"] = t.convergence_tolerance;
+    m["dlambda"] = t.dlambda;
+    m["dE"] = t.dE;
+    m["converged"] = t.converged;
+  }
+  if (t.bands.size() > 0)
+    j["bands"] = {{"lo", t.bands.lo}, {"hi", t.bands.hi}, {"E", t.bands.E}, {"lambda_mean", t.bands.lambda_mean}};
   j["modes"] = m;
   return j.dump(2) + "\n";
 }

@@ -19,6 +19,9 @@ rc::ModeTable sample() {
   t.kappa = {2.5, 2.00897}; t.lambda = {0.8, 2 / 2.00897}; t.E = {0.01, 2.0544};
   t.a = {0.1, 1.0}; t.N2 = {1.0, 0.5}; t.residual = {1e-12, 1e-13};
   t.spread = {0, 1e-9}; t.members = {1, 3};
+  t.dlambda = {1e-3, 1e-12}; t.dE = {0.5, 1e-10}; t.converged = {0, 1};
+  t.convergence_reference = "order 5, same mesh"; t.convergence_tolerance = 1e-6;
+  t.bands.lo = {-2, 0}; t.bands.hi = {0, 2}; t.bands.E = {0.1, 2.1}; t.bands.lambda_mean = {-0.6, 0.99};
   return t;
 }
 }  // namespace
@@ -38,6 +41,12 @@ TEST(ModeTable, RoundTripSortsByEnergyAndKeepsAttributes) {
   ASSERT_EQ(r.size(), 2u);
   EXPECT_DOUBLE_EQ(r.kappa[0], 2.00897);
   EXPECT_EQ(r.members[1], 1);
+  EXPECT_EQ(r.converged[0], 1);  // sorted with its cluster
+  EXPECT_DOUBLE_EQ(r.dE[1], 0.5);
+  EXPECT_EQ(r.convergence_reference, "order 5, same mesh");
+  EXPECT_DOUBLE_EQ(r.convergence_tolerance, 1e-6);
+  ASSERT_EQ(r.bands.size(), 2u);
+  EXPECT_DOUBLE_EQ(r.bands.lambda_mean[1], 0.99);
   fs::remove(p);
 }
 

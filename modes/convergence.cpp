@@ -1,0 +1,64 @@
+#include "convergence.hpp"
+
+#include "fe_space.hpp"
+#include "poincare_forms.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace rc::modes {
+
+geometry::MeshOptions coarser(const geometry::MeshOptions& mesh, std::string& description) {
+  geometry::MeshOptions c = mesh;
+  c.size = 2 * mesh.size;
+  description = fmt::format("order {} with the mesh size doubled (h = {:g})", c.order, c.size);
+  return c;
+}
+
+ConvergenceCheck check_convergence(const geometry::ShapeSpec& shape, const geometry::MeshOptions& mesh,
+                                   const std::vector<Cluster>& clusters, const ClusterSettings& settings,
+                                   double tolerance) {
+  ConvergenceCheck check;
+  const geometry::MeshOptions reference = coarser(mesh, check.reference);
+  const FESpace space(geometry::mesh_meridian(shape, reference));
+  const FluidIntegrals fluid = integrate_fluid(space);
+  const PoincareForms forms = assemble_poincare_forms(space, fluid.centroid_z);
+  const QuadraticEigenSolver solver(forms, settings.qep);
+  for (const Cluster& c : clusters) {
+    const Cluster r = refine_node(solver, GaussNode{c.lambda, c.E}, settings);
+    ClusterChange change;
+    change.dlambda = r.members > 0 ? std::abs(r.lambda - c.lambda) / std::abs(c.lambda) : 1.0;
+    change.dE = r.members > 0 ? std::abs(r.E - c.E) / c.E : 1.0;
+    change.converged = change.dlambda <= tolerance && change.dE <= tolerance;
+    check.changes.push_back(change);
+  }
+  return check;
+}
+
+std::vector<double> band_edges() {
+  std::vector<double> edges;
+  for (int i = 0; i <= 40; ++i) edges.push_back(-2.0 + 0.1 * i);
+  return edges;
+}
+
+BandWeights band_weights(const std::vector<GaussNode>& nodes) {
+  const auto edges = band_edges();
+  BandWeights b;
+  for (std::size_t i = 0; i + 1 < edges.size(); ++i) {
+    double E = 0, El = 0;
+    for (const auto& n : nodes)
+      if (n.lambda >= edges[i] && (n.lambda < edges[i + 1] || (i + 2 == edges.size() && n.lambda <= edges[i + 1]))) {
+        E += n.E;
+        El += n.E * n.lambda;
+      }
+    b.lo.push_back(edges[i]);
+    b.hi.push_back(edges[i + 1]);
+    b.E.push_back(E);
+    b.lambda_mean.push_back(E > 0 ? El / E : 0.0);
+  }
+  return b;
+}
+
+}  // namespace rc::modes
