@@ -161,7 +161,11 @@ ChainModel build_model(const Scene& scene, TableCache* tables) {
   cm.M_eff = cm.M;
   for (int k = 0; k < n; ++k) cm.M_eff(k, k) -= cm.bodies[k].E_kept + cm.bodies[k].E_rem;
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(cm.M_eff, Eigen::EigenvaluesOnly);
-  const double lo = es.eigenvalues().minCoeff(), hi = es.eigenvalues().cwiseAbs().maxCoeff();
+  // Against the inertia M with the fluid frozen, not M_eff itself: M_eff = M - diag(sum E) cancels
+  // digits, and below ~1e-13 of M what is left is rounding (a shell of 1e-15 around a sphere).
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> em(cm.M, Eigen::EigenvaluesOnly);
+  const double lo = es.eigenvalues().minCoeff(),
+               hi = std::max(es.eigenvalues().cwiseAbs().maxCoeff(), em.eigenvalues().cwiseAbs().maxCoeff());
   if (!(lo > 1e-13 * std::max(hi, 1e-300))) {
     std::ostringstream os;
     os << "effective inertia matrix M - diag(sum E) is not positive definite (smallest eigenvalue "

@@ -9,6 +9,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace rc::rom {
@@ -52,7 +53,35 @@ void rk45(const Eigen::MatrixXcd& B, Eigen::VectorXcd& y, double t0, double t1, 
   }
 }
 
+// Largest |sigma| of the first-order system (eigenvalues only).
+double spectral_radius_of(const FirstOrderSystem& f) {
+  Eigen::ComplexEigenSolver<Eigen::MatrixXcd> es(f.B, false);
+  double rho = 0;
+  for (Eigen::Index i = 0; i < es.eigenvalues().size(); ++i) rho = std::max(rho, std::abs(es.eigenvalues()[i]));
+  return rho;
+}
+
+std::string sci(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2g", x);
+  return buf;
+}
+
 }  // namespace
+
+double estimate_integrator_steps(const std::string& method, double rho, const RunSpec& run) {
+  const double outputs = std::floor(run.t_end / run.output_step + 1e-9);
+  if (!(rho > 0)) return (method == "gauss" || method == "rk45") ? outputs : 0.0;
+  if (method == "gauss") {
+    const double hs = std::pow(4320.0 * run.tolerance / (run.t_end * std::pow(rho, 5)), 0.25);
+    return std::max(outputs, outputs * std::ceil(run.output_step / hs));
+  }
+  if (method == "rk45") {
+    const double rho_h = std::min(3.0, std::pow(run.tolerance / 8e-4, 0.2));
+    return std::max(outputs, run.t_end * rho / rho_h);
+  }
+  return 0.0;
+}
 
 History propagate(const ChainModel& m, const Scene& scene) {
   if (!scene.run.present) throw std::runtime_error(scene.file.string() + ": run: missing [run] section");
@@ -68,6 +97,18 @@ History propagate(const ChainModel& m, const Scene& scene) {
   const double h = scene.run.output_step;
   const long steps = static_cast<long>(std::floor(scene.run.t_end / h + 1e-9));
   if (steps > 50000000L) throw std::runtime_error("run.output_step: more than 5e7 output steps");
+  const std::string& method = scene.run.method;
+  double rho = -1;  // fastest |sigma|, computed once for the integrators
+  if (method == "gauss" || method == "rk45") {
+    rho = spectral_radius_of(f);
+    const double est = estimate_integrator_steps(method, rho, scene.run);
+    if (!(est <= kMaxIntegratorSteps))
+      throw std::runtime_error(scene.file.string() + ": run.method: " + method + " would need about " + sci(est) +
+                               " steps (fastest root |sigma| = " + sci(rho) + " rad/s, t_end = " +
+                               sci(scene.run.t_end) + " s, tolerance = " + sci(scene.run.tolerance) +
+                               "; limit " + sci(kMaxIntegratorSteps) +
+                               "): the scene is too stiff for it, use method = \"exact\"");
+  }
 
   History hist;
   hist.t.resize(steps + 1);
@@ -86,13 +127,13 @@ History propagate(const ChainModel& m, const Scene& scene) {
     hist.H_scale[j] = e.scale();
   };
 
-  const std::string& method = scene.run.method;
   bool done = false;
   if (method == "exact") {
     Eigen::ComplexEigenSolver<Eigen::MatrixXcd> es(f.B, true);
     const Eigen::MatrixXcd& V = es.eigenvectors();
-    Eigen::JacobiSVD<Eigen::MatrixXcd> svd(V);
+    Eigen::BDCSVD<Eigen::MatrixXcd> svd(V);  // singular values only (cond(V))
     const double cond = svd.singularValues()(0) / svd.singularValues()(D - 1);
+    hist.eigvec_condition = cond;
     if (es.info() == Eigen::Success && std::isfinite(cond) && cond < 1e8) {
       Eigen::VectorXcd mu = es.eigenvalues();
       // Undamped and stable: the roots are real; drop their rounding-level imaginary parts so that
@@ -109,6 +150,7 @@ History propagate(const ChainModel& m, const Scene& scene) {
         store(j, V * e);
       }
       hist.method_used = snap ? "exact (eigen-decomposition, real roots)" : "exact (eigen-decomposition)";
+      hist.integrator_steps = steps;
       done = true;
     } else {
       const Eigen::MatrixXcd Phi = (f.B * cd(h)).exp();
@@ -119,13 +161,11 @@ History propagate(const ChainModel& m, const Scene& scene) {
         store(j, y);
       }
       hist.method_used = "exact (matrix exponential of the step; eigenvectors ill-conditioned)";
+      hist.integrator_steps = steps;
       done = true;
     }
   } else if (method == "gauss") {
     // (2,2) Pade = 2-stage Gauss-Legendre; global error ~ t_end rho^5 hs^4 / 4320 <= tol.
-    Eigen::ComplexEigenSolver<Eigen::MatrixXcd> es(f.B, false);
-    double rho = 0;
-    for (int i = 0; i < D; ++i) rho = std::max(rho, std::abs(es.eigenvalues()[i]));
     long sub = 1;
     if (rho > 0) {
       const double hs = std::pow(4320.0 * scene.run.tolerance / (scene.run.t_end * std::pow(rho, 5)), 0.25);
@@ -144,6 +184,7 @@ History propagate(const ChainModel& m, const Scene& scene) {
       store(j, y);
     }
     hist.method_used = "gauss (" + std::to_string(sub) + " substeps per output step)";
+    hist.integrator_steps = sub * steps;
     done = true;
   } else if (method == "rk45") {
     Eigen::VectorXcd y = y0;
@@ -155,6 +196,7 @@ History propagate(const ChainModel& m, const Scene& scene) {
       store(j, y);
     }
     hist.method_used = "rk45 (" + std::to_string(nsteps) + " steps)";
+    hist.integrator_steps = nsteps;
     done = true;
   }
   if (!done) throw std::runtime_error("run.method: unknown method " + method);

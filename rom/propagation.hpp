@@ -24,8 +24,24 @@ struct History {
   std::string method_used;  // what actually ran
   double max_energy_drift = 0;  // max |H - H0| / scale(0) (undamped) or max increase (damped)
   double wall_seconds = 0;
+  long integrator_steps = 0;    // gauss substeps / accepted+rejected rk45 steps; exact: matrix products
+  double eigvec_condition = 0;  // exact: 2-norm condition number of the eigenvector matrix V
 };
 
+// Step-count guard of the integrators (docs/rom.md, "Limits"): gauss and rk45 refuse a run whose
+// estimated number of steps exceeds this, naming the estimate and pointing to method = "exact".
+inline constexpr double kMaxIntegratorSteps = 1e7;
+
+// Estimated steps of `method` ("gauss" or "rk45"; 0 for anything else) over run.t_end for a system
+// whose fastest root has |sigma| = rho (rad/s):
+//   gauss: t_end / h_s with t_end rho^5 h_s^4 / 4320 = tolerance (the substep rule of propagate);
+//   rk45:  t_end rho / min(3, (tolerance / 8e-4)^(1/5))  (Dormand-Prince's local error estimate is
+//          about 8e-4 (rho h)^5 on y' = i rho y; 3 is near its stability limit on the imaginary axis),
+// and never fewer than the number of output steps.
+double estimate_integrator_steps(const std::string& method, double rho, const RunSpec& run);
+
+// Throws std::runtime_error naming the method, the estimate, the limit and suggesting method =
+// "exact" if gauss or rk45 would need more than kMaxIntegratorSteps; before any time stepping.
 History propagate(const ChainModel& m, const Scene& scene);
 
 }  // namespace rc::rom
