@@ -2,30 +2,12 @@
 # Command-line behaviour of cavity-modes: help, a good run with info --json, and every bad-input case
 # of issue 2 giving a one-line error, a non-zero exit and no file left behind.
 set -u
+source "$(cd "$(dirname "$0")" && pwd)/cli_checks.sh"
 BIN=$1
 SECTIONS=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
-pass=0
-fail=0
-ok() { echo "ok: $1"; pass=$((pass + 1)); }
-bad() { echo "FAILED: $1"; fail=$((fail + 1)); }
-
-expect_error() {  # name, expected text in the message, command...
-  local name=$1 text=$2
-  shift 2
-  rm -f out.h5
-  "$@" > stdout.txt 2> stderr.txt
-  local rc=$?
-  local lines
-  lines=$(wc -l < stderr.txt)
-  if [ "$rc" -eq 0 ]; then bad "$name: exit 0"; return; fi
-  if [ "$lines" -ne 1 ]; then bad "$name: $lines lines on stderr: $(cat stderr.txt)"; return; fi
-  if ! grep -q -- "$text" stderr.txt; then bad "$name: message lacks '$text': $(cat stderr.txt)"; return; fi
-  if ls out.h5* > /dev/null 2>&1; then bad "$name: left a file behind"; return; fi
-  ok "$name ($(cat stderr.txt))"
-}
 
 "$BIN" --help > help.txt 2>&1 && grep -q cylinder help.txt && ok "--help" || bad "--help"
 
@@ -69,5 +51,4 @@ else
   bad "capsule section: $(tail -1 cap.txt)"
 fi
 
-echo "$pass passed, $fail failed"
-[ "$fail" -eq 0 ]
+finish

@@ -3,28 +3,12 @@
 # default-order tables of two spheroids and the 2h/a = 2 cylinder must pass at 1e-6; a reference row
 # that is off, mismatched dimensions and malformed CSVs must fail with one line on stderr naming the cause.
 set -u
+source "$(cd "$(dirname "$0")" && pwd)/cli_checks.sh"
 BIN=$1
 REF=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
-pass=0
-fail=0
-ok() { echo "ok: $1"; pass=$((pass + 1)); }
-bad() { echo "FAILED: $1"; fail=$((fail + 1)); }
-
-expect_error() {  # name, expected text in the message, command...
-  local name=$1 text=$2
-  shift 2
-  "$@" > stdout.txt 2> stderr.txt
-  local rc=$?
-  local lines
-  lines=$(wc -l < stderr.txt)
-  if [ "$rc" -eq 0 ]; then bad "$name: exit 0"; return; fi
-  if [ "$lines" -ne 1 ]; then bad "$name: $lines lines on stderr: $(cat stderr.txt)"; return; fi
-  if ! grep -q -- "$text" stderr.txt; then bad "$name: message lacks '$text': $(cat stderr.txt)"; return; fi
-  ok "$name ($(cat stderr.txt))"
-}
 
 expect_pass() {  # name, command...
   local name=$1
@@ -115,5 +99,4 @@ printf '# c\n\nE,kappa,"source",shape,dimensions\n0.33510321638291124, 1.25 ,"a 
   > reordered.csv
 expect_pass "reordered columns and quoting" "$BIN" compare oblate.h5 reordered.csv
 
-echo "$pass passed, $fail failed"
-[ "$fail" -eq 0 ]
+finish
