@@ -4,9 +4,9 @@
 // the scale of V, so we use Ṽ = λ D V, which has no divisions:
 //   Ṽ_r ∝ λ² p_r + 2λ p/r,   Ṽ_φ ∝ −(2λ p_r + λ² p/r),   Ṽ_z ∝ −D p_z
 // and, in terms of the assembled forms (m = 1, real p),
-//   (e1 × r, Ṽ) ∝ (λ² + 2λ) f1·p + D f2·p,
-//   ‖Ṽ‖²/(2π)  = λ²(λ² + 4) pᵀKh p + 4λ³ pᵀGc p + D² pᵀKz p,
-// so E = π [(λ² + 2λ) f1·p + D f2·p]² / ‖Ṽ‖²/(2π)·… (see coupling.cpp). At the geostrophic end
+//   (e1 × r, Ṽ) = π [(λ² + 2λ) f1·p + D f2·p],
+//   ‖Ṽ‖²        = 2π [λ²(λ² + 4) pᵀKh p + 4λ³ pᵀGc p + D² pᵀKz p],
+// so E = 2 (e1 × r, Ṽ)² / ‖Ṽ‖² (up to the common sign of Ṽ, which E does not see). At the geostrophic end
 // (λ → 0, where p_z = O(λ)) numerator and denominator both vanish like λ², with no cancellation.
 #pragma once
 
