@@ -1,10 +1,9 @@
 #include "cavity_table.hpp"
 
 #include "convergence.hpp"
-#include "fe_space.hpp"
-#include "poincare_forms.hpp"
-#include "stiffness_solver.hpp"
-#include "zhukovsky.hpp"
+#include "discretisation.hpp"
+#include "lanczos_refinement.hpp"
+#include "slice_refinement.hpp"
 
 #include <fmt/format.h>
 
@@ -54,6 +53,31 @@ std::vector<GaussNode> candidate_nodes(const SpectralSurvey& survey, const ModeS
   return nodes;
 }
 
+struct FoundClusters {
+  std::vector<Cluster> clusters;
+  std::string solver;
+};
+
+FoundClusters find_clusters(const Discretisation& d, const SpectralSurvey& survey, const TableRequest& req,
+                            const std::function<void(const std::string&)>& report) {
+  FoundClusters f;
+  if (req.clusters.method == ClusterMethod::slices) {
+    const auto nodes = candidate_nodes(survey, req.selection, d.sum_rule);
+    f.clusters = refine_clusters(d.forms, nodes, req.clusters, [&](std::size_t done, std::size_t total) {
+      report(fmt::format("cluster {}/{}", done, total));
+    }, &f.solver);
+    return f;
+  }
+  const LanczosRefinement refinement(d.velocity, d.forms, d.coupling, d.sum_rule, req.clusters);
+  const auto nodes = candidate_nodes(survey, req.selection, d.sum_rule);
+  f.clusters = refine_clusters_lanczos(refinement, nodes, req.clusters.cluster_width, [&](std::size_t done, std::size_t total) {
+    report(fmt::format("cluster {}/{}", done, total));
+  });
+  f.solver = fmt::format("survey (Lanczos Gauss rule of the coupling measure, {} steps) + shift-and-invert Lanczos "
+                         "Gauss rules (MUMPS LDL^T of Q(sigma)) around each node", survey.steps);
+  return f;
+}
+
 std::vector<Cluster> select_clusters(std::vector<Cluster> clusters, const ModeSelection& sel, double sum_rule) {
   sort_by_energy(clusters);
   // A table always has its heaviest cluster, even if it falls below the default threshold.
@@ -76,22 +100,17 @@ ModeTable compute_mode_table(const TableRequest& req, const ProgressFn& progress
     progress(fmt::format("[{:6.2f} s] {}", t, what));
   };
 
-  const FESpace space(geometry::mesh_meridian(req.shape, req.mesh));
-  const FluidIntegrals fluid = integrate_fluid(space);
-  const PoincareForms forms = assemble_poincare_forms(space, fluid.centroid_z);
-  const StiffnessSolver stiffness(forms.M);
-  const ZhukovskyResult zh = zhukovsky_inertia(forms, stiffness);
-  const double sum_rule = fluid.A_f - zh.J_zh;
+  const Discretisation d(req.shape, req.mesh);
+  const FESpace& space = d.space;
+  const FluidIntegrals& fluid = d.fluid;
+  const ZhukovskyResult& zh = d.zhukovsky;
+  const double sum_rule = d.sum_rule;
   report(fmt::format("assembled {} dofs, J_zh = {:.10g}", space.ndof(), zh.J_zh));
 
-  const SpectralSurvey survey = survey_spectral_measure(space, fluid.centroid_z, stiffness, req.survey);
+  const SpectralSurvey survey = survey_spectral_measure(d.velocity, d.stiffness, d.coupling, req.survey);
   report(fmt::format("spectral survey: {} Lanczos steps", survey.steps));
-  const auto nodes = candidate_nodes(survey, req.selection, sum_rule);
-  std::string solver;
-  auto clusters = refine_clusters(forms, nodes, req.clusters, [&](std::size_t done, std::size_t total) {
-    report(fmt::format("cluster {}/{}", done, total));
-  }, &solver);
-  clusters = select_clusters(std::move(clusters), req.selection, sum_rule);
+  auto [found, solver] = find_clusters(d, survey, req, report);
+  auto clusters = select_clusters(std::move(found), req.selection, sum_rule);
   ConvergenceCheck convergence;
   if (req.check_convergence) {
     report("convergence check on a coarser discretisation");
@@ -114,7 +133,8 @@ ModeTable compute_mode_table(const TableRequest& req, const ProgressFn& progress
   t.J_zh = zh.J_zh;
   t.sum_rule = sum_rule;
   t.solver = solver.empty() ? "no cluster needed refinement" : solver;
-  t.tolerance = req.clusters.qep.tolerance;
+  t.tolerance = req.clusters.method == ClusterMethod::slices ? req.clusters.qep.tolerance
+                                                              : req.clusters.sil.lambda_tolerance;
   t.normalisation = "rho = 1, omega0 = 1; each cluster's V is normalised to N2 = |V|^2 = 1, a = (e1 x r, V), "
                     "so E = 2 a^2 / N2 (SPEC section 2)";
   if (req.check_convergence) {

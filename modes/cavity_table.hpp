@@ -2,7 +2,7 @@
 // -> clusters -> mode table (SPEC §2 and §4).
 #pragma once
 
-#include "clusters.hpp"
+#include "cluster.hpp"
 #include "meridian_mesh.hpp"
 #include "mode_table.hpp"
 #include "spectral_survey.hpp"
@@ -16,14 +16,14 @@ namespace rc::modes {
 // Which clusters a table keeps (docs/modes.md):
 //   modes = N     the N clusters of largest E;
 //   coverage = c  clusters in order of E until their E sums to c (A_f − J_zh);
-//   neither       every cluster whose survey weight is at least default_threshold (A_f − J_zh),
-//                 which keeps every mode that moves a stability boundary by more than ~0.1 %.
+//   neither       every cluster whose E is at least default_threshold (A_f − J_zh), which keeps every
+//                 mode that moves a stability boundary by more than ~0.1 %.
 struct ModeSelection {
   std::optional<int> modes;
   std::optional<double> coverage;
   double default_threshold = 1e-3;
   int max_clusters = 60;
-  double geostrophic_cutoff = 0.02;  // survey nodes with |λ| below this are not refined (λ≈0 continuum)
+  double geostrophic_cutoff = 0.02;  // no cluster is sought with |λ| below this (the λ ≈ 0 accumulation)
 };
 
 struct TableRequest {

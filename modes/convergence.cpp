@@ -1,12 +1,14 @@
 #include "convergence.hpp"
 
-#include "fe_space.hpp"
-#include "poincare_forms.hpp"
+#include "discretisation.hpp"
+#include "lanczos_refinement.hpp"
+#include "slice_refinement.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace rc::modes {
 
@@ -22,12 +24,13 @@ ConvergenceCheck check_convergence(const geometry::ShapeSpec& shape, const geome
                                    double tolerance) {
   ConvergenceCheck check;
   const geometry::MeshOptions reference = coarser(mesh, check.reference);
-  const FESpace space(geometry::mesh_meridian(shape, reference));
-  const FluidIntegrals fluid = integrate_fluid(space);
-  const PoincareForms forms = assemble_poincare_forms(space, fluid.centroid_z);
-  const QuadraticEigenSolver solver(forms, settings.qep);
+  const Discretisation d(shape, reference);
+  const LanczosRefinement lanczos(d.velocity, d.forms, d.coupling, d.sum_rule, settings);
+  std::optional<QuadraticEigenSolver> slicer;
+  if (settings.method == ClusterMethod::slices) slicer.emplace(d.forms, settings.qep);
   for (const Cluster& c : clusters) {
-    const Cluster r = refine_node(solver, GaussNode{c.lambda, c.E}, settings);
+    const GaussNode node{c.lambda, c.E};
+    const Cluster r = slicer ? refine_node(*slicer, node, settings) : lanczos.refine(node);
     ClusterChange change;
     change.dlambda = r.members > 0 ? std::abs(r.lambda - c.lambda) / std::abs(c.lambda) : 1.0;
     change.dE = r.members > 0 ? std::abs(r.E - c.E) / c.E : 1.0;

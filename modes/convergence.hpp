@@ -3,7 +3,7 @@
 // covering (−2, 2) is reported from the survey's Gauss rule. See docs/modes.md, "Convergence".
 #pragma once
 
-#include "clusters.hpp"
+#include "cluster.hpp"
 #include "meridian_mesh.hpp"
 #include "spectral_survey.hpp"
 
@@ -28,7 +28,7 @@ struct ConvergenceCheck {
 // 1.6e-6 from Stewartson's value.) `mesh.size` must be the size actually used (MeridianMesh::size).
 geometry::MeshOptions coarser(const geometry::MeshOptions& mesh, std::string& description);
 
-// Recomputes each cluster (as a node at its λ with its E) on `mesh` and compares.
+// Recomputes each cluster on `mesh` (as a node at its λ with its E, refined by the table's method) and compares.
 ConvergenceCheck check_convergence(const geometry::ShapeSpec& shape, const geometry::MeshOptions& mesh,
                                    const std::vector<Cluster>& clusters, const ClusterSettings& settings,
                                    double tolerance);

@@ -36,9 +36,24 @@ void add_common_options(CLI::App* cmd, TableRequest& req, std::string& output) {
   auto* coverage = cmd->add_option("--coverage", req.selection.coverage,
                                    "keep clusters until their E sums to this fraction of A_f - J_zh");
   modes->excludes(coverage);
+  cmd->add_option("--min-lambda", req.selection.geostrophic_cutoff,
+                  "no cluster is sought with |lambda| below this (the lambda -> 0 accumulation)")
+      ->check(CLI::Range(1e-6, 1.9))->capture_default_str();
+  cmd->add_option("--lanczos-steps", req.clusters.sil.max_steps,
+                  "lanczos clusters: shift-and-invert Lanczos steps per node (at most)")
+      ->check(CLI::Range(1, 100000))->capture_default_str();
   cmd->add_option("--survey-steps", req.survey.max_steps, "Lanczos steps of the spectral survey (at most)")
       ->capture_default_str();
-  cmd->add_option("--tolerance", req.clusters.qep.tolerance, "eigensolver tolerance")->capture_default_str();
+  cmd->add_option("--clusters", req.clusters.method,
+                  "how the survey's nodes are refined into clusters: lanczos (shift-and-invert Lanczos Gauss rules) "
+                  "or slices (SLEPc PEP STOAR spectrum slicing)")
+      ->transform(CLI::CheckedTransformer(std::map<std::string, rc::modes::ClusterMethod>{{"lanczos", rc::modes::ClusterMethod::lanczos},
+                                                                                {"slices", rc::modes::ClusterMethod::slices}}))
+      ->capture_default_str();
+  cmd->add_option_function<double>(
+      "--tolerance", [&req](double tol) { req.clusters.sil.lambda_tolerance = req.clusters.qep.tolerance = tol; },
+      "lanczos: a Gauss node is settled when its lambda moves less than this (relative; default 1e-11); slices: "
+      "the SLEPc PEP tolerance (default 1e-12)");
   cmd->add_option("--convergence-tolerance", req.convergence_tolerance,
                   "a cluster is flagged converged if its lambda and E change by less than this against the same "
                   "order on a mesh twice as coarse")->capture_default_str();

@@ -3,7 +3,8 @@
 //
 // Why: the discrete spectrum fills (−2, 2) densely (about 2·ndof eigenvalues), but E sits on a few of
 // them. The k-point Gauss rule of μ locates where E sits at the cost of k Lanczos steps, with no
-// eigen-solve; the clusters are then resolved exactly by narrow spectrum slices (clusters.hpp).
+// eigen-solve; its rule bounds where the clusters can be, and shift-and-invert rules resolve them
+// (cluster_search.hpp).
 //
 // How: the discrete QEP is the eigenproblem of the self-adjoint operator A = P_H S on the discretely
 // solenoidal fields H_h = {V : Gᵀ Ω V = 0} of the quadrature-point velocity space (V = (i a, b, i c)
@@ -14,21 +15,18 @@
 #pragma once
 
 #include "fe_space.hpp"
+#include "lanczos.hpp"
 #include "stiffness_solver.hpp"
+#include "velocity_space.hpp"
 
 #include <vector>
 
 namespace rc::modes {
 
-struct GaussNode {
-  double lambda = 0;  // node of the Gauss rule
-  double E = 0;       // its weight (sums to A_f − J_zh over all nodes)
-};
-
 struct SurveySettings {
   int max_steps = 200;          // Lanczos steps (nodes of the Gauss rule)
-  double tolerance = 5e-4;      // stop when the heavy nodes move less than this (relative): they only
-                                // need to land inside their cluster slice, which the eigensolver then resolves
+  double tolerance = 5e-4;      // stop when the heavy nodes move less than this (relative): the rule only
+                                // bounds the windows of the cluster search and gives the band weights
   double weight_floor = 1e-3;   // "heavy": weight above this fraction of A_f − J_zh ...
   double lambda_floor = 0.05;   // ... and |λ| above this: nodes inside the λ ≈ 0 accumulation keep moving
                                 // as the rule grows and are not refined anyway
@@ -40,7 +38,11 @@ struct SpectralSurvey {
   bool exhausted = false;        // the Krylov space became invariant: the rule is exact
 };
 
-SpectralSurvey survey_spectral_measure(const FESpace& space, double centroid_z, const StiffnessSolver& solver,
+// v <- P_H v = v − G M⁻¹ Gᵀ Ω v (`solver` factorises M).
+void project_solenoidal(const VelocitySpace& V, const StiffnessSolver& solver, Eigen::VectorXd& v);
+
+// w: the solenoidal coupling vector P_H(e1 × r) (its measure has mass π‖w‖² = A_f − J_zh).
+SpectralSurvey survey_spectral_measure(const VelocitySpace& V, const StiffnessSolver& solver, const Eigen::VectorXd& w,
                                        const SurveySettings& settings);
 
 }  // namespace rc::modes

@@ -2,12 +2,13 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 
 namespace rc::modes {
 
-StiffnessSolver::StiffnessSolver(Mat M) {
+StiffnessSolver::StiffnessSolver(Mat M, const char* prefix, std::string name) : name_(std::move(name)) {
   petsc_check(KSPCreate(PETSC_COMM_SELF, ksp_.out()), "KSPCreate");
-  petsc_check(KSPSetOptionsPrefix(ksp_, "stiff_"), "KSPSetOptionsPrefix");
+  petsc_check(KSPSetOptionsPrefix(ksp_, prefix), "KSPSetOptionsPrefix");
   petsc_check(KSPSetOperators(ksp_, M, M), "KSPSetOperators");
   petsc_check(KSPSetType(ksp_, KSPPREONLY), "KSPSetType");
   PC pc;
@@ -15,16 +16,16 @@ StiffnessSolver::StiffnessSolver(Mat M) {
   petsc_check(PCSetType(pc, PCCHOLESKY), "PCSetType");
   petsc_check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
   petsc_check(KSPSetFromOptions(ksp_), "KSPSetFromOptions");
-  petsc_check(KSPSetUp(ksp_), "factorising the stiffness matrix");
+  petsc_check(KSPSetUp(ksp_), ("factorising " + name_).c_str());
   petsc_check(MatCreateVecs(M, x_.out(), b_.out()), "MatCreateVecs");
 }
 
 void StiffnessSolver::solve(Vec b, Vec x) const {
-  petsc_check(KSPSolve(ksp_, b, x), "stiffness solve");
+  petsc_check(KSPSolve(ksp_, b, x), ("solving with " + name_).c_str());
   KSPConvergedReason reason;
   petsc_check(KSPGetConvergedReason(ksp_, &reason), "KSPGetConvergedReason");
   if (reason < 0)
-    throw std::runtime_error("the stiffness factorisation failed (KSP reason " +
+    throw std::runtime_error("the factorisation of " + name_ + " failed (KSP reason " +
                              std::to_string(static_cast<int>(reason)) + ")");
 }
 

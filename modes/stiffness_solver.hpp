@@ -1,22 +1,27 @@
-// A sparse Cholesky factorisation (MUMPS) of M = Kh + Kz, the m = 1 Laplacian stiffness, factorised once
-// and reused: by the Zhukovsky potential and by every step of the spectral survey's projection.
+// A sparse symmetric factorisation (MUMPS) factorised once and reused. For M = Kh + Kz, the m = 1 Laplacian
+// stiffness (positive definite: Cholesky), by the Zhukovsky potential and by every step of the spectral
+// survey's projection; for the indefinite Q(σ) of the shift-invert survey (MUMPS LDLᵀ with pivoting).
 #pragma once
 
 #include "petsc_handles.hpp"
 
+#include <string>
 #include <vector>
 
 namespace rc::modes {
 
 class StiffnessSolver {
  public:
-  explicit StiffnessSolver(Mat M);
+  // prefix: PETSc options prefix of the KSP (so that users can tune either factorisation); name: what the
+  // matrix is, for error messages.
+  explicit StiffnessSolver(Mat M, const char* prefix = "stiff_", std::string name = "the stiffness matrix");
   // x = M⁻¹ b. Throws if the solve fails.
   void solve(Vec b, Vec x) const;
   // Convenience overload on plain arrays of length ndof.
   void solve(const std::vector<double>& b, std::vector<double>& x) const;
 
  private:
+  std::string name_;
   PKSP ksp_;
   PVec b_, x_;
 };

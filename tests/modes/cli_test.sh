@@ -22,7 +22,9 @@ expect_error "section without physical groups" "fluid" "$BIN" section nogroups.g
 echo 'garbage(' > broken.geo
 expect_error "malformed section" "syntax error" "$BIN" section broken.geo -o out.h5
 expect_error "bad coverage" "coverage" "$BIN" sphere --radius 1 --coverage 2 -o out.h5
-expect_error "solver failure" "eigensolver" "$BIN" sphere --radius 1 --order 3 -o out.h5 -pep_max_it 1 -pep_tol 1e-30
+expect_error "solver failure (slices)" "eigensolver" "$BIN" sphere --radius 1 --order 3 --clusters slices -o out.h5 -pep_max_it 1 -pep_tol 1e-30
+expect_error "solver failure (lanczos)" "did not settle" "$BIN" sphere --radius 1 --order 3 --lanczos-steps 2 -o out.h5
+expect_error "Q(sigma) solve failure" "factorisation of Q(sigma)" "$BIN" sphere --radius 1 --order 3 -o out.h5 -shift_ksp_type cg -shift_pc_type none -shift_ksp_max_it 1
 expect_error "unwritable output" "cannot create" "$BIN" sphere --radius 1 --order 3 -o /nonexistent-dir/out.h5
 expect_error "info on a non-table" "not an HDF5 file" "$BIN" info stderr.txt
 

@@ -1,4 +1,4 @@
-#include "clusters.hpp"
+#include "slice_refinement.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,5 @@
-// Spectral clusters: what a mode table calls a "mode" (SPEC §2).
+// Clusters by SLEPc spectrum slices around the survey's nodes (the `--clusters slices` method; the default
+// is cluster_search.hpp).
 //
 // The discrete spectrum is dense, and an exact mode's E may be shared by several nearby discrete
 // eigenpairs. A cluster is formed around a node θ of the spectral survey (spectral_survey.hpp):
@@ -16,28 +17,13 @@
 // Clusters found twice (two survey nodes refining to the same peak) are merged. See docs/modes.md.
 #pragma once
 
-#include "qep_solver.hpp"
+#include "cluster.hpp"
 #include "spectral_survey.hpp"
 
 #include <functional>
 #include <vector>
 
 namespace rc::modes {
-
-struct Cluster {
-  double lambda = 0;     // E-weighted mean of the members' λ
-  double E = 0;          // sum of the members' E
-  double spread = 0;     // E-weighted standard deviation of the members' λ
-  double residual = 0;   // worst backward error of the members
-  int members = 0;
-};
-
-struct ClusterSettings {
-  double slice_width = 2e-3;    // first slice half-width relative to max(|θ|, 0.1)
-  int widenings = 2;            // at most this many ×4 widenings of a slice
-  double cluster_width = 1e-5;  // δ relative to max(|λ_peak|, 0.1)
-  QepSettings qep;
-};
 
 // Refines one survey node into its cluster with `solver` (steps 1-3 above); no cluster (members = 0) if no
 // slice held an eigenpair.

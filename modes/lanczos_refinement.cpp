@@ -1,0 +1,81 @@
+#include "lanczos_refinement.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace rc::modes {
+
+std::vector<Cluster> merge_nodes(std::vector<SettledNode> nodes, double width) {
+  std::sort(nodes.begin(), nodes.end(), [](const SettledNode& a, const SettledNode& b) { return a.lambda < b.lambda; });
+  std::vector<Cluster> clusters;
+  for (std::size_t i = 0; i < nodes.size();) {
+    std::size_t j = i + 1;
+    while (j < nodes.size() &&
+           nodes[j].lambda - nodes[j - 1].lambda <= width * std::max(std::abs(nodes[j].lambda), 0.1))
+      ++j;
+    Cluster c;
+    double sum_lambda = 0;
+    for (std::size_t k = i; k < j; ++k) {
+      c.E += nodes[k].E;
+      sum_lambda += nodes[k].E * nodes[k].lambda;
+      c.residual = std::max(c.residual, nodes[k].residual);
+    }
+    c.members = static_cast<int>(j - i);
+    c.lambda = c.E > 0 ? sum_lambda / c.E : nodes[i].lambda;
+    double var = 0;
+    for (std::size_t k = i; k < j; ++k) var += nodes[k].E * (nodes[k].lambda - c.lambda) * (nodes[k].lambda - c.lambda);
+    c.spread = c.E > 0 ? std::sqrt(var / c.E) : 0.0;
+    clusters.push_back(c);
+    i = j;
+  }
+  return clusters;
+}
+
+LanczosRefinement::LanczosRefinement(const VelocitySpace& V, const PoincareForms& forms, const Eigen::VectorXd& w,
+                                     double mass, const ClusterSettings& settings)
+    : sil_(V, forms, w, mass), mass_(mass), settings_(settings) {}
+
+Cluster LanczosRefinement::refine(const GaussNode& node) const {
+  Cluster best;
+  double half = settings_.slice_width * std::max(std::abs(node.lambda), 0.1);
+  // Shift a little off the node: the node is not an eigenvalue, but a shift on one would make Q(σ) singular.
+  const double sigma = std::clamp(node.lambda + 1e-3 * half, -1.999999, 1.999999);
+  const double floor = settings_.floor * mass_;
+  for (int attempt = 0; attempt <= settings_.widenings; ++attempt, half *= 4) {
+    const double lo = std::max(node.lambda - half, -1.999999), hi = std::min(node.lambda + half, 1.999999);
+    const ShiftInvertRule rule = sil_.run(sigma, lo, hi, floor, settings_.sil);
+    // A node that matters and did not settle is solver trouble: report it, never drop it.
+    for (const SettledNode& n : rule.unsettled)
+      if (n.E >= 0.01 * node.E)
+        throw std::runtime_error(fmt::format(
+            "eigensolver (shift-and-invert Lanczos) did not settle the node at lambda = {:.9g} (E = {:.3g}) in {} "
+            "steps (last change of lambda {:.1e}, of E {:.1e}); raise --lanczos-steps",
+            n.lambda, n.E, rule.steps, n.dlambda, n.dE));
+    const auto clusters = merge_nodes(rule.settled, settings_.cluster_width);
+    if (clusters.empty()) continue;
+    best = *std::max_element(clusters.begin(), clusters.end(), [](const Cluster& a, const Cluster& b) { return a.E < b.E; });
+    if (best.E >= 0.5 * node.E) break;  // the window holds the mode the node stands for
+  }
+  return best;
+}
+
+std::vector<Cluster> refine_clusters_lanczos(const LanczosRefinement& refinement, const std::vector<GaussNode>& nodes,
+                                             double cluster_width,
+                                             const std::function<void(std::size_t, std::size_t)>& progress) {
+  std::vector<Cluster> clusters;
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    const Cluster c = refinement.refine(nodes[i]);
+    if (progress) progress(i + 1, nodes.size());
+    if (c.members == 0) continue;
+    const bool duplicate = std::any_of(clusters.begin(), clusters.end(), [&](const Cluster& o) {
+      return std::abs(o.lambda - c.lambda) <= cluster_width * std::max(std::abs(c.lambda), 0.1);
+    });
+    if (!duplicate) clusters.push_back(c);
+  }
+  return clusters;
+}
+
+}  // namespace rc::modes
