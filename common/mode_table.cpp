@@ -184,6 +184,7 @@ void write_mode_table(const ModeTable& t, const std::filesystem::path& path) {
       put_string(root, "dimension_names", dims);
       put_long(root, "fe_order", t.fe_order);
       put_double(root, "mesh_h", t.mesh_h);
+      if (t.mesh_h_radial > 0) put_double(root, "mesh_h_radial", t.mesh_h_radial);
       put_long(root, "ndof", t.ndof);
       put_long(root, "m", t.m);
       put_double(root, "volume", t.volume);
@@ -256,6 +257,7 @@ ModeTable read_mode_table(const std::filesystem::path& path) {
     }
     t.fe_order = static_cast<int>(get_long(root, "fe_order"));
     t.mesh_h = get_double(root, "mesh_h");
+    if (has_attr(root, "mesh_h_radial")) t.mesh_h_radial = get_double(root, "mesh_h_radial");
     t.ndof = get_long(root, "ndof");
     t.m = static_cast<int>(get_long(root, "m"));
     t.volume = get_double(root, "volume");

@@ -19,6 +19,7 @@ struct ModeTable {
   std::map<std::string, double> dimensions;  // e.g. {"radius", 1}, {"height", 2}; each is a root attribute
   int fe_order = 0;
   double mesh_h = 0;
+  double mesh_h_radial = 0;  // > 0: structured cylinder mesh with this radial size (mesh_h is then axial)
   long ndof = 0;
   int m = 1;                 // azimuthal number (1: the modes that couple to tilt)
   double volume = 0;         // fluid volume (= mass for rho = 1)

@@ -38,6 +38,9 @@ void check_options(const MeshOptions& options) {
                              std::to_string(kMaxOrder));
   if (!std::isfinite(options.size) || options.size < 0)
     throw std::runtime_error("mesh size " + number(options.size) + " must be positive and finite (0 = default)");
+  if (!std::isfinite(options.radial_size) || options.radial_size < 0)
+    throw std::runtime_error("radial mesh size " + number(options.radial_size) +
+                             " must be positive and finite (0 = unstructured)");
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -66,8 +69,8 @@ double model_smallest_side() {
   return std::min(x1 - x0, y1 - y0);
 }
 
-void generate(int order, double size, const std::string& where) {
-  if (model_extent() / size > kMaxCellsPerExtent)
+void generate(int order, double size, const std::string& where, double radial_size = 0) {
+  if (model_extent() / size > kMaxCellsPerExtent || (radial_size > 0 && model_extent() / radial_size > kMaxCellsPerExtent))
     throw std::runtime_error(where + ": mesh size " + number(size) + " is too small for a model of extent " +
                              number(model_extent()));
   gmsh::option::setNumber("Mesh.MeshSizeMax", size);
@@ -171,9 +174,9 @@ GmshMesh mesh_builtin(const ShapeSpec& shape, const MeshOptions& options) {
   return detail::with_gmsh(where, [&](detail::GmshSession& session) {
     const double size = options.size > 0 ? options.size : kDefaultSizeFraction * detail::smallest_dimension(shape);
     gmsh::model::add("meridian");
-    detail::build_shape(shape, size);
+    detail::build_shape(shape, size, options.radial_size);
     session.throw_if_error(where);
-    generate(options.order, size, where);
+    generate(options.order, size, where, options.radial_size);
     session.throw_if_error(where);
     GmshMesh m = read_mesh(where);
     m.size = size;

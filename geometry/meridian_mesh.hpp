@@ -26,6 +26,8 @@ struct ShapeSpec {
 struct MeshOptions {
   int order = 3;        // Lagrange order of the triangles (geometry and field), 1..6
   double size = 0.0;    // target element size in the shape's length unit; 0 = default (see docs)
+  double radial_size = 0.0;  // cylinder only: > 0 makes a structured mesh with this element size along r
+                             // and `size` along z (docs/geometry.md, "Structured cylinder meshes")
 };
 
 struct MeridianMesh {

@@ -70,13 +70,23 @@ void build_ellipse(double a, double c, double h) {
   add_groups(surface({lower, upper, axis}), {lower, upper}, {axis});
 }
 
-void build_cylinder(double radius, double height, double h) {
+void build_cylinder(double radius, double height, double h, double radial_size) {
   const double z0 = -0.5 * height, z1 = 0.5 * height;
   const int p0 = geo::addPoint(0, z0, 0, h), p1 = geo::addPoint(radius, z0, 0, h),
             p2 = geo::addPoint(radius, z1, 0, h), p3 = geo::addPoint(0, z1, 0, h);
   const int bottom = geo::addLine(p0, p1), side = geo::addLine(p1, p2), top = geo::addLine(p2, p3),
             axis = geo::addLine(p3, p0);
-  add_groups(surface({bottom, side, top, axis}), {bottom, side, top}, {axis});
+  const int fluid = surface({bottom, side, top, axis});
+  if (radial_size > 0) {
+    // Low-frequency inertial modes vary much faster in r than in z (Stewartson: ξ = k a √(κ² − 1)), so
+    // the radial and axial sizes are set apart.
+    const int nr = std::max(1, static_cast<int>(std::ceil(radius / radial_size - 1e-9)));
+    const int nz = std::max(1, static_cast<int>(std::ceil(height / h - 1e-9)));
+    for (int c : {bottom, top}) geo::mesh::setTransfiniteCurve(c, nr + 1);
+    for (int c : {side, axis}) geo::mesh::setTransfiniteCurve(c, nz + 1);
+    geo::mesh::setTransfiniteSurface(fluid, "Alternate");
+  }
+  add_groups(fluid, {bottom, side, top}, {axis});
 }
 
 void build_cone(double radius, double height, double h) {
@@ -113,14 +123,16 @@ double smallest_dimension(const ShapeSpec& shape) {
   return std::min(dim(shape, "radius"), dim(shape, "height"));
 }
 
-void build_shape(const ShapeSpec& shape, double size) {
+void build_shape(const ShapeSpec& shape, double size, double radial_size) {
+  if (radial_size > 0 && shape.kind != "cylinder")
+    throw std::runtime_error(shape.kind + ": a radial mesh size (structured mesh) is only available for the cylinder");
   if (shape.kind == "sphere") {
     const double r = dim(shape, "radius");
     build_ellipse(r, r, size);
   } else if (shape.kind == "spheroid") {
     build_ellipse(dim(shape, "a"), dim(shape, "c"), size);
   } else if (shape.kind == "cylinder") {
-    build_cylinder(dim(shape, "radius"), dim(shape, "height"), size);
+    build_cylinder(dim(shape, "radius"), dim(shape, "height"), size, radial_size);
   } else if (shape.kind == "cone") {
     build_cone(dim(shape, "radius"), dim(shape, "height"), size);
   } else {

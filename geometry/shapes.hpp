@@ -14,7 +14,9 @@ void validate_shape(const ShapeSpec& shape);
 double smallest_dimension(const ShapeSpec& shape);
 
 // Builds the meridian half-section of a built-in shape in the current gmsh model with the physical
-// groups "fluid", "wall" and "axis", every point carrying `size` as its mesh size.
-void build_shape(const ShapeSpec& shape, double size);
+// groups "fluid", "wall" and "axis", every point carrying `size` as its mesh size. radial_size > 0
+// (cylinder only) makes the mesh structured: ⌈radius / radial_size⌉ × ⌈height / size⌉ rectangles, each
+// cut into two triangles.
+void build_shape(const ShapeSpec& shape, double size, double radial_size = 0);
 
 }  // namespace rc::geometry::detail

@@ -59,7 +59,8 @@ struct FoundClusters {
 };
 
 FoundClusters find_clusters(const Discretisation& d, const SpectralSurvey& survey, const TableRequest& req,
-                            const std::function<void(const std::string&)>& report) {
+                            const std::function<void(const std::string&)>& report,
+                            const std::function<void(const std::string&)>& warn) {
   FoundClusters f;
   if (req.clusters.method == ClusterMethod::slices) {
     const auto nodes = candidate_nodes(survey, req.selection, d.sum_rule);
@@ -70,11 +71,15 @@ FoundClusters find_clusters(const Discretisation& d, const SpectralSurvey& surve
   }
   const LanczosRefinement refinement(d.velocity, d.forms, d.coupling, d.sum_rule, req.clusters);
   const auto nodes = candidate_nodes(survey, req.selection, d.sum_rule);
+  std::vector<std::string> unsettled;
   f.clusters = refine_clusters_lanczos(refinement, nodes, req.clusters.cluster_width, [&](std::size_t done, std::size_t total) {
     report(fmt::format("cluster {}/{}", done, total));
-  });
+  }, unsettled);
+  for (const auto& u : unsettled) warn("warning: left out of the table: " + u);
   f.solver = fmt::format("survey (Lanczos Gauss rule of the coupling measure, {} steps) + shift-and-invert Lanczos "
                          "Gauss rules (MUMPS LDL^T of Q(sigma)) around each node", survey.steps);
+  if (!unsettled.empty())
+    f.solver += fmt::format("; {} candidate node(s) did not settle and were left out", unsettled.size());
   return f;
 }
 
@@ -109,7 +114,9 @@ ModeTable compute_mode_table(const TableRequest& req, const ProgressFn& progress
 
   const SpectralSurvey survey = survey_spectral_measure(d.velocity, d.stiffness, d.coupling, req.survey);
   report(fmt::format("spectral survey: {} Lanczos steps", survey.steps));
-  auto [found, solver] = find_clusters(d, survey, req, report);
+  auto [found, solver] = find_clusters(d, survey, req, report, [&](const std::string& w) {
+    if (progress) progress(w);
+  });
   auto clusters = select_clusters(std::move(found), req.selection, sum_rule);
   ConvergenceCheck convergence;
   if (req.check_convergence) {
@@ -124,6 +131,7 @@ ModeTable compute_mode_table(const TableRequest& req, const ProgressFn& progress
   t.dimensions = req.shape.dims;
   t.fe_order = space.order();
   t.mesh_h = space.mesh().size;
+  t.mesh_h_radial = req.mesh.radial_size;
   t.ndof = space.ndof();
   t.m = 1;
   t.volume = fluid.volume;

@@ -15,7 +15,10 @@ namespace rc::modes {
 geometry::MeshOptions coarser(const geometry::MeshOptions& mesh, std::string& description) {
   geometry::MeshOptions c = mesh;
   c.size = 2 * mesh.size;
-  description = fmt::format("order {} with the mesh size doubled (h = {:g})", c.order, c.size);
+  c.radial_size = 2 * mesh.radial_size;
+  description = c.radial_size > 0 ? fmt::format("order {} with the mesh sizes doubled (h = {:g}, radial {:g})", c.order,
+                                                c.size, c.radial_size)
+                                   : fmt::format("order {} with the mesh size doubled (h = {:g})", c.order, c.size);
   return c;
 }
 
@@ -30,7 +33,12 @@ ConvergenceCheck check_convergence(const geometry::ShapeSpec& shape, const geome
   if (settings.method == ClusterMethod::slices) slicer.emplace(d.forms, settings.qep);
   for (const Cluster& c : clusters) {
     const GaussNode node{c.lambda, c.E};
-    const Cluster r = slicer ? refine_node(*slicer, node, settings) : lanczos.refine(node);
+    Cluster r;
+    try {
+      r = slicer ? refine_node(*slicer, node, settings) : lanczos.refine(node);
+    } catch (const UnsettledNode&) {
+      r.members = 0;  // no settled counterpart on the coarser mesh: reported as not converged
+    }
     ClusterChange change;
     change.dlambda = r.members > 0 ? std::abs(r.lambda - c.lambda) / std::abs(c.lambda) : 1.0;
     change.dE = r.members > 0 ? std::abs(r.E - c.E) / c.E : 1.0;

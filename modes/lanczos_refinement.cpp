@@ -2,11 +2,23 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include <fmt/format.h>
 
 namespace rc::modes {
+
+namespace {
+
+const SettledNode* heaviest_unsettled(const ShiftInvertRule& rule, double at_least) {
+  const SettledNode* best = nullptr;
+  for (const auto& n : rule.unsettled)
+    if (n.E >= at_least && (!best || n.E > best->E)) best = &n;
+  return best;
+}
+
+}  // namespace
 
 std::vector<Cluster> merge_nodes(std::vector<SettledNode> nodes, double width) {
   std::sort(nodes.begin(), nodes.end(), [](const SettledNode& a, const SettledNode& b) { return a.lambda < b.lambda; });
@@ -36,7 +48,9 @@ std::vector<Cluster> merge_nodes(std::vector<SettledNode> nodes, double width) {
 
 LanczosRefinement::LanczosRefinement(const VelocitySpace& V, const PoincareForms& forms, const Eigen::VectorXd& w,
                                      double mass, const ClusterSettings& settings)
-    : sil_(V, forms, w, mass), mass_(mass), settings_(settings) {}
+    : sil_(V, forms, w, mass), mass_(mass), settings_(settings) {
+  settings_.sil.merge_width = settings.cluster_width;
+}
 
 Cluster LanczosRefinement::refine(const GaussNode& node) const {
   Cluster best;
@@ -46,14 +60,16 @@ Cluster LanczosRefinement::refine(const GaussNode& node) const {
   const double floor = settings_.floor * mass_;
   for (int attempt = 0; attempt <= settings_.widenings; ++attempt, half *= 4) {
     const double lo = std::max(node.lambda - half, -1.999999), hi = std::min(node.lambda + half, 1.999999);
-    const ShiftInvertRule rule = sil_.run(sigma, lo, hi, floor, settings_.sil);
-    // A node that matters and did not settle is solver trouble: report it, never drop it.
-    for (const SettledNode& n : rule.unsettled)
-      if (n.E >= 0.01 * node.E)
-        throw std::runtime_error(fmt::format(
-            "eigensolver (shift-and-invert Lanczos) did not settle the node at lambda = {:.9g} (E = {:.3g}) in {} "
-            "steps (last change of lambda {:.1e}, of E {:.1e}); raise --lanczos-steps",
-            n.lambda, n.E, rule.steps, n.dlambda, n.dE));
+    ShiftInvertRule rule = sil_.run(sigma, lo, hi, floor, settings_.sil);
+    // A heavy node still moving is slow because others sit nearer the shift: run again shifted to it.
+    if (const SettledNode* u = heaviest_unsettled(rule, 0.01 * node.E))
+      rule = sil_.run(u->lambda + 1e-6 * std::max(std::abs(u->lambda), 0.1), lo, hi, floor, settings_.sil);
+    // A node that matters and still did not settle is solver trouble: report it, never drop it.
+    if (const SettledNode* u = heaviest_unsettled(rule, 0.01 * node.E))
+      throw UnsettledNode(fmt::format(
+          "eigensolver (shift-and-invert Lanczos) did not settle the node at lambda = {:.9g} (E = {:.3g}) in {} "
+          "steps (last change of lambda {:.1e}, of E {:.1e}); raise --lanczos-steps",
+          u->lambda, u->E, rule.steps, u->dlambda, u->dE));
     const auto clusters = merge_nodes(rule.settled, settings_.cluster_width);
     if (clusters.empty()) continue;
     best = *std::max_element(clusters.begin(), clusters.end(), [](const Cluster& a, const Cluster& b) { return a.E < b.E; });
@@ -64,10 +80,19 @@ Cluster LanczosRefinement::refine(const GaussNode& node) const {
 
 std::vector<Cluster> refine_clusters_lanczos(const LanczosRefinement& refinement, const std::vector<GaussNode>& nodes,
                                              double cluster_width,
-                                             const std::function<void(std::size_t, std::size_t)>& progress) {
+                                             const std::function<void(std::size_t, std::size_t)>& progress,
+                                             std::vector<std::string>& unsettled) {
   std::vector<Cluster> clusters;
+  std::optional<UnsettledNode> first_failure;
   for (std::size_t i = 0; i < nodes.size(); ++i) {
-    const Cluster c = refinement.refine(nodes[i]);
+    Cluster c;
+    try {
+      c = refinement.refine(nodes[i]);
+    } catch (const UnsettledNode& e) {
+      // Two survey nodes can stand for the same unsettled one: say it once.
+      if (std::find(unsettled.begin(), unsettled.end(), e.what()) == unsettled.end()) unsettled.emplace_back(e.what());
+      if (!first_failure) first_failure.emplace(e);
+    }
     if (progress) progress(i + 1, nodes.size());
     if (c.members == 0) continue;
     const bool duplicate = std::any_of(clusters.begin(), clusters.end(), [&](const Cluster& o) {
@@ -75,6 +100,7 @@ std::vector<Cluster> refine_clusters_lanczos(const LanczosRefinement& refinement
     });
     if (!duplicate) clusters.push_back(c);
   }
+  if (clusters.empty() && first_failure) throw *first_failure;
   return clusters;
 }
 

@@ -16,17 +16,25 @@
 #include "shift_invert_survey.hpp"
 
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace rc::modes {
+
+// A node that did not settle (solver trouble at that node; the message says where and how far it got).
+struct UnsettledNode : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
 class LanczosRefinement {
  public:
   // w: P_H(e1 × r); mass = A_f − J_zh.
   LanczosRefinement(const VelocitySpace& V, const PoincareForms& forms, const Eigen::VectorXd& w, double mass,
                     const ClusterSettings& settings);
-  // The cluster the node stands for; members = 0 if no node settled in the window.
+  // The cluster the node stands for; members = 0 if no node settled in the window. Throws UnsettledNode if
+  // a node of the window with at least 1 % of the node's weight does not settle (after one run re-shifted
+  // to it).
   Cluster refine(const GaussNode& node) const;
 
  private:
@@ -35,10 +43,13 @@ class LanczosRefinement {
   ClusterSettings settings_;
 };
 
-// Refines the nodes (in the order given); duplicates merged, in order of first appearance.
+// Refines the nodes (in the order given); duplicates merged, in order of first appearance. A node that does
+// not settle is left out and its message appended to `unsettled`; if no node settles at all, throws the
+// first UnsettledNode.
 std::vector<Cluster> refine_clusters_lanczos(const LanczosRefinement& refinement, const std::vector<GaussNode>& nodes,
                                              double cluster_width,
-                                             const std::function<void(std::size_t done, std::size_t total)>& progress);
+                                             const std::function<void(std::size_t done, std::size_t total)>& progress,
+                                             std::vector<std::string>& unsettled);
 
 // Merges nodes whose λ differ by at most width · max(|λ|, 0.1) from their neighbour; sorted by λ.
 std::vector<Cluster> merge_nodes(std::vector<SettledNode> nodes, double width);

@@ -32,6 +32,9 @@ void add_common_options(CLI::App* cmd, TableRequest& req, std::string& output) {
       ->capture_default_str();
   cmd->add_option("--mesh-size", req.mesh.size, "target element size in the shape's length unit (0: 1/8 of the "
                                                 "smallest dimension)")->capture_default_str();
+  cmd->add_option("--radial-size", req.mesh.radial_size,
+                  "cylinder: element size along r of a structured mesh (--mesh-size is then the size along z; 0: "
+                  "unstructured)")->capture_default_str();
   auto* modes = cmd->add_option("--modes", req.selection.modes, "keep the N clusters of largest E");
   auto* coverage = cmd->add_option("--coverage", req.selection.coverage,
                                    "keep clusters until their E sums to this fraction of A_f - J_zh");

@@ -11,11 +11,12 @@ std::string table_text(const ModeTable& t) {
   std::string dims;
   for (const auto& [k, v] : t.dimensions) dims += fmt::format(" {}={:g}", k, v);
   std::string s = fmt::format(
-      "{}{}: order {}, h = {:g}, {} dofs, m = {}\n"
+      "{}{}: order {}, h = {:g}{}, {} dofs, m = {}\n"
       "volume {:.12g}  centroid_z {:.6g}  A_f {:.12g}  C_f {:.12g}\n"
       "J_zh {:.12g}  sum rule A_f - J_zh {:.12g}  coverage {:.10f}\n"
       "solver: {} (tol {:g}), {:.2f} s\n",
-      t.shape, dims, t.fe_order, t.mesh_h, t.ndof, t.m, t.volume, t.centroid_z, t.A_f, t.C_f, t.J_zh, t.sum_rule,
+      t.shape, dims, t.fe_order, t.mesh_h,
+      t.mesh_h_radial > 0 ? fmt::format(" (axial; structured, radial h = {:g})", t.mesh_h_radial) : std::string(), t.ndof, t.m, t.volume, t.centroid_z, t.A_f, t.C_f, t.J_zh, t.sum_rule,
       t.coverage, t.solver, t.tolerance, t.wall_seconds);
   const bool conv = !t.converged.empty();
   if (conv)
@@ -42,6 +43,7 @@ std::string table_json(const ModeTable& t) {
   for (const auto& [k, v] : t.dimensions) j[k] = v;
   j["fe_order"] = t.fe_order;
   j["mesh_h"] = t.mesh_h;
+  if (t.mesh_h_radial > 0) j["mesh_h_radial"] = t.mesh_h_radial;
   j["ndof"] = t.ndof;
   j["m"] = t.m;
   j["volume"] = t.volume;

@@ -34,6 +34,25 @@ std::vector<GaussNode> mapped_rule(const LanczosProcess& lanczos, double sigma, 
   return rule;
 }
 
+// Nodes closer than width · max(|λ|, 0.1) to their neighbour merged: weights summed, λ weighted.
+std::vector<GaussNode> merged(std::vector<GaussNode> rule, double width) {
+  std::sort(rule.begin(), rule.end(), [](const GaussNode& a, const GaussNode& b) { return a.lambda < b.lambda; });
+  std::vector<GaussNode> out;
+  for (const auto& n : rule) {
+    if (!out.empty() && std::isfinite(n.lambda) &&
+        n.lambda - out.back().lambda <= width * std::max(std::abs(n.lambda), 0.1)) {
+      GaussNode& m = out.back();
+      const double E = m.E + n.E;
+      if (E > 0) m.lambda = (m.E * m.lambda + n.E * n.lambda) / E;
+      m.E = E;
+      m.residual = std::max(m.residual, n.residual);
+    } else {
+      out.push_back(n);
+    }
+  }
+  return out;
+}
+
 // The nodes of `now` in [lo, hi] at least as heavy as the floor, with their change against `before`.
 std::vector<SettledNode> watched_nodes(const std::vector<GaussNode>& now, const std::vector<GaussNode>& before,
                                        double lo, double hi, double floor) {
@@ -93,7 +112,7 @@ ShiftInvertRule ShiftInvertSurvey::run(double sigma, double lo, double hi, doubl
     more = lanczos.step(apply);
     const bool check = lanczos.steps() % settings.check_every == 0 || !more;
     if (!check) continue;
-    auto rule = mapped_rule(lanczos, sigma, mass_);
+    auto rule = merged(mapped_rule(lanczos, sigma, mass_), settings.merge_width);
     if (lanczos.exhausted()) previous = rule;  // the rule is exact: nothing moves any more
     watched = watched_nodes(rule, previous, lo, hi, floor);
     previous = std::move(rule);

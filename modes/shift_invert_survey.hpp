@@ -25,6 +25,9 @@ struct ShiftInvertSettings {
   int check_every = 5;              // compare the rule every this many steps
   double lambda_tolerance = 1e-11;  // settled: λ moved less than this · max(|λ|, 0.1) ...
   double weight_tolerance = 1e-9;   // ... and the weight less than this (relative) between two checks
+  double merge_width = 1e-5;        // nodes closer than this · max(|λ|, 0.1) are compared (and returned) as one:
+                                    // a Krylov space that keeps splitting one cluster into near-copies moves
+                                    // its nodes, but not their sum
 };
 
 struct SettledNode {

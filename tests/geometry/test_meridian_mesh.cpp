@@ -132,6 +132,24 @@ void check_invariants(const MeridianMesh& m, const std::string& what) {
   EXPECT_EQ(m.wall_edges.size() % (m.order + 1), 0u);
 }
 
+// --radial-size: a structured cylinder mesh of ⌈R / h_r⌉ × ⌈H / h⌉ rectangles, two triangles each, with the
+// same invariants and the exact area and volume (straight sides).
+TEST(MeridianMesh, StructuredCylinderHasTheRequestedCells) {
+  const ShapeSpec cylinder{"cylinder", {{"radius", 1.0}, {"height", 2.0}}, {}};
+  MeshOptions options{4, 0.5};
+  options.radial_size = 0.1;
+  const MeridianMesh m = mesh_meridian(cylinder, options);
+  EXPECT_EQ(m.num_triangles(), 2u * 10 * 4);
+  check_invariants(m, "structured cylinder");
+  const auto in = integrate(m);
+  EXPECT_NEAR(in.volume, 2 * M_PI, 1e-12);
+  // No node is closer to the axis than the radial size allows (order 4: a quarter of it).
+  double rmin = 1;
+  for (const auto& n : m.nodes)
+    if (n[0] > 0) rmin = std::min(rmin, n[0]);
+  EXPECT_NEAR(rmin, 0.1 / 4, 1e-12);
+}
+
 TEST(MeridianMesh, InvariantsHoldForAllShapesAndOrders) {
   for (const auto& s : shapes())
     for (int order = 1; order <= 6; ++order) check_invariants(mesh(s.spec, order), s.name + std::to_string(order));
@@ -230,6 +248,12 @@ TEST(MeridianMeshErrors, BadOptions) {
   expect_shape_error(sphere, "mesh size -0.1 must be positive", {3, -0.1});
   expect_shape_error(sphere, "mesh size nan", {3, NAN});
   expect_shape_error(sphere, "mesh size 1e-06 is too small", {3, 1e-6});
+  MeshOptions radial{3, 0.5};
+  radial.radial_size = 0.1;
+  expect_shape_error(sphere, "only available for the cylinder", radial);
+  radial.radial_size = -1;
+  expect_shape_error({"cylinder", {{"radius", 1.0}, {"height", 1.0}}, {}}, "radial mesh size -1 must be positive",
+                     radial);
 }
 
 TEST(MeridianMeshErrors, BadSections) {
