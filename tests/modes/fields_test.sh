@@ -44,6 +44,25 @@ else
   bad "cylinder --fields: $(tail -1 run.txt)"
 fi
 
+# Optional: ParaView's own readers (Debian's paraview + python3-paraview; not in install-deps.sh, ~0.5 GB) must
+# read every point, sub-triangle and array that the table holds.
+if command -v pvpython > /dev/null && [ -f c.xdmf ]; then
+  want=$(/usr/bin/python3 -c 'import h5py; f = h5py.File("c.h5", "r")
+print("points %d cells %d" % (len(f["fields/mesh/points"]), len(f["fields/mesh/cells"])), 3 * len(f["modes/E"]))')
+  if pvpython --force-offscreen-rendering "$(cd "$(dirname "$0")" && pwd)/paraview_read.py" c.xdmf > pv.txt 2> pv_err.txt; then
+    read -r label_p np label_c nc narrays <<< "$want"
+    readers=$(grep -c "points $np cells $nc arrays" pv.txt)
+    arrays_ok=$(grep -o "'mode[0-9]* [a-zA-Z_]*'" pv.txt | sort -u | wc -l)
+    [ "$readers" -eq 3 ] && [ "$arrays_ok" -eq "$narrays" ] \
+      && ok "ParaView's XDMF readers read $np points, $nc cells, $narrays arrays (3 readers)" \
+      || bad "ParaView read something else than $want: $(cut -c1-200 pv.txt)"
+  else
+    bad "ParaView could not read c.xdmf: $(tail -2 pv.txt pv_err.txt)"
+  fi
+else
+  echo "skipped: ParaView check (no pvpython)"
+fi
+
 # Rewriting a table without --fields removes its stale companion, and the table has no /fields.
 if [ -f sub/s.h5 ] && "$BIN" sphere --radius 1 --order 2 --mesh-size 0.5 -o sub/s.h5 > run.txt 2>&1; then
   [ ! -e sub/s.xdmf ] && ok "stale companion removed" || bad "stale companion left behind"
