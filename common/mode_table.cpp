@@ -1,5 +1,7 @@
 #include "mode_table.hpp"
 
+#include "mode_fields.hpp"
+
 #include <hdf5.h>
 
 #include <algorithm>
@@ -164,10 +166,16 @@ void ModeTable::sort_by_energy() {
   permute(spread); permute(members); permute(dlambda); permute(dE); permute(converged);
 }
 
-void write_mode_table(const ModeTable& t, const std::filesystem::path& path) {
+std::filesystem::path xdmf_companion(const std::filesystem::path& table_path) {
+  return std::filesystem::path(table_path).replace_extension(".xdmf");
+}
+
+void write_mode_table(const ModeTable& t, const std::filesystem::path& path, const ModeFields* fields) {
   t.validate();
+  if (fields) check_companion_name(path);
   quiet_hdf5();
   const std::filesystem::path tmp = path.string() + ".tmp" + std::to_string(::getpid());
+  const std::filesystem::path xdmf = xdmf_companion(path), xdmf_tmp = xdmf.string() + ".tmp" + std::to_string(::getpid());
   try {
     {
       Hid file(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
@@ -221,11 +229,26 @@ void write_mode_table(const ModeTable& t, const std::filesystem::path& path) {
         put_vector(bands.get(), "E", t.bands.E, H5T_NATIVE_DOUBLE);
         put_vector(bands.get(), "lambda_mean", t.bands.lambda_mean, H5T_NATIVE_DOUBLE);
       }
+      if (fields) write_fields_group(root, *fields);
     }
+    // The companion names the table by its final name, relative to their common folder.
+    if (fields) write_text_file(xdmf_tmp, fields_xdmf(*fields, path.filename().string()));
     std::filesystem::rename(tmp, path);
+    if (!fields) {
+      remove_stale_companion(xdmf);
+      return;
+    }
+    try {
+      std::filesystem::rename(xdmf_tmp, xdmf);
+    } catch (...) {
+      std::error_code ec;
+      std::filesystem::remove(path, ec);  // a table whose companion could not be written is not left behind
+      throw;
+    }
   } catch (...) {
     std::error_code ec;
     std::filesystem::remove(tmp, ec);
+    std::filesystem::remove(xdmf_tmp, ec);
     throw;
   }
 }

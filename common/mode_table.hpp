@@ -58,9 +58,16 @@ struct ModeTable {
   void sort_by_energy();
 };
 
+struct ModeFields;  // mode_fields.hpp
+
 // Writes to a temporary name beside `path` and renames it into place, so a failure never leaves a
 // partial table. Throws std::runtime_error with a one-line cause.
-void write_mode_table(const ModeTable& table, const std::filesystem::path& path);
+// With `fields`, the table also gets /fields and an XDMF companion (xdmf_companion(path)), written and
+// renamed the same way; without, a stale companion of ours (it carries kFieldsXdmfMarker) is removed.
+void write_mode_table(const ModeTable& table, const std::filesystem::path& path, const ModeFields* fields = nullptr);
+
+// FILE.xdmf beside FILE.h5.
+std::filesystem::path xdmf_companion(const std::filesystem::path& table_path);
 
 // Reads and validates a table; throws std::runtime_error("<path>: <cause>") on any problem
 // (missing file, not HDF5, wrong format attribute, missing dataset, inconsistent lengths).

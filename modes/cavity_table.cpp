@@ -1,5 +1,6 @@
 #include "cavity_table.hpp"
 
+#include "cluster_fields.hpp"
 #include "convergence.hpp"
 #include "discretisation.hpp"
 #include "lanczos_refinement.hpp"
@@ -92,7 +93,7 @@ std::vector<Cluster> select_clusters(std::vector<Cluster> clusters, const ModeSe
 
 }  // namespace
 
-ModeTable compute_mode_table(const TableRequest& req, const ProgressFn& progress) {
+ModeTable compute_mode_table(const TableRequest& req, const ProgressFn& progress, ModeFields* fields) {
   validate(req.selection);
   const auto start = Clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
@@ -173,6 +174,9 @@ ModeTable compute_mode_table(const TableRequest& req, const ProgressFn& progress
   }
   t.coverage = sum_rule > 0 ? kept / sum_rule : 1.0;
   t.sort_by_energy();
+  if (fields)
+    *fields = cluster_fields(space, d.forms, t, {req.clusters.cluster_width, req.clusters.qep},
+                             [&](std::size_t done, std::size_t total) { report(fmt::format("fields {}/{}", done, total)); });
   t.wall_seconds = elapsed();
   return t;
 }

@@ -38,7 +38,9 @@ struct TableRequest {
 
 using ProgressFn = std::function<void(const std::string&)>;
 
-// Throws std::runtime_error with a one-line cause on bad input or solver failure.
-ModeTable compute_mode_table(const TableRequest& request, const ProgressFn& progress = {});
+// Throws std::runtime_error with a one-line cause on bad input or solver failure. With `fields`, also the
+// mesh and each kept mode's p and V at the nodes (cluster_fields.hpp; cavity-modes --fields).
+ModeTable compute_mode_table(const TableRequest& request, const ProgressFn& progress = {},
+                             ModeFields* fields = nullptr);
 
 }  // namespace rc::modes

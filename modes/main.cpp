@@ -6,6 +6,7 @@
 // PETSc/SLEPc options (-pep_type ..., -log_view) pass through.
 #include "cavity_table.hpp"
 #include "command_line.hpp"
+#include "mode_fields.hpp"
 #include "mode_table_report.hpp"
 #include "petsc_handles.hpp"
 #include "reference_table.hpp"
@@ -27,7 +28,7 @@ struct ShapeCommand {
   std::map<std::string, double> dims;
 };
 
-void add_common_options(CLI::App* cmd, TableRequest& req, std::string& output) {
+void add_common_options(CLI::App* cmd, TableRequest& req, std::string& output, bool& fields) {
   cmd->add_option("--order", req.mesh.order, "Lagrange order of the isoparametric triangles (1..6)")
       ->capture_default_str();
   cmd->add_option("--mesh-size", req.mesh.size, "target element size in the shape's length unit (0: 1/8 of the "
@@ -62,6 +63,8 @@ void add_common_options(CLI::App* cmd, TableRequest& req, std::string& output) {
                   "order on a mesh twice as coarse")->capture_default_str();
   cmd->add_flag("--no-convergence-check", [&req](std::int64_t) { req.check_convergence = false; },
                 "skip the per-cluster comparison with a coarser discretisation");
+  cmd->add_flag("--fields", fields, "also store the mesh and each mode's p and V in /fields, with an XDMF companion "
+                                    "FILE.xdmf for ParaView (docs/modes.md, Fields)");
   cmd->add_option("-o,--output", output, "mode table to write (HDF5)")->required();
 }
 
@@ -73,6 +76,7 @@ int run(int argc, char** argv) {
   TableRequest req;
   req.mesh.order = 6;
   std::string output;
+  bool fields = false;
   std::vector<ShapeCommand> shapes;
   auto shape = [&](const std::string& kind, const std::string& help,
                    std::vector<std::pair<std::string, std::string>> dims) {
@@ -90,8 +94,8 @@ int run(int argc, char** argv) {
   shape("cone", "cone, apex down, flat lid on top", {{"radius", "lid radius"}, {"height", "height"}});
   auto* section = app.add_subcommand("section", "the user's meridian section (.geo or .msh; see docs/geometry.md)");
   section->add_option("file", req.shape.file, "section file")->required();
-  for (auto& s : shapes) add_common_options(s.app, req, output);
-  add_common_options(section, req, output);
+  for (auto& s : shapes) add_common_options(s.app, req, output, fields);
+  add_common_options(section, req, output, fields);
 
   std::string info_file;
   bool json = false;
@@ -150,8 +154,11 @@ int run(int argc, char** argv) {
   petsc_argv.push_back(nullptr);
   char** pargv = petsc_argv.data();
   rc::modes::PetscSession session(&petsc_argc, &pargv);
-  auto table = rc::modes::compute_mode_table(req, [](const std::string& line) { std::cerr << line << "\n"; });
-  rc::write_mode_table(table, output);
+  if (fields) rc::check_companion_name(output);  // before the long computation
+  rc::ModeFields mode_fields;
+  auto table = rc::modes::compute_mode_table(req, [](const std::string& line) { std::cerr << line << "\n"; },
+                                             fields ? &mode_fields : nullptr);
+  rc::write_mode_table(table, output, fields ? &mode_fields : nullptr);
   std::cout << rc::modes::table_text(table) << std::flush;
   return 0;
 }

@@ -81,6 +81,14 @@ QepSolution QuadraticEigenSolver::collect(PEP pep) const {
     ep.lambda = kr;
     petsc_check(PEPComputeError(pep, i, PEP_ERROR_BACKWARD, &ep.residual), "PEPComputeError");
     ep.coupling = coupling_.evaluate(ep.lambda, xr);
+    if (settings_.keep_eigenvectors) {
+      const PetscScalar* x = nullptr;
+      PetscInt n = 0;
+      petsc_check(VecGetLocalSize(xr, &n), "VecGetLocalSize");
+      petsc_check(VecGetArrayRead(xr, &x), "VecGetArrayRead");
+      ep.p.assign(x, x + n);
+      petsc_check(VecRestoreArrayRead(xr, &x), "VecRestoreArrayRead");
+    }
     sol.pairs.push_back(ep);
   }
   std::sort(sol.pairs.begin(), sol.pairs.end(), [](auto& a, auto& b) { return a.lambda < b.lambda; });

@@ -3,7 +3,8 @@
 // The problem is real symmetric and hyperbolic (M > 0, Kz ≥ 0), so every eigenvalue is real and STOAR
 // with spectrum slicing finds ALL eigenvalues in an interval [lo, hi]: shift-and-invert steps with a
 // sparse LDLᵀ factorisation (MUMPS) whose inertia counts the eigenvalues left of each shift, so nothing in
-// the interval can be missed. E of each eigenpair is computed on the fly; eigenvectors are not kept.
+// the interval can be missed. E of each eigenpair is computed on the fly; eigenvectors are kept only when
+// asked for (QepSettings::keep_eigenvectors: the fields of cavity-modes --fields).
 #pragma once
 
 #include "coupling.hpp"
@@ -19,11 +20,13 @@ struct Eigenpair {
   double lambda = 0;
   ModeCoupling coupling;
   double residual = 0;   // backward error ‖Q(λ)x‖ / ((|λ|²‖M‖ + |λ|‖2Gc‖ + ‖4Kz‖)‖x‖)
+  std::vector<double> p;  // the eigenvector (p at the dofs, SLEPc's scale), only with keep_eigenvectors
 };
 
 struct QepSettings {
   double tolerance = 1e-12;
   int max_iterations = 0;  // 0: SLEPc's default
+  bool keep_eigenvectors = false;
 };
 
 struct QepSolution {

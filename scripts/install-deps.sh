@@ -13,6 +13,8 @@ PACKAGES=(
   libgtest-dev
   python3-h5py python3-matplotlib python3-numpy   # plotting scripts (Debian's /usr/bin/python3)
   python3-scipy                         # bench/cavity_modes_bench.py: Bessel functions for the exact cylinder modes
+  # optional, not installed here (~0.5 GB): paraview python3-paraview -- tests/modes/fields_test.sh then also
+  # opens the --fields XDMF companion with ParaView's own readers
 )
 
 missing=()

@@ -1,0 +1,39 @@
+// The fields of a table's modes at the mesh nodes (cavity-modes --fields; docs/modes.md "Fields").
+//
+// The cluster step keeps no eigenvectors, so each kept /modes row is re-solved here on its own narrow
+// slice: every eigenpair within 2δ of the row's λ (δ = cluster_width · max(|λ|, 0.1), the cluster rule of
+// docs/modes.md), the peak = the one of largest E, the members = those within δ of the peak. The cluster's
+// field is the part of the coupling flow it carries,
+//     W = Σ_l (a_l / N_l²) V_l,   a_l = (e1 × r, V_l),   N_l² = ‖V_l‖²   (SPEC §2),
+// independent of each eigenvector's scale and sign, and for a one-member cluster just its mode. W is
+// normalised like the table (N² = 1, a ≥ 0). With the members' V orthogonal in the kinetic-energy inner
+// product, a(W) = sqrt(Σ a_l²/N_l²) = sqrt(E/2): the stored a checks that.
+//
+// V from p (SPEC §2, m = 1, ω0 = 1, D = 4 − λ²) in real amplitudes, V = (i v_r, v_φ, i v_z) e^{iφ}:
+//     v_r = −(λ p_r + 2 p/r)/D,   v_φ = (2 p_r + λ p/r)/D,   v_z = p_z/λ,
+// with p/r → p_r on the axis (p = 0 there). Gradients at a node are the mean over the elements sharing it.
+#pragma once
+
+#include "fe_space.hpp"
+#include "mode_fields.hpp"
+#include "mode_table.hpp"
+#include "poincare_forms.hpp"
+#include "qep_solver.hpp"
+
+#include <functional>
+
+namespace rc::modes {
+
+struct FieldSettings {
+  double cluster_width = 1e-5;  // δ relative to max(|λ|, 0.1): the cluster rule of docs/modes.md
+  QepSettings qep;
+};
+
+// The mesh (points, sub-triangles, FE triangles) and one field per /modes row of `table`, which must have
+// been computed on `space`. `progress` (may be empty) is told after each row. Throws std::runtime_error if
+// a row's slice holds no eigenpair.
+ModeFields cluster_fields(const FESpace& space, const PoincareForms& forms, const ModeTable& table,
+                          const FieldSettings& settings,
+                          const std::function<void(std::size_t done, std::size_t total)>& progress = {});
+
+}  // namespace rc::modes
