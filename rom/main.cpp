@@ -70,7 +70,8 @@ int main(int argc, char** argv) {
   double from1 = 0, to1 = 0, from2 = 0, to2 = 0;
   int steps1 = 0, steps2 = 0, threads = 0;
   sweep->add_option("SCENE", scene_file, "scene file (TOML)")->required();
-  sweep->add_option("--param", key1, "scene value to sweep, e.g. body[1].spin (1-based indices)")->required();
+  sweep->add_option("--param", key1, "scene value to sweep, e.g. body[1].spin (1-based indices), or a family of "
+                                     "tables, body[2].cavity.table=cone_h%.2f.h5")->required();
   sweep->add_option("--from", from1, "first value")->required();
   sweep->add_option("--to", to1, "last value")->required();
   sweep->add_option("--steps", steps1, "number of values, from..to inclusive (>= 1)")->required();
