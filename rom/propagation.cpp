@@ -1,6 +1,7 @@
 #include "propagation.hpp"
 
 #include "energy.hpp"
+#include "exact_propagation.hpp"
 #include "first_order_system.hpp"
 #include "spectrum.hpp"
 
@@ -116,39 +117,46 @@ History propagate(const ChainModel& m, const Scene& scene) {
   hist.z.resize(steps + 1, nm);
   hist.H.resize(steps + 1);
   hist.H_scale.resize(steps + 1);
+  const EnergyMeter meter(m);
   auto store = [&](long j, const Eigen::VectorXcd& y) {
     Eigen::VectorXcd u, v, w;
     f.from_state(m, y, u, v, w);
     hist.t[j] = j * h;
     hist.u.row(j) = u.transpose();
     for (int l = 0; l < nm; ++l) hist.z(j, l) = w[l] - v[m.modes[l].body];
-    const Energy e = energy(m, u, v, w);
+    const Energy e = meter(u, v, w);
     hist.H[j] = e.total();
     hist.H_scale[j] = e.scale();
+  };
+  // Columns of re + i*im are the states at j0, j0 + 1, ... (exact propagation's blocks).
+  auto store_block = [&](long j0, const Eigen::Ref<const Eigen::MatrixXd>& re,
+                         const Eigen::Ref<const Eigen::MatrixXd>& im) {
+    const long cols = re.cols();
+    const double is = 1.0 / f.s;
+    for (long i = 0; i < cols; ++i) {
+      const long j = j0 + i;
+      hist.t[j] = j * h;
+      for (int k = 0; k < n; ++k) hist.u(j, k) = cd(re(k, i) * is, im(k, i) * is);
+      for (int l = 0; l < nm; ++l) {
+        const int v = n + m.modes[l].body;  // z = w - u-dot of the mode's body
+        hist.z(j, l) = cd(re(2 * n + l, i) - re(v, i), im(2 * n + l, i) - im(v, i));
+      }
+    }
+    meter.block(re.topRows(n) * is, im.topRows(n) * is, re.middleRows(n, n), im.middleRows(n, n),
+                re.bottomRows(nm), im.bottomRows(nm), &hist.H[j0], &hist.H_scale[j0]);
   };
 
   bool done = false;
   if (method == "exact") {
-    Eigen::ComplexEigenSolver<Eigen::MatrixXcd> es(f.B, true);
-    const Eigen::MatrixXcd& V = es.eigenvectors();
-    Eigen::BDCSVD<Eigen::MatrixXcd> svd(V);  // singular values only (cond(V))
-    const double cond = svd.singularValues()(0) / svd.singularValues()(D - 1);
-    hist.eigvec_condition = cond;
-    if (es.info() == Eigen::Success && std::isfinite(cond) && cond < 1e8) {
-      Eigen::VectorXcd mu = es.eigenvalues();
+    ModalForm mf = modal_form(f, !m.has_friction(), kRealTolerance);
+    hist.eigvec_condition = mf.condition;
+    if (mf.usable) {
       // Undamped and stable: the roots are real; drop their rounding-level imaginary parts so that
-      // |e^{i sigma t}| = 1 exactly and the energy cannot drift over long runs.
-      const Spectrum sp = compute_spectrum(m);
-      const bool snap = !m.has_friction() && sp.stable;
-      if (snap)
-        for (int j = 0; j < D; ++j) mu[j] = cd(0, mu[j].imag());
-      const Eigen::VectorXcd c = Eigen::PartialPivLU<Eigen::MatrixXcd>(V).solve(y0);
-      for (long j = 0; j <= steps; ++j) {
-        const double t = j * h;
-        Eigen::VectorXcd e(D);
-        for (int i = 0; i < D; ++i) e[i] = std::exp(mu[i] * t) * c[i];
-        store(j, V * e);
-      }
+      // |e^{i sigma t}| = 1 exactly and the energy cannot drift over long runs (the real form has
+      // exactly real roots already).
+      const bool snap = mf.undamped_real;
+      if (snap && !mf.real) snap_to_imaginary_axis(mf);
+      modal_states(mf, y0, h, steps, store_block);
       hist.method_used = snap ? "exact (eigen-decomposition, real roots)" : "exact (eigen-decomposition)";
       hist.integrator_steps = steps;
       done = true;

@@ -16,9 +16,12 @@
 namespace rc::rom {
 
 struct History {
+  // Row-major: one output time per row, stored contiguously (exact propagation writes whole blocks
+  // of rows at once).
+  using Rows = Eigen::Matrix<std::complex<double>, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
   std::vector<double> t;
-  Eigen::MatrixXcd u;       // steps x n
-  Eigen::MatrixXcd z;       // steps x n_modes: scaled fluid coordinates, S'_kl = (a/N^2)_kl z_kl
+  Rows u;                   // steps x n
+  Rows z;                   // steps x n_modes: scaled fluid coordinates, S'_kl = (a/N^2)_kl z_kl
   std::vector<double> H;    // energy (energy.hpp)
   std::vector<double> H_scale;
   std::string method_used;  // what actually ran
