@@ -1,5 +1,7 @@
 #include "exact_propagation.hpp"
 
+#include "balancing.hpp"
+
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
@@ -50,13 +52,17 @@ Eigen::VectorXcd exponentials(const ModalForm& f, double t) {
 ModalForm modal_form(const FirstOrderSystem& f, bool undamped, double real_tolerance) {
   ModalForm mf;
   mf.n = f.n;
+  // Both paths balance the matrix first (balancing.hpp): the eigen-solvers' error is ~eps |B|.
   if (undamped) {
-    Eigen::EigenSolver<Eigen::MatrixXd> es(real_form_of(f), true);
+    Eigen::MatrixXd A = real_form_of(f);
+    const Eigen::VectorXd S = balance_in_place(A);
+    Eigen::EigenSolver<Eigen::MatrixXd> es(A, true);
     // Real Schur form: a root is real exactly when it comes as a 1x1 block (imaginary part 0); a
     // pair of roots closer than rounding comes as a 2x2 block and takes the complex path below.
     if (es.info() == Eigen::Success && es.eigenvalues().imag().cwiseAbs().maxCoeff() == 0) {
       mf.real = true;
-      mf.W = es.pseudoEigenvectors();  // real eigenvectors when all eigenvalues are real
+      mf.W = S.asDiagonal() * es.pseudoEigenvectors();  // real eigenvectors when all eigenvalues are real
+      mf.W.colwise().normalize();  // unit columns again after the unbalancing (keeps cond(W) honest)
       mf.sigma = es.eigenvalues().real();
       mf.condition = condition_of(mf.W);
       mf.usable = std::isfinite(mf.condition) && mf.condition < kMaxEigvecCondition;
@@ -66,9 +72,12 @@ ModalForm modal_form(const FirstOrderSystem& f, bool undamped, double real_toler
       mf.n = f.n;
     }
   }
-  Eigen::ComplexEigenSolver<Eigen::MatrixXcd> es(f.B, true);
+  Eigen::MatrixXcd B = f.B;
+  const Eigen::VectorXd S = balance_in_place(B);
+  Eigen::ComplexEigenSolver<Eigen::MatrixXcd> es(B, true);
   if (es.info() != Eigen::Success) return mf;
-  mf.V = es.eigenvectors();
+  mf.V = S.asDiagonal() * es.eigenvectors();
+  mf.V.colwise().normalize();
   mf.mu = es.eigenvalues();
   mf.condition = condition_of(mf.V);
   mf.usable = std::isfinite(mf.condition) && mf.condition < kMaxEigvecCondition;

@@ -14,12 +14,10 @@
 #include <stdexcept>
 
 namespace rc::rom {
-namespace {
 using cd = std::complex<double>;
 
-// Dormand-Prince 5(4) on y' = B y between two output times.
-void rk45(const Eigen::MatrixXcd& B, Eigen::VectorXcd& y, double t0, double t1, double tol,
-          double& h, long& steps) {
+void rk45_advance(const Eigen::MatrixXcd& B, Eigen::VectorXcd& y, double t0, double t1, double tol, double& h,
+                  long& steps) {
   static const double c2 = 1.0 / 5, c3 = 3.0 / 10, c4 = 4.0 / 5, c5 = 8.0 / 9;
   static const double a21 = 1.0 / 5, a31 = 3.0 / 40, a32 = 9.0 / 40, a41 = 44.0 / 45,
                       a42 = -56.0 / 15, a43 = 32.0 / 9, a51 = 19372.0 / 6561,
@@ -53,6 +51,14 @@ void rk45(const Eigen::MatrixXcd& B, Eigen::VectorXcd& y, double t0, double t1, 
     h *= std::min(5.0, std::max(0.2, 0.9 * std::pow(std::max(r, 1e-300), -0.2)));
   }
 }
+
+Eigen::MatrixXcd gauss_step_matrix(const Eigen::MatrixXcd& B, double h) {
+  const Eigen::MatrixXcd Z = B * cd(h), Z2 = Z * Z;
+  const Eigen::MatrixXcd Id = Eigen::MatrixXcd::Identity(B.rows(), B.cols());
+  return Eigen::PartialPivLU<Eigen::MatrixXcd>(Id - 0.5 * Z + Z2 / 12.0).solve(Id + 0.5 * Z + Z2 / 12.0);
+}
+
+namespace {
 
 // Largest |sigma| of the first-order system (eigenvalues only).
 double spectral_radius_of(const FirstOrderSystem& f) {
@@ -88,7 +94,7 @@ History propagate(const ChainModel& m, const Scene& scene) {
   if (!scene.run.present) throw std::runtime_error(scene.file.string() + ": run: missing [run] section");
   const auto start = std::chrono::steady_clock::now();
   const FirstOrderSystem f = build_first_order(m);
-  const int n = m.n, nm = m.n_modes(), D = f.dim();
+  const int n = m.n, nm = m.n_modes();
   Eigen::VectorXcd u0(n), v0(n), z0 = Eigen::VectorXcd::Zero(nm);
   for (int k = 0; k < n; ++k) {
     u0[k] = scene.tilt[k];
@@ -181,10 +187,7 @@ History propagate(const ChainModel& m, const Scene& scene) {
     }
     if (sub * steps > 200000000L) throw std::runtime_error("run.tolerance: gauss needs more than 2e8 steps");
     const double hs = h / sub;
-    const Eigen::MatrixXcd Z = f.B * cd(hs), Z2 = Z * Z;
-    const Eigen::MatrixXcd Id = Eigen::MatrixXcd::Identity(D, D);
-    const Eigen::MatrixXcd P = Eigen::PartialPivLU<Eigen::MatrixXcd>(Id - 0.5 * Z + Z2 / 12.0)
-                                   .solve(Id + 0.5 * Z + Z2 / 12.0);
+    const Eigen::MatrixXcd P = gauss_step_matrix(f.B, hs);
     Eigen::VectorXcd y = y0;
     store(0, y);
     for (long j = 1; j <= steps; ++j) {
@@ -200,7 +203,7 @@ History propagate(const ChainModel& m, const Scene& scene) {
     double hh = h;
     long nsteps = 0;
     for (long j = 1; j <= steps; ++j) {
-      rk45(f.B, y, (j - 1) * h, j * h, scene.run.tolerance, hh, nsteps);
+      rk45_advance(f.B, y, (j - 1) * h, j * h, scene.run.tolerance, hh, nsteps);
       store(j, y);
     }
     hist.method_used = "rk45 (" + std::to_string(nsteps) + " steps)";

@@ -43,6 +43,15 @@ inline constexpr double kMaxIntegratorSteps = 1e7;
 // and never fewer than the number of output steps.
 double estimate_integrator_steps(const std::string& method, double rho, const RunSpec& run);
 
+// The integrators' steps on y' = B y (also used by `chain-rom bench` for its work-precision sweep):
+// 2-stage Gauss-Legendre over a step h is the (2,2) Pade approximant of exp(B h),
+//   P = (I - Bh/2 + (Bh)^2/12)^{-1} (I + Bh/2 + (Bh)^2/12),   y_{j+1} = P y_j;
+Eigen::MatrixXcd gauss_step_matrix(const Eigen::MatrixXcd& B, double h);
+// Dormand-Prince 5(4) from t0 to t1 with error control `tol` (relative to 1 + |y|); h is the step
+// to try first and comes back as the next step to try; steps counts accepted + rejected steps.
+void rk45_advance(const Eigen::MatrixXcd& B, Eigen::VectorXcd& y, double t0, double t1, double tol, double& h,
+                  long& steps);
+
 // Throws std::runtime_error naming the method, the estimate, the limit and suggesting method =
 // "exact" if gauss or rk45 would need more than kMaxIntegratorSteps; before any time stepping.
 History propagate(const ChainModel& m, const Scene& scene);
