@@ -69,3 +69,20 @@ if(_no_mpl EQUAL 0)
 else()
   message(STATUS "rom_cli_sweep_png not registered: /usr/bin/python3 lacks matplotlib or numpy")
 endif()
+
+# Error against run time (chain-rom bench): it prints every kind of row and writes the CSV (its format is
+# checked by Bench.CsvIsWellFormed); bad
+# input (no [run], --png without -o, a missing folder) stops with one line, exit 1, no file.
+rom_cli(bench_csv ARGS bench;top_spheroid.toml;-o;out_bench.csv EXPECT_EXIT 0
+        MATCH "exact \\(double\\) +error .*gauss h = .*rk45 tol = .*wrote out_bench.csv: [0-9]+ rows")
+rom_cli(bench_no_run ARGS bench;greenhill_prolate.toml;-o;out_bad_bench.csv EXPECT_EXIT 1
+        MATCH "^chain-rom: error: [^\n]*greenhill_prolate.toml: run: missing \\[run\\] section" NO_FILE out_bad_bench.csv)
+rom_cli(bench_png_needs_csv ARGS bench;top_spheroid.toml;--png;out_bad_bench.png EXPECT_EXIT 1
+        MATCH "--png: needs -o" NO_FILE out_bad_bench.png)
+rom_cli(bench_bad_output_dir ARGS bench;top_spheroid.toml;-o;no_such_dir/b.csv EXPECT_EXIT 1
+        MATCH "output folder does not exist" NO_FILE no_such_dir/b.csv)
+rom_cli(bench_missing_scene ARGS bench;nope.toml;-o;out_bad_bench.csv EXPECT_EXIT 1 MATCH "nope.toml: cannot open"
+        NO_FILE out_bad_bench.csv)
+if(_no_mpl EQUAL 0)
+  rom_cli(bench_png ARGS bench;two_tops.toml;-o;out_bench2.csv;--png;out_bench2.png EXPECT_EXIT 0 MATCH "wrote out_bench2.png")
+endif()
