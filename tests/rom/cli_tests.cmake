@@ -71,8 +71,8 @@ else()
 endif()
 
 # Error against run time (chain-rom bench): it prints every kind of row and writes the CSV (its format is
-# checked by Bench.CsvIsWellFormed); bad
-# input (no [run], --png without -o, a missing folder) stops with one line, exit 1, no file.
+# checked by Bench.CsvIsWellFormed); bad input (no [run], --png without -o, a missing folder) stops with
+# one line, exit 1, no file.
 rom_cli(bench_csv ARGS bench;top_spheroid.toml;-o;out_bench.csv EXPECT_EXIT 0
         MATCH "exact \\(double\\) +error .*gauss h = .*rk45 tol = .*wrote out_bench.csv: [0-9]+ rows")
 rom_cli(bench_no_run ARGS bench;greenhill_prolate.toml;-o;out_bad_bench.csv EXPECT_EXIT 1
