@@ -19,21 +19,47 @@ Eigen::VectorXd fluid_weights(const ChainModel& m) {
   return c;
 }
 
-Energy energy(const ChainModel& m, const Eigen::VectorXcd& u, const Eigen::VectorXcd& v,
-              const Eigen::VectorXcd& w) {
-  Energy e;
-  e.kinetic = 0.5 * (v.adjoint() * m.M_eff.cast<std::complex<double>>() * v)(0, 0).real();
-  e.potential = 0.5 * (u.adjoint() * m.K.cast<std::complex<double>>() * u)(0, 0).real();
+EnergyMeter::EnergyMeter(const ChainModel& m) : M_eff_(m.M_eff), K_(m.K), c_(fluid_weights(m)) {
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> ks(m.K);
-  Eigen::MatrixXd Kabs = ks.eigenvectors() * ks.eigenvalues().cwiseAbs().asDiagonal() *
-                         ks.eigenvectors().transpose();
-  e.potential_abs = 0.5 * (u.adjoint() * Kabs.cast<std::complex<double>>() * u)(0, 0).real();
-  const Eigen::VectorXd c = fluid_weights(m);
-  for (int l = 0; l < m.n_modes(); ++l) {
-    e.fluid += 0.5 * c[l] * std::norm(w[l]);
-    e.fluid_abs += 0.5 * std::abs(c[l]) * std::norm(w[l]);
+  K_abs_ = ks.eigenvectors() * ks.eigenvalues().cwiseAbs().asDiagonal() * ks.eigenvectors().transpose();
+}
+
+Energy EnergyMeter::operator()(const Eigen::VectorXcd& u, const Eigen::VectorXcd& v,
+                               const Eigen::VectorXcd& w) const {
+  Energy e;
+  e.kinetic = 0.5 * v.dot(M_eff_ * v).real();  // dot() conjugates its left side: v^H M v
+  e.potential = 0.5 * u.dot(K_ * u).real();
+  e.potential_abs = 0.5 * u.dot(K_abs_ * u).real();
+  for (Eigen::Index l = 0; l < c_.size(); ++l) {
+    e.fluid += 0.5 * c_[l] * std::norm(w[l]);
+    e.fluid_abs += 0.5 * std::abs(c_[l]) * std::norm(w[l]);
   }
   return e;
+}
+
+void EnergyMeter::block(const Part& u_re, const Part& u_im, const Part& v_re, const Part& v_im,
+                        const Part& w_re, const Part& w_im, double* H, double* scale) const {
+  // x^H S x = a^T S a + b^T S b for x = a + ib and a real symmetric S.
+  const Eigen::MatrixXd Mr = M_eff_ * v_re, Mi = M_eff_ * v_im, Kr = K_ * u_re, Ki = K_ * u_im,
+                        Ar = K_abs_ * u_re, Ai = K_abs_ * u_im;
+  for (Eigen::Index j = 0; j < u_re.cols(); ++j) {
+    const double kin = 0.5 * (v_re.col(j).dot(Mr.col(j)) + v_im.col(j).dot(Mi.col(j))),
+                 pot = 0.5 * (u_re.col(j).dot(Kr.col(j)) + u_im.col(j).dot(Ki.col(j))),
+                 pot_abs = 0.5 * (u_re.col(j).dot(Ar.col(j)) + u_im.col(j).dot(Ai.col(j)));
+    double fl = 0, fl_abs = 0;
+    for (Eigen::Index l = 0; l < c_.size(); ++l) {
+      const double w2 = w_re(l, j) * w_re(l, j) + w_im(l, j) * w_im(l, j);
+      fl += 0.5 * c_[l] * w2;
+      fl_abs += 0.5 * std::abs(c_[l]) * w2;
+    }
+    H[j] = kin + pot + fl;
+    scale[j] = std::abs(kin) + pot_abs + fl_abs;
+  }
+}
+
+Energy energy(const ChainModel& m, const Eigen::VectorXcd& u, const Eigen::VectorXcd& v,
+              const Eigen::VectorXcd& w) {
+  return EnergyMeter(m)(u, v, w);
 }
 
 double dissipation(const ChainModel& m, const Eigen::VectorXcd& v) {

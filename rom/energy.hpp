@@ -20,6 +20,23 @@ struct Energy {
   double potential_abs = 0;
 };
 
+// Evaluates H at many states of one model: the matrices and weights it needs (M_eff, K, |K|, c)
+// are set up once here instead of at every call (|K| takes an eigen-decomposition).
+class EnergyMeter {
+ public:
+  explicit EnergyMeter(const ChainModel& m);
+  Energy operator()(const Eigen::VectorXcd& u, const Eigen::VectorXcd& v, const Eigen::VectorXcd& w) const;
+  // N states given by the real and imaginary parts of their u (n x N), u-dot (n x N) and w
+  // (n_modes x N), one state per column: H and its scale per column.
+  using Part = Eigen::Ref<const Eigen::MatrixXd>;
+  void block(const Part& u_re, const Part& u_im, const Part& v_re, const Part& v_im, const Part& w_re,
+             const Part& w_im, double* H, double* scale) const;
+
+ private:
+  Eigen::MatrixXd M_eff_, K_, K_abs_;
+  Eigen::VectorXd c_;
+};
+
 // NaN-filled when some mode has lambda = 0 on a spinning body (no such integral then).
 Energy energy(const ChainModel& m, const Eigen::VectorXcd& u, const Eigen::VectorXcd& v,
               const Eigen::VectorXcd& w);

@@ -4,42 +4,56 @@
 
 namespace rc::rom {
 
+template <class Real>
+Eigen::Matrix<std::complex<Real>, Eigen::Dynamic, Eigen::Dynamic> first_order_matrix(const ChainModel& m, Real s) {
+  using C = std::complex<Real>;
+  using RMat = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>;
+  using CMat = Eigen::Matrix<C, Eigen::Dynamic, Eigen::Dynamic>;
+  const C I(0, 1);
+  const int n = m.n, nm = m.n_modes(), D = 2 * n + nm;
+  const Eigen::LDLT<RMat> ldlt(m.M_eff.cast<Real>());
+  const RMat MiK = ldlt.solve(m.K.cast<Real>());
+  const RMat Minv = ldlt.solve(RMat::Identity(n, n));
+  Eigen::Matrix<Real, Eigen::Dynamic, 1> Gamma = m.G.cast<Real>();  // C_k w_k0 - sum_l E_kl lambda_kl
+  for (const auto& md : m.modes) Gamma[md.body] -= Real(md.E) * Real(md.lambda);
+
+  CMat B = CMat::Zero(D, D);
+  // (s u)' = s u-dot
+  B.block(0, n, n, n) = C(s) * CMat::Identity(n, n);
+  // M_eff u'' = -K u - (i Gamma + D) u' + i sum E nu w      [(26) with (21) substituted]
+  const CMat Cdamp = I * Gamma.asDiagonal().toDenseMatrix().template cast<C>() + m.D.cast<Real>().template cast<C>();
+  B.block(n, 0, n, n) = (-MiK / s).template cast<C>();
+  B.block(n, n, n, n) = -(Minv.template cast<C>() * Cdamp);
+  for (int l = 0; l < nm; ++l) {
+    const FluidMode& md = m.modes[l];
+    B.block(n, 2 * n + l, n, 1) = (I * Real(md.E) * Real(md.nu)) * Minv.col(md.body).template cast<C>();
+    // w' = -i nu w - i lambda u'      [fluid equation of (26) in w = z + u-dot]
+    B(2 * n + l, n + md.body) = -I * Real(md.lambda);
+    B(2 * n + l, 2 * n + l) = -I * Real(md.nu);
+  }
+  return B;
+}
+
+template Eigen::MatrixXcd first_order_matrix<double>(const ChainModel&, double);
+template Eigen::Matrix<std::complex<long double>, Eigen::Dynamic, Eigen::Dynamic> first_order_matrix<long double>(
+    const ChainModel&, long double);
+
 FirstOrderSystem build_first_order(const ChainModel& m) {
-  using cd = std::complex<double>;
-  const cd I(0, 1);
   FirstOrderSystem f;
-  const int n = m.n, nm = m.n_modes();
-  f.n = n;
-  f.nm = nm;
-  Eigen::LDLT<Eigen::MatrixXd> ldlt(m.M_eff);
-  const Eigen::MatrixXd MiK = ldlt.solve(m.K);
+  f.n = m.n;
+  f.nm = m.n_modes();
+  const Eigen::LDLT<Eigen::MatrixXd> ldlt(m.M_eff);
   Eigen::VectorXd Gamma = m.G;  // Gamma_k = C_k w_k0 - sum_l E_kl lambda_kl
   for (const auto& md : m.modes) Gamma[md.body] -= md.E * md.lambda;
 
   // Frequency scale: sqrt(|M^-1 K|) if there is stiffness, else the gyroscopic/fluid rates.
-  double s = std::sqrt(MiK.norm());
+  double s = std::sqrt(ldlt.solve(m.K).norm());
   if (!(s > 0)) s = ldlt.solve(Eigen::MatrixXd(Gamma.asDiagonal())).norm();
   if (!(s > 0))
     for (const auto& md : m.modes) s = std::max(s, std::abs(md.nu));
   if (!(s > 0) || !std::isfinite(s)) s = 1;
   f.s = s;
-
-  const int D = 2 * n + nm;
-  f.B.setZero(D, D);
-  // (s u)' = s u-dot
-  f.B.block(0, n, n, n) = cd(s) * Eigen::MatrixXcd::Identity(n, n);
-  // M_eff u'' = -K u - (i Gamma + D) u' + i sum E nu w      [(26) with (21) substituted]
-  Eigen::MatrixXcd Cdamp = (I * Eigen::MatrixXd(Gamma.asDiagonal())).eval() + m.D.cast<cd>();
-  f.B.block(n, 0, n, n) = (-MiK / s).cast<cd>();
-  Eigen::MatrixXd Minv = ldlt.solve(Eigen::MatrixXd::Identity(n, n));
-  f.B.block(n, n, n, n) = -(Minv.cast<cd>() * Cdamp);
-  for (int l = 0; l < nm; ++l) {
-    const FluidMode& md = m.modes[l];
-    f.B.block(n, 2 * n + l, n, 1) = (I * md.E * md.nu) * Minv.col(md.body).cast<cd>();
-    // w' = -i nu w - i lambda u'      [fluid equation of (26) in w = z + u-dot]
-    f.B(2 * n + l, n + md.body) = -I * md.lambda;
-    f.B(2 * n + l, 2 * n + l) = -I * md.nu;
-  }
+  f.B = first_order_matrix<double>(m, s);
   return f;
 }
 

@@ -29,4 +29,10 @@ struct FirstOrderSystem {
 
 FirstOrderSystem build_first_order(const ChainModel& m);
 
+// The matrix B of build_first_order assembled in the arithmetic of Real (double or long double) for
+// the balancing scale s, from the model's (double) M_eff, K, D, G, E, lambda, nu: what the
+// extended-precision reference of `chain-rom bench` propagates (reference_propagation.hpp).
+template <class Real>
+Eigen::Matrix<std::complex<Real>, Eigen::Dynamic, Eigen::Dynamic> first_order_matrix(const ChainModel& m, Real s);
+
 }  // namespace rc::rom

@@ -1,5 +1,6 @@
 // chain-rom: characteristic roots and time histories of a chain of spinning bodies with
 // fluid-filled cavities (SPEC §3-4). One-line error and exit code 1 on bad input.
+#include "bench.hpp"
 #include "chain_model.hpp"
 #include "output.hpp"
 #include "propagation.hpp"
@@ -70,7 +71,8 @@ int main(int argc, char** argv) {
   double from1 = 0, to1 = 0, from2 = 0, to2 = 0;
   int steps1 = 0, steps2 = 0, threads = 0;
   sweep->add_option("SCENE", scene_file, "scene file (TOML)")->required();
-  sweep->add_option("--param", key1, "scene value to sweep, e.g. body[1].spin (1-based indices)")->required();
+  sweep->add_option("--param", key1, "scene value to sweep, e.g. body[1].spin (1-based indices), or a family of "
+                                     "tables, body[2].cavity.table=cone_h%.2f.h5")->required();
   sweep->add_option("--from", from1, "first value")->required();
   sweep->add_option("--to", to1, "last value")->required();
   sweep->add_option("--steps", steps1, "number of values, from..to inclusive (>= 1)")->required();
@@ -81,6 +83,15 @@ int main(int argc, char** argv) {
   sweep->add_option("-o,--output", out_file, "CSV: <key>[,<key2>],stable,margin,nonreal, one row per point")->required();
   sweep->add_option("--png", png_file, "also draw the map (scripts/plot_sweep.py with /usr/bin/python3 + matplotlib)");
   sweep->add_option("--threads", threads, "worker threads (default: all cores)");
+
+  auto* bench = app.add_subcommand(
+      "bench", "error against run time: the state at run.t_end by exact, gauss (step sweep) and rk45 (tolerance "
+               "sweep) against an extended-precision reference, and the roots' error against the number of kept "
+               "modes with and without static_correction (docs/rom.md, \"Benchmark\")");
+  bench->add_option("SCENE", scene_file, "scene file (TOML) with a [run] section (t_end, initial state)")->required();
+  bench->add_option("-o,--output", out_file, "CSV: part,method,parameter,value,steps,body,static_correction,"
+                                             "spin_factor,coverage,wall_seconds,cpu_seconds,error");
+  bench->add_option("--png", png_file, "also draw it (scripts/plot_bench.py with /usr/bin/python3 + matplotlib); needs -o");
 
   app.failure_message([](const CLI::App*, const CLI::Error& e) {
     std::string msg = e.what();
@@ -144,6 +155,39 @@ int main(int argc, char** argv) {
                          r.failed, key1.c_str(), p.v1, msg.c_str());
             break;
           }
+      if (!png_file.empty()) {
+        const int rc = run_program({python, script, out_file, png_file});
+        if (rc != 0)
+          throw std::runtime_error("--png: " + script + " failed (exit " + std::to_string(rc) + "); the CSV " +
+                                   out_file + " was written, no PNG");
+        std::printf("wrote %s\n", png_file.c_str());
+      }
+      return 0;
+    }
+    if (bench->parsed()) {
+      const std::string script = RC_PLOT_BENCH_SCRIPT, python = plot_python();
+      if (!png_file.empty() && out_file.empty()) throw std::runtime_error("--png: needs -o (the CSV it is drawn from)");
+      const std::filesystem::path out(out_file);
+      if (!out_file.empty() && out.has_parent_path() && !std::filesystem::is_directory(out.parent_path()))
+        throw std::runtime_error(out_file + ": the output folder does not exist");
+      if (!png_file.empty()) {  // fail before the benchmark, not after it
+        if (!std::filesystem::exists(script))
+          throw std::runtime_error("--png: " + script + " not found (the source tree's scripts/)");
+        if (run_program({python, "-c", "import matplotlib, numpy"}, true) != 0)
+          throw std::runtime_error("--png: " + python + " with matplotlib and numpy is needed to draw the figure "
+                                   "(apt-get install python3-matplotlib); nothing written");
+      }
+      const rc::rom::Scene scene = rc::rom::parse_scene(scene_file);
+      const rc::rom::BenchResult r = rc::rom::run_bench(scene, {}, [](const rc::rom::BenchRow& row) {
+        std::printf("%s\n", rc::rom::format_bench_row(row).c_str());
+        std::fflush(stdout);
+      });
+      std::printf("t_end = %g s, first-order dimension %d, fastest root |sigma| = %.4g rad/s, reference: long "
+                  "double (%d-bit mantissa)\n", r.t_end, r.dimension, r.spectral_radius, r.reference_mantissa_bits);
+      if (!out_file.empty()) {
+        rc::rom::write_bench_csv(r, out);
+        std::printf("wrote %s: %zu rows\n", out_file.c_str(), r.rows.size());
+      }
       if (!png_file.empty()) {
         const int rc = run_program({python, script, out_file, png_file});
         if (rc != 0)

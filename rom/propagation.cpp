@@ -1,6 +1,7 @@
 #include "propagation.hpp"
 
 #include "energy.hpp"
+#include "exact_propagation.hpp"
 #include "first_order_system.hpp"
 #include "spectrum.hpp"
 
@@ -13,12 +14,10 @@
 #include <stdexcept>
 
 namespace rc::rom {
-namespace {
 using cd = std::complex<double>;
 
-// Dormand-Prince 5(4) on y' = B y between two output times.
-void rk45(const Eigen::MatrixXcd& B, Eigen::VectorXcd& y, double t0, double t1, double tol,
-          double& h, long& steps) {
+void rk45_advance(const Eigen::MatrixXcd& B, Eigen::VectorXcd& y, double t0, double t1, double tol, double& h,
+                  long& steps) {
   static const double c2 = 1.0 / 5, c3 = 3.0 / 10, c4 = 4.0 / 5, c5 = 8.0 / 9;
   static const double a21 = 1.0 / 5, a31 = 3.0 / 40, a32 = 9.0 / 40, a41 = 44.0 / 45,
                       a42 = -56.0 / 15, a43 = 32.0 / 9, a51 = 19372.0 / 6561,
@@ -52,6 +51,14 @@ void rk45(const Eigen::MatrixXcd& B, Eigen::VectorXcd& y, double t0, double t1, 
     h *= std::min(5.0, std::max(0.2, 0.9 * std::pow(std::max(r, 1e-300), -0.2)));
   }
 }
+
+Eigen::MatrixXcd gauss_step_matrix(const Eigen::MatrixXcd& B, double h) {
+  const Eigen::MatrixXcd Z = B * cd(h), Z2 = Z * Z;
+  const Eigen::MatrixXcd Id = Eigen::MatrixXcd::Identity(B.rows(), B.cols());
+  return Eigen::PartialPivLU<Eigen::MatrixXcd>(Id - 0.5 * Z + Z2 / 12.0).solve(Id + 0.5 * Z + Z2 / 12.0);
+}
+
+namespace {
 
 // Largest |sigma| of the first-order system (eigenvalues only).
 double spectral_radius_of(const FirstOrderSystem& f) {
@@ -87,7 +94,7 @@ History propagate(const ChainModel& m, const Scene& scene) {
   if (!scene.run.present) throw std::runtime_error(scene.file.string() + ": run: missing [run] section");
   const auto start = std::chrono::steady_clock::now();
   const FirstOrderSystem f = build_first_order(m);
-  const int n = m.n, nm = m.n_modes(), D = f.dim();
+  const int n = m.n, nm = m.n_modes();
   Eigen::VectorXcd u0(n), v0(n), z0 = Eigen::VectorXcd::Zero(nm);
   for (int k = 0; k < n; ++k) {
     u0[k] = scene.tilt[k];
@@ -116,39 +123,46 @@ History propagate(const ChainModel& m, const Scene& scene) {
   hist.z.resize(steps + 1, nm);
   hist.H.resize(steps + 1);
   hist.H_scale.resize(steps + 1);
+  const EnergyMeter meter(m);
   auto store = [&](long j, const Eigen::VectorXcd& y) {
     Eigen::VectorXcd u, v, w;
     f.from_state(m, y, u, v, w);
     hist.t[j] = j * h;
     hist.u.row(j) = u.transpose();
     for (int l = 0; l < nm; ++l) hist.z(j, l) = w[l] - v[m.modes[l].body];
-    const Energy e = energy(m, u, v, w);
+    const Energy e = meter(u, v, w);
     hist.H[j] = e.total();
     hist.H_scale[j] = e.scale();
+  };
+  // Columns of re + i*im are the states at j0, j0 + 1, ... (exact propagation's blocks).
+  auto store_block = [&](long j0, const Eigen::Ref<const Eigen::MatrixXd>& re,
+                         const Eigen::Ref<const Eigen::MatrixXd>& im) {
+    const long cols = re.cols();
+    const double is = 1.0 / f.s;
+    for (long i = 0; i < cols; ++i) {
+      const long j = j0 + i;
+      hist.t[j] = j * h;
+      for (int k = 0; k < n; ++k) hist.u(j, k) = cd(re(k, i) * is, im(k, i) * is);
+      for (int l = 0; l < nm; ++l) {
+        const int v = n + m.modes[l].body;  // z = w - u-dot of the mode's body
+        hist.z(j, l) = cd(re(2 * n + l, i) - re(v, i), im(2 * n + l, i) - im(v, i));
+      }
+    }
+    meter.block(re.topRows(n) * is, im.topRows(n) * is, re.middleRows(n, n), im.middleRows(n, n),
+                re.bottomRows(nm), im.bottomRows(nm), &hist.H[j0], &hist.H_scale[j0]);
   };
 
   bool done = false;
   if (method == "exact") {
-    Eigen::ComplexEigenSolver<Eigen::MatrixXcd> es(f.B, true);
-    const Eigen::MatrixXcd& V = es.eigenvectors();
-    Eigen::BDCSVD<Eigen::MatrixXcd> svd(V);  // singular values only (cond(V))
-    const double cond = svd.singularValues()(0) / svd.singularValues()(D - 1);
-    hist.eigvec_condition = cond;
-    if (es.info() == Eigen::Success && std::isfinite(cond) && cond < 1e8) {
-      Eigen::VectorXcd mu = es.eigenvalues();
+    ModalForm mf = modal_form(f, !m.has_friction(), kRealTolerance);
+    hist.eigvec_condition = mf.condition;
+    if (mf.usable) {
       // Undamped and stable: the roots are real; drop their rounding-level imaginary parts so that
-      // |e^{i sigma t}| = 1 exactly and the energy cannot drift over long runs.
-      const Spectrum sp = compute_spectrum(m);
-      const bool snap = !m.has_friction() && sp.stable;
-      if (snap)
-        for (int j = 0; j < D; ++j) mu[j] = cd(0, mu[j].imag());
-      const Eigen::VectorXcd c = Eigen::PartialPivLU<Eigen::MatrixXcd>(V).solve(y0);
-      for (long j = 0; j <= steps; ++j) {
-        const double t = j * h;
-        Eigen::VectorXcd e(D);
-        for (int i = 0; i < D; ++i) e[i] = std::exp(mu[i] * t) * c[i];
-        store(j, V * e);
-      }
+      // |e^{i sigma t}| = 1 exactly and the energy cannot drift over long runs (the real form has
+      // exactly real roots already).
+      const bool snap = mf.undamped_real;
+      if (snap && !mf.real) snap_to_imaginary_axis(mf);
+      modal_states(mf, y0, h, steps, store_block);
       hist.method_used = snap ? "exact (eigen-decomposition, real roots)" : "exact (eigen-decomposition)";
       hist.integrator_steps = steps;
       done = true;
@@ -173,10 +187,7 @@ History propagate(const ChainModel& m, const Scene& scene) {
     }
     if (sub * steps > 200000000L) throw std::runtime_error("run.tolerance: gauss needs more than 2e8 steps");
     const double hs = h / sub;
-    const Eigen::MatrixXcd Z = f.B * cd(hs), Z2 = Z * Z;
-    const Eigen::MatrixXcd Id = Eigen::MatrixXcd::Identity(D, D);
-    const Eigen::MatrixXcd P = Eigen::PartialPivLU<Eigen::MatrixXcd>(Id - 0.5 * Z + Z2 / 12.0)
-                                   .solve(Id + 0.5 * Z + Z2 / 12.0);
+    const Eigen::MatrixXcd P = gauss_step_matrix(f.B, hs);
     Eigen::VectorXcd y = y0;
     store(0, y);
     for (long j = 1; j <= steps; ++j) {
@@ -192,7 +203,7 @@ History propagate(const ChainModel& m, const Scene& scene) {
     double hh = h;
     long nsteps = 0;
     for (long j = 1; j <= steps; ++j) {
-      rk45(f.B, y, (j - 1) * h, j * h, scene.run.tolerance, hh, nsteps);
+      rk45_advance(f.B, y, (j - 1) * h, j * h, scene.run.tolerance, hh, nsteps);
       store(j, y);
     }
     hist.method_used = "rk45 (" + std::to_string(nsteps) + " steps)";

@@ -16,9 +16,12 @@
 namespace rc::rom {
 
 struct History {
+  // Row-major: one output time per row, stored contiguously (exact propagation writes whole blocks
+  // of rows at once).
+  using Rows = Eigen::Matrix<std::complex<double>, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
   std::vector<double> t;
-  Eigen::MatrixXcd u;       // steps x n
-  Eigen::MatrixXcd z;       // steps x n_modes: scaled fluid coordinates, S'_kl = (a/N^2)_kl z_kl
+  Rows u;                   // steps x n
+  Rows z;                   // steps x n_modes: scaled fluid coordinates, S'_kl = (a/N^2)_kl z_kl
   std::vector<double> H;    // energy (energy.hpp)
   std::vector<double> H_scale;
   std::string method_used;  // what actually ran
@@ -39,6 +42,15 @@ inline constexpr double kMaxIntegratorSteps = 1e7;
 //          about 8e-4 (rho h)^5 on y' = i rho y; 3 is near its stability limit on the imaginary axis),
 // and never fewer than the number of output steps.
 double estimate_integrator_steps(const std::string& method, double rho, const RunSpec& run);
+
+// The integrators' steps on y' = B y (also used by `chain-rom bench` for its work-precision sweep):
+// 2-stage Gauss-Legendre over a step h is the (2,2) Pade approximant of exp(B h),
+//   P = (I - Bh/2 + (Bh)^2/12)^{-1} (I + Bh/2 + (Bh)^2/12),   y_{j+1} = P y_j;
+Eigen::MatrixXcd gauss_step_matrix(const Eigen::MatrixXcd& B, double h);
+// Dormand-Prince 5(4) from t0 to t1 with error control `tol` (relative to 1 + |y|); h is the step
+// to try first and comes back as the next step to try; steps counts accepted + rejected steps.
+void rk45_advance(const Eigen::MatrixXcd& B, Eigen::VectorXcd& y, double t0, double t1, double tol, double& h,
+                  long& steps);
 
 // Throws std::runtime_error naming the method, the estimate, the limit and suggesting method =
 // "exact" if gauss or rk45 would need more than kMaxIntegratorSteps; before any time stepping.

@@ -1,6 +1,7 @@
 #include "sweep.hpp"
 
 #include <atomic>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -18,7 +19,40 @@ namespace {
 
 const char* kKeyList =
     "system.gravity, support.friction, body[k].{mass,A,C,com,next_joint,spin}, "
-    "body[k].cavity.{density,scale,center,coverage}, joint[k].{stiffness,friction}";
+    "body[k].cavity.{density,scale,center,coverage}, joint[k].{stiffness,friction}, "
+    "body[k].cavity.table=PATTERN (a family of tables)";
+
+// A table pattern holds exactly one printf conversion of a double (%e, %f, %g with optional flags,
+// width and precision; %% is a literal %), and nothing that would break the CSV header (the key,
+// pattern included, is its column name). Returns the cause, or "" if the pattern is good.
+std::string table_pattern_problem(const std::string& p) {
+  if (p.empty()) return "empty pattern";
+  if (p.find_first_of(",\"\n\r") != std::string::npos) return "the pattern may not contain a comma, quote or newline";
+  int conversions = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p[i] != '%') continue;
+    if (i + 1 < p.size() && p[i + 1] == '%') {
+      ++i;
+      continue;
+    }
+    std::size_t j = i + 1;
+    while (j < p.size() && std::string("-+ #0").find(p[j]) != std::string::npos) ++j;
+    while (j < p.size() && std::isdigit(static_cast<unsigned char>(p[j]))) ++j;
+    if (j < p.size() && p[j] == '.') {
+      ++j;
+      while (j < p.size() && std::isdigit(static_cast<unsigned char>(p[j]))) ++j;
+    }
+    if (j >= p.size() || std::string("eEfFgG").find(p[j]) == std::string::npos)
+      return "conversion at '" + p.substr(i, std::min<std::size_t>(j + 1, p.size()) - i) +
+             "' is not one of %e, %f, %g (with optional flags, width, precision)";
+    ++conversions;
+    i = j;
+  }
+  if (conversions != 1)
+    return "needs exactly one %e/%f/%g conversion of the swept value (has " + std::to_string(conversions) +
+           "), e.g. cone_h%.2f.h5";
+  return "";
+}
 
 [[noreturn]] void fail(const std::string& option, const std::string& key, const std::string& cause) {
   throw SweepError(option + " " + key + ": " + cause);
@@ -29,7 +63,7 @@ enum class Range { any, nonneg, pos, unit };  // unit: (0, 1]
 Range range_of(const ParamKey& k) {
   using W = ParamKey::Where;
   if (k.where == W::cavity) {
-    if (k.field == "center") return Range::any;
+    if (k.field == "center" || k.field == "table") return Range::any;
     if (k.field == "coverage") return Range::unit;
     return Range::pos;  // density, scale
   }
@@ -45,17 +79,20 @@ std::string fmt(double x) {
 
 }  // namespace
 
-ParamKey parse_param_key(const std::string& key, const Scene& scene, const std::string& option) {
+ParamKey parse_param_key(const std::string& key_text, const Scene& scene, const std::string& option) {
   using W = ParamKey::Where;
+  // body[k].cavity.table=PATTERN: the key proper, then the family's file-name pattern.
+  const std::size_t eq = key_text.find('=');
+  const std::string key = key_text.substr(0, eq);
   static const std::regex re_sys(R"(^system\.([A-Za-z_]+)$)"), re_sup(R"(^support\.([A-Za-z_]+)$)"),
       re_body(R"(^body\[(-?[0-9]+)\]\.([A-Za-z_]+)$)"),
       re_cav(R"(^body\[(-?[0-9]+)\]\.cavity\.([A-Za-z_]+)$)"),
       re_joint(R"(^joint\[(-?[0-9]+)\]\.([A-Za-z_]+)$)");
   const std::set<std::string> body_num{"mass", "A", "C", "com", "next_joint", "spin"};
-  const std::set<std::string> cav_num{"density", "scale", "center", "coverage"};
+  const std::set<std::string> cav_num{"density", "scale", "center", "coverage", "table"};
   const std::set<std::string> joint_num{"stiffness", "friction"};
   ParamKey k;
-  k.text = key;
+  k.text = key_text;
   std::smatch m;
   auto index = [&](const std::string& s, std::size_t count, const std::string& what) {
     long v = 0;
@@ -74,7 +111,7 @@ ParamKey parse_param_key(const std::string& key, const Scene& scene, const std::
     if (f == "kind" || f == "table" || f == "static_correction" || f == "modes")
       fail(option, key, "not a sweepable number (" + f + " is " +
                             (f == "modes" ? "an integer" : f == "static_correction" ? "a boolean" : "a string") +
-                            "); numeric keys: " + kKeyList);
+                            "); keys: " + kKeyList);
     fail(option, key, "unknown key; numeric keys: " + std::string(kKeyList));
   };
   if (std::regex_match(key, m, re_sys)) {
@@ -95,6 +132,15 @@ ParamKey parse_param_key(const std::string& key, const Scene& scene, const std::
     if (!cav) fail(option, key, "body " + std::to_string(k.index + 1) + " has no cavity");
     if (k.field == "coverage" && cav->modes)
       fail(option, key, "the cavity gives modes; coverage can only be swept when modes is absent");
+    if (k.field == "table") {
+      if (eq == std::string::npos)
+        fail(option, key, "a family of tables is swept as " + key +
+                              "=PATTERN, PATTERN a file name with one printf conversion of the swept value "
+                              "(e.g. " + key + "=cone_h%.2f.h5)");
+      k.table_pattern = key_text.substr(eq + 1);
+      const std::string problem = table_pattern_problem(k.table_pattern);
+      if (!problem.empty()) fail(option, key_text, problem);
+    }
   } else if (std::regex_match(key, m, re_body)) {
     k.where = W::body;
     k.field = m[2];
@@ -110,11 +156,30 @@ ParamKey parse_param_key(const std::string& key, const Scene& scene, const std::
   } else {
     fail(option, key, std::string("unknown key; numeric keys: ") + kKeyList);
   }
+  if (eq != std::string::npos && !k.is_table())
+    fail(option, key_text, "only body[k].cavity.table takes =PATTERN");
   return k;
+}
+
+std::filesystem::path table_of(const ParamKey& k, double value) {
+  char buf[4096];
+  // The pattern was checked by table_pattern_problem: one double conversion, nothing else.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wformat-nonliteral"
+  const int len = std::snprintf(buf, sizeof buf, k.table_pattern.c_str(), value);
+#pragma GCC diagnostic pop
+  if (len < 0 || len >= static_cast<int>(sizeof buf)) throw SweepError(k.text + ": file name too long");
+  return fs::path(buf);
+}
+
+void set_param(Scene& s, const ParamKey& k, double value) {
+  if (k.is_table()) s.bodies[k.index].cavity->table = table_of(k, value);
+  else param_ref(s, k) = value;
 }
 
 double& param_ref(Scene& s, const ParamKey& k) {
   using W = ParamKey::Where;
+  if (k.is_table()) throw SweepError(k.text + ": a table key has no numeric value in the scene");
   switch (k.where) {
     case W::system: return s.gravity;
     case W::support: return s.support_friction;
@@ -173,15 +238,13 @@ SweepResult run_sweep(const Scene& base, TableCache& tables, const SweepAxis& a1
 
   auto worker = [&]() {
     Scene s = base;  // private copy: only the swept values change
-    double& x1 = param_ref(s, a1.key);
-    double* x2 = a2 ? &param_ref(s, a2->key) : nullptr;
     for (long p; (p = next.fetch_add(1)) < total;) {
       SweepPoint& pt = r.points[p];
       pt.v1 = a1.value(static_cast<int>(p / n2));
-      x1 = pt.v1;
-      if (x2) {
+      set_param(s, a1.key, pt.v1);
+      if (a2) {
         pt.v2 = a2->value(static_cast<int>(p % n2));
-        *x2 = pt.v2;
+        set_param(s, a2->key, pt.v2);
       }
       try {
         pt.verdict = compute_verdict(build_model(s, &tables));
@@ -202,8 +265,20 @@ SweepResult run_sweep(const Scene& base, TableCache& tables, const SweepAxis& a1
       }
     }
   };
-  // Every table must be in the cache before threads share it (get() then only reads).
+  // Every table must be in the cache before threads share it (get() then only reads): the scene's
+  // own, then every member of a swept family.
   (void)build_model(base, &tables);
+  for (const SweepAxis* ax : {&a1, a2 ? &*a2 : nullptr}) {
+    if (!ax || !ax->key.is_table()) continue;
+    for (int i = 0; i < ax->steps; ++i) {
+      const fs::path file = table_of(ax->key, ax->value(i));
+      try {
+        (void)tables.get(file);
+      } catch (const std::exception& e) {
+        throw SweepError(ax->key.text + ": table of value " + fmt(ax->value(i)) + ": " + e.what());
+      }
+    }
+  }
   std::vector<std::thread> pool;
   for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
   worker();

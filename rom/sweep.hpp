@@ -21,19 +21,27 @@ struct SweepError : std::runtime_error {
 };
 
 // A numeric scene value named by a key such as `body[2].spin`, `joint[1].stiffness`,
-// `body[3].cavity.density`, `system.gravity`, `support.friction` (1-based indices).
+// `body[3].cavity.density`, `system.gravity`, `support.friction` (1-based indices), or a cavity's
+// table out of a family of tables, `body[2].cavity.table=cone_h%.2f.h5`: the swept number is put into
+// the file name by the pattern's one printf conversion (docs/rom.md, "Stability maps").
 struct ParamKey {
   std::string text;   // as the user wrote it
   enum class Where { system, support, body, cavity, joint } where = Where::system;
   int index = 0;      // 0-based body or joint index
-  std::string field;  // e.g. "spin", "density"
+  std::string field;  // e.g. "spin", "density", "table"
+  std::string table_pattern;  // field "table" only: file name with one %e/%f/%g conversion
+  bool is_table() const { return field == "table"; }
 };
 
 // Parses KEY and checks it against the scene (index in range, the body has a cavity, ...).
 // Throws SweepError("<option> <KEY>: <cause>") — one line naming the key.
 ParamKey parse_param_key(const std::string& key, const Scene& scene, const std::string& option = "--param");
-// The value the key names, in the scene (read and write).
+// The value the key names, in the scene (read and write); numeric keys only (not is_table()).
 double& param_ref(Scene& scene, const ParamKey& key);
+// Writes `value` into the scene: the number itself, or for a table key the table file it names.
+void set_param(Scene& scene, const ParamKey& key, double value);
+// A table key's file for `value` (the pattern formatted with it; relative to the current folder).
+std::filesystem::path table_of(const ParamKey& key, double value);
 // Throws SweepError if `value` is outside the key's allowed range (docs/scene-format.md).
 void check_param_value(const ParamKey& key, double value, const std::string& option);
 
@@ -61,8 +69,9 @@ struct SweepResult {
 // Progress callback: (points done, total, seconds elapsed).
 using SweepProgress = std::function<void(long, long, double)>;
 
-// Runs the sweep on `threads` threads (0: std::thread::hardware_concurrency()). `tables` must
-// already hold every table the scene names (build the model of `base` through it once first).
+// Runs the sweep on `threads` threads (0: std::thread::hardware_concurrency()). The scene's own
+// tables and those of a table key's family are read into `tables` before the threads start; a
+// family table that cannot be read throws SweepError naming the key and the file, before any point.
 SweepResult run_sweep(const Scene& base, TableCache& tables, const SweepAxis& a1,
                       const std::optional<SweepAxis>& a2, int threads = 0,
                       const SweepProgress& progress = {});

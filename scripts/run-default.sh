@@ -6,7 +6,9 @@
 #      the cavity-modes binary or the scene),
 #   3. chain-rom spectrum on the scene: roots and stability verdict (also saved to out/default-spectrum.txt),
 #   4. chain-rom run: time history out/default-trajectory.h5,
-#   5. plot it: out/default-trajectory.png (scripts/plot_trajectory.py, Debian's /usr/bin/python3).
+#   5. plot it: out/default-trajectory.png (scripts/plot_trajectory.py, Debian's /usr/bin/python3),
+#   6. chain-rom sweep: stability map over body 1's spin and joint 1's stiffness (100 x 100 points),
+#      out/default-map.csv and out/default-map.png (scripts/plot_sweep.py).
 # Exits non-zero on the first failure.
 set -euo pipefail
 
@@ -22,13 +24,13 @@ START=$SECONDS
 step() { printf '\n[run-default %3ds] %s\n' "$((SECONDS - START))" "$*"; }
 fail() { printf '[run-default] FAILED: %s\n' "$*" >&2; exit 1; }
 
-step "1/5 install and build (scripts/build.sh)"
+step "1/6 install and build (scripts/build.sh)"
 bash "$ROOT/scripts/build.sh" || fail "scripts/build.sh"
 [ -x "$MODES" ] || fail "$MODES was not built (RC_BUILD_MODES off?)"
 [ -x "$ROM" ] || fail "$ROM was not built (RC_BUILD_ROM off?)"
 [ -x "$PY" ] || fail "$PY not found (Debian python3 with python3-h5py, python3-matplotlib)"
 
-step "2/5 mode tables -> ${TABLES#"$ROOT"/}"
+step "2/6 mode tables -> ${TABLES#"$ROOT"/}"
 mkdir -p "$TABLES"
 mapfile -t RECIPES < <(sed -n 's/^# recipe: //p' "$SCENE")
 [ "${#RECIPES[@]}" -gt 0 ] || fail "no '# recipe:' lines in $SCENE"
@@ -52,18 +54,24 @@ for recipe in "${RECIPES[@]}"; do
   echo "  $name: written in $((SECONDS - t0)) s; $summary; $coverage"
 done
 
-step "3/5 chain-rom spectrum ${SCENE#"$ROOT"/}"
+step "3/6 chain-rom spectrum ${SCENE#"$ROOT"/}"
 "$ROM" spectrum "$SCENE" > "$OUT/default-spectrum.txt" || { cat "$OUT/default-spectrum.txt"; fail "chain-rom spectrum"; }
 cat "$OUT/default-spectrum.txt"
 
-step "4/5 chain-rom run -> out/default-trajectory.h5"
+step "4/6 chain-rom run -> out/default-trajectory.h5"
 "$ROM" run "$SCENE" -o "$OUT/default-trajectory.h5" || fail "chain-rom run"
 
-step "5/5 plot -> out/default-trajectory.png"
+step "5/6 plot -> out/default-trajectory.png"
 "$PY" "$ROOT/scripts/plot_trajectory.py" "$OUT/default-trajectory.h5" "$OUT/default-trajectory.png" \
   --title "default scene (data/scenes/default.toml)" || fail "scripts/plot_trajectory.py"
+
+step "6/6 stability map -> out/default-map.png (body[1].spin 100..400 x joint[1].stiffness 0..400)"
+"$ROM" sweep "$SCENE" --param 'body[1].spin' --from 100 --to 400 --steps 100 \
+  --param2 'joint[1].stiffness' --from2 0 --to2 400 --steps2 100 -o "$OUT/default-map.csv" || fail "chain-rom sweep"
+"$PY" "$ROOT/scripts/plot_sweep.py" "$OUT/default-map.csv" "$OUT/default-map.png" \
+  --title "default scene: stability over body 1's spin and joint 1's stiffness" || fail "scripts/plot_sweep.py"
 
 verdict=$(grep -m1 '^stable:' "$OUT/default-spectrum.txt" || true)
 step "done in $((SECONDS - START)) s: $verdict"
 echo "  outputs: out/tables/{cylinder,cone,spheroid}.h5, out/default-spectrum.txt,"
-echo "           out/default-trajectory.h5, out/default-trajectory.png"
+echo "           out/default-trajectory.h5, out/default-trajectory.png, out/default-map.csv, out/default-map.png"

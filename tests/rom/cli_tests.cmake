@@ -40,8 +40,16 @@ rom_cli(sweep_2d ARGS ${_sw};--param;body[1].spin;--from;50;--to;300;--steps;4;-
         EXPECT_EXIT 0 MATCH "wrote out_sweep2.csv: 12 points" LINES 13 LINES_FILE out_sweep2.csv)
 rom_cli(sweep_bad_key ARGS ${_sw};--param;body[1].colour;--from;0;--to;1;--steps;3;-o;out_bad_sweep.csv EXPECT_EXIT 1
         MATCH "^chain-rom: error: --param body\\[1\\]\\.colour: unknown key" NO_FILE out_bad_sweep.csv)
-rom_cli(sweep_non_numeric ARGS ${_sw};--param;body[1].cavity.table;--from;0;--to;1;--steps;3;-o;out_bad_sweep.csv EXPECT_EXIT 1
-        MATCH "--param body\\[1\\]\\.cavity\\.table: not a sweepable number" NO_FILE out_bad_sweep.csv)
+rom_cli(sweep_non_numeric ARGS ${_sw};--param;body[1].cavity.modes;--from;0;--to;1;--steps;3;-o;out_bad_sweep.csv EXPECT_EXIT 1
+        MATCH "--param body\\[1\\]\\.cavity\\.modes: not a sweepable number" NO_FILE out_bad_sweep.csv)
+# A family of tables (Greenhill: spheroid c/a = 0.5 and 3.5 stable, 2 unstable); a missing member or a
+# table key without its pattern stop before any work.
+rom_cli(sweep_family ARGS sweep;greenhill_prolate.toml;--param;body[1].cavity.table=family_c%.1f.h5;--from;0.5;--to;3.5;--steps;3;-o;out_family.csv
+        EXPECT_EXIT 0 MATCH "wrote out_family.csv: 3 points \\(2 stable, 1 unstable, 0 failed\\)" LINES 4 LINES_FILE out_family.csv)
+rom_cli(sweep_family_missing ARGS sweep;greenhill_prolate.toml;--param;body[1].cavity.table=family_c%.1f.h5;--from;0.5;--to;3.5;--steps;4;-o;out_bad_sweep.csv
+        EXPECT_EXIT 1 MATCH "table of value 1\\.5: .*family_c1\\.5\\.h5" NO_FILE out_bad_sweep.csv)
+rom_cli(sweep_table_no_pattern ARGS ${_sw};--param;body[1].cavity.table;--from;0;--to;1;--steps;3;-o;out_bad_sweep.csv EXPECT_EXIT 1
+        MATCH "--param body\\[1\\]\\.cavity\\.table: a family of tables is swept as" NO_FILE out_bad_sweep.csv)
 rom_cli(sweep_bad_index ARGS ${_sw};--param;body[2].spin;--from;0;--to;1;--steps;3;-o;out_bad_sweep.csv EXPECT_EXIT 1
         MATCH "--param body\\[2\\]\\.spin: body index 2 out of range 1\\.\\.1" NO_FILE out_bad_sweep.csv)
 rom_cli(sweep_bad_index2 ARGS ${_sw};--param;body[1].spin;--from;0;--to;1;--steps;3;--param2;joint[1].stiffness;--from2;0;--to2;1;--steps2;2;-o;out_bad_sweep.csv
@@ -60,4 +68,21 @@ if(_no_mpl EQUAL 0)
           EXPECT_EXIT 0 MATCH "wrote out_sweep3.png")
 else()
   message(STATUS "rom_cli_sweep_png not registered: /usr/bin/python3 lacks matplotlib or numpy")
+endif()
+
+# Error against run time (chain-rom bench): it prints every kind of row and writes the CSV (its format is
+# checked by Bench.CsvIsWellFormed); bad input (no [run], --png without -o, a missing folder) stops with
+# one line, exit 1, no file.
+rom_cli(bench_csv ARGS bench;top_spheroid.toml;-o;out_bench.csv EXPECT_EXIT 0
+        MATCH "exact \\(double\\) +error .*gauss h = .*rk45 tol = .*wrote out_bench.csv: [0-9]+ rows")
+rom_cli(bench_no_run ARGS bench;greenhill_prolate.toml;-o;out_bad_bench.csv EXPECT_EXIT 1
+        MATCH "^chain-rom: error: [^\n]*greenhill_prolate.toml: run: missing \\[run\\] section" NO_FILE out_bad_bench.csv)
+rom_cli(bench_png_needs_csv ARGS bench;top_spheroid.toml;--png;out_bad_bench.png EXPECT_EXIT 1
+        MATCH "--png: needs -o" NO_FILE out_bad_bench.png)
+rom_cli(bench_bad_output_dir ARGS bench;top_spheroid.toml;-o;no_such_dir/b.csv EXPECT_EXIT 1
+        MATCH "output folder does not exist" NO_FILE no_such_dir/b.csv)
+rom_cli(bench_missing_scene ARGS bench;nope.toml;-o;out_bad_bench.csv EXPECT_EXIT 1 MATCH "nope.toml: cannot open"
+        NO_FILE out_bad_bench.csv)
+if(_no_mpl EQUAL 0)
+  rom_cli(bench_png ARGS bench;two_tops.toml;-o;out_bench2.csv;--png;out_bench2.png EXPECT_EXIT 0 MATCH "wrote out_bench2.png")
 endif()

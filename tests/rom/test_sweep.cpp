@@ -197,7 +197,15 @@ TEST(Sweep, KeysResolveAndBadKeysNameThemselves) {
   EXPECT_EQ(msg("joint[2].stiffness").rfind("--param joint[2].stiffness: joint index 2 out of range 1..1", 0), 0u);
   EXPECT_EQ(msg("body[1].colour").rfind("--param body[1].colour: unknown key", 0), 0u);
   EXPECT_EQ(msg("spin").rfind("--param spin: unknown key", 0), 0u);
-  EXPECT_EQ(msg("body[1].cavity.table").rfind("--param body[1].cavity.table: not a sweepable number", 0), 0u);
+  EXPECT_EQ(msg("body[1].cavity.table").rfind("--param body[1].cavity.table: a family of tables is swept as", 0), 0u);
+  EXPECT_EQ(msg("body[1].cavity.modes").rfind("--param body[1].cavity.modes: not a sweepable number", 0), 0u);
+  EXPECT_EQ(msg("body[1].cavity.table=c.h5").rfind("--param body[1].cavity.table=c.h5: needs exactly one", 0), 0u);
+  EXPECT_EQ(msg("body[1].cavity.table=c%d.h5").rfind("--param body[1].cavity.table=c%d.h5: conversion at '%d'", 0), 0u);
+  EXPECT_NE(msg("body[1].cavity.table=c%g_%g.h5").find("(has 2)"), std::string::npos);
+  EXPECT_NE(msg("body[1].cavity.table=a,%g.h5").find("comma"), std::string::npos);
+  EXPECT_EQ(msg("body[1].spin=%g").rfind("--param body[1].spin=%g: only body[k].cavity.table takes =PATTERN", 0), 0u);
+  EXPECT_EQ(msg("body[1].cavity.table=c_100%%_%.1f.h5"), "no error");
+  EXPECT_EQ(table_of(parse_param_key("body[1].cavity.table=c_100%%_%.1f.h5", s), 2.5).string(), "c_100%_2.5.h5");
   EXPECT_EQ(msg("system.kind").rfind("--param system.kind: not a sweepable number", 0), 0u);
   EXPECT_EQ(msg("body[2].cavity.density").rfind("--param body[2].cavity.density: body 2 has no cavity", 0), 0u);
   EXPECT_EQ(msg("body[2].next_joint").rfind("--param body[2].next_joint: next_joint of the last body", 0), 0u);
@@ -207,4 +215,60 @@ TEST(Sweep, KeysResolveAndBadKeysNameThemselves) {
   EXPECT_THROW(check_param_value(mass, -1, "--from"), SweepError);
   EXPECT_NO_THROW(check_param_value(mass, 0, "--from"));
   EXPECT_THROW(check_param_value(parse_param_key("body[1].cavity.density", s), 0, "--to"), SweepError);
+}
+
+// A family of tables: the spheroid's polar semi-axis c swept through the file name
+// (body[1].cavity.table=<dir>/greenhill_c%.2f.h5). Greenhill (massless shell, no gravity): unstable
+// iff a < c < 3a, whatever the spin. Every point must give that verdict and the verdict, margin and
+// non-real count of compute_spectrum on a scene that names the member table directly.
+TEST(Sweep, FamilyOfTablesFollowsGreenhillAcrossTheAspect) {
+  const std::string pattern = (test_dir() / "greenhill_c%.2f.h5").string();
+  const int K = 36;  // c = 0.45 .. 3.95 in steps of 0.1: no value on a boundary (c = 1, 3)
+  for (int i = 0; i < K; ++i) {
+    char name[64];
+    std::snprintf(name, sizeof name, "greenhill_c%.2f.h5", 0.45 + 0.1 * i);
+    write_table(spheroid_table(1.0, 0.45 + 0.1 * i), test_dir() / name);
+  }
+  Body b; b.mass = 0; b.A = 0; b.C = 0; b.com = 0; b.spin = 20;
+  b.table = "greenhill_c0.45.h5"; b.scale = 0.1; b.density = 1000; b.center = 0;
+  const Scene s = scene_of(scene_text({b}, {}, 0.0));
+  const SweepAxis fam = axis(s, "body[1].cavity.table=" + pattern, 0.45, 3.95, K);
+  TableCache tables;
+  const SweepResult r = run_sweep(s, tables, fam, axis(s, "body[1].spin", 10, 40, 4), 2);
+  ASSERT_EQ(r.points.size(), static_cast<std::size_t>(4 * K));
+  EXPECT_EQ(tables.size(), static_cast<std::size_t>(K));  // the scene's own table is in the family
+  int unstable = 0;
+  double worst_margin = 0;
+  for (const SweepPoint& p : r.points) {
+    ASSERT_TRUE(p.ok) << p.error;
+    const bool greenhill_unstable = p.v1 > 1 && p.v1 < 3;
+    EXPECT_EQ(p.verdict.stable, !greenhill_unstable) << "c = " << p.v1 << ", spin " << p.v2;
+    unstable += !p.verdict.stable;
+    Scene t = s;
+    t.bodies[0].spin = p.v2;
+    char name[64];
+    std::snprintf(name, sizeof name, "greenhill_c%.2f.h5", p.v1);
+    t.bodies[0].cavity->table = test_dir() / name;
+    const Spectrum sp = compute_spectrum(build_model(t));
+    EXPECT_EQ(p.verdict.stable, sp.stable);
+    EXPECT_EQ(p.verdict.nonreal, sp.nonreal);
+    worst_margin = std::max(worst_margin, std::abs(p.verdict.margin - sp.margin) / (1 + sp.margin));
+  }
+  std::printf("  c/a 0.45..3.95 x spin 10..40: %d of %d points unstable (Greenhill: 20 values x 4 spins = 80); "
+              "margin vs spectrum %.2e\n", unstable, 4 * K, worst_margin);
+  EXPECT_EQ(unstable, 80);
+  EXPECT_LT(worst_margin, 1e-9);
+
+  // A member missing from the family: one line naming the key and the value, before any point.
+  const SweepAxis beyond = axis(s, "body[1].cavity.table=" + pattern, 0.45, 4.45, 41);
+  TableCache t2;
+  try {
+    run_sweep(s, t2, beyond, std::nullopt, 1);
+    ADD_FAILURE() << "missing member accepted";
+  } catch (const SweepError& e) {
+    const std::string m = e.what();
+    std::printf("  missing member: %s\n", m.c_str());
+    EXPECT_NE(m.find("table of value 4.05"), std::string::npos) << m;
+    EXPECT_EQ(m.find('\n'), std::string::npos);
+  }
 }

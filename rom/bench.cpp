@@ -1,0 +1,365 @@
+#include "bench.hpp"
+
+#include "chain_model.hpp"
+#include "energy.hpp"
+#include "exact_propagation.hpp"
+#include "first_order_system.hpp"
+#include "propagation.hpp"
+#include "reference_propagation.hpp"
+#include "spectrum.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <unsupported/Eigen/MatrixFunctions>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <fstream>
+#include <stdexcept>
+#include <unistd.h>
+
+namespace rc::rom {
+namespace fs = std::filesystem;
+namespace {
+using cd = std::complex<double>;
+
+double process_cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+struct Timing {
+  double wall = 0, cpu = 0;
+};
+
+// Runs f until the runs add up to min_seconds of wall time (at least once, at most 1000 times):
+// the best wall time of one run (least disturbed by other load) and the mean CPU time per run.
+template <class F>
+Timing time_runs(F&& f, double min_seconds) {
+  using clock = std::chrono::steady_clock;
+  Timing t{1e300, 0};
+  double total = 0;
+  int reps = 0;
+  const double cpu0 = process_cpu_seconds();
+  do {
+    const auto a = clock::now();
+    f();
+    const double w = std::chrono::duration<double>(clock::now() - a).count();
+    t.wall = std::min(t.wall, w);
+    total += w;
+    ++reps;
+  } while (total < min_seconds && reps < 1000);
+  t.cpu = (process_cpu_seconds() - cpu0) / reps;
+  return t;
+}
+
+double relative_error(const Eigen::VectorXcd& y, const Eigen::VectorXcd& ref) {
+  return (y - ref).norm() / ref.norm();
+}
+
+// ---- part 1: work-precision ---------------------------------------------------------------------
+
+struct WorkSetup {
+  const ChainModel& m;
+  FirstOrderSystem f;
+  Eigen::VectorXcd y0, ref;
+  double T = 0, rho = 0;
+};
+
+// Stop a sweep once the error reaches the rounding floor: below 1e-14, or below 1e-9 and no longer
+// halving when the work doubles (or more).
+bool at_floor(double err, double previous) { return err < 1e-14 || (err < 1e-9 && err > 0.5 * previous); }
+
+void sweep_gauss(const WorkSetup& w, const BenchOptions& opt, std::vector<BenchRow>& rows,
+                 const std::function<void(const BenchRow&)>& progress) {
+  // rho h = 8, 4, 2, 1, 1/2, ...: 2-stage Gauss is A-stable, so every step size gives a bounded answer.
+  double previous = 1e300;
+  for (int k = -3; k < 40; ++k) {
+    const long N = std::max(1L, static_cast<long>(std::ceil(w.T * w.rho * std::ldexp(1.0, k))));
+    if (static_cast<double>(N) > opt.max_steps) break;
+    const double h = w.T / static_cast<double>(N);
+    Eigen::VectorXcd y, tmp(w.y0.size());
+    const Timing tm = time_runs([&] {
+      const Eigen::MatrixXcd P = gauss_step_matrix(w.f.B, h);
+      y = w.y0;
+      for (long j = 0; j < N; ++j) {
+        tmp.noalias() = P * y;
+        y.swap(tmp);
+      }
+    }, opt.min_seconds);
+    BenchRow r;
+    r.part = "work";
+    r.method = "gauss";
+    r.parameter = "step";
+    r.value = h;
+    r.steps = N;
+    r.wall_seconds = tm.wall;
+    r.cpu_seconds = tm.cpu;
+    r.error = relative_error(y, w.ref);
+    rows.push_back(r);
+    if (progress) progress(r);
+    if (at_floor(r.error, previous)) break;
+    previous = r.error;
+  }
+}
+
+void sweep_rk45(const WorkSetup& w, const Scene& scene, const BenchOptions& opt, std::vector<BenchRow>& rows,
+                const std::function<void(const BenchRow&)>& progress) {
+  double previous = 1e300;
+  for (int k = 2; k <= 14; ++k) {
+    const double tol = std::pow(10.0, -k);
+    RunSpec run = scene.run;
+    run.tolerance = tol;
+    run.output_step = run.t_end;  // one output: the final state
+    if (estimate_integrator_steps("rk45", w.rho, run) > opt.max_steps) break;
+    Eigen::VectorXcd y;
+    long steps = 0;
+    const Timing tm = time_runs([&] {
+      y = w.y0;
+      steps = 0;
+      double h = std::min(w.T, 1.0 / std::max(w.rho, 1e-300));
+      rk45_advance(w.f.B, y, 0.0, w.T, tol, h, steps);
+    }, opt.min_seconds);
+    BenchRow r;
+    r.part = "work";
+    r.method = "rk45";
+    r.parameter = "tolerance";
+    r.value = tol;
+    r.steps = steps;
+    r.wall_seconds = tm.wall;
+    r.cpu_seconds = tm.cpu;
+    r.error = relative_error(y, w.ref);
+    rows.push_back(r);
+    if (progress) progress(r);
+    if (at_floor(r.error, previous)) break;
+    previous = r.error;
+  }
+}
+
+void work_precision(const ChainModel& m, const Scene& scene, const BenchOptions& opt, BenchResult& out,
+                    const std::function<void(const BenchRow&)>& progress) {
+  WorkSetup w{m, build_first_order(m), {}, {}, scene.run.t_end, 0};
+  Eigen::VectorXcd u0(m.n), v0(m.n);
+  for (int k = 0; k < m.n; ++k) {
+    u0[k] = scene.tilt[k];
+    v0[k] = scene.rate[k];
+  }
+  w.y0 = w.f.to_state(m, u0, v0, Eigen::VectorXcd::Zero(m.n_modes()));
+  if (!(w.y0.norm() > 0))
+    throw std::runtime_error(scene.file.string() + ": initial: the initial state is zero (nothing moves): "
+                             "give initial.tilt or initial.rate");
+  Eigen::ComplexEigenSolver<Eigen::MatrixXcd> es(w.f.B, false);
+  w.rho = es.eigenvalues().cwiseAbs().maxCoeff();
+  out.spectral_radius = w.rho;
+  out.dimension = w.f.dim();
+
+  // The reference, its self-check (two long double methods) and its energy.
+  ReferenceState ref;
+  const Timing tr = time_runs([&] { ref = reference_state(m, w.f.s, w.y0, w.T); }, 0);
+  w.ref = ref.y;
+  out.reference_mantissa_bits = ref.mantissa_bits;
+  BenchRow r;
+  r.part = "work";
+  r.method = "reference";
+  r.parameter = "method_difference";
+  r.wall_seconds = tr.wall;
+  r.cpu_seconds = tr.cpu;
+  r.error = ref.method_difference;
+  out.rows.push_back(r);
+  if (progress) progress(r);
+  if (!m.has_friction()) {
+    // H is conserved without friction (docs/rom.md, "Energy"): its change from y0 to the reference's
+    // final state, relative to the size of its parts.
+    const EnergyMeter meter(m);
+    Eigen::VectorXcd u, v, wv;
+    w.f.from_state(m, w.y0, u, v, wv);
+    const Energy e0 = meter(u, v, wv);
+    w.f.from_state(m, w.ref, u, v, wv);
+    const Energy e1 = meter(u, v, wv);
+    BenchRow re = r;
+    re.parameter = "energy_drift";
+    re.error = std::abs(e1.total() - e0.total()) / std::max(e0.scale(), 1e-300);
+    re.wall_seconds = re.cpu_seconds = BenchRow::nan;
+    out.rows.push_back(re);
+    if (progress) progress(re);
+  }
+
+  // exact in double: eigen-decomposition (real form when it applies) + the state at t_end.
+  Eigen::VectorXcd y;
+  std::string how;
+  const Timing te = time_runs([&] {
+    ModalForm mf = modal_form(w.f, !m.has_friction(), kRealTolerance);
+    if (mf.usable) {
+      if (mf.undamped_real && !mf.real) snap_to_imaginary_axis(mf);
+      y = modal_state_at(mf, w.y0, w.T);
+    } else {
+      y = (w.f.B * cd(w.T)).exp() * w.y0;  // defective spectrum: the exponential itself
+    }
+  }, opt.min_seconds);
+  BenchRow rx;
+  rx.part = "work";
+  rx.method = "exact";
+  rx.parameter = "none";
+  rx.wall_seconds = te.wall;
+  rx.cpu_seconds = te.cpu;
+  rx.error = relative_error(y, w.ref);
+  out.rows.push_back(rx);
+  if (progress) progress(rx);
+
+  sweep_gauss(w, opt, out.rows, progress);
+  sweep_rk45(w, scene, opt, out.rows, progress);
+}
+
+// ---- part 2: roots against kept modes ------------------------------------------------------------
+
+std::vector<cd> roots_of(const ChainModel& m) {
+  const FirstOrderSystem f = build_first_order(m);
+  Eigen::ComplexEigenSolver<Eigen::MatrixXcd> es(f.B, false);
+  if (es.info() != Eigen::Success) throw std::runtime_error("bench: eigen-solver did not converge");
+  std::vector<cd> r;
+  for (Eigen::Index i = 0; i < es.eigenvalues().size(); ++i) r.push_back(cd(0, -1) * es.eigenvalues()[i]);
+  return r;
+}
+
+// Largest relative distance from a reference body root to the nearest root of `roots`.
+double body_root_error(const std::vector<cd>& body_ref, const std::vector<cd>& roots) {
+  double worst = 0;
+  for (const cd& r : body_ref) {
+    double best = 1e300;
+    for (const cd& s : roots) best = std::min(best, std::abs(s - r));
+    worst = std::max(worst, best / std::max(std::abs(r), 1e-300));
+  }
+  return worst;
+}
+
+void roots_against_modes(const Scene& scene, BenchResult& out, const std::function<void(const BenchRow&)>& progress) {
+  TableCache tables;
+  // Reference scene: every coupling mode of every table, static correction on.
+  Scene full = scene;
+  for (BodySpec& b : full.bodies)
+    if (b.cavity) {
+      b.cavity->modes.reset();
+      b.cavity->coverage.reset();
+      b.cavity->static_correction = true;
+    }
+  for (const double factor : {1.0, 0.0}) {
+    Scene ref_scene = full;
+    for (BodySpec& b : ref_scene.bodies) b.spin *= factor;
+    const ChainModel ref_model = build_model(ref_scene, &tables);
+    const Spectrum sp = compute_spectrum(ref_model);
+    std::vector<cd> body_ref;
+    for (const Root& r : sp.roots)
+      if (r.owner.rfind("body", 0) == 0) body_ref.push_back(r.sigma);
+    for (int k = 0; k < ref_model.n; ++k) {
+      int all = 0;
+      for (const FluidMode& md : ref_model.modes) all += md.body == k ? 1 : 0;
+      if (all < 2) continue;  // nothing to truncate
+      std::vector<int> kept;
+      for (int q = 1; q < all; q *= 2) kept.push_back(q);
+      kept.push_back(all);
+      for (const int q : kept)
+        for (const int corrected : {0, 1}) {
+          Scene s = ref_scene;
+          s.bodies[k].cavity->modes = q;
+          s.bodies[k].cavity->static_correction = corrected == 1;
+          ChainModel model;
+          std::vector<cd> roots;
+          const Timing t = time_runs([&] {
+            model = build_model(s, &tables);
+            roots = roots_of(model);
+          }, 0);
+          BenchRow r;
+          r.part = "roots";
+          r.method = "modes";
+          r.parameter = "kept_modes";
+          r.value = q;
+          r.body = k + 1;
+          r.static_correction = corrected;
+          r.spin_factor = factor;
+          r.coverage = model.bodies[k].coverage;
+          r.wall_seconds = t.wall;
+          r.cpu_seconds = t.cpu;
+          r.error = body_root_error(body_ref, roots);
+          out.rows.push_back(r);
+          if (progress) progress(r);
+        }
+    }
+  }
+}
+
+std::string field(double x, const char* fmt = "%.6e") {
+  if (std::isnan(x)) return "";
+  char buf[48];
+  std::snprintf(buf, sizeof buf, fmt, x);
+  return buf;
+}
+
+}  // namespace
+
+BenchResult run_bench(const Scene& scene, const BenchOptions& options,
+                      const std::function<void(const BenchRow&)>& progress) {
+  if (!scene.run.present)
+    throw std::runtime_error(scene.file.string() + ": run: missing [run] section (bench needs run.t_end)");
+  if (!(scene.run.t_end > 0) || !std::isfinite(scene.run.t_end))
+    throw std::runtime_error(scene.file.string() + ": run.t_end: must be > 0 for bench");
+  BenchResult out;
+  out.t_end = scene.run.t_end;
+  const ChainModel m = build_model(scene);
+  work_precision(m, scene, options, out, progress);
+  roots_against_modes(scene, out, progress);
+  return out;
+}
+
+std::string format_bench_row(const BenchRow& r) {
+  char buf[256];
+  if (r.part == "work") {
+    std::string what = r.method;
+    if (r.parameter == "step") what += " h = " + field(r.value, "%.3g") + " s (" + std::to_string(r.steps) + " steps)";
+    else if (r.parameter == "tolerance") what += " tol = " + field(r.value, "%.0e") + " (" + std::to_string(r.steps) + " steps)";
+    else if (r.parameter == "method_difference") what += ": eigen-decomposition vs matrix exponential, long double";
+    else if (r.parameter == "energy_drift") what += ": energy change 0 -> t_end, relative";
+    else what += " (double)";
+    std::snprintf(buf, sizeof buf, "%-62s error %9.2e   wall %s s  cpu %s s", what.c_str(), r.error,
+                  std::isnan(r.wall_seconds) ? "-" : field(r.wall_seconds, "%.3g").c_str(),
+                  std::isnan(r.cpu_seconds) ? "-" : field(r.cpu_seconds, "%.3g").c_str());
+  } else {
+    std::snprintf(buf, sizeof buf, "roots, spin x %g, body %d: %3d modes kept (coverage %.4f), %s: body-root error %9.2e",
+                  r.spin_factor, r.body, static_cast<int>(r.value), r.coverage,
+                  r.static_correction ? "static correction   " : "no static correction", r.error);
+  }
+  return buf;
+}
+
+void write_bench_csv(const BenchResult& res, const fs::path& out) {
+  if (out.has_parent_path() && !fs::is_directory(out.parent_path()))
+    throw std::runtime_error(out.string() + ": the output folder does not exist");
+  fs::path tmp = out;
+  tmp += ".tmp-" + std::to_string(::getpid());
+  try {
+    {
+      std::ofstream os(tmp);
+      if (!os) throw std::runtime_error(tmp.string() + ": cannot create");
+      os << "part,method,parameter,value,steps,body,static_correction,spin_factor,coverage,wall_seconds,"
+            "cpu_seconds,error\n";
+      for (const BenchRow& r : res.rows) {
+        os << r.part << ',' << r.method << ',' << r.parameter << ',' << field(r.value, "%.10g") << ','
+           << (r.steps >= 0 ? std::to_string(r.steps) : "") << ',' << (r.body > 0 ? std::to_string(r.body) : "")
+           << ',' << (r.static_correction >= 0 ? std::to_string(r.static_correction) : "") << ','
+           << field(r.spin_factor, "%g") << ',' << field(r.coverage, "%.8f") << ',' << field(r.wall_seconds)
+           << ',' << field(r.cpu_seconds) << ',' << field(r.error) << '\n';
+      }
+      os.flush();
+      if (!os) throw std::runtime_error(tmp.string() + ": write failed");
+    }
+    fs::rename(tmp, out);
+  } catch (...) {
+    std::error_code ec;
+    fs::remove(tmp, ec);
+    throw;
+  }
+}
+
+}  // namespace rc::rom
