@@ -22,6 +22,7 @@ import json
 import math
 import os
 import platform
+import resource
 import statistics
 import subprocess
 import sys
@@ -142,9 +143,16 @@ SHAPES = {
     "cylinder": ["cylinder", "--radius", "1", "--height", "2"],
     "sphere": ["sphere", "--radius", "1"],
     "spheroid": ["spheroid", "--a", "1", "--c", "0.5"],
+    "cone": ["cone", "--radius", "1", "--height", "1"],  # apex half-angle 45 degrees (docs/cones.md)
 }
 
-SWEEP_ARGS = {"cylinder": ["--modes", "20"], "sphere": [], "spheroid": []}  # the sphere and spheroid: default table
+# The cone has no closed form: its band weight is compared with a reference extrapolated from the sweep's own
+# finest order-6 meshes (cone_reference). Only the survey is needed for /bands, so the cone runs ask for one
+# cluster and no convergence check; its times are those of such a table.
+CONE_BANDS = {"cone_band_E": (-0.4, -0.3), "cone_band2_E": (1.4, 1.5)}
+
+SWEEP_ARGS = {"cylinder": ["--modes", "20"], "sphere": [], "spheroid": [],
+              "cone": ["--modes", "1", "--no-convergence-check"]}  # the sphere and spheroid: default table
 FULL_SWEEP = {  # order -> mesh sizes; finer meshes only where they stay cheap (full sweep ~5 min on 2 cores)
     "cylinder": {2: [0.5, 0.35, 0.25, 0.18, 0.125, 0.09, 0.0625], 3: [0.5, 0.35, 0.25, 0.18, 0.125, 0.09],
                  4: [0.7, 0.5, 0.35, 0.25, 0.18, 0.125, 0.09], 5: [1.0, 0.7, 0.5, 0.35, 0.25, 0.18, 0.125],
@@ -154,11 +162,13 @@ FULL_SWEEP = {  # order -> mesh sizes; finer meshes only where they stay cheap (
     "spheroid": {2: [0.35, 0.25, 0.18, 0.125, 0.09, 0.0625], 3: [0.5, 0.35, 0.25, 0.18, 0.125, 0.09],
                  4: [0.7, 0.5, 0.35, 0.25, 0.18, 0.125, 0.09], 5: [1.0, 0.7, 0.5, 0.35, 0.25, 0.18, 0.125],
                  6: [1.0, 0.7, 0.5, 0.35, 0.25, 0.18, 0.125, 0.09]},
+    "cone": {2: [0.4, 0.2, 0.1, 0.05, 0.025], 4: [0.4, 0.2, 0.1, 0.05], 6: [0.4, 0.2, 0.1, 0.05]},
 }
 QUICK_SWEEP = {
     "cylinder": {2: [0.5, 0.25], 4: [0.7, 0.5]},
     "sphere": {2: [0.5, 0.25], 4: [1.0, 0.5]},
     "spheroid": {2: [0.35, 0.25], 4: [0.7, 0.5]},
+    "cone": {4: [0.4, 0.2, 0.1], 6: [0.4, 0.2, 0.1]},  # the reference needs three order-6 meshes
 }
 
 ERRORS = {  # CSV column -> panel title
@@ -172,9 +182,12 @@ ERRORS = {  # CSV column -> panel title
     "spd_E": "spheroid a=1 c=0.5: E",
     "spd_lambda": "spheroid: lambda",
     "spd_J_zh": "spheroid: J_zh",
+    "cone_band_E": "cone 45deg: band [-0.4,-0.3) weight",
+    "cone_band2_E": "cone 45deg: band [1.4,1.5) weight",
 }
-COLUMNS = (["shape", "order", "mesh_size", "ndof", "clusters", "coverage", "wall_s", "process_s", "load1",
-            "status"] + list(ERRORS) + ["cyl_top20_kappa", "cyl_exact20_missing", "cyl_top20_worst"])
+COLUMNS = (["shape", "order", "mesh_size", "ndof", "clusters", "coverage", "wall_s", "process_s", "user_s", "load1",
+            "status"] + list(ERRORS) + ["cyl_top20_kappa", "cyl_exact20_missing", "cyl_top20_worst"]
+           + [q + "_value" for q in CONE_BANDS])
 
 
 def rel(got, want):
@@ -186,16 +199,20 @@ def run_table(binary, shape, order, size, extra=(), timeout=300):
     with tempfile.TemporaryDirectory(prefix="cmbench-") as tmp:
         out = os.path.join(tmp, "t.h5")
         cmd = [binary] + SHAPES[shape] + list(extra) + ["--order", str(order), "--mesh-size", repr(size), "-o", out]
+        cpu0 = resource.getrusage(resource.RUSAGE_CHILDREN).ru_utime
         t0 = time.perf_counter()
         try:
             p = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
         except subprocess.TimeoutExpired:
             return None, time.perf_counter() - t0, "timeout"
         wall = time.perf_counter() - t0
+        user = resource.getrusage(resource.RUSAGE_CHILDREN).ru_utime - cpu0
         if p.returncode != 0:
             return None, wall, "exit %d: %s" % (p.returncode, p.stderr.strip().splitlines()[-1:] or "")
         info = subprocess.run([binary, "info", out, "--json"], capture_output=True, text=True, check=True)
-        return json.loads(info.stdout), wall, "ok"
+        t = json.loads(info.stdout)
+        t["_user_s"] = user  # user CPU time of the run (the machine may be shared: wall time is noisy)
+        return t, wall, "ok"
 
 
 def nearest(modes, kappa):
@@ -225,6 +242,12 @@ def errors_of(shape, t, exact):
         e["cyl_exact20_missing"] = sum(
             1 for m in modes[:20] if min(abs(k - m["kappa"]) for k in M["kappa"]) > 1e-6 * abs(m["kappa"]))
         e["cyl_J_zh"] = rel(t["J_zh"], exact["cyl_J_zh"])
+    elif shape == "cone":
+        # Raw band weights; cone_errors() turns them into errors once the reference is known.
+        b = t["bands"]
+        for q, (lo, hi) in CONE_BANDS.items():
+            i = min(range(len(b["lo"])), key=lambda i: abs(b["lo"][i] - lo) + abs(b["hi"][i] - hi))
+            e[q + "_value"] = b["E"][i]
     elif shape == "sphere":
         e["sph_E"] = rel(M["E"][0], 8 * math.pi / 15)
         e["sph_lambda"] = rel(M["lambda"][0], 1.0)
@@ -241,7 +264,7 @@ def row_of(shape, order, size, t, wall, status, exact):
                load1=round(os.getloadavg()[0], 2))
     if t is not None:
         row.update(ndof=t["ndof"], clusters=len(t["modes"]["E"]), coverage=t["coverage"],
-                   wall_s=round(t["wall_seconds"], 3))
+                   wall_s=round(t["wall_seconds"], 3), user_s=round(t["_user_s"], 3))
         row.update(errors_of(shape, t, exact))
     return row
 
@@ -263,21 +286,61 @@ def fnum(v):
     return v
 
 
-def convergence_orders(rows):
-    """Least-squares slope of log(error) against log(h) per (quantity, order), over unsaturated points."""
+ASYMPTOTIC_POINTS = 3  # the asymptotic-range fit uses this many finest unsaturated meshes
+
+
+def convergence_orders(rows, floors=None):
+    """Per (quantity, order): least-squares slope of log(error) against log(h) over all unsaturated points, the
+    slope between the two finest of them, their number, and the least-squares slope over the ASYMPTOTIC_POINTS
+    finest (the asymptotic range: coarse meshes are often pre-asymptotic). `floors` gives a quantity its own
+    saturation level (a reference's own error estimate), default SATURATED."""
     out = {}
     for q in ERRORS:
+        floor = max(SATURATED, (floors or {}).get(q, 0.0))
         for order in range(1, 7):
             pts = [(fnum(r["mesh_size"]), fnum(r.get(q))) for r in rows
                    if r["status"] == "ok" and int(r["order"]) == order and not math.isnan(fnum(r.get(q)))]
-            pts = [(h, e) for h, e in pts if e > SATURATED]
+            pts = [(h, e) for h, e in pts if e > floor]
             if len({h for h, _ in pts}) < 2:
                 continue
             pts.sort()
             lh = np.log([h for h, _ in pts])
             le = np.log([e for _, e in pts])
             finest = (le[1] - le[0]) / (lh[1] - lh[0]) if lh[1] != lh[0] else float("nan")
-            out[(q, order)] = (float(np.polyfit(lh, le, 1)[0]), float(finest), len(pts))
+            k = min(ASYMPTOTIC_POINTS, len(pts))
+            asym = float(np.polyfit(lh[:k], le[:k], 1)[0])
+            out[(q, order)] = (float(np.polyfit(lh, le, 1)[0]), float(finest), len(pts), asym)
+    return out
+
+
+def cone_reference(rows, log):
+    """Reference band weights of the cone from the sweep's three finest order-6 meshes (h halved each time):
+    Richardson extrapolation with the observed order p = log2(|d1|/|d2|) when the changes d1, d2 have the same
+    sign and shrink (p > 0.5); its error estimate is the extrapolation step |ref - finest|. Otherwise the finest
+    value, with the last change |d2| as its error estimate. Returns {quantity: (ref, relative error estimate,
+    p, method)}."""
+    out = {}
+    cone = sorted((r for r in rows if r["shape"] == "cone" and r["status"] == "ok" and int(r["order"]) == 6),
+                  key=lambda r: -fnum(r["mesh_size"]))
+    for q in CONE_BANDS:
+        v = [fnum(r.get(q + "_value")) for r in cone]
+        hs = [fnum(r["mesh_size"]) for r in cone]
+        if len(v) < 3 or abs(hs[-3] / hs[-2] - 2) > 1e-9 or abs(hs[-2] / hs[-1] - 2) > 1e-9:
+            log("cone reference for %s: needs three order-6 meshes with h halved (have %s)" % (q, hs))
+            continue
+        d1, d2 = v[-2] - v[-3], v[-1] - v[-2]
+        if d1 * d2 > 0 and abs(d2) < abs(d1) and math.log2(abs(d1 / d2)) > 0.5:
+            p = math.log2(abs(d1 / d2))
+            ref = v[-1] + d2 / (2 ** p - 1)
+            out[q] = (ref, abs(ref - v[-1]) / abs(ref), p, "Richardson, P6 h = %g, %g, %g" % tuple(hs[-3:]))
+        else:
+            out[q] = (v[-1], abs(d2) / abs(v[-1]), float("nan"), "finest mesh, P6 h = %g (changes not monotone)" % hs[-1])
+        log("cone reference %s: %.12e (relative error estimate %.1e, %s, observed order %.2f; values %s)" % (
+            q, out[q][0], out[q][1], out[q][3], out[q][2], " ".join("%.10e" % x for x in v[-3:])))
+    for r in rows:
+        if r["shape"] == "cone" and r["status"] == "ok":
+            for q, (ref, _, _, _) in out.items():
+                r[q] = rel(fnum(r[q + "_value"]), ref)
     return out
 
 
@@ -363,7 +426,8 @@ def best_errors_markdown(rows):
     return "\n".join(lines) + "\n"
 
 
-def plot(rows, path, time_col="process_s"):
+def plot(rows, path, time_col="process_s", floors=None):
+    """`floors`: quantity -> the relative error estimate of its reference, drawn as a dotted line."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -394,6 +458,9 @@ def plot(rows, path, time_col="process_s"):
             ax.axhline(tol, color="grey", ls="--", lw=0.8)
             ax.axvline(tmax, color="grey", ls=":", lw=0.8)
             ax.fill_between([1e-2, tmax], [1e-17, 1e-17], [tol, tol], color="green", alpha=0.07)
+        if floors and q in floors:
+            ax.axhline(floors[q], color="k", ls=":", lw=0.8)
+            ax.text(0.03, floors[q] * 1.5, "reference's own error estimate", fontsize=6, transform=ax.get_yaxis_transform())
         ax.set_title(ERRORS[q], fontsize=10)
         ax.set_ylim(FLOOR / 2, CEILING * 3)
         ax.set_xlim(0.02, None)
@@ -440,13 +507,16 @@ def main():
     ap.add_argument("--label", help="what the binary was built from, if not this repository's HEAD "
                                     "(e.g. a clean export of a commit while modes/ is being edited)")
     ap.add_argument("--replot", metavar="CSV", help="only redraw the PNG (next to CSV) from a results CSV")
+    ap.add_argument("--tag", help="added to the output file names (a study that must not overwrite the day's sweep)")
     args = ap.parse_args()
     if args.replot:
         with open(args.replot) as f:
             rows = list(csv.DictReader(f))
-        png = os.path.join(os.path.dirname(os.path.abspath(args.replot)), "cavity_modes_error_vs_time%s.png" % (
-            "_quick" if args.replot.endswith("_quick.csv") else ""))
-        plot(rows, png)
+        # cavity_modes_<date><suffix>.csv -> cavity_modes_error_vs_time<suffix>.png
+        suffix = os.path.basename(args.replot)[len("cavity_modes_") + 10:-len(".csv")]
+        png = os.path.join(os.path.dirname(os.path.abspath(args.replot)), "cavity_modes_error_vs_time%s.png" % suffix)
+        cone_ref = cone_reference(rows, print) if any(r["shape"] == "cone" for r in rows) else {}
+        plot(rows, png, floors={q: v[1] for q, v in cone_ref.items()})
         print("wrote", png)
         return
     binary = os.path.abspath(args.binary)
@@ -468,7 +538,7 @@ def main():
     sweep = QUICK_SWEEP if args.quick else FULL_SWEEP
     shapes = args.shapes.split(",")
     stamp = datetime.date.today().isoformat()
-    suffix = "_quick" if args.quick else ""
+    suffix = ("_" + args.tag if args.tag else "") + ("_quick" if args.quick else "")
     commit = subprocess.run(["git", "-C", REPO, "log", "-1", "--format=%h"], capture_output=True, text=True).stdout.strip()
     dirty = subprocess.run(["git", "-C", REPO, "status", "--porcelain", "--", "modes", "geometry", "common"],
                            capture_output=True, text=True).stdout.strip()
@@ -491,6 +561,7 @@ def main():
                     "" if status == "ok" else "  " + status))
     sweep_s = time.perf_counter() - t0
 
+    cone_ref = cone_reference(rows, log) if "cone" in shapes else {}
     csv_path = os.path.join(args.out_dir, "cavity_modes_%s%s.csv" % (stamp, suffix))
     with open(csv_path, "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=COLUMNS, extrasaction="ignore")
@@ -498,20 +569,22 @@ def main():
         for r in rows:
             w.writerow({k: ("%.3e" % v if k in ERRORS or k == "cyl_top20_kappa" else v) for k, v in r.items()})
     png_path = os.path.join(args.out_dir, "cavity_modes_error_vs_time%s.png" % suffix)
-    plot(rows, png_path)
+    plot(rows, png_path, floors={q: v[1] for q, v in cone_ref.items()})
     log("\nwrote %s\nwrote %s\nsweep: %d runs, %.0f s" % (csv_path, png_path, len(rows), sweep_s))
 
-    orders = convergence_orders(rows)
+    orders = convergence_orders(rows, {q: 2 * v[1] for q, v in cone_ref.items()})
     conv = ["| quantity | " + " | ".join("P%d" % o for o in range(2, 7)) + " |", "|---" * 6 + "|"]
     for q, title in ERRORS.items():
         cells = []
         for o in range(2, 7):
             s = orders.get((q, o))
-            cells.append("%.1f / %.1f (%d)" % s if s else "-")
+            cells.append("%.1f / %.1f (%d) / **%.1f**" % s if s else "-")
         conv.append("| %s | %s |" % (title, " | ".join(cells)))
     conv_md = "\n".join(conv) + "\n"
-    conv_md = ("slope of log(error) against log(h): least squares over the points with error > %.0e / between "
-               "the two finest of them (number of points); '-': fewer than two such points\n\n" % SATURATED) + conv_md
+    conv_md = ("slope of log(error) against log(h): least squares over the points with error > %.0e (cone bands: > "
+               "twice the reference's own error estimate) / between the two finest of them (number of points) / "
+               "**least squares over the %d finest of them (asymptotic range)**; '-': fewer than two such points\n\n"
+               % (SATURATED, ASYMPTOTIC_POINTS)) + conv_md
     log("\nobserved convergence orders\n" + conv_md)
     best_md = best_errors_markdown(rows)
     log("smallest errors reached\n" + best_md)
@@ -529,6 +602,10 @@ def main():
             commit, " (modes/ had uncommitted edits)" if dirty else ""))
         f.write("machine: %d cpus, %s, %s RAM, Linux %s\n\nsweep: %d runs, %.0f s\n\n" % (
             m["nproc"], m["cpu"], m["ram"], m["kernel"], len(rows), sweep_s))
+        if cone_ref:
+            f.write("## Cone references\n\n" + "".join(
+                "- %s: %.12e, relative error estimate %.1e (%s; observed order %.2f)\n" % (
+                    ERRORS[q], v[0], v[1], v[3], v[2]) for q, v in cone_ref.items()) + "\n")
         f.write("## Targets\n\n" + tmd + "\n## Smallest errors reached\n\n" + best_md +
                 "\n## Observed convergence orders\n\n" + conv_md)
     log("wrote %s\ntotal %.0f s" % (md_path, time.perf_counter() - t0))
