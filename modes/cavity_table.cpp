@@ -54,6 +54,34 @@ std::vector<GaussNode> candidate_nodes(const SpectralSurvey& survey, const ModeS
   return nodes;
 }
 
+// The survey's Gauss rule places few nodes where the modes crowd towards λ = 0, and can miss a heavy mode
+// between two it found (measured: n = 0, j = 7..8 of the 2h/a = 2 cylinder, E ≈ 1e-2). Every gap between
+// consecutive clusters that the selection keeps, of one sign and below gap_lambda in |λ|, is searched once
+// (LanczosRefinement::search_gap) for clusters as heavy as the lightest one kept. Returns how many it added.
+int fill_gaps(const LanczosRefinement& refinement, std::vector<Cluster>& clusters, const TableRequest& req,
+              double sum_rule, const std::function<void(const std::string&)>& report) {
+  if (clusters.empty()) return 0;
+  auto kept = clusters;
+  sort_by_energy(kept);
+  kept.resize(std::max<std::size_t>(1, selected_count(kept, req.selection, sum_rule)));
+  const double floor = 0.5 * kept.back().E;
+  std::sort(kept.begin(), kept.end(), [](const Cluster& a, const Cluster& b) { return a.lambda < b.lambda; });
+  int added = 0;
+  for (std::size_t i = 0; i + 1 < kept.size(); ++i) {
+    const double a = kept[i].lambda, b = kept[i + 1].lambda;
+    if (a * b <= 0 || std::max(std::abs(a), std::abs(b)) > req.clusters.gap_lambda) continue;
+    if (std::min(std::abs(a), std::abs(b)) < req.selection.geostrophic_cutoff) continue;
+    for (const Cluster& c : refinement.search_gap(a, b, floor)) {
+      const bool known = std::any_of(clusters.begin(), clusters.end(), [&](const Cluster& o) {
+        return std::abs(o.lambda - c.lambda) <= req.clusters.cluster_width * std::max(std::abs(c.lambda), 0.1);
+      });
+      if (!known) { clusters.push_back(c); ++added; }
+    }
+    report(fmt::format("gap {}/{}", i + 1, kept.size() - 1));
+  }
+  return added;
+}
+
 struct FoundClusters {
   std::vector<Cluster> clusters;
   std::string solver;
@@ -77,8 +105,10 @@ FoundClusters find_clusters(const Discretisation& d, const SpectralSurvey& surve
     report(fmt::format("cluster {}/{}", done, total));
   }, unsettled);
   for (const auto& u : unsettled) warn("warning: left out of the table: " + u);
+  const int added = req.clusters.fill_gaps ? fill_gaps(refinement, f.clusters, req, d.sum_rule, report) : 0;
   f.solver = fmt::format("survey (Lanczos Gauss rule of the coupling measure, {} steps) + shift-and-invert Lanczos "
                          "Gauss rules (MUMPS LDL^T of Q(sigma)) around each node", survey.steps);
+  if (added > 0) f.solver += fmt::format("; {} cluster(s) found in gaps between clusters", added);
   if (!unsettled.empty())
     f.solver += fmt::format("; {} candidate node(s) did not settle and were left out", unsettled.size());
   return f;

@@ -25,6 +25,8 @@ struct ClusterSettings {
   int widenings = 2;            // at most this many ×4 widenings of it
   // lanczos (lanczos_refinement.hpp)
   double floor = 1e-7;          // Gauss nodes lighter than this · (A_f − J_zh) need not settle
+  bool fill_gaps = false;       // search the gaps between kept clusters below gap_lambda (cavity_table.cpp)
+  double gap_lambda = 0.5;
   ShiftInvertSettings sil;
   // slices (slice_refinement.hpp)
   QepSettings qep;

@@ -78,6 +78,31 @@ Cluster LanczosRefinement::refine(const GaussNode& node) const {
   return best;
 }
 
+std::vector<Cluster> LanczosRefinement::search_gap(double a, double b, double floor) const {
+  if (a > b) std::swap(a, b);
+  const double sign = a > 0 ? 1.0 : -1.0;
+  const double sigma = sign * std::sqrt(a * b);
+  const double lo = a + 2 * settings_.cluster_width * std::max(std::abs(a), 0.1);
+  const double hi = b - 2 * settings_.cluster_width * std::max(std::abs(b), 0.1);
+  if (!(lo < hi)) return {};
+  const ShiftInvertRule rule = sil_.run(sigma, lo, hi, floor, settings_.sil);
+  std::vector<SettledNode> found = rule.settled;
+  for (const SettledNode& u : rule.unsettled) {
+    const ShiftInvertRule own =
+        sil_.run(u.lambda + 1e-6 * std::max(std::abs(u.lambda), 0.1), lo, hi, floor, settings_.sil);
+    for (const SettledNode& n : own.settled) {
+      const bool known = std::any_of(found.begin(), found.end(), [&](const SettledNode& o) {
+        return std::abs(o.lambda - n.lambda) <= settings_.cluster_width * std::max(std::abs(n.lambda), 0.1);
+      });
+      if (!known) found.push_back(n);
+    }
+  }
+  std::vector<Cluster> out;
+  for (const Cluster& c : merge_nodes(found, settings_.cluster_width))
+    if (c.E >= floor) out.push_back(c);
+  return out;
+}
+
 std::vector<Cluster> refine_clusters_lanczos(const LanczosRefinement& refinement, const std::vector<GaussNode>& nodes,
                                              double cluster_width,
                                              const std::function<void(std::size_t, std::size_t)>& progress,

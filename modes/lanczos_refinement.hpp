@@ -37,6 +37,12 @@ class LanczosRefinement {
   // to it).
   Cluster refine(const GaussNode& node) const;
 
+  // Clusters at least `floor` heavy strictly between two known clusters at λ = a and b (same sign): one
+  // run shifted to the geometric middle of the gap, watching the gap without the cluster width at its ends,
+  // and one re-shifted run per heavy node that did not settle. Nodes that still do not settle are dropped:
+  // the gap search only adds what the survey missed.
+  std::vector<Cluster> search_gap(double a, double b, double floor) const;
+
  private:
   ShiftInvertSurvey sil_;
   double mass_;

@@ -43,6 +43,9 @@ void add_common_options(CLI::App* cmd, TableRequest& req, std::string& output, b
   cmd->add_option("--min-lambda", req.selection.geostrophic_cutoff,
                   "no cluster is sought with |lambda| below this (the lambda -> 0 accumulation)")
       ->check(CLI::Range(1e-6, 1.9))->capture_default_str();
+  cmd->add_flag("--fill-gaps", req.clusters.fill_gaps,
+                "lanczos clusters: also search the gaps between kept clusters with |lambda| < 0.5 for modes the "
+                "survey missed (slower; on coarse meshes it can add unresolved clusters, flagged not converged)");
   cmd->add_option("--lanczos-steps", req.clusters.sil.max_steps,
                   "lanczos clusters: shift-and-invert Lanczos steps per node (at most)")
       ->check(CLI::Range(1, 100000))->capture_default_str();
