@@ -1,6 +1,7 @@
 #include "exact_propagation.hpp"
 
 #include "balancing.hpp"
+#include "real_matrix_product.hpp"
 
 #include <Eigen/Eigenvalues>
 
@@ -128,7 +129,7 @@ void modal_states(const ModalForm& f, const Eigen::VectorXcd& y0, double h, long
             coeff(i, r) = e.real();
             coeff(i, cols + r) = e.imag();
           }
-        X.leftCols(2 * cols).noalias() = f.W * coeff.leftCols(2 * cols);
+        real_matrix_product(f.W, coeff.leftCols(2 * cols), X.leftCols(2 * cols));
         // y = T^{-1} x: the s*u rows times i, (a + ib) i = -b + ia.
         X.topLeftCorner(f.n, cols).swap(X.block(0, cols, f.n, cols));
         X.topLeftCorner(f.n, cols) *= -1.0;

@@ -208,7 +208,7 @@ int main(int argc, char** argv) {
       const rc::rom::History h = rc::rom::propagate(model, scene);
       rc::rom::write_history(model, h, out_file);
       std::cout << "wrote " << out_file << ": " << h.t.size() << " samples, method " << h.method_used
-                << ", " << h.wall_seconds << " s\n";
+                << ", " << h.wall_seconds << " s (CPU " << h.cpu_seconds << " s)\n";
       std::cout << "energy: H(0) = " << h.H.front() << ", H(end) = " << h.H.back() << ", "
                 << (model.has_friction() ? "largest relative increase per step " : "largest relative drift ")
                 << h.max_energy_drift << "\n";

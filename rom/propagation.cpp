@@ -10,6 +10,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <ctime>
 #include <cstdio>
 #include <stdexcept>
 
@@ -93,6 +94,8 @@ double estimate_integrator_steps(const std::string& method, double rho, const Ru
 History propagate(const ChainModel& m, const Scene& scene) {
   if (!scene.run.present) throw std::runtime_error(scene.file.string() + ": run: missing [run] section");
   const auto start = std::chrono::steady_clock::now();
+  timespec cpu0{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &cpu0);
   const FirstOrderSystem f = build_first_order(m);
   const int n = m.n, nm = m.n_modes();
   Eigen::VectorXcd u0(n), v0(n), z0 = Eigen::VectorXcd::Zero(nm);
@@ -218,6 +221,9 @@ History propagate(const ChainModel& m, const Scene& scene) {
     else hist.max_energy_drift = std::max(hist.max_energy_drift, std::abs(hist.H[j] - H0) / S0);
   }
   hist.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  timespec cpu1{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &cpu1);
+  hist.cpu_seconds = static_cast<double>(cpu1.tv_sec - cpu0.tv_sec) + 1e-9 * static_cast<double>(cpu1.tv_nsec - cpu0.tv_nsec);
   return hist;
 }
 

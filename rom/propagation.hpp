@@ -27,6 +27,7 @@ struct History {
   std::string method_used;  // what actually ran
   double max_energy_drift = 0;  // max |H - H0| / scale(0) (undamped) or max increase (damped)
   double wall_seconds = 0;
+  double cpu_seconds = 0;       // process CPU time of propagate (all threads)
   long integrator_steps = 0;    // gauss substeps / accepted+rejected rk45 steps; exact: matrix products
   double eigvec_condition = 0;  // exact: 2-norm condition number of the eigenvector matrix V
 };
