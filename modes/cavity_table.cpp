@@ -65,6 +65,7 @@ std::vector<Cluster> select_clusters(std::vector<Cluster> clusters, const ModeSe
 
 ModeTable compute_mode_table(const TableRequest& req, const ProgressFn& progress) {
   validate(req.selection);
+  if (req.check_convergence) validate_convergence_tolerance(req.convergence_tolerance);
   const auto start = Clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
   // Progress only on runs that take a while, and at most about once a second.

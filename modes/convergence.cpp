@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace rc::modes {
 
@@ -35,6 +36,14 @@ ConvergenceCheck check_convergence(const geometry::ShapeSpec& shape, const geome
     check.changes.push_back(change);
   }
   return check;
+}
+
+void validate_convergence_tolerance(double tolerance) {
+  if (!(tolerance > 0 && tolerance <= kLoosestConvergenceTolerance))
+    throw std::runtime_error(fmt::format(
+        "--convergence-tolerance must be in (0, {:g}] (got {:g}): a single comparison with a coarser mesh cannot "
+        "certify looser convergence (unconverged cone clusters agree by chance to 3e-4, docs/cones.md)",
+        kLoosestConvergenceTolerance, tolerance));
 }
 
 std::vector<double> band_edges() {
