@@ -29,11 +29,12 @@ struct ConvergenceCheck {
 geometry::MeshOptions coarser(const geometry::MeshOptions& mesh, std::string& description);
 
 // The loosest --convergence-tolerance accepted. One comparison with a coarser mesh certifies a cluster only
-// when the discretisation is in its asymptotic range; on a cone (docs/cones.md) unconverged clusters change
-// by a random-looking amount between meshes, and among 578 measured cone clusters the smallest such change
-// was 3.3e-4, the count below t falling about 7-fold per decade of t (1 below 1e-3, 8 below 1e-2, 57 below
-// 0.1; 8 of 8 flagged at 1e-2 were off by 1e-2..0.7 from a finer mesh). A tolerance of 1e-5 keeps such chance
-// agreements improbable (extrapolated: ~1e-5 per cluster); looser tolerances would flag unconverged clusters.
+// when the discretisation is in its asymptotic range. On cones (docs/cones.md) unconverged clusters change
+// between meshes by a random-looking amount: among 578 measured cone clusters the smallest change was 3.3e-4,
+// and the count below t falls about 7-fold per decade of t (1 below 1e-3, 8 below 1e-2, 57 below 0.1); all 7
+// that a 1e-2 tolerance would flag and that could be judged were off the finest mesh by 1.3e-2..1.7. At 1e-5
+// such a chance agreement is improbable (extrapolated: ~1e-5 per cluster); looser tolerances would flag
+// unconverged clusters.
 inline constexpr double kLoosestConvergenceTolerance = 1e-5;
 
 // Throws std::runtime_error (one line, saying why) unless 0 < tolerance <= kLoosestConvergenceTolerance.
