@@ -16,6 +16,7 @@ expect_error "zero radius" "radius = 0" "$BIN" sphere --radius 0 -o out.h5
 expect_error "negative height" "height = -2" "$BIN" cylinder --radius 1 --height -2 -o out.h5
 expect_error "NaN dimension" "nan" "$BIN" spheroid --a nan --c 1 -o out.h5
 expect_error "missing dimension" "--c" "$BIN" spheroid --a 1 -o out.h5
+expect_error "loose convergence tolerance" "convergence-tolerance must be in" "$BIN" cone --radius 1 --height 1 --convergence-tolerance 1e-2 -o out.h5
 expect_error "unreadable section" "cannot read" "$BIN" section "$work/none.geo" -o out.h5
 echo 'Point(1) = {0, 0, 0};' > nogroups.geo
 expect_error "section without physical groups" "fluid" "$BIN" section nogroups.geo -o out.h5
