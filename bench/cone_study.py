@@ -46,14 +46,20 @@ CLUSTERS = ["--modes", "20"]  # the 20 largest clusters, with the table's own co
 PLAN = {
     "survey": (SURVEY_ONLY, {2: [0.2, 0.1, 0.05, 0.025], 4: [0.4, 0.2, 0.1, 0.05], 6: [0.4, 0.2, 0.1, 0.05]}, [200]),
     "gauss": (SURVEY_ONLY, {6: [0.1]}, [100, 400, 800]),
-    "clusters": (CLUSTERS, {4: [0.4, 0.2, 0.1, 0.05], 6: [0.4, 0.2, 0.1]}, [200]),
+    "clusters": (CLUSTERS, {4: [0.4, 0.2, 0.1], 6: [0.4, 0.2, 0.1]}, [200]),
 }
+# A fourth rung where it stays affordable (a --modes 20 table of a dense cone spectrum at ~4000 dofs takes
+# minutes: most slices are widened, see docs/cones.md).
+EXTRA_CLUSTER_RUNGS = {45: {4: [0.05]}}
 QUICK_PLAN = {
     "survey": (SURVEY_ONLY, {4: [0.4, 0.2, 0.1]}, [200]),
     "gauss": (SURVEY_ONLY, {4: [0.2]}, [100, 400]),
     "clusters": (CLUSTERS, {4: [0.4, 0.2, 0.1]}, [200]),
 }
 EXTRA_GAUSS = {45: [1600]}  # one long rule, to judge the 800-step one
+# Exact discrete band weights (spectral-window: every eigenpair in the band, no Gauss rule), order 6 ladder.
+WINDOW_LADDER = {6: [0.4, 0.2, 0.1, 0.05]}
+QUICK_WINDOW_LADDER = {6: [0.4, 0.2]}
 
 HEAVY_BAND = 0.01  # bands carrying >= 1 % of A_f - J_zh are the ones reported
 TOP_CLUSTERS = 10  # clusters of the finest table followed down the ladder
@@ -65,9 +71,9 @@ def cone_dims(alpha):
 
 
 def critical_lambda(alpha):
-    """Inertial waves of frequency lambda (omega0 = 1) travel at angle asin(lambda/2) ... to the axis: their
-    rays make the angle theta with the horizontal where lambda = 2 cos(theta)... (see docs/cones.md); a ray is
-    parallel to a wall of half-angle alpha when lambda = 2 sin(alpha)."""
+    """An inertial wave of frequency lambda (omega0 = 1) has its wave vector at angle theta to the axis with
+    lambda = 2 cos(theta); its energy travels perpendicular to it, along rays at theta to the horizontal. A ray is
+    parallel to the cone's wall (at alpha to the axis, 90 - alpha to the horizontal) when lambda = 2 sin(alpha)."""
     return 2 * math.sin(math.radians(alpha))
 
 
@@ -106,6 +112,38 @@ def run(binary, alpha, order, h, extra, steps, timeout=3600):
     return r
 
 
+def window_bands(raw, alpha):
+    """The bands weighed exactly: the heaviest negative and the two heaviest positive bands of the finest order-6
+    survey table (the Gauss rule only picks them)."""
+    p6 = ladder(raw, alpha, 6, "survey") or ladder(raw, alpha, 4, "survey")
+    if not p6:
+        return []
+    E, _, lo, hi = bands_of(p6[-1])
+    neg = [i for i in np.argsort(-E) if hi[i] <= 0][:1]
+    pos = [i for i in np.argsort(-E) if lo[i] >= 0][:2]
+    # spectral-window needs -2 < lo < hi < 2 (|lambda| = 2 is outside the spectrum; no eigenpair is lost).
+    return [(max(round(float(lo[i]), 2), -1.999999), min(round(float(hi[i]), 2), 1.999999)) for i in sorted(neg + pos)]
+
+
+def run_windows(binary, alpha, order, h, bands):
+    R, H = cone_dims(alpha)
+    exe = os.path.join(os.path.dirname(binary), "spectral-window")
+    cmd = [exe, "cone", "--radius", repr(R), "--height", repr(H), "--order", str(order), "--mesh-size", repr(h)]
+    for lo, hi in bands:
+        cmd.append("--window=%r,%r" % (lo, hi))
+    cpu0 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    t0 = time.perf_counter()
+    p = subprocess.run(cmd, capture_output=True, text=True, timeout=3600)
+    wall = time.perf_counter() - t0
+    cpu1 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    if p.returncode != 0:
+        return dict(status="exit %d: %s" % (p.returncode, p.stderr.strip()[-200:]), process_s=wall)
+    w = [json.loads(line) for line in p.stdout.splitlines() if line.startswith("{")]
+    return dict(status="ok", kind="window", alpha=alpha, order=order, h=h, windows=w, ndof=w[0]["ndof"],
+                sum_rule=w[0]["sum_rule"], process_s=round(wall, 2), user_s=round(cpu1.ru_utime - cpu0.ru_utime, 2),
+                load1=round(os.getloadavg()[0], 2), date=datetime.date.today().isoformat(), steps=0, set_extra=[])
+
+
 def load_raw():
     if os.path.exists(RAW):
         with open(RAW) as f:
@@ -129,6 +167,9 @@ def plan_runs(plan, angles):
                 for h in sizes:
                     for steps in steps_list + (EXTRA_GAUSS.get(alpha, []) if name == "gauss" and plan is PLAN else []):
                         runs.append((alpha, order, h, extra, steps))
+            if name == "clusters" and plan is PLAN:
+                for order, sizes in EXTRA_CLUSTER_RUNGS.get(alpha, {}).items():
+                    runs += [(alpha, order, h, extra, 200) for h in sizes]
     return runs
 
 
@@ -155,7 +196,7 @@ def observed_order(values, hs):
     if len(values) < 3:
         return float("nan")
     d1, d2 = values[-2] - values[-3], values[-1] - values[-2]
-    if d1 == 0 or d2 == 0:
+    if abs(d2) < 1e-11 * abs(values[-1]) or d1 == 0:  # round-off level: no order to observe
         return float("nan")
     return math.log(abs(d1 / d2)) / math.log(hs[-3] / hs[-2])
 
@@ -179,8 +220,11 @@ def analyse_integrated(raw, angles, lines, csv_rows):
         if len(fine) >= 3:
             J = [r["J_zh"] for r in fine]
             p = observed_order(J, [r["h"] for r in fine])
-            ref = richardson(J, p) if math.isfinite(p) and p > 0.5 else J[-1]
-            refs[alpha] = (ref, abs(ref - J[-1]), p)
+            if math.isfinite(p) and p > 0.5:
+                ref = richardson(J, p)
+                refs[alpha] = (ref, abs(ref - J[-1]), p)
+            else:  # changes at round-off or not shrinking: the finest value, the last change as its error
+                refs[alpha] = (J[-1], abs(J[-1] - J[-2]), p)
         elif fine:
             refs[alpha] = (fine[-1]["J_zh"], float("nan"), float("nan"))
         for order in (2, 4, 6):
@@ -214,6 +258,11 @@ def analyse_integrated(raw, angles, lines, csv_rows):
     return refs
 
 
+def nanmax(a, b):
+    """max that ignores a NaN (nothing measured) unless both are NaN."""
+    return b if math.isnan(a) else a if math.isnan(b) else max(a, b)
+
+
 def bands_of(r):
     b = r["bands"]
     return np.array(b["E"]), np.array(b["lambda_mean"]), np.array(b["lo"]), np.array(b["hi"])
@@ -242,7 +291,7 @@ def analyse_bands(raw, angles, lines, band_rows):
         E4c, _, _, _ = bands_of(p4[-2]) if len(p4) >= 2 else (None,) * 4
         total = p6[-1]["sum_rule"]
         heavy = np.nonzero(E6 >= HEAVY_BAND * total)[0]
-        worst = dict(mesh6=0.0, mesh4=0.0, gauss=0.0, lam6=0.0, lamg=0.0)
+        worst = dict(mesh6=float("nan"), mesh4=float("nan"), gauss=float("nan"), lam6=float("nan"), lamg=float("nan"))
         for i in heavy:
             d6 = abs(E6[i] - E6c[i]) / E6[i]
             d4 = abs(E4[i] - E4c[i]) / E4[i] if E4 is not None else float("nan")
@@ -253,8 +302,8 @@ def analyse_bands(raw, angles, lines, band_rows):
                 dg, dlg = abs(Eg2[i] - Eg8[i]) / Eg8[i], abs(Lg2[i] - Lg8[i])
             else:
                 dg = dlg = float("nan")
-            worst = dict(mesh6=max(worst["mesh6"], d6), mesh4=max(worst["mesh4"], d4), gauss=max(worst["gauss"], dg),
-                         lam6=max(worst["lam6"], dl6), lamg=max(worst["lamg"], dlg))
+            worst = dict(mesh6=nanmax(worst["mesh6"], d6), mesh4=nanmax(worst["mesh4"], d4),
+                         gauss=nanmax(worst["gauss"], dg), lam6=nanmax(worst["lam6"], dl6), lamg=nanmax(worst["lamg"], dlg))
             lines.append("| %d | [%.1f, %.1f) | %.4e | %.3f | %.4f | %.1e | %.1e | %.1e | %.1e | %.1e |" % (
                 alpha, lo[i], hi[i], E6[i], E6[i] / total, L6[i], d4, d6, dl6, dg, dlg))
         summary[alpha] = dict(worst, heavy=len(heavy), heavy_share=float(E6[heavy].sum() / total))
@@ -293,6 +342,57 @@ def analyse_bands(raw, angles, lines, band_rows):
                                                                 max(np.abs(E[heavy] - Eref[heavy]) / Eref[heavy])))
     lines.append("")
     return summary
+
+
+def analyse_windows(raw, angles, lines, win_rows):
+    """Exact discrete band weights (spectral-window) against h, and the Gauss rule's error on the same mesh."""
+    lines.append("## Exact band weights (spectral-window: Sigma E over every eigenpair of the band; no Gauss rule)\n")
+    lines.append("Order 6. 'change' = relative change from the mesh twice as coarse; 'order' from the last three meshes; "
+                 "'Gauss K' = relative error of the table's /bands value (survey with K steps) against the exact value "
+                 "on the same mesh.\n")
+    lines.append("| alpha | band | h | ndof | pairs | exact weight | share | mean lambda | change | Gauss K=200 error "
+                 "| Gauss K=800 error | s (user) |")
+    lines.append("|---|---|---|---|---|---|---|---|---|---|---|---|")
+    summary = []
+    for alpha in angles:
+        rows = sorted((r for r in raw.values() if r.get("kind") == "window" and r.get("status") == "ok"
+                       and r["alpha"] == alpha and r["order"] == 6), key=lambda r: -r["h"])
+        if not rows:
+            continue
+        nb = len(rows[0]["windows"])
+        for b in range(nb):
+            vals, hs = [], []
+            for k, r in enumerate(rows):
+                w = r["windows"][b]
+                vals.append(w["E"])
+                hs.append(r["h"])
+                change = abs(w["E"] - vals[-2]) / w["E"] if k else float("nan")
+                gerr = {}
+                for K in (200, 800):
+                    g = [x for x in raw.values() if x.get("status") == "ok" and x.get("set_extra") == SURVEY_ONLY
+                         and x["alpha"] == alpha and x["order"] == 6 and x["h"] == r["h"] and x["steps"] == K]
+                    if g:
+                        E, _, lo, hi = bands_of(g[0])
+                        i = int(np.argmin(np.abs(lo - w["lo"]) + np.abs(hi - w["hi"])))
+                        gerr[K] = abs(E[i] - w["E"]) / w["E"]
+                lines.append("| %d | [%.1f, %.1f) | %g | %d | %d | %.6e | %.3f | %.5f | %.1e | %s | %s | %.0f |" % (
+                    alpha, w["lo"], w["hi"], r["h"], r["ndof"], w["pairs"], w["E"], w["E"] / r["sum_rule"],
+                    w["lambda_mean"], change, "%.1e" % gerr[200] if 200 in gerr else "-",
+                    "%.1e" % gerr[800] if 800 in gerr else "-", r["user_s"]))
+                win_rows.append(dict(alpha=alpha, lo=w["lo"], hi=w["hi"], order=6, h=r["h"], ndof=r["ndof"],
+                                     pairs=w["pairs"], E=w["E"], share=w["E"] / r["sum_rule"],
+                                     lambda_mean=w["lambda_mean"], E_max=w["E_max"],
+                                     gauss200_err=gerr.get(200, float("nan")), gauss800_err=gerr.get(800, float("nan")),
+                                     process_s=r["process_s"], user_s=r["user_s"], load1=r["load1"]))
+            p = observed_order(vals, hs)
+            last = abs(vals[-1] - vals[-2]) / vals[-1] if len(vals) > 1 else float("nan")
+            summary.append((alpha, rows[0]["windows"][b]["lo"], rows[0]["windows"][b]["hi"], vals[-1], last, p))
+    lines.append("")
+    lines.append("| alpha | band | exact weight (finest) | last change | observed order |")
+    lines.append("|---|---|---|---|---|")
+    for a, lo, hi, v, last, p in summary:
+        lines.append("| %d | [%.1f, %.1f) | %.6e | %.1e | %.2f |" % (a, lo, hi, v, last, p))
+    lines.append("")
 
 
 def match(lam, table):
@@ -372,7 +472,8 @@ def analyse_flags(raw, angles, lines):
     lines.append("|---|---|---|" + "---|" * len(taus))
     bad = []
     for alpha in angles:
-        tables = [r for r in raw.values() if r.get("status") == "ok" and r["alpha"] == alpha and "converged" in r["modes"]]
+        tables = [r for r in raw.values() if r.get("status") == "ok" and r["alpha"] == alpha
+                  and "converged" in r.get("modes", {})]
         if not tables:
             continue
         ref = sorted(tables, key=lambda r: (r["order"] < 6, r["h"]))[0]  # finest P6 if any
@@ -466,6 +567,11 @@ def plot(raw, angles, path):
                 b, _, _, _ = bands_of(rows[k - 1])
                 dB.append(max(np.abs(a[heavy] - b[heavy]) / a[heavy]))
             ax2.loglog(hs, dB, "s" + style, color="tab:orange", ms=3, label="heavy bands (max) P%d" % order)
+            neg = int(np.argmax(np.where(np.array(rows[-1]["bands"]["hi"]) <= 0, Efin, -1)))  # the retrograde peak
+            dN = [abs(bands_of(rows[k])[0][neg] - bands_of(rows[k - 1])[0][neg]) / bands_of(rows[k])[0][neg]
+                  for k in range(1, len(rows))]
+            ax2.loglog(hs, np.maximum(dN, 1e-16), "D" + style, color="tab:green", ms=3,
+                       label="band of the lambda<0 peak P%d" % order)
             cl = ladder(raw, alpha, order, "clusters")
             if len(cl) >= 2:
                 dE = []
@@ -530,6 +636,19 @@ def main():
             print("[%3d/%d %5.0f s] %-32s %s %6s dofs %7.1f s (user %.1f, load %.1f)" % (
                 n, len(todo), time.perf_counter() - t0, k, r["status"], r.get("ndof", "-"), r["process_s"],
                 r.get("user_s", 0), r.get("load1", 0)), flush=True)
+        for alpha in angles:
+            bands = None
+            for order, sizes in (QUICK_WINDOW_LADDER if args.quick else WINDOW_LADDER).items():
+                for h in sizes:
+                    k = "a%d_P%d_h%g_window" % (alpha, order, h)
+                    if k in raw:
+                        continue
+                    bands = bands or window_bands(raw, alpha)
+                    raw[k] = run_windows(binary, alpha, order, h, bands)
+                    save_raw(raw)
+                    print("[window %5.0f s] %-32s %s %s dofs %7.1f s (user %.1f, load %.1f)" % (
+                        time.perf_counter() - t0, k, raw[k]["status"], raw[k].get("ndof", "-"), raw[k]["process_s"],
+                        raw[k].get("user_s", 0), raw[k].get("load1", 0)), flush=True)
     stamp = datetime.date.today().isoformat()
     commit = subprocess.run(["git", "-C", REPO, "log", "-1", "--format=%h"], capture_output=True, text=True).stdout.strip()
     total = sum(r.get("process_s", 0) for r in raw.values())
@@ -540,9 +659,10 @@ def main():
              "time, %.0f s user CPU; 1-minute load %.1f..%.1f during the runs; machine: %s; repository HEAD %s at "
              "analysis). Cones of volume pi/3: R = tan(alpha)^(1/3), H = tan(alpha)^(-2/3).\n" % (
                  len(raw), total, user, min(loads, default=0), max(loads, default=0), machine(), commit)]
-    run_rows, band_rows, cl_rows = [], [], []
+    run_rows, band_rows, cl_rows, win_rows = [], [], [], []
     analyse_integrated(raw, angles, lines, run_rows)
     analyse_bands(raw, angles, lines, band_rows)
+    analyse_windows(raw, angles, lines, win_rows)
     analyse_clusters(raw, angles, lines, cl_rows)
     analyse_flags(raw, angles, lines)
     md = os.path.join(RESULTS, "cone_study_%s.md" % stamp)
@@ -551,6 +671,7 @@ def main():
     write_csv(os.path.join(RESULTS, "cone_study_runs.csv"), run_rows)
     write_csv(os.path.join(RESULTS, "cone_study_bands.csv"), band_rows)
     write_csv(os.path.join(RESULTS, "cone_study_clusters.csv"), cl_rows)
+    write_csv(os.path.join(RESULTS, "cone_study_windows.csv"), win_rows)
     png = os.path.join(RESULTS, "cone_study.png")
     plot(raw, angles, png)
     print("\n".join(lines))

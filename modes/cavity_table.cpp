@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 namespace rc::modes {
 namespace {
@@ -101,13 +102,22 @@ FoundClusters find_clusters(const Discretisation& d, const SpectralSurvey& surve
   const LanczosRefinement refinement(d.velocity, d.forms, d.coupling, d.sum_rule, req.clusters);
   const auto nodes = candidate_nodes(survey, req.selection, d.sum_rule);
   std::vector<std::string> unsettled;
+  int fallbacks = 0;
+  // Nodes in dense parts of the spectrum (cones) may not settle: SLEPc slices refine those.
+  std::optional<QuadraticEigenSolver> slicer;
+  const auto fallback = [&](const GaussNode& n) {
+    if (!slicer) slicer.emplace(d.forms, req.clusters.qep);
+    return refine_node(*slicer, n, req.clusters);
+  };
   f.clusters = refine_clusters_lanczos(refinement, nodes, req.clusters.cluster_width, [&](std::size_t done, std::size_t total) {
     report(fmt::format("cluster {}/{}", done, total));
-  }, unsettled);
+  }, fallback, unsettled, fallbacks);
   for (const auto& u : unsettled) warn("warning: left out of the table: " + u);
   const int added = req.clusters.fill_gaps ? fill_gaps(refinement, f.clusters, req, d.sum_rule, report) : 0;
   f.solver = fmt::format("survey (Lanczos Gauss rule of the coupling measure, {} steps) + shift-and-invert Lanczos "
                          "Gauss rules (MUMPS LDL^T of Q(sigma)) around each node", survey.steps);
+  if (fallbacks > 0)
+    f.solver += fmt::format("; {} node(s) that did not settle refined by SLEPc PEP stoar spectrum slicing", fallbacks);
   if (added > 0) f.solver += fmt::format("; {} cluster(s) found in gaps between clusters", added);
   if (!unsettled.empty())
     f.solver += fmt::format("; {} candidate node(s) did not settle and were left out", unsettled.size());
@@ -125,6 +135,7 @@ std::vector<Cluster> select_clusters(std::vector<Cluster> clusters, const ModeSe
 
 ModeTable compute_mode_table(const TableRequest& req, const ProgressFn& progress, ModeFields* fields) {
   validate(req.selection);
+  if (req.check_convergence) validate_convergence_tolerance(req.convergence_tolerance);
   const auto start = Clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
   // Progress only on runs that take a while, and at most about once a second.

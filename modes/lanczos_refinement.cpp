@@ -106,7 +106,8 @@ std::vector<Cluster> LanczosRefinement::search_gap(double a, double b, double fl
 std::vector<Cluster> refine_clusters_lanczos(const LanczosRefinement& refinement, const std::vector<GaussNode>& nodes,
                                              double cluster_width,
                                              const std::function<void(std::size_t, std::size_t)>& progress,
-                                             std::vector<std::string>& unsettled) {
+                                             const std::function<Cluster(const GaussNode&)>& fallback,
+                                             std::vector<std::string>& unsettled, int& fallbacks) {
   std::vector<Cluster> clusters;
   std::optional<UnsettledNode> first_failure;
   for (std::size_t i = 0; i < nodes.size(); ++i) {
@@ -114,6 +115,17 @@ std::vector<Cluster> refine_clusters_lanczos(const LanczosRefinement& refinement
     try {
       c = refinement.refine(nodes[i]);
     } catch (const UnsettledNode& e) {
+      if (fallback) {
+        c = fallback(nodes[i]);
+        ++fallbacks;
+        if (progress) progress(i + 1, nodes.size());
+        if (c.members == 0) continue;
+        const bool dup = std::any_of(clusters.begin(), clusters.end(), [&](const Cluster& o) {
+          return std::abs(o.lambda - c.lambda) <= cluster_width * std::max(std::abs(c.lambda), 0.1);
+        });
+        if (!dup) clusters.push_back(c);
+        continue;
+      }
       // Two survey nodes can stand for the same unsettled one: say it once.
       if (std::find(unsettled.begin(), unsettled.end(), e.what()) == unsettled.end()) unsettled.emplace_back(e.what());
       if (!first_failure) first_failure.emplace(e);

@@ -16,6 +16,7 @@ expect_error "zero radius" "radius = 0" "$BIN" sphere --radius 0 -o out.h5
 expect_error "negative height" "height = -2" "$BIN" cylinder --radius 1 --height -2 -o out.h5
 expect_error "NaN dimension" "nan" "$BIN" spheroid --a nan --c 1 -o out.h5
 expect_error "missing dimension" "--c" "$BIN" spheroid --a 1 -o out.h5
+expect_error "loose convergence tolerance" "convergence-tolerance must be in" "$BIN" cone --radius 1 --height 1 --convergence-tolerance 1e-2 -o out.h5
 expect_error "unreadable section" "cannot read" "$BIN" section "$work/none.geo" -o out.h5
 echo 'Point(1) = {0, 0, 0};' > nogroups.geo
 expect_error "section without physical groups" "fluid" "$BIN" section nogroups.geo -o out.h5
@@ -23,7 +24,7 @@ echo 'garbage(' > broken.geo
 expect_error "malformed section" "syntax error" "$BIN" section broken.geo -o out.h5
 expect_error "bad coverage" "coverage" "$BIN" sphere --radius 1 --coverage 2 -o out.h5
 expect_error "solver failure (slices)" "eigensolver" "$BIN" sphere --radius 1 --order 3 --clusters slices -o out.h5 -pep_max_it 1 -pep_tol 1e-30
-expect_error "solver failure (lanczos)" "did not settle" "$BIN" sphere --radius 1 --order 3 --lanczos-steps 2 -o out.h5
+expect_error "solver failure (lanczos, then its slice fallback)" "eigensolver" "$BIN" sphere --radius 1 --order 3 --lanczos-steps 2 -o out.h5 -pep_max_it 1 -pep_tol 1e-30
 expect_error "Q(sigma) solve failure" "factorisation of Q(sigma)" "$BIN" sphere --radius 1 --order 3 -o out.h5 -shift_ksp_type cg -shift_pc_type none -shift_ksp_max_it 1
 expect_error "unwritable output" "cannot create" "$BIN" sphere --radius 1 --order 3 -o /nonexistent-dir/out.h5
 expect_error "info on a non-table" "not an HDF5 file" "$BIN" info stderr.txt
