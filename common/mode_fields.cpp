@@ -1,5 +1,7 @@
 #include "mode_fields.hpp"
 
+#include "hdf5_handle.hpp"
+
 #include <cmath>
 #include <fstream>
 #include <iterator>
@@ -8,20 +10,6 @@
 
 namespace rc {
 namespace {
-
-// RAII for HDF5 identifiers (the close function depends on the kind of object).
-class Hid {
- public:
-  Hid(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
-  Hid(const Hid&) = delete;
-  Hid& operator=(const Hid&) = delete;
-  ~Hid() { if (id_ >= 0) close_(id_); }
-  hid_t get() const { return id_; }
-  bool ok() const { return id_ >= 0; }
- private:
-  hid_t id_;
-  herr_t (*close_)(hid_t);
-};
 
 hid_t create_group(hid_t loc, const std::string& name) {
   const hid_t g = H5Gcreate2(loc, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);

@@ -1,5 +1,6 @@
 #include "mode_table.hpp"
 
+#include "hdf5_handle.hpp"
 #include "mode_fields.hpp"
 
 #include <hdf5.h>
@@ -12,20 +13,6 @@
 
 namespace rc {
 namespace {
-
-// RAII for HDF5 identifiers; the close function depends on the kind of object.
-class Hid {
- public:
-  Hid(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
-  Hid(const Hid&) = delete;
-  Hid& operator=(const Hid&) = delete;
-  ~Hid() { if (id_ >= 0) close_(id_); }
-  hid_t get() const { return id_; }
-  bool ok() const { return id_ >= 0; }
- private:
-  hid_t id_;
-  herr_t (*close_)(hid_t);
-};
 
 void quiet_hdf5() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
 

@@ -74,7 +74,7 @@ int fill_gaps(const LanczosRefinement& refinement, std::vector<Cluster>& cluster
     if (std::min(std::abs(a), std::abs(b)) < req.selection.geostrophic_cutoff) continue;
     for (const Cluster& c : refinement.search_gap(a, b, floor)) {
       const bool known = std::any_of(clusters.begin(), clusters.end(), [&](const Cluster& o) {
-        return std::abs(o.lambda - c.lambda) <= req.clusters.cluster_width * std::max(std::abs(c.lambda), 0.1);
+        return within_width(o.lambda, c.lambda, req.clusters.cluster_width);
       });
       if (!known) { clusters.push_back(c); ++added; }
     }
@@ -89,8 +89,7 @@ struct FoundClusters {
 };
 
 FoundClusters find_clusters(const Discretisation& d, const SpectralSurvey& survey, const TableRequest& req,
-                            const std::function<void(const std::string&)>& report,
-                            const std::function<void(const std::string&)>& warn) {
+                            const std::function<void(const std::string&)>& report) {
   FoundClusters f;
   if (req.clusters.method == ClusterMethod::slices) {
     const auto nodes = candidate_nodes(survey, req.selection, d.sum_rule);
@@ -101,7 +100,6 @@ FoundClusters find_clusters(const Discretisation& d, const SpectralSurvey& surve
   }
   const LanczosRefinement refinement(d.velocity, d.forms, d.coupling, d.sum_rule, req.clusters);
   const auto nodes = candidate_nodes(survey, req.selection, d.sum_rule);
-  std::vector<std::string> unsettled;
   int fallbacks = 0;
   // Nodes in dense parts of the spectrum (cones) may not settle: SLEPc slices refine those.
   std::optional<QuadraticEigenSolver> slicer;
@@ -111,16 +109,13 @@ FoundClusters find_clusters(const Discretisation& d, const SpectralSurvey& surve
   };
   f.clusters = refine_clusters_lanczos(refinement, nodes, req.clusters.cluster_width, [&](std::size_t done, std::size_t total) {
     report(fmt::format("cluster {}/{}", done, total));
-  }, fallback, unsettled, fallbacks);
-  for (const auto& u : unsettled) warn("warning: left out of the table: " + u);
+  }, fallback, fallbacks);
   const int added = req.clusters.fill_gaps ? fill_gaps(refinement, f.clusters, req, d.sum_rule, report) : 0;
   f.solver = fmt::format("survey (Lanczos Gauss rule of the coupling measure, {} steps) + shift-and-invert Lanczos "
                          "Gauss rules (MUMPS LDL^T of Q(sigma)) around each node", survey.steps);
   if (fallbacks > 0)
     f.solver += fmt::format("; {} node(s) that did not settle refined by SLEPc PEP stoar spectrum slicing", fallbacks);
   if (added > 0) f.solver += fmt::format("; {} cluster(s) found in gaps between clusters", added);
-  if (!unsettled.empty())
-    f.solver += fmt::format("; {} candidate node(s) did not settle and were left out", unsettled.size());
   return f;
 }
 
@@ -156,9 +151,7 @@ ModeTable compute_mode_table(const TableRequest& req, const ProgressFn& progress
 
   const SpectralSurvey survey = survey_spectral_measure(d.velocity, d.stiffness, d.coupling, req.survey);
   report(fmt::format("spectral survey: {} Lanczos steps", survey.steps));
-  auto [found, solver] = find_clusters(d, survey, req, report, [&](const std::string& w) {
-    if (progress) progress(w);
-  });
+  auto [found, solver] = find_clusters(d, survey, req, report);
   auto clusters = select_clusters(std::move(found), req.selection, sum_rule);
   ConvergenceCheck convergence;
   if (req.check_convergence) {

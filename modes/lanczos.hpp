@@ -5,6 +5,8 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
+#include <cmath>
 #include <functional>
 #include <vector>
 
@@ -15,6 +17,11 @@ struct GaussNode {
   double E = 0;       // its weight (sums to the measure's mass over all nodes)
   double residual = 0;  // Ritz residual ‖Op y − λ y‖ of the node's Ritz vector (β_k · |last component|)
 };
+
+// The λ scale of every window and cluster width in cavity-modes: max(|λ|, 0.1) (docs/modes.md, "Clusters").
+inline double lambda_scale(double lambda) { return std::max(std::abs(lambda), 0.1); }
+// True when λ = a lies within width · lambda_scale(b) of b.
+inline bool within_width(double a, double b, double width) { return std::abs(a - b) <= width * lambda_scale(b); }
 
 class LanczosProcess {
  public:
@@ -28,7 +35,6 @@ class LanczosProcess {
   bool step(const Apply& apply);
   int steps() const { return static_cast<int>(alpha_.size()); }
   bool exhausted() const { return exhausted_; }
-  double start_norm() const { return norm0_; }
 
   // The Gauss rule of the current tridiagonal matrix: nodes are its eigenvalues (ascending), weights
   // mass · (first component of each eigenvector)².

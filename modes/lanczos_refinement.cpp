@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -26,7 +25,7 @@ std::vector<Cluster> merge_nodes(std::vector<SettledNode> nodes, double width) {
   for (std::size_t i = 0; i < nodes.size();) {
     std::size_t j = i + 1;
     while (j < nodes.size() &&
-           nodes[j].lambda - nodes[j - 1].lambda <= width * std::max(std::abs(nodes[j].lambda), 0.1))
+           within_width(nodes[j - 1].lambda, nodes[j].lambda, width))
       ++j;
     Cluster c;
     double sum_lambda = 0;
@@ -92,7 +91,7 @@ std::vector<Cluster> LanczosRefinement::search_gap(double a, double b, double fl
         sil_.run(u.lambda + 1e-6 * std::max(std::abs(u.lambda), 0.1), lo, hi, floor, settings_.sil);
     for (const SettledNode& n : own.settled) {
       const bool known = std::any_of(found.begin(), found.end(), [&](const SettledNode& o) {
-        return std::abs(o.lambda - n.lambda) <= settings_.cluster_width * std::max(std::abs(n.lambda), 0.1);
+        return within_width(o.lambda, n.lambda, settings_.cluster_width);
       });
       if (!known) found.push_back(n);
     }
@@ -107,37 +106,22 @@ std::vector<Cluster> refine_clusters_lanczos(const LanczosRefinement& refinement
                                              double cluster_width,
                                              const std::function<void(std::size_t, std::size_t)>& progress,
                                              const std::function<Cluster(const GaussNode&)>& fallback,
-                                             std::vector<std::string>& unsettled, int& fallbacks) {
+                                             int& fallbacks) {
   std::vector<Cluster> clusters;
-  std::optional<UnsettledNode> first_failure;
   for (std::size_t i = 0; i < nodes.size(); ++i) {
     Cluster c;
     try {
       c = refinement.refine(nodes[i]);
-    } catch (const UnsettledNode& e) {
-      if (fallback) {
-        c = fallback(nodes[i]);
-        ++fallbacks;
-        if (progress) progress(i + 1, nodes.size());
-        if (c.members == 0) continue;
-        const bool dup = std::any_of(clusters.begin(), clusters.end(), [&](const Cluster& o) {
-          return std::abs(o.lambda - c.lambda) <= cluster_width * std::max(std::abs(c.lambda), 0.1);
-        });
-        if (!dup) clusters.push_back(c);
-        continue;
-      }
-      // Two survey nodes can stand for the same unsettled one: say it once.
-      if (std::find(unsettled.begin(), unsettled.end(), e.what()) == unsettled.end()) unsettled.emplace_back(e.what());
-      if (!first_failure) first_failure.emplace(e);
+    } catch (const UnsettledNode&) {
+      c = fallback(nodes[i]);
+      ++fallbacks;
     }
     if (progress) progress(i + 1, nodes.size());
     if (c.members == 0) continue;
-    const bool duplicate = std::any_of(clusters.begin(), clusters.end(), [&](const Cluster& o) {
-      return std::abs(o.lambda - c.lambda) <= cluster_width * std::max(std::abs(c.lambda), 0.1);
-    });
+    const bool duplicate = std::any_of(clusters.begin(), clusters.end(),
+                                       [&](const Cluster& o) { return within_width(o.lambda, c.lambda, cluster_width); });
     if (!duplicate) clusters.push_back(c);
   }
-  if (clusters.empty() && first_failure) throw *first_failure;
   return clusters;
 }
 

@@ -50,14 +50,11 @@ class LanczosRefinement {
 };
 
 // Refines the nodes (in the order given); duplicates merged, in order of first appearance. A node that does
-// not settle is refined by `fallback` instead (SLEPc slices, which need no settling; counted in
-// `fallbacks`); without a fallback it is left out and its message appended to `unsettled`, and if no node
-// settles at all, the first UnsettledNode is thrown.
+// not settle is refined by `fallback` instead (SLEPc slices, which need no settling), counted in `fallbacks`.
 std::vector<Cluster> refine_clusters_lanczos(const LanczosRefinement& refinement, const std::vector<GaussNode>& nodes,
                                              double cluster_width,
                                              const std::function<void(std::size_t done, std::size_t total)>& progress,
-                                             const std::function<Cluster(const GaussNode&)>& fallback,
-                                             std::vector<std::string>& unsettled, int& fallbacks);
+                                             const std::function<Cluster(const GaussNode&)>& fallback, int& fallbacks);
 
 // Merges nodes whose λ differ by at most width · max(|λ|, 0.1) from their neighbour; sorted by λ.
 std::vector<Cluster> merge_nodes(std::vector<SettledNode> nodes, double width);

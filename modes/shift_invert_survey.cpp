@@ -40,7 +40,7 @@ std::vector<GaussNode> merged(std::vector<GaussNode> rule, double width) {
   std::vector<GaussNode> out;
   for (const auto& n : rule) {
     if (!out.empty() && std::isfinite(n.lambda) &&
-        n.lambda - out.back().lambda <= width * std::max(std::abs(n.lambda), 0.1)) {
+        within_width(out.back().lambda, n.lambda, width)) {
       GaussNode& m = out.back();
       const double E = m.E + n.E;
       if (E > 0) m.lambda = (m.E * m.lambda + n.E * n.lambda) / E;
@@ -119,7 +119,6 @@ ShiftInvertRule ShiftInvertSurvey::run(double sigma, double lo, double hi, doubl
     if (lanczos.steps() >= settings.min_steps && lanczos.steps() > settings.check_every && all_settled()) break;
   }
   ShiftInvertRule out;
-  out.shift = sigma;
   out.steps = lanczos.steps();
   for (const auto& s : watched) (is_settled(s, settings) ? out.settled : out.unsettled).push_back(s);
   return out;

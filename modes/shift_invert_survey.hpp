@@ -37,7 +37,6 @@ struct SettledNode {
 };
 
 struct ShiftInvertRule {
-  double shift = 0;
   std::vector<SettledNode> settled;    // in the window, heavier than the floor, stopped moving
   std::vector<SettledNode> unsettled;  // in the window, heavier than the floor, still moving at the step limit
   int steps = 0;
@@ -51,8 +50,6 @@ class ShiftInvertSurvey {
   // Runs the Lanczos process on (A − σ)⁻¹ until every node with λ in [lo, hi] and weight >= floor
   // (absolute) has settled, or the step limit. Throws if Q(σ) cannot be factorised.
   ShiftInvertRule run(double sigma, double lo, double hi, double floor, const ShiftInvertSettings& settings) const;
-
-  double mass() const { return mass_; }
 
  private:
   const VelocitySpace& V_;

@@ -57,7 +57,7 @@ std::vector<Cluster> refine_clusters(const PoincareForms& forms, const std::vect
     if (progress) progress(i + 1, nodes.size());
     if (c.members == 0) continue;
     const bool duplicate = std::any_of(clusters.begin(), clusters.end(), [&](const Cluster& o) {
-      return std::abs(o.lambda - c.lambda) <= settings.cluster_width * std::max(std::abs(c.lambda), 0.1);
+      return within_width(o.lambda, c.lambda, settings.cluster_width);
     });
     if (!duplicate) clusters.push_back(c);
   }

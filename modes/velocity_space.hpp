@@ -19,7 +19,6 @@ class VelocitySpace {
   VelocitySpace(const FESpace& space, double centroid_z);
 
   Eigen::Index size() const { return static_cast<Eigen::Index>(W_.size()); }
-  int ndof() const { return ndof_; }
   // e1 × r = (z', −z', −r) in the (a, b, c) representation.
   Eigen::VectorXd coupling_vector() const;
   // ω repeated for the three components: ⟨u, v⟩ = Σ weights ∘ u ∘ v.
