@@ -344,6 +344,8 @@ void add_wall(MeridianMesh& m, const GmshMesh& g, const std::unordered_map<std::
 
 }  // namespace
 
+void check_shape(const ShapeSpec& shape) { detail::validate_shape(shape); }
+
 MeridianMesh mesh_meridian(const ShapeSpec& shape, const MeshOptions& options) {
   detail::validate_shape(shape);
   check_options(options);

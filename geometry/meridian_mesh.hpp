@@ -46,6 +46,9 @@ struct MeridianMesh {
 // section without the three physical groups, with nodes at r < 0, or with no triangles.
 MeridianMesh mesh_meridian(const ShapeSpec& shape, const MeshOptions& options);
 
+// The shape checks of mesh_meridian alone (kind and dimensions), for solvers that need no mesh.
+void check_shape(const ShapeSpec& shape);
+
 // The reference triangle of a given order with a Gauss rule exact to `degree`: basis values and
 // gradients at the quadrature points, in the same local node order as MeridianMesh::triangles.
 struct ReferenceTriangle {

@@ -1,9 +1,11 @@
 #include "cavity_table.hpp"
 
 #include "cluster_fields.hpp"
+#include "cluster_selection.hpp"
 #include "convergence.hpp"
 #include "discretisation.hpp"
 #include "lanczos_refinement.hpp"
+#include "separable_table.hpp"
 #include "slice_refinement.hpp"
 
 #include <fmt/format.h>
@@ -17,30 +19,6 @@ namespace rc::modes {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-void validate(const ModeSelection& s) {
-  if (s.modes && *s.modes < 1) throw std::runtime_error(fmt::format("--modes must be at least 1 (got {})", *s.modes));
-  if (s.coverage && !(*s.coverage > 0 && *s.coverage <= 1))
-    throw std::runtime_error(fmt::format("--coverage must be in (0, 1] (got {})", *s.coverage));
-}
-
-// How many of the items, sorted by E descending, the selection keeps (cavity_table.hpp).
-template <class Item>
-std::size_t selected_count(const std::vector<Item>& items, const ModeSelection& sel, double sum_rule) {
-  if (sel.modes) return std::min<std::size_t>(items.size(), *sel.modes);
-  std::size_t keep = 0;
-  if (sel.coverage) {
-    for (double sum = 0; keep < items.size() && sum < *sel.coverage * sum_rule;) sum += items[keep++].E;
-    return keep;
-  }
-  while (keep < items.size() && items[keep].E >= sel.default_threshold * sum_rule) ++keep;
-  return keep;
-}
-
-template <class Item>
-void sort_by_energy(std::vector<Item>& items) {
-  std::sort(items.begin(), items.end(), [](const Item& a, const Item& b) { return a.E > b.E; });
-}
 
 // Survey nodes worth refining, heaviest first. A node's weight only approximates its cluster's E, and two
 // nodes may refine to one cluster, so a few spare nodes are refined beyond what the selection asks for.
@@ -119,13 +97,6 @@ FoundClusters find_clusters(const Discretisation& d, const SpectralSurvey& surve
   return f;
 }
 
-std::vector<Cluster> select_clusters(std::vector<Cluster> clusters, const ModeSelection& sel, double sum_rule) {
-  sort_by_energy(clusters);
-  // A table always has its heaviest cluster, even if it falls below the default threshold.
-  clusters.resize(std::max(selected_count(clusters, sel, sum_rule), std::min<std::size_t>(1, clusters.size())));
-  return clusters;
-}
-
 }  // namespace
 
 ModeTable compute_mode_table(const TableRequest& req, const ProgressFn& progress, ModeFields* fields) {
@@ -142,6 +113,10 @@ ModeTable compute_mode_table(const TableRequest& req, const ProgressFn& progress
     progress(fmt::format("[{:6.2f} s] {}", t, what));
   };
 
+  if (req.method == TableMethod::separable) {
+    if (fields) throw std::runtime_error("--fields needs --method mesh (the separable solver keeps no 2-D mesh)");
+    return separable_cylinder_table(req, report);
+  }
   const Discretisation d(req.shape, req.mesh);
   const FESpace& space = d.space;
   const FluidIntegrals& fluid = d.fluid;
@@ -194,19 +169,7 @@ ModeTable compute_mode_table(const TableRequest& req, const ProgressFn& progress
   t.bands.hi = bands.hi;
   t.bands.E = bands.E;
   t.bands.lambda_mean = bands.lambda_mean;
-  double kept = 0;
-  for (const auto& c : clusters) {
-    t.lambda.push_back(c.lambda);
-    t.kappa.push_back(2 / c.lambda);
-    t.E.push_back(c.E);
-    t.a.push_back(std::sqrt(c.E / 2));
-    t.N2.push_back(1.0);
-    t.residual.push_back(c.residual);
-    t.spread.push_back(c.spread);
-    t.members.push_back(c.members);
-    kept += c.E;
-  }
-  t.coverage = sum_rule > 0 ? kept / sum_rule : 1.0;
+  add_modes(t, clusters, sum_rule);
   t.sort_by_energy();
   if (fields)
     *fields = cluster_fields(space, d.forms, t, {req.clusters.cluster_width, req.clusters.qep},

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "cluster.hpp"
+#include "cluster_selection.hpp"
 #include "meridian_mesh.hpp"
 #include "mode_table.hpp"
 #include "spectral_survey.hpp"
@@ -13,20 +14,13 @@
 
 namespace rc::modes {
 
-// Which clusters a table keeps (docs/modes.md):
-//   modes = N     the N clusters of largest E;
-//   coverage = c  clusters in order of E until their E sums to c (A_f − J_zh);
-//   neither       every cluster whose E is at least default_threshold (A_f − J_zh), which keeps every
-//                 mode that moves a stability boundary by more than ~0.1 %.
-struct ModeSelection {
-  std::optional<int> modes;
-  std::optional<double> coverage;
-  double default_threshold = 1e-3;
-  int max_clusters = 60;
-  double geostrophic_cutoff = 0.02;  // no cluster is sought with |λ| below this (the λ ≈ 0 accumulation)
-};
+// How a table is computed: `mesh` (every shape) meshes the meridian section with gmsh and finds clusters of the
+// 2-D FE problem (survey + refinement, above); `separable` (cylinders only) separates the cylinder's problem
+// exactly on a tensor-product grid and solves every radial problem densely (separable_cylinder.hpp).
+enum class TableMethod { mesh, separable };
 
 struct TableRequest {
+  TableMethod method = TableMethod::mesh;
   geometry::ShapeSpec shape;
   geometry::MeshOptions mesh;
   ModeSelection selection;

@@ -1,5 +1,7 @@
 #include "closed_forms.hpp"
 
+#include "gauss_rules.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -23,24 +25,6 @@ double bisect(const std::function<double(double)>& f, double lo, double hi) {
     if ((fm < 0) == (flo < 0)) { lo = mid; flo = fm; } else { hi = mid; }
   }
   return 0.5 * (lo + hi);
-}
-
-// Gauss–Legendre nodes and weights on [-1, 1] (Newton on P_n; accurate to rounding for n <= 200).
-void gauss_legendre(int n, std::vector<double>& x, std::vector<double>& w) {
-  x.resize(n); w.resize(n);
-  for (int i = 0; i < n; ++i) {
-    double t = std::cos(kPi * (i + 0.75) / (n + 0.5)), dp = 0;
-    for (int it = 0; it < 100; ++it) {
-      double p0 = 1, p1 = t;
-      for (int k = 2; k <= n; ++k) { const double p2 = ((2 * k - 1) * t * p1 - (k - 1) * p0) / k; p0 = p1; p1 = p2; }
-      dp = n * (t * p1 - p0) / (t * t - 1);
-      const double dt = p1 / dp;
-      t -= dt;
-      if (std::abs(dt) < 1e-16) break;
-    }
-    x[i] = t;
-    w[i] = 2 / ((1 - t * t) * dp * dp);
-  }
 }
 
 // E of p = J1(ξ r/a) sin(k z) with the SPEC §2 formulas (ω0 = 1), by tensor Gauss–Legendre quadrature.

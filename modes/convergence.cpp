@@ -23,6 +23,14 @@ geometry::MeshOptions coarser(const geometry::MeshOptions& mesh, std::string& de
   return c;
 }
 
+ClusterChange cluster_change(const Cluster& c, const Cluster& r, double tolerance) {
+  ClusterChange change;
+  change.dlambda = r.members > 0 ? std::abs(r.lambda - c.lambda) / std::abs(c.lambda) : 1.0;
+  change.dE = r.members > 0 ? std::abs(r.E - c.E) / c.E : 1.0;
+  change.converged = change.dlambda <= tolerance && change.dE <= tolerance;
+  return change;
+}
+
 ConvergenceCheck check_convergence(const geometry::ShapeSpec& shape, const geometry::MeshOptions& mesh,
                                    const std::vector<Cluster>& clusters, const ClusterSettings& settings,
                                    double tolerance) {
@@ -42,11 +50,7 @@ ConvergenceCheck check_convergence(const geometry::ShapeSpec& shape, const geome
       if (!slicer) slicer.emplace(d.forms, settings.qep);
       r = refine_node(*slicer, node, settings);
     }
-    ClusterChange change;
-    change.dlambda = r.members > 0 ? std::abs(r.lambda - c.lambda) / std::abs(c.lambda) : 1.0;
-    change.dE = r.members > 0 ? std::abs(r.E - c.E) / c.E : 1.0;
-    change.converged = change.dlambda <= tolerance && change.dE <= tolerance;
-    check.changes.push_back(change);
+    check.changes.push_back(cluster_change(c, r, tolerance));
   }
   return check;
 }

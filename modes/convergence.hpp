@@ -22,6 +22,10 @@ struct ConvergenceCheck {
   std::vector<ClusterChange> changes;  // one per cluster, in the order given
 };
 
+// A table's cluster against the same cluster recomputed on a coarser discretisation (members = 0: not found
+// there, both changes 1).
+ClusterChange cluster_change(const Cluster& table, const Cluster& reference, double tolerance);
+
 // The coarser discretisation: the same order with the mesh size doubled. (One order lower on the same
 // mesh was tried first and is not conservative: where corner singularities limit the convergence rate, P5
 // and P6 on one mesh can err alike, and a 2h/a = 1 cylinder cluster was flagged converged at 1e-6 while

@@ -20,6 +20,10 @@ struct ModeCoupling {
   double N2 = 1;       // normalisation of V (always 1 here)
 };
 
+// E, a, N² of an eigenpair from the form values of its eigenvector p (the formula above):
+// f1p = f1·p, f2p = f2·p, kh = pᵀKh p, gc = pᵀGc p, kz = pᵀKz p. Throws if they are not finite.
+ModeCoupling coupling_from_forms(double lambda, double f1p, double f2p, double kh, double gc, double kz);
+
 class CouplingEvaluator {
  public:
   explicit CouplingEvaluator(const PoincareForms& forms);

@@ -28,14 +28,22 @@ struct ShapeCommand {
   std::map<std::string, double> dims;
 };
 
-void add_common_options(CLI::App* cmd, TableRequest& req, std::string& output, bool& fields) {
-  cmd->add_option("--order", req.mesh.order, "Lagrange order of the isoparametric triangles (1..6)")
-      ->capture_default_str();
-  cmd->add_option("--mesh-size", req.mesh.size, "target element size in the shape's length unit (0: 1/8 of the "
-                                                "smallest dimension)")->capture_default_str();
+// --method: auto is separable for a cylinder table without --fields, mesh otherwise (docs/modes.md).
+enum class MethodChoice { automatic, mesh, separable };
+
+void add_common_options(CLI::App* cmd, TableRequest& req, std::string& output, bool& fields, MethodChoice& method) {
+  cmd->add_option("--method", method,
+                  "auto (separable for cylinders without --fields, else mesh), mesh (gmsh mesh of the meridian "
+                  "section, every shape) or separable (cylinder: exact separation on a tensor-product grid)")
+      ->transform(CLI::CheckedTransformer(std::map<std::string, MethodChoice>{
+          {"auto", MethodChoice::automatic}, {"mesh", MethodChoice::mesh}, {"separable", MethodChoice::separable}}))
+      ->default_str("auto");
+  cmd->add_option("--order", req.mesh.order, "Lagrange order: mesh 1..6 (default 6), separable 1..12 (default 8)");
+  cmd->add_option("--mesh-size", req.mesh.size, "target element size in the shape's length unit (mesh: 1/8 of the "
+                                                "smallest dimension d; separable: axial size, d/4)");
   cmd->add_option("--radial-size", req.mesh.radial_size,
-                  "cylinder: element size along r of a structured mesh (--mesh-size is then the size along z; 0: "
-                  "unstructured)")->capture_default_str();
+                  "cylinder: element size along r (mesh: a structured mesh, --mesh-size is then the size along z; "
+                  "separable: default d/12)");
   auto* modes = cmd->add_option("--modes", req.selection.modes, "keep the N clusters of largest E");
   auto* coverage = cmd->add_option("--coverage", req.selection.coverage,
                                    "keep clusters until their E sums to this fraction of A_f - J_zh");
@@ -71,15 +79,29 @@ void add_common_options(CLI::App* cmd, TableRequest& req, std::string& output, b
   cmd->add_option("-o,--output", output, "mode table to write (HDF5)")->required();
 }
 
+// Resolves --method and the order's default; refuses options that only the other method has.
+void choose_method(const CLI::App& cmd, MethodChoice choice, bool fields, TableRequest& req) {
+  const bool separable = choice == MethodChoice::separable ||
+                         (choice == MethodChoice::automatic && req.shape.kind == "cylinder" && !fields);
+  req.method = separable ? rc::modes::TableMethod::separable : rc::modes::TableMethod::mesh;
+  if (req.mesh.order == 0) req.mesh.order = separable ? 8 : 6;
+  if (!separable) return;
+  for (const char* mesh_only : {"--clusters", "--fill-gaps", "--lanczos-steps", "--survey-steps", "--tolerance"})
+    if (cmd.count(mesh_only) > 0)
+      throw std::runtime_error(std::string(mesh_only) + " applies to --method mesh only (the separable cylinder "
+                                                        "solver computes every eigenpair directly)");
+}
+
 int run(int argc, char** argv) {
   auto args = rc::modes::split_arguments(argc, argv);
   CLI::App app{"cavity-modes: inertial-mode tables (kappa, lambda, E, a, N2, J_zh, coverage) of a rotating "
                "ideal fluid in an axisymmetric cavity. PETSc/SLEPc options (-pep_type, -log_view) pass through."};
   app.require_subcommand(1);
   TableRequest req;
-  req.mesh.order = 6;
+  req.mesh.order = 0;  // the method's default, set below
   std::string output;
   bool fields = false;
+  MethodChoice method = MethodChoice::automatic;
   std::vector<ShapeCommand> shapes;
   auto shape = [&](const std::string& kind, const std::string& help,
                    std::vector<std::pair<std::string, std::string>> dims) {
@@ -97,8 +119,8 @@ int run(int argc, char** argv) {
   shape("cone", "cone, apex down, flat lid on top", {{"radius", "lid radius"}, {"height", "height"}});
   auto* section = app.add_subcommand("section", "the user's meridian section (.geo or .msh; see docs/geometry.md)");
   section->add_option("file", req.shape.file, "section file")->required();
-  for (auto& s : shapes) add_common_options(s.app, req, output, fields);
-  add_common_options(section, req, output, fields);
+  for (auto& s : shapes) add_common_options(s.app, req, output, fields, method);
+  add_common_options(section, req, output, fields, method);
 
   std::string info_file;
   bool json = false;
@@ -147,9 +169,11 @@ int run(int argc, char** argv) {
     if (cmp.failing > 0) throw std::runtime_error(rc::modes::comparison_failure(cmp, compare_reference));
     return 0;
   }
+  CLI::App* table_command = section;
   if (section->parsed()) req.shape.kind = "section";
   for (auto& s : shapes)
-    if (s.app->parsed()) { req.shape.kind = s.kind; req.shape.dims = s.dims; }
+    if (s.app->parsed()) { req.shape.kind = s.kind; req.shape.dims = s.dims; table_command = s.app; }
+  choose_method(*table_command, method, fields, req);
 
   int petsc_argc = static_cast<int>(args.petsc.size());
   std::vector<char*> petsc_argv;

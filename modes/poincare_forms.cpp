@@ -65,12 +65,16 @@ FluidIntegrals integrate_fluid(const FESpace& space) {
       v += w; vz += w * z; vzz += w * z * z; vrr += w * r * r;
     }
   }
+  return fluid_from_moments(v, vz, vzz, vrr);
+}
+
+FluidIntegrals fluid_from_moments(double r1, double zr, double zzr, double r3) {
   FluidIntegrals f;
-  f.volume = 2 * kPi * v;
-  f.centroid_z = vz / v;
-  const double zz_about_centroid = vzz - v * f.centroid_z * f.centroid_z;
-  f.A_f = kPi * (vrr + 2 * zz_about_centroid);
-  f.C_f = 2 * kPi * vrr;
+  f.volume = 2 * kPi * r1;
+  f.centroid_z = zr / r1;
+  const double zz_about_centroid = zzr - r1 * f.centroid_z * f.centroid_z;
+  f.A_f = kPi * (r3 + 2 * zz_about_centroid);
+  f.C_f = 2 * kPi * r3;
   return f;
 }
 

@@ -18,6 +18,8 @@ struct FluidIntegrals {
   double C_f = 0;         // axial inertia: 2π ∫∫ r³ dr dz
 };
 FluidIntegrals integrate_fluid(const FESpace& space);
+// The same from the meridian moments ∫∫ r, ∫∫ z r, ∫∫ z² r, ∫∫ r³ (dr dz).
+FluidIntegrals fluid_from_moments(double r1, double zr, double zzr, double r3);
 
 struct PoincareForms {
   PMat Kh, Kz, Gc;

@@ -1,0 +1,58 @@
+// The circular cylinder's Poincaré problem separated at the discrete level (docs/modes.md, "Separable
+// cylinder solver").
+//
+// On a tensor-product grid of 1-D Lagrange elements (r: 0..a with p = 0 on the axis; z over the height),
+// the forms of SPEC §2 are Kronecker products of 1-D forms:
+//   Kh = Ar ⊗ Bz,  Kz = Br ⊗ Az,  Gc = Cr ⊗ Bz,
+//   Ar = ∫ (φ_i′φ_j′ + φ_iφ_j/r²) r dr,  Br = ∫ φ_iφ_j r dr,  Cr = ∫ (φ_i′φ_j + φ_iφ_j′) dr,
+//   Az = ∫ ψ_i′ψ_j′ dz,  Bz = ∫ ψ_iψ_j dz,
+// and the coupling functionals f1 = g1 ⊗ s, f2 = g2 ⊗ t with g1 = ∫ (rφ)′ dr, g2 = ∫ r²φ dr, s = ∫ z′ψ dz,
+// t = ∫ ψ′ dz (z′ from the centroid). In the Bz-orthonormal eigenbasis of Az w_n = μ_n Bz w_n (fast
+// diagonalisation, Lynch–Rice–Thomas 1964) the 2-D quadratic eigenproblem splits EXACTLY into one radial
+// problem per axial vector:
+//   λ² (Ar + μ_n Br) x + 2λ Cr x − 4μ_n Br x = 0,   p = x ⊗ w_n,
+// which is hyperbolic with a negative definite constant term, so its linearisation
+//   [−2Cr 4μBr; 4μBr 0] z = λ [Ar + μBr 0; 0 4μBr] z,   z = (λx, x),
+// is a symmetric-definite pencil: every eigenpair, real, by a dense solver. No eigenpair of different axial
+// vectors mixes, so an exact mode's E is not spread over copies: each discrete eigenpair is one mode.
+// Zhukovsky's problem (SPEC §2) splits the same way: (Ar + μ_n Br) χ_n = g1 s_n − g2 t_n.
+#pragma once
+
+#include "poincare_forms.hpp"
+
+#include <vector>
+
+namespace rc::modes {
+
+struct SeparableGrid {
+  int order = 6;            // Lagrange order of the 1-D elements
+  int radial_elements = 1;  // uniform elements along r before corner grading
+  int axial_elements = 2;   // uniform elements along z before corner grading
+  int corner_layers = 0;    // geometric layers towards r = a and both lids (line_space.hpp, graded_breaks)
+};
+
+struct SeparableMode {
+  double lambda = 0, E = 0;
+  double residual = 0;  // backward error of (λ, x) for the radial QEP: ‖Q(λ)x‖ / ((λ²‖M‖ + 2|λ|‖Cr‖ + 4μ‖Br‖)‖x‖)
+  int axial = 0;        // n: rank of the axial eigenvector among the coupled ones, μ ascending (0-based):
+                        //    Stewartson's k = (2n + 1)π/(2h) for a resolved mode
+  int radial = 0;       // j: rank of |λ| (descending) among the same axial vector's eigenvalues of the same sign,
+                        //    1-based (Stewartson's root index); 0 for the E = 0 null eigenvalue λ = −2
+};
+
+struct SeparableSpectrum {
+  FluidIntegrals fluid;
+  double J_zh = 0;
+  double sum_rule = 0;          // A_f − J_zh
+  double sum_E = 0;             // Σ E over every eigenpair: equals sum_rule (SPEC §2) up to rounding
+  long ndof = 0;                // radial × axial dofs of the 2-D tensor space
+  int radial_dofs = 0, axial_dofs = 0;
+  int coupled_axial = 0;        // axial vectors with a non-zero coupling projection (each solved)
+  std::vector<SeparableMode> modes;  // every eigenpair of every coupled axial vector, E descending
+};
+
+// Throws std::invalid_argument for non-positive or non-finite dimensions or a bad grid, and
+// std::runtime_error if a dense factorisation fails.
+SeparableSpectrum solve_separable_cylinder(double radius, double height, const SeparableGrid& grid);
+
+}  // namespace rc::modes

@@ -1,0 +1,23 @@
+// A cylinder's mode table by the separable solver (separable_cylinder.hpp): the grid from the request, every
+// eigenpair, the selection, per-mode convergence against a grid twice as coarse, exact discrete band weights.
+// docs/modes.md, "Separable cylinder solver".
+#pragma once
+
+#include "cavity_table.hpp"
+#include "separable_cylinder.hpp"
+
+namespace rc::modes {
+
+// Defaults where the request leaves 0, with d = min(radius, height): order 8, axial element size d/4,
+// radial element size d/12, two corner layers. Throws std::runtime_error (one line) for a shape that is not a
+// valid cylinder or an order outside 1..12.
+SeparableGrid separable_grid(const geometry::ShapeSpec& shape, const geometry::MeshOptions& mesh);
+
+// The same grid with half the elements in r and in z (at least one radial and two axial): the reference of
+// the convergence flags.
+SeparableGrid coarser(const SeparableGrid& grid);
+
+// compute_mode_table's separable branch (the request's selection and tolerance already validated there).
+ModeTable separable_cylinder_table(const TableRequest& request, const ProgressFn& report);
+
+}  // namespace rc::modes
