@@ -28,16 +28,14 @@ struct ShapeCommand {
   std::map<std::string, double> dims;
 };
 
-// --method: auto is separable for a cylinder table without --fields, mesh otherwise (docs/modes.md).
-enum class MethodChoice { automatic, mesh, separable };
-
-void add_common_options(CLI::App* cmd, TableRequest& req, std::string& output, bool& fields, MethodChoice& method) {
+// --method auto|mesh|separable: auto is separable for a cylinder table without --fields, mesh otherwise
+// (docs/modes.md).
+void add_common_options(CLI::App* cmd, TableRequest& req, std::string& output, bool& fields, std::string& method) {
   cmd->add_option("--method", method,
                   "auto (separable for cylinders without --fields, else mesh), mesh (gmsh mesh of the meridian "
                   "section, every shape) or separable (cylinder: exact separation on a tensor-product grid)")
-      ->transform(CLI::CheckedTransformer(std::map<std::string, MethodChoice>{
-          {"auto", MethodChoice::automatic}, {"mesh", MethodChoice::mesh}, {"separable", MethodChoice::separable}}))
-      ->default_str("auto");
+      ->check(CLI::IsMember({"auto", "mesh", "separable"}))
+      ->capture_default_str();
   cmd->add_option("--order", req.mesh.order, "Lagrange order: mesh 1..6 (default 6), separable 1..12 (default 8)");
   cmd->add_option("--mesh-size", req.mesh.size, "target element size in the shape's length unit (mesh: 1/8 of the "
                                                 "smallest dimension d; separable: axial size, d/4)");
@@ -80,9 +78,8 @@ void add_common_options(CLI::App* cmd, TableRequest& req, std::string& output, b
 }
 
 // Resolves --method and the order's default; refuses options that only the other method has.
-void choose_method(const CLI::App& cmd, MethodChoice choice, bool fields, TableRequest& req) {
-  const bool separable = choice == MethodChoice::separable ||
-                         (choice == MethodChoice::automatic && req.shape.kind == "cylinder" && !fields);
+void choose_method(const CLI::App& cmd, const std::string& choice, bool fields, TableRequest& req) {
+  const bool separable = choice == "separable" || (choice == "auto" && req.shape.kind == "cylinder" && !fields);
   req.method = separable ? rc::modes::TableMethod::separable : rc::modes::TableMethod::mesh;
   if (req.mesh.order == 0) req.mesh.order = separable ? 8 : 6;
   if (!separable) return;
@@ -101,7 +98,7 @@ int run(int argc, char** argv) {
   req.mesh.order = 0;  // the method's default, set below
   std::string output;
   bool fields = false;
-  MethodChoice method = MethodChoice::automatic;
+  std::string method = "auto";
   std::vector<ShapeCommand> shapes;
   auto shape = [&](const std::string& kind, const std::string& help,
                    std::vector<std::pair<std::string, std::string>> dims) {

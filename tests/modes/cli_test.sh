@@ -28,6 +28,20 @@ expect_error "solver failure (lanczos, then its slice fallback)" "eigensolver" "
 expect_error "Q(sigma) solve failure" "factorisation of Q(sigma)" "$BIN" sphere --radius 1 --order 3 -o out.h5 -shift_ksp_type cg -shift_pc_type none -shift_ksp_max_it 1
 expect_error "unwritable output" "cannot create" "$BIN" sphere --radius 1 --order 3 -o /nonexistent-dir/out.h5
 expect_error "info on a non-table" "not an HDF5 file" "$BIN" info stderr.txt
+# --method separable (cylinders only; docs/modes.md "Separable cylinder solver")
+expect_error "separable for a sphere" "only available for the cylinder" "$BIN" sphere --radius 1 --method separable -o out.h5
+expect_error "separable with --fields" "--fields needs --method mesh" "$BIN" cylinder --radius 1 --height 2 --method separable --fields -o out.h5
+expect_error "separable order out of range" "order 13 is outside 1..12" "$BIN" cylinder --radius 1 --height 2 --order 13 -o out.h5
+expect_error "mesh-only option with separable" "--clusters applies to --method mesh" "$BIN" cylinder --radius 1 --height 2 --clusters slices -o out.h5
+expect_error "separable negative radial size" "must be positive" "$BIN" cylinder --radius 1 --height 2 --radial-size -0.1 -o out.h5
+expect_error "unknown method" "--method" "$BIN" cylinder --radius 1 --height 2 --method fancy -o out.h5
+if "$BIN" cylinder --radius 1 --height 2 --modes 3 -o sep.h5 > sep.txt 2>&1 && "$BIN" info sep.h5 --json > sep.json &&
+   python3 -c '
+import json
+j = json.load(open("sep.json"))
+assert j["solver"].startswith("separable"), j["solver"]
+assert len(j["modes"]["E"]) == 3 and abs(j["modes"]["kappa"][0] - 2.0089710942) < 1e-8, j["modes"]["kappa"]
+'; then ok "cylinder table by the separable method (default)"; else bad "separable cylinder table: $(tail -2 sep.txt)"; fi
 
 # A good run, its table, and info --json (parsed by Python's json module).
 if "$BIN" spheroid --a 1 --c 0.5 --order 4 -o good.h5 > run.txt 2>&1 && [ -f good.h5 ]; then
