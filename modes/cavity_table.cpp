@@ -7,6 +7,7 @@
 #include "lanczos_refinement.hpp"
 #include "separable_table.hpp"
 #include "slice_refinement.hpp"
+#include "table_assembly.hpp"
 
 #include <fmt/format.h>
 
@@ -136,40 +137,17 @@ ModeTable compute_mode_table(const TableRequest& req, const ProgressFn& progress
     convergence = check_convergence(req.shape, used, clusters, req.clusters, req.convergence_tolerance);
   }
 
-  ModeTable t;
-  t.shape = req.shape.kind;
-  t.dimensions = req.shape.dims;
+  ModeTable t = start_table(req.shape, fluid, zh.J_zh);
   t.fe_order = space.order();
   t.mesh_h = space.mesh().size;
   t.mesh_h_radial = req.mesh.radial_size;
   t.ndof = space.ndof();
-  t.m = 1;
-  t.volume = fluid.volume;
-  t.centroid_z = fluid.centroid_z;
-  t.A_f = fluid.A_f;
-  t.C_f = fluid.C_f;
-  t.J_zh = zh.J_zh;
-  t.sum_rule = sum_rule;
   t.solver = solver.empty() ? "no cluster needed refinement" : solver;
   t.tolerance = req.clusters.method == ClusterMethod::slices ? req.clusters.qep.tolerance
                                                               : req.clusters.sil.lambda_tolerance;
-  t.normalisation = "rho = 1, omega0 = 1; each cluster's V is normalised to N2 = |V|^2 = 1, a = (e1 x r, V), "
-                    "so E = 2 a^2 / N2 (SPEC section 2)";
-  if (req.check_convergence) {
-    t.convergence_reference = convergence.reference;
-    t.convergence_tolerance = req.convergence_tolerance;
-    for (const auto& ch : convergence.changes) {
-      t.dlambda.push_back(ch.dlambda);
-      t.dE.push_back(ch.dE);
-      t.converged.push_back(ch.converged ? 1 : 0);
-    }
-  }
-  const BandWeights bands = band_weights(survey.nodes);
-  t.bands.lo = bands.lo;
-  t.bands.hi = bands.hi;
-  t.bands.E = bands.E;
-  t.bands.lambda_mean = bands.lambda_mean;
-  add_modes(t, clusters, sum_rule);
+  if (req.check_convergence) add_convergence(t, convergence, req.convergence_tolerance);
+  add_bands(t, band_weights(survey.nodes));
+  add_modes(t, clusters);
   t.sort_by_energy();
   if (fields)
     *fields = cluster_fields(space, d.forms, t, {req.clusters.cluster_width, req.clusters.qep},

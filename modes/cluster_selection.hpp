@@ -1,9 +1,8 @@
-// Which clusters a table keeps (ModeSelection, docs/modes.md "Which clusters a table keeps") and how kept
-// clusters become the /modes rows of a table — shared by the mesh and the separable methods.
+// Which clusters a table keeps (ModeSelection, docs/modes.md "Which clusters a table keeps"), for the mesh and
+// the separable methods alike.
 #pragma once
 
 #include "cluster.hpp"
-#include "mode_table.hpp"
 
 #include <algorithm>
 #include <optional>
@@ -45,11 +44,13 @@ std::size_t selected_count(const std::vector<Item>& items, const ModeSelection& 
   return keep;
 }
 
-// The kept clusters, E descending. A table always has its heaviest cluster, even below the default threshold.
-std::vector<Cluster> select_clusters(std::vector<Cluster> clusters, const ModeSelection& sel, double sum_rule);
-
-// Appends the clusters as /modes rows (κ, λ, E, a = sqrt(E/2) with N² = 1, residual, spread, members) and
-// sets the table's coverage Σ E / sum_rule.
-void add_modes(ModeTable& table, const std::vector<Cluster>& clusters, double sum_rule);
+// The kept items (clusters, or the separable method's modes), E descending. A table always has its heaviest
+// one, even below the default threshold.
+template <class Item>
+std::vector<Item> select_clusters(std::vector<Item> items, const ModeSelection& sel, double sum_rule) {
+  sort_by_energy(items);
+  items.resize(std::max(selected_count(items, sel, sum_rule), std::min<std::size_t>(1, items.size())));
+  return items;
+}
 
 }  // namespace rc::modes

@@ -2,6 +2,7 @@
 
 #include "cluster_selection.hpp"
 #include "convergence.hpp"
+#include "table_assembly.hpp"
 
 #include <fmt/format.h>
 
@@ -39,7 +40,7 @@ Label label(const SeparableMode& m) { return {m.axial, m.lambda > 0 ? m.radial :
 
 // Each kept mode against the mode of the same label (n, ±j) on the coarser grid.
 ConvergenceCheck check_labels(const SeparableSpectrum& coarse, const std::vector<SeparableMode>& kept,
-                              double tolerance, std::string reference) {
+                              std::string reference, double tolerance) {
   std::map<Label, const SeparableMode*> by_label;
   for (const auto& m : coarse.modes)
     if (m.radial > 0) by_label[label(m)] = &m;
@@ -96,26 +97,16 @@ ModeTable separable_cylinder_table(const TableRequest& req, const ProgressFn& re
 
   std::vector<SeparableMode> candidates;
   for (const auto& m : s.modes)
-    if (is_mode(m, req.selection.geostrophic_cutoff)) candidates.push_back(m);  // E descending, as s.modes
+    if (is_mode(m, req.selection.geostrophic_cutoff)) candidates.push_back(m);
+  const std::vector<SeparableMode> kept = select_clusters(std::move(candidates), req.selection, s.sum_rule);
   std::vector<Cluster> clusters;
-  for (const auto& m : candidates) clusters.push_back(as_cluster(m));
-  clusters = select_clusters(std::move(clusters), req.selection, s.sum_rule);
-  candidates.resize(clusters.size());  // select_clusters keeps a prefix of the E-sorted list
+  for (const auto& m : kept) clusters.push_back(as_cluster(m));
 
-  ModeTable t;
-  t.shape = req.shape.kind;
-  t.dimensions = req.shape.dims;
+  ModeTable t = start_table(req.shape, s.fluid, s.J_zh);
   t.fe_order = grid.order;
   t.mesh_h = H / grid.axial_elements;
   t.mesh_h_radial = R / grid.radial_elements;
   t.ndof = s.ndof;
-  t.m = 1;
-  t.volume = s.fluid.volume;
-  t.centroid_z = s.fluid.centroid_z;
-  t.A_f = s.fluid.A_f;
-  t.C_f = s.fluid.C_f;
-  t.J_zh = s.J_zh;
-  t.sum_rule = s.sum_rule;
   t.solver = fmt::format(
       "separable: tensor-product P{} Lagrange elements ({} radial x {} axial, {} corner layers; {} x {} dofs) split "
       "exactly into {} radial QEPs, one per coupled axial eigenvector, each solved completely by a dense "
@@ -123,29 +114,17 @@ ModeTable separable_cylinder_table(const TableRequest& req, const ProgressFn& re
       grid.order, grid.radial_elements, grid.axial_elements, grid.corner_layers, s.radial_dofs, s.axial_dofs,
       s.coupled_axial, (s.sum_E - s.sum_rule) / s.sum_rule);
   t.tolerance = std::numeric_limits<double>::epsilon();  // direct solver: backward errors in /modes/residual
-  t.normalisation = "rho = 1, omega0 = 1; each mode's V is normalised to N2 = |V|^2 = 1, a = (e1 x r, V), "
-                    "so E = 2 a^2 / N2 (SPEC section 2)";
   if (req.check_convergence) {
     const SeparableGrid c = coarser(grid);
-    const ConvergenceCheck check = check_labels(
-        solve_separable_cylinder(R, H, c), candidates, req.convergence_tolerance,
-        fmt::format("order {} with half the elements ({} radial x {} axial), modes matched by (axial n, radial j)",
-                    c.order, c.radial_elements, c.axial_elements));
-    t.convergence_reference = check.reference;
-    t.convergence_tolerance = req.convergence_tolerance;
-    for (const auto& ch : check.changes) {
-      t.dlambda.push_back(ch.dlambda);
-      t.dE.push_back(ch.dE);
-      t.converged.push_back(ch.converged ? 1 : 0);
-    }
+    add_convergence(t, check_labels(solve_separable_cylinder(R, H, c), kept,
+                                    fmt::format("order {} with half the elements ({} radial x {} axial), modes "
+                                                "matched by (axial n, radial j)", c.order, c.radial_elements,
+                                                c.axial_elements), req.convergence_tolerance),
+                    req.convergence_tolerance);
   }
   // Every eigenpair is known, so the band weights are exact for this discretisation (not a Gauss rule's).
-  const BandWeights bands = band_weights(spectral_points(s));
-  t.bands.lo = bands.lo;
-  t.bands.hi = bands.hi;
-  t.bands.E = bands.E;
-  t.bands.lambda_mean = bands.lambda_mean;
-  add_modes(t, clusters, s.sum_rule);
+  add_bands(t, band_weights(spectral_points(s)));
+  add_modes(t, clusters);
   t.sort_by_energy();
   t.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return t;
