@@ -37,8 +37,8 @@ void add_common_options(CLI::App* cmd, TableRequest& req, std::string& output, b
       ->check(CLI::IsMember({"auto", "mesh", "separable"}))
       ->capture_default_str();
   cmd->add_option("--order", req.mesh.order, "Lagrange order: mesh 1..6 (default 6), separable 1..12 (default 8)");
-  cmd->add_option("--mesh-size", req.mesh.size, "target element size in the shape's length unit (mesh: 1/8 of the "
-                                                "smallest dimension d; separable: axial size, d/4)");
+  cmd->add_option("--mesh-size", req.mesh.size, "target element size in the shape's length unit (mesh: d/8, spheres "
+                                                "and spheroids d/5, d the smallest dimension; separable: axial size, d/4)");
   cmd->add_option("--radial-size", req.mesh.radial_size,
                   "cylinder: element size along r (mesh: a structured mesh, --mesh-size is then the size along z; "
                   "separable: default d/12)");
