@@ -77,4 +77,17 @@ std::vector<double> graded_breaks(double x0, double x1, int n, int layers, bool 
   return b;
 }
 
+std::vector<double> merged_pairs(const std::vector<double>& breaks) {
+  std::vector<double> b;
+  for (std::size_t i = 0; i + 1 < breaks.size(); i += 2) b.push_back(breaks[i]);
+  b.push_back(breaks.back());
+  return b;
+}
+
+double longest_element(const std::vector<double>& breaks) {
+  double h = 0;
+  for (std::size_t i = 1; i < breaks.size(); ++i) h = std::max(h, breaks[i] - breaks[i - 1]);
+  return h;
+}
+
 }  // namespace rc::modes

@@ -93,4 +93,12 @@ class LineSpace {
 // the corner singularity of the Zhukovsky potential (docs/modes.md, "Separable cylinder solver").
 std::vector<double> graded_breaks(double x0, double x1, int n, int layers, bool grade_left, bool grade_right);
 
+// The partition with every two neighbouring elements merged, from the left (an odd count leaves the last one
+// alone): every element at least doubles, grading kept. An even count of a partition symmetric about its
+// middle stays symmetric. One element stays as it is.
+std::vector<double> merged_pairs(const std::vector<double>& breaks);
+
+// The longest element.
+double longest_element(const std::vector<double>& breaks);
+
 }  // namespace rc::modes

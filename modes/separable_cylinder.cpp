@@ -113,12 +113,25 @@ void parallel_for(int count, Body body) {
 
 }  // namespace
 
+SeparableGrid SeparableGrid::graded(double radius, double height, int order, int radial_elements, int axial_elements,
+                                    int corner_layers) {
+  SeparableGrid g;
+  g.order = order;
+  g.radial = graded_breaks(0, radius, radial_elements, corner_layers, false, true);
+  g.axial = graded_breaks(-0.5 * height, 0.5 * height, axial_elements, corner_layers, true, true);
+  return g;
+}
+
 SeparableSpectrum solve_separable_cylinder(double radius, double height, const SeparableGrid& grid) {
   if (!(radius > 0 && std::isfinite(radius) && height > 0 && std::isfinite(height)))
     throw std::invalid_argument("separable cylinder: radius and height must be positive and finite");
-  const LineSpace R(graded_breaks(0, radius, grid.radial_elements, grid.corner_layers, false, true), grid.order, true);
-  const LineSpace Z(graded_breaks(-0.5 * height, 0.5 * height, grid.axial_elements, grid.corner_layers, true, true),
-                    grid.order, false);
+  const auto spans = [](const std::vector<double>& b, double lo, double hi) {
+    return b.size() >= 2 && std::abs(b.front() - lo) <= 1e-12 * (hi - lo) && std::abs(b.back() - hi) <= 1e-12 * (hi - lo);
+  };
+  if (!spans(grid.radial, 0, radius) || !spans(grid.axial, -0.5 * height, 0.5 * height))
+    throw std::invalid_argument("separable cylinder: the grid does not span the cylinder");
+  const LineSpace R(grid.radial, grid.order, true);
+  const LineSpace Z(grid.axial, grid.order, false);
 
   SeparableSpectrum out;
   // Frozen-fluid moments: ∫∫ f(r) g(z) r dr dz factor into 1-D integrals.

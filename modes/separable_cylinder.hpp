@@ -24,11 +24,18 @@
 
 namespace rc::modes {
 
+// Element breaks of the two factor spaces and their order.
 struct SeparableGrid {
-  int order = 6;            // Lagrange order of the 1-D elements
-  int radial_elements = 1;  // uniform elements along r before corner grading
-  int axial_elements = 2;   // uniform elements along z before corner grading
-  int corner_layers = 0;    // geometric layers towards r = a and both lids (line_space.hpp, graded_breaks)
+  int order = 8;
+  std::vector<double> radial;  // on [0, radius], increasing
+  std::vector<double> axial;   // on [−height/2, height/2], increasing; symmetric about 0 (even modes then decouple)
+
+  // Uniform elements, the one at r = radius and the one at each lid further cut into corner_layers + 1 pieces
+  // halving towards the corner (graded_breaks, line_space.hpp). axial_elements >= 2.
+  static SeparableGrid graded(double radius, double height, int order, int radial_elements, int axial_elements,
+                              int corner_layers);
+  int radial_elements() const { return static_cast<int>(radial.size()) - 1; }
+  int axial_elements() const { return static_cast<int>(axial.size()) - 1; }
 };
 
 struct SeparableMode {
@@ -51,7 +58,7 @@ struct SeparableSpectrum {
   std::vector<SeparableMode> modes;  // every eigenpair of every coupled axial vector, E descending
 };
 
-// Throws std::invalid_argument for non-positive or non-finite dimensions or a bad grid, and
+// Throws std::invalid_argument for non-positive or non-finite dimensions or a grid that does not span them, and
 // std::runtime_error if a dense factorisation fails.
 SeparableSpectrum solve_separable_cylinder(double radius, double height, const SeparableGrid& grid);
 

@@ -2,6 +2,7 @@
 
 #include "cluster_selection.hpp"
 #include "convergence.hpp"
+#include "line_space.hpp"
 #include "table_assembly.hpp"
 
 #include <fmt/format.h>
@@ -73,18 +74,16 @@ SeparableGrid separable_grid(const geometry::ShapeSpec& shape, const geometry::M
     if (!std::isfinite(size) || size < 0)
       throw std::runtime_error(fmt::format("element size {} must be positive and finite (0 = default)", size));
   const double R = shape.dims.at("radius"), H = shape.dims.at("height"), d = std::min(R, H);
-  SeparableGrid g;
-  g.order = mesh.order > 0 ? mesh.order : kDefaultOrder;
-  g.radial_elements = elements(R, mesh.radial_size > 0 ? mesh.radial_size : d / 12);
-  g.axial_elements = std::max(2, elements(H, mesh.size > 0 ? mesh.size : d / 4));
-  g.corner_layers = kCornerLayers;
-  return g;
+  const int radial = elements(R, mesh.radial_size > 0 ? mesh.radial_size : d / 12);
+  const int axial = elements(H, mesh.size > 0 ? mesh.size : d / 4);
+  return SeparableGrid::graded(R, H, mesh.order > 0 ? mesh.order : kDefaultOrder, radial, axial + axial % 2,
+                               kCornerLayers);
 }
 
 SeparableGrid coarser(const SeparableGrid& grid) {
   SeparableGrid c = grid;
-  c.radial_elements = std::max(1, (grid.radial_elements + 1) / 2);
-  c.axial_elements = std::max(2, (grid.axial_elements + 1) / 2);
+  c.radial = merged_pairs(grid.radial);
+  c.axial = merged_pairs(grid.axial);
   return c;
 }
 
@@ -104,22 +103,23 @@ ModeTable separable_cylinder_table(const TableRequest& req, const ProgressFn& re
 
   ModeTable t = start_table(req.shape, s.fluid, s.J_zh);
   t.fe_order = grid.order;
-  t.mesh_h = H / grid.axial_elements;
-  t.mesh_h_radial = R / grid.radial_elements;
+  t.mesh_h = longest_element(grid.axial);
+  t.mesh_h_radial = longest_element(grid.radial);
   t.ndof = s.ndof;
   t.solver = fmt::format(
-      "separable: tensor-product P{} Lagrange elements ({} radial x {} axial, {} corner layers; {} x {} dofs) split "
+      "separable: tensor-product P{} Lagrange elements ({} radial x {} axial, {} corner layers included; {} x {} dofs) split "
       "exactly into {} radial QEPs, one per coupled axial eigenvector, each solved completely by a dense "
       "symmetric-definite eigensolver (Eigen); sum of E over all eigenpairs - (A_f - J_zh) = {:.1e} (relative)",
-      grid.order, grid.radial_elements, grid.axial_elements, grid.corner_layers, s.radial_dofs, s.axial_dofs,
+      grid.order, grid.radial_elements(), grid.axial_elements(), kCornerLayers, s.radial_dofs, s.axial_dofs,
       s.coupled_axial, (s.sum_E - s.sum_rule) / s.sum_rule);
   t.tolerance = std::numeric_limits<double>::epsilon();  // direct solver: backward errors in /modes/residual
   if (req.check_convergence) {
     const SeparableGrid c = coarser(grid);
     add_convergence(t, check_labels(solve_separable_cylinder(R, H, c), kept,
-                                    fmt::format("order {} with half the elements ({} radial x {} axial), modes "
-                                                "matched by (axial n, radial j)", c.order, c.radial_elements,
-                                                c.axial_elements), req.convergence_tolerance),
+                                    fmt::format("order {} with every two neighbouring elements merged ({} radial x {} "
+                                                "axial), modes matched by (axial n, radial j)", c.order,
+                                                c.radial_elements(), c.axial_elements()),
+                                    req.convergence_tolerance),
                     req.convergence_tolerance);
   }
   // Every eigenpair is known, so the band weights are exact for this discretisation (not a Gauss rule's).

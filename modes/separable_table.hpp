@@ -9,12 +9,14 @@
 namespace rc::modes {
 
 // Defaults where the request leaves 0, with d = min(radius, height): order 8, axial element size d/4,
-// radial element size d/12, two corner layers. Throws std::runtime_error (one line) for a shape that is not a
-// valid cylinder or an order outside 1..12.
+// radial element size d/12, two corner layers. The axial count is rounded up to an even number, so that
+// coarser() keeps the grid symmetric about the mid-plane. Throws std::runtime_error (one line) for a shape that
+// is not a valid cylinder or an order outside 1..12.
 SeparableGrid separable_grid(const geometry::ShapeSpec& shape, const geometry::MeshOptions& mesh);
 
-// The same grid with half the elements in r and in z (at least one radial and two axial): the reference of
-// the convergence flags.
+// The reference of the convergence flags: the same order with every two neighbouring elements merged, in r and
+// in z (merged_pairs, line_space.hpp), so that every element at least doubles — also near the lids, where
+// halving the uniform count alone would leave the corner layers' sizes as they were.
 SeparableGrid coarser(const SeparableGrid& grid);
 
 // compute_mode_table's separable branch (the request's selection and tolerance already validated there).
