@@ -36,12 +36,12 @@ void add_common_options(CLI::App* cmd, TableRequest& req, std::string& output, b
                   "section, every shape) or separable (cylinder: exact separation on a tensor-product grid)")
       ->check(CLI::IsMember({"auto", "mesh", "separable"}))
       ->capture_default_str();
-  cmd->add_option("--order", req.mesh.order, "Lagrange order: mesh 1..6 (default 6), separable 1..12 (default 8)");
+  cmd->add_option("--order", req.mesh.order, "Lagrange order: mesh 1..6 (default 6), separable 1..12 (default 10)");
   cmd->add_option("--mesh-size", req.mesh.size, "target element size in the shape's length unit (mesh: d/8, spheres "
-                                                "and spheroids d/5, d the smallest dimension; separable: axial size, d/4)");
+                                                "and spheroids d/5, d the smallest dimension; separable: axial size, 3d/8)");
   cmd->add_option("--radial-size", req.mesh.radial_size,
                   "cylinder: element size along r (mesh: a structured mesh, --mesh-size is then the size along z; "
-                  "separable: default d/12)");
+                  "separable: default d/8)");
   auto* modes = cmd->add_option("--modes", req.selection.modes, "keep the N clusters of largest E");
   auto* coverage = cmd->add_option("--coverage", req.selection.coverage,
                                    "keep clusters until their E sums to this fraction of A_f - J_zh");

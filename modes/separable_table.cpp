@@ -17,7 +17,7 @@
 namespace rc::modes {
 namespace {
 
-constexpr int kDefaultOrder = 8, kMaxOrder = 12, kCornerLayers = 2;
+constexpr int kDefaultOrder = 10, kMaxOrder = 12, kCornerLayers = 2;
 
 int elements(double length, double size) {
   return std::max(1, static_cast<int>(std::ceil(length / size - 1e-9)));
@@ -74,8 +74,8 @@ SeparableGrid separable_grid(const geometry::ShapeSpec& shape, const geometry::M
     if (!std::isfinite(size) || size < 0)
       throw std::runtime_error(fmt::format("element size {} must be positive and finite (0 = default)", size));
   const double R = shape.dims.at("radius"), H = shape.dims.at("height"), d = std::min(R, H);
-  const int radial = elements(R, mesh.radial_size > 0 ? mesh.radial_size : d / 12);
-  const int axial = elements(H, mesh.size > 0 ? mesh.size : d / 4);
+  const int radial = elements(R, mesh.radial_size > 0 ? mesh.radial_size : d / 8);
+  const int axial = elements(H, mesh.size > 0 ? mesh.size : 3 * d / 8);
   return SeparableGrid::graded(R, H, mesh.order > 0 ? mesh.order : kDefaultOrder, radial, axial + axial % 2,
                                kCornerLayers);
 }
