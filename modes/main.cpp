@@ -81,7 +81,7 @@ void add_common_options(CLI::App* cmd, TableRequest& req, std::string& output, b
 void choose_method(const CLI::App& cmd, const std::string& choice, bool fields, TableRequest& req) {
   const bool separable = choice == "separable" || (choice == "auto" && req.shape.kind == "cylinder" && !fields);
   req.method = separable ? rc::modes::TableMethod::separable : rc::modes::TableMethod::mesh;
-  if (req.mesh.order == 0) req.mesh.order = separable ? 8 : 6;
+  if (req.mesh.order == 0 && !separable) req.mesh.order = 6;  // separable: its own default (separable_table.hpp)
   if (!separable) return;
   for (const char* mesh_only : {"--clusters", "--fill-gaps", "--lanczos-steps", "--survey-steps", "--tolerance"})
     if (cmd.count(mesh_only) > 0)
