@@ -140,7 +140,9 @@ def spheroid_exact(a, c):
 # ---------------------------------------------------------------------------------------------------------
 
 SHAPES = {
-    "cylinder": ["cylinder", "--radius", "1", "--height", "2"],
+    # The mesh method: this script sweeps its --order and --mesh-size (cylinders default to the separable method,
+    # measured by bench/separable_cylinder_bench.py).
+    "cylinder": ["cylinder", "--radius", "1", "--height", "2", "--method", "mesh"],
     "sphere": ["sphere", "--radius", "1"],
     "spheroid": ["spheroid", "--a", "1", "--c", "0.5"],
     "cone": ["cone", "--radius", "1", "--height", "1"],  # apex half-angle 45 degrees (docs/cones.md)
