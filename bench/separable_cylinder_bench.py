@@ -473,7 +473,7 @@ def main():
     stamp = datetime.date.today().isoformat()
     head = subprocess.run(["git", "-C", REPO, "rev-parse", "HEAD"], capture_output=True, text=True).stdout.strip()
     dirty = subprocess.run(["git", "-C", REPO, "status", "--porcelain", "--", "modes", "geometry", "common"],
-                           capture_output=True, text=True).stdout.strip()
+                           capture_output=True, text=True).stdout.rstrip("\n")
     head_date = subprocess.run(["git", "-C", REPO, "log", "-1", "--format=%cd", "--date=iso"], capture_output=True,
                                text=True).stdout.strip()
     bin_mtime_s = os.path.getmtime(binary)
