@@ -44,12 +44,14 @@ std::size_t selected_count(const std::vector<Item>& items, const ModeSelection& 
   return keep;
 }
 
-// The kept items (clusters, or the separable method's modes), E descending. A table always has its heaviest
-// one, even below the default threshold.
+// The kept items (clusters, or the separable method's modes), E descending: at most max_clusters unless --modes
+// asks for more. A table always has its heaviest one, even below the default threshold.
 template <class Item>
 std::vector<Item> select_clusters(std::vector<Item> items, const ModeSelection& sel, double sum_rule) {
   sort_by_energy(items);
-  items.resize(std::max(selected_count(items, sel, sum_rule), std::min<std::size_t>(1, items.size())));
+  std::size_t keep = std::max(selected_count(items, sel, sum_rule), std::min<std::size_t>(1, items.size()));
+  if (!sel.modes) keep = std::min<std::size_t>(keep, sel.max_clusters);
+  items.resize(keep);
   return items;
 }
 
