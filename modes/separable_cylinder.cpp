@@ -88,25 +88,28 @@ std::vector<SeparableMode> radial_modes(const RadialForms& f, double mu, double 
   return modes;
 }
 
-// Runs body(i) for i in [0, count) on every core.
+// Runs body(i) for i in [0, count) on every core; the calling thread reports progress(done, count) after each
+// item it finishes (one thread only, so progress needs no lock).
 template <class Body>
-void parallel_for(int count, Body body) {
+void parallel_for(int count, Body body, const SeparableProgress& progress) {
   const int workers = std::max(1, std::min<int>(count, static_cast<int>(std::thread::hardware_concurrency())));
-  std::atomic<int> next{0};
+  std::atomic<int> next{0}, done{0};
   std::exception_ptr failure;
   std::atomic<bool> failed{false};
-  auto work = [&] {
+  auto work = [&](bool reports) {
     for (int i; (i = next++) < count && !failed;) {
       try {
         body(i);
       } catch (...) {
         if (!failed.exchange(true)) failure = std::current_exception();
       }
+      const int finished = ++done;
+      if (reports && progress) progress(finished, count);
     }
   };
   std::vector<std::thread> threads;
-  for (int w = 1; w < workers; ++w) threads.emplace_back(work);
-  work();
+  for (int w = 1; w < workers; ++w) threads.emplace_back(work, false);
+  work(true);
   for (auto& t : threads) t.join();
   if (failure) std::rethrow_exception(failure);
 }
@@ -122,7 +125,8 @@ SeparableGrid SeparableGrid::graded(double radius, double height, int order, int
   return g;
 }
 
-SeparableSpectrum solve_separable_cylinder(double radius, double height, const SeparableGrid& grid) {
+SeparableSpectrum solve_separable_cylinder(double radius, double height, const SeparableGrid& grid,
+                                           const SeparableProgress& progress) {
   if (!(radius > 0 && std::isfinite(radius) && height > 0 && std::isfinite(height)))
     throw std::invalid_argument("separable cylinder: radius and height must be positive and finite");
   const auto spans = [](const std::vector<double>& b, double lo, double hi) {
@@ -172,7 +176,7 @@ SeparableSpectrum solve_separable_cylinder(double radius, double height, const S
   parallel_for(static_cast<int>(coupled.size()), [&](int i) {
     const int k = coupled[i];
     per_axial[i] = radial_modes(rf, mu(k), s(k), t(k), i);  // n = rank among the coupled vectors
-  });
+  }, progress);
   for (auto& m : per_axial) out.modes.insert(out.modes.end(), m.begin(), m.end());
   std::sort(out.modes.begin(), out.modes.end(), [](const SeparableMode& a, const SeparableMode& b) { return a.E > b.E; });
   for (const auto& m : out.modes) out.sum_E += m.E;

@@ -20,6 +20,7 @@
 
 #include "poincare_forms.hpp"
 
+#include <functional>
 #include <vector>
 
 namespace rc::modes {
@@ -60,6 +61,9 @@ struct SeparableSpectrum {
 
 // Throws std::invalid_argument for non-positive or non-finite dimensions or a grid that does not span them, and
 // std::runtime_error if a dense factorisation fails.
-SeparableSpectrum solve_separable_cylinder(double radius, double height, const SeparableGrid& grid);
+// progress(done, total) is called from the calling thread as the radial problems finish.
+using SeparableProgress = std::function<void(int done, int total)>;
+SeparableSpectrum solve_separable_cylinder(double radius, double height, const SeparableGrid& grid,
+                                           const SeparableProgress& progress = {});
 
 }  // namespace rc::modes

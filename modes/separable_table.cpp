@@ -18,6 +18,7 @@ namespace rc::modes {
 namespace {
 
 constexpr int kDefaultOrder = 10, kMaxOrder = 12, kCornerLayers = 2;
+constexpr long kMaxRadialDofs = 1000, kMaxAxialDofs = 5000;
 
 int elements(double length, double size) {
   return std::max(1, static_cast<int>(std::ceil(length / size - 1e-9)));
@@ -76,8 +77,18 @@ SeparableGrid separable_grid(const geometry::ShapeSpec& shape, const geometry::M
   const double R = shape.dims.at("radius"), H = shape.dims.at("height"), d = std::min(R, H);
   const int radial = elements(R, mesh.radial_size > 0 ? mesh.radial_size : d / 8);
   const int axial = elements(H, mesh.size > 0 ? mesh.size : 3 * d / 8);
-  return SeparableGrid::graded(R, H, mesh.order > 0 ? mesh.order : kDefaultOrder, radial, axial + axial % 2,
-                               kCornerLayers);
+  const SeparableGrid g = SeparableGrid::graded(R, H, mesh.order > 0 ? mesh.order : kDefaultOrder, radial,
+                                                axial + axial % 2, kCornerLayers);
+  // Dense pencils of 2N x 2N cost ~N³: 0.4 s at N = 384 on the project machine, ~8 s at N = 1000, each, for
+  // every coupled axial vector; beyond these sizes a run would take many minutes.
+  const long radial_dofs = static_cast<long>(g.order) * g.radial_elements();
+  const long axial_dofs = static_cast<long>(g.order) * g.axial_elements() + 1;
+  if (radial_dofs > kMaxRadialDofs || axial_dofs > kMaxAxialDofs)
+    throw std::runtime_error(fmt::format(
+        "separable method: {} radial x {} axial dofs exceed what the dense solver handles ({} x {}); give a larger "
+        "--radial-size / --mesh-size or a lower --order, or use --method mesh", radial_dofs, axial_dofs,
+        kMaxRadialDofs, kMaxAxialDofs));
+  return g;
 }
 
 SeparableGrid coarser(const SeparableGrid& grid) {
@@ -91,8 +102,9 @@ ModeTable separable_cylinder_table(const TableRequest& req, const ProgressFn& re
   const auto start = std::chrono::steady_clock::now();
   const SeparableGrid grid = separable_grid(req.shape, req.mesh);
   const double R = req.shape.dims.at("radius"), H = req.shape.dims.at("height");
-  const SeparableSpectrum s = solve_separable_cylinder(R, H, grid);
-  if (report) report(fmt::format("separable solve: {} radial problems of {} dofs", s.coupled_axial, s.radial_dofs));
+  const SeparableSpectrum s = solve_separable_cylinder(R, H, grid, [&](int done, int total) {
+    if (report) report(fmt::format("radial problem {}/{} ({} dofs each)", done, total, grid.order * grid.radial_elements()));
+  });
 
   std::vector<SeparableMode> candidates;
   for (const auto& m : s.modes)
@@ -115,6 +127,7 @@ ModeTable separable_cylinder_table(const TableRequest& req, const ProgressFn& re
   t.tolerance = std::numeric_limits<double>::epsilon();  // direct solver: backward errors in /modes/residual
   if (req.check_convergence) {
     const SeparableGrid c = coarser(grid);
+    if (report) report("convergence check on a coarser grid");
     add_convergence(t, check_labels(solve_separable_cylinder(R, H, c), kept,
                                     fmt::format("order {} with every two neighbouring elements merged ({} radial x {} "
                                                 "axial), modes matched by (axial n, radial j)", c.order,
