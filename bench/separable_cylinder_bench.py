@@ -2,7 +2,7 @@
 """Error against run time of the separable cylinder method (issue 2's speed targets).
 
 Runs `cavity-modes cylinder --method separable` for radius 1 and heights 1, 2, 4 (2h/a = 1, 2, 4) over a sweep
-of --order and --radial-size (axial size --mesh-size = 3 x radial, the ratio of the defaults 3d/8 : d/8), then
+of --order and --radial-size (axial size --mesh-size = 3 x radial, the ratio of the defaults 3d/8 : d/8 for a <= 2h), then
 the default settings (no --order / --mesh-size / --radial-size) re-run --repeat times with --modes 20 and with
 --modes 1, then the fastest sweep settings that reach each target's accuracy, re-run --repeat times with the
 target's arguments. Each table is compared with Stewartson's exact modes and the J_zh series, computed by
@@ -574,7 +574,7 @@ def main():
           "in < 3 s: every one of the 20 largest exact modes has a row within 1e-6 in κ (\"present\") whose κ and E "
           "are within 1e-6 (relative), timed with `--modes 20`. Both judged on the process wall clock; the "
           "convergence check is on (the default). Default settings: no `--order`/`--mesh-size`/`--radial-size` "
-          "(order 10, axial 3d/8, radial d/8, d = min(R, H) = 1). %d runs each; the error column is the worst over "
+          "(order 10, axial 3d/8, radial max(d, R/2)/8, d = min(R, H) = 1). %d runs each; the error column is the worst over "
           "the runs.\n" % repeat,
           repeat_table(crow, "default", None),
           "## Fastest sweep settings meeting each target\n",

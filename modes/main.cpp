@@ -41,7 +41,7 @@ void add_common_options(CLI::App* cmd, TableRequest& req, std::string& output, b
                                                 "and spheroids d/5, d the smallest dimension; separable: axial size, 3d/8)");
   cmd->add_option("--radial-size", req.mesh.radial_size,
                   "cylinder: element size along r (mesh: a structured mesh, --mesh-size is then the size along z; "
-                  "separable: default d/8)");
+                  "separable: default max(d, radius/2)/8)");
   auto* modes = cmd->add_option("--modes", req.selection.modes, "keep the N clusters of largest E");
   auto* coverage = cmd->add_option("--coverage", req.selection.coverage,
                                    "keep clusters until their E sums to this fraction of A_f - J_zh");

@@ -9,7 +9,7 @@
 namespace rc::modes {
 
 // Defaults where the request leaves 0, with d = min(radius, height): order 10, axial element size 3d/8,
-// radial element size d/8, two corner layers. The axial count is rounded up to an even number, so that
+// radial element size max(d, radius/2)/8, two corner layers. The axial count is rounded up to an even number, so that
 // coarser() keeps the grid symmetric about the mid-plane. Throws std::runtime_error (one line) for a shape that
 // is not a valid cylinder or an order outside 1..12.
 SeparableGrid separable_grid(const geometry::ShapeSpec& shape, const geometry::MeshOptions& mesh);

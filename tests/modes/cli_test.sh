@@ -35,7 +35,7 @@ expect_error "separable order out of range" "order 13 is outside 1..12" "$BIN" c
 expect_error "mesh-only option with separable" "--clusters applies to --method mesh" "$BIN" cylinder --radius 1 --height 2 --clusters slices -o out.h5
 expect_error "separable negative radial size" "must be positive" "$BIN" cylinder --radius 1 --height 2 --radial-size -0.1 -o out.h5
 expect_error "unknown method" "--method" "$BIN" cylinder --radius 1 --height 2 --method fancy -o out.h5
-expect_error "separable grid too large for the dense solver" "exceed what the dense solver handles" "$BIN" cylinder --radius 1 --height 0.05 -o out.h5
+expect_error "separable grid too large for the dense solver" "exceed what the dense solver handles" "$BIN" cylinder --radius 1 --height 1 --radial-size 0.005 -o out.h5
 if "$BIN" cylinder --radius 1 --height 2 --modes 3 -o sep.h5 > sep.txt 2>&1 && "$BIN" info sep.h5 --json > sep.json &&
    python3 -c '
 import json

@@ -65,10 +65,10 @@ TEST(SeparableCylinder, TwentyLargestStewartsonModesHeightOne) { expect_largest_
 TEST(SeparableCylinder, TwentyLargestStewartsonModesHeightTwo) { expect_largest_exact_modes(1, 2, 20, 1e-7); }
 TEST(SeparableCylinder, TwentyLargestStewartsonModesHeightFour) { expect_largest_exact_modes(1, 4, 20, 1e-7); }
 
-// The defaults scale with min(radius, height): a flat and a tall cylinder, in other units.
+// The defaults scale with the shape (separable_table.cpp): a flat and a tall cylinder, in other units.
 TEST(SeparableCylinder, FlatAndTallCylinders) {
-  expect_largest_exact_modes(1.0, 0.25, 10, 1e-7);
-  expect_largest_exact_modes(0.1, 1.0, 10, 1e-7, 12);
+  expect_largest_exact_modes(1.0, 0.1, 20, 1e-7);      // 2h/a = 0.1
+  expect_largest_exact_modes(0.1, 1.0, 20, 1e-7, 12);  // 2h/a = 10
 }
 
 // Σ E over every eigenpair equals A_f − J_zh: an exact identity of the discretisation (SPEC §2), here checked on
