@@ -62,17 +62,23 @@ std::vector<SeparableMode> radial_modes(const RadialForms& f, double mu, double 
     throw std::runtime_error("separable cylinder: the dense symmetric-definite eigensolver failed (axial vector " +
                              std::to_string(axial) + ")");
   const double nM = M.norm(), nC = f.C.norm(), nB = f.B.norm();
+  // The form values of every eigenvector at once (three matrix products instead of matrix-vector products
+  // per eigenpair): x = the lower half of z = (λx, x).
+  const Eigen::MatrixXd X = solver.eigenvectors().bottomRows(n);
+  const Eigen::MatrixXd AX = f.A * X, BX = f.B * X, CX = f.C * X;
+  const Eigen::RowVectorXd g1X = f.g1.transpose() * X, g2X = f.g2.transpose() * X;
   std::vector<SeparableMode> modes(2 * n);
   for (int k = 0; k < 2 * n; ++k) {
     const double l = solver.eigenvalues()(k);
-    const Eigen::VectorXd x = solver.eigenvectors().col(k).tail(n);
-    const Eigen::VectorXd res = l * l * (M * x) + 2 * l * (f.C * x) - 4 * mu * (f.B * x);
+    const auto x = X.col(k);
+    // Q(λ)x = λ²(A + μB)x + 2λCx − 4μBx
+    const Eigen::VectorXd res = l * l * AX.col(k) + (l * l * mu - 4 * mu) * BX.col(k) + 2 * l * CX.col(k);
     SeparableMode& m = modes[k];
     m.lambda = l;
     m.residual = res.norm() / ((l * l * nM + 2 * std::abs(l) * nC + 4 * mu * nB) * x.norm());
     m.axial = axial;
-    m.E = coupling_from_forms(l, f.g1.dot(x) * s_n, f.g2.dot(x) * t_n, x.dot(f.A * x), x.dot(f.C * x),
-                              mu * x.dot(f.B * x)).E;
+    m.E = coupling_from_forms(l, g1X(k) * s_n, g2X(k) * t_n, x.dot(AX.col(k)), x.dot(CX.col(k)),
+                              mu * x.dot(BX.col(k))).E;
   }
   // Radial rank j: eigenvalues come ascending, so the negative ones are ranked from the left, the
   // positive ones from the right. λ = −2 is an exact eigenvalue of every radial problem, with x = r
