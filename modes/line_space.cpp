@@ -45,22 +45,6 @@ void LineSpace::basis(double t, double* N, double* dN) const {
   }
 }
 
-void LineSpace::evaluate(const Eigen::VectorXd& u, double x, double& value, double& derivative) const {
-  const auto it = std::upper_bound(breaks_.begin(), breaks_.end(), x);
-  const int e = std::clamp(static_cast<int>(it - breaks_.begin()) - 1, 0, num_elements() - 1);
-  const double x0 = breaks_[e], h = breaks_[e + 1] - x0;
-  std::vector<double> N(order_ + 1), dN(order_ + 1);
-  std::vector<int> dofs(order_ + 1);
-  basis((x - x0) / h, N.data(), dN.data());
-  element_dofs(e, dofs.data());
-  value = derivative = 0;
-  for (int a = 0; a <= order_; ++a) {
-    if (dofs[a] < 0) continue;
-    value += u(dofs[a]) * N[a];
-    derivative += u(dofs[a]) * dN[a] / h;
-  }
-}
-
 std::vector<double> graded_breaks(double x0, double x1, int n, int layers, bool grade_left, bool grade_right) {
   if (n < (grade_left && grade_right && layers > 0 ? 2 : 1))
     throw std::invalid_argument("graded_breaks: too few elements for the grading");

@@ -16,10 +16,7 @@ class LineSpace {
   LineSpace(std::vector<double> breaks, int order, bool drop_left_dof);
 
   int ndof() const { return ndof_; }
-  int order() const { return order_; }
   int num_elements() const { return static_cast<int>(breaks_.size()) - 1; }
-  double left() const { return breaks_.front(); }
-  double right() const { return breaks_.back(); }
 
   // ∫ f(x, φ_i, φ_i′, φ_j, φ_j′) dx over the interval, for every pair of dofs (a symmetric f gives a
   // symmetric matrix). Quadrature: Gauss–Legendre with 3P + 8 points per element, exact for polynomial
@@ -55,9 +52,6 @@ class LineSpace {
     for_each_point([&](double x, double w, const double*, const double*, const int*) { s += w * f(x); });
     return s;
   }
-
-  // u(x) and u′(x) of the finite-element function with these dof values.
-  void evaluate(const Eigen::VectorXd& u, double x, double& value, double& derivative) const;
 
  private:
   // Calls g(x, w, N, dN, dofs) at every quadrature point (dN = d/dx); dofs[a] = −1 for a left-out dof.

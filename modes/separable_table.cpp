@@ -81,8 +81,8 @@ SeparableGrid separable_grid(const geometry::ShapeSpec& shape, const geometry::M
   const int axial = elements(H, mesh.size > 0 ? mesh.size : 3 * d / 8);
   const SeparableGrid g = SeparableGrid::graded(R, H, mesh.order > 0 ? mesh.order : kDefaultOrder, radial,
                                                 axial + axial % 2, kCornerLayers);
-  // Dense pencils of 2N x 2N cost ~N³: 0.4 s at N = 384 on the project machine, ~8 s at N = 1000, each, for
-  // every coupled axial vector; beyond these sizes a run would take many minutes.
+  // Dense pencils of 2N x 2N cost ~N³: 0.4 s measured at N = 384 on the project machine, so ~7 s at N = 1000
+  // (extrapolated), each, for every coupled axial vector; beyond these sizes a run would take many minutes.
   const long radial_dofs = static_cast<long>(g.order) * g.radial_elements();
   const long axial_dofs = static_cast<long>(g.order) * g.axial_elements() + 1;
   if (radial_dofs > kMaxRadialDofs || axial_dofs > kMaxAxialDofs)
