@@ -1,4 +1,4 @@
-// The closed forms themselves (modes/closed_forms.hpp) against numbers published independently of them.
+// The closed forms themselves (modes/ideal/closed_forms.hpp) against numbers published independently of them.
 #include "closed_forms.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// cavity-modes --fields: the cluster field of modes/cluster_fields.hpp, checked independently of the way it
+// cavity-modes --fields: the cluster field of modes/ideal/cluster_fields.hpp, checked independently of the way it
 // was formed. Every comparison prints its error.
 #include "cluster_fields.hpp"
 #include "fe_space.hpp"

@@ -1,4 +1,4 @@
-// The separable cylinder solver (modes/separable_cylinder.hpp, --method separable) against Stewartson's closed
+// The separable cylinder solver (modes/separable/separable_cylinder.hpp, --method separable) against Stewartson's closed
 // form (SPEC §2), the J_zh series of issue 2, its own discrete sum rule, exact fluid integrals, and the
 // independent mesh method. Every comparison prints its error.
 #include "cavity_table.hpp"

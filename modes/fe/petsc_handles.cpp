@@ -39,3 +39,16 @@ PetscSession::PetscSession(int* argc, char*** argv) {
 PetscSession::~PetscSession() { SlepcFinalize(); }
 
 }  // namespace rc::modes
+
+namespace rc::modes {
+
+bool is_root_rank() {
+  PetscBool initialised = PETSC_FALSE;
+  PetscInitialized(&initialised);
+  if (!initialised) return true;
+  PetscMPIInt rank = 0;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  return rank == 0;
+}
+
+}  // namespace rc::modes

@@ -3,8 +3,13 @@
 // docs/modes.md, "Separable cylinder solver".
 #pragma once
 
-#include "cavity_table.hpp"
+#include "cluster_selection.hpp"
+#include "meridian_mesh.hpp"
+#include "mode_table.hpp"
 #include "separable_cylinder.hpp"
+
+#include <functional>
+#include <string>
 
 namespace rc::modes {
 
@@ -19,7 +24,17 @@ SeparableGrid separable_grid(const geometry::ShapeSpec& shape, const geometry::M
 // halving the uniform count alone would leave the corner layers' sizes as they were.
 SeparableGrid coarser(const SeparableGrid& grid);
 
-// compute_mode_table's separable branch (the request's selection and tolerance already validated there).
-ModeTable separable_cylinder_table(const TableRequest& request, const ProgressFn& report);
+// What the separable table needs of a cavity-modes request (resolved by the driver, app/cavity_table.cpp).
+struct SeparableTableSettings {
+  geometry::ShapeSpec shape;         // a cylinder
+  geometry::MeshOptions grid;        // order, axial size (size), radial size; 0 = the defaults above
+  ModeSelection selection;           // already validated
+  double convergence_tolerance = 1e-6;
+  bool check_convergence = true;
+};
+
+// compute_mode_table's separable branch.
+ModeTable separable_cylinder_table(const SeparableTableSettings& settings,
+                                   const std::function<void(const std::string&)>& report);
 
 }  // namespace rc::modes

@@ -100,9 +100,10 @@ SeparableGrid coarser(const SeparableGrid& grid) {
   return c;
 }
 
-ModeTable separable_cylinder_table(const TableRequest& req, const ProgressFn& report) {
+ModeTable separable_cylinder_table(const SeparableTableSettings& req,
+                                   const std::function<void(const std::string&)>& report) {
   const auto start = std::chrono::steady_clock::now();
-  const SeparableGrid grid = separable_grid(req.shape, req.mesh);
+  const SeparableGrid grid = separable_grid(req.shape, req.grid);
   const double R = req.shape.dims.at("radius"), H = req.shape.dims.at("height");
   const SeparableSpectrum s = solve_separable_cylinder(R, H, grid, [&](int done, int total) {
     if (report) report(fmt::format("radial problem {}/{} ({} dofs each)", done, total, grid.order * grid.radial_elements()));

@@ -131,7 +131,8 @@ ModeTable compute_mode_table(const TableRequest& req, const ProgressFn& progress
 
   if (req.method == TableMethod::separable) {
     if (fields) throw std::runtime_error("--fields needs --method mesh (the separable solver keeps no 2-D mesh)");
-    return separable_cylinder_table(req, report);
+    return separable_cylinder_table({req.shape, req.mesh, req.selection, req.convergence_tolerance,
+                                     req.check_convergence}, report);
   }
   const Discretisation d(req.shape, mesh_method_defaults(req.shape, req.mesh));
   const FESpace& space = d.space;

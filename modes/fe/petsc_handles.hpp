@@ -40,6 +40,9 @@ using PVec = PetscHandle<Vec, VecDestroy>;
 using PKSP = PetscHandle<KSP, KSPDestroy>;
 using PPEP = PetscHandle<PEP, PEPDestroy>;
 
+// True on rank 0 of PETSC_COMM_WORLD (and when PETSc is not initialised): the rank that prints and writes.
+bool is_root_rank();
+
 // Initialises SLEPc (and PETSc, MPI) for the lifetime of the object, passing command-line options
 // such as -pep_type or -log_view through to PETSc's options database.
 class PetscSession {
