@@ -129,6 +129,14 @@ void ModeTable::validate() const {
   check(spread, "spread", true);
   check(dlambda, "dlambda", true);
   check(dE, "dE", true);
+  check(decay, "decay", !viscous());
+  check(E_imag, "E_imag", !viscous());
+  check(a_imag, "a_imag", !viscous());
+  if (!viscous() && !(decay.empty() && E_imag.empty() && a_imag.empty()))
+    throw std::runtime_error("/modes/decay, E_imag or a_imag in a table whose ekman is not positive");
+  if (!std::isfinite(ekman) || ekman < 0) throw std::runtime_error("root attribute ekman must be >= 0 and finite");
+  for (double d : decay)
+    if (d < 0) throw std::runtime_error("/modes/decay holds a negative value (a growing viscous mode)");
   if (!members.empty() && members.size() != n) throw std::runtime_error("/modes/members has the wrong length");
   if (!converged.empty() && converged.size() != n) throw std::runtime_error("/modes/converged has the wrong length");
   const std::size_t nb = bands.E.size();
@@ -136,8 +144,9 @@ void ModeTable::validate() const {
     throw std::runtime_error("/bands datasets differ in length");
   for (double x : {volume, A_f, C_f, J_zh, sum_rule, coverage})
     if (!std::isfinite(x)) throw std::runtime_error("a root attribute holds a non-finite value");
-  for (double e : E)
-    if (e < 0) throw std::runtime_error("/modes/E holds a negative value");
+  if (!viscous())  // a viscous residue's real part is the ideal E only in the limit
+    for (double e : E)
+      if (e < 0) throw std::runtime_error("/modes/E holds a negative value");
 }
 
 void ModeTable::sort_by_energy() {
@@ -151,6 +160,7 @@ void ModeTable::sort_by_energy() {
   };
   permute(kappa); permute(lambda); permute(E); permute(a); permute(N2); permute(residual);
   permute(spread); permute(members); permute(dlambda); permute(dE); permute(converged);
+  permute(decay); permute(E_imag); permute(a_imag);
 }
 
 std::filesystem::path xdmf_companion(const std::filesystem::path& table_path) {
@@ -193,6 +203,8 @@ void write_mode_table(const ModeTable& t, const std::filesystem::path& path, con
       put_double(root, "tolerance", t.tolerance);
       put_double(root, "wall_seconds", t.wall_seconds);
       put_string(root, "normalisation", t.normalisation);
+      put_double(root, "ekman", t.ekman);
+      if (t.mesh_h_wall > 0) put_double(root, "mesh_h_wall", t.mesh_h_wall);
       Hid modes(H5Gcreate2(root, "modes", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
       put_vector(modes.get(), "kappa", t.kappa, H5T_NATIVE_DOUBLE);
       put_vector(modes.get(), "lambda", t.lambda, H5T_NATIVE_DOUBLE);
@@ -205,6 +217,11 @@ void write_mode_table(const ModeTable& t, const std::filesystem::path& path, con
       if (!t.dlambda.empty()) put_vector(modes.get(), "dlambda", t.dlambda, H5T_NATIVE_DOUBLE);
       if (!t.dE.empty()) put_vector(modes.get(), "dE", t.dE, H5T_NATIVE_DOUBLE);
       if (!t.converged.empty()) put_vector(modes.get(), "converged", t.converged, H5T_NATIVE_INT);
+      if (t.viscous()) {
+        put_vector(modes.get(), "decay", t.decay, H5T_NATIVE_DOUBLE);
+        put_vector(modes.get(), "E_imag", t.E_imag, H5T_NATIVE_DOUBLE);
+        put_vector(modes.get(), "a_imag", t.a_imag, H5T_NATIVE_DOUBLE);
+      }
       if (!t.convergence_reference.empty()) {
         put_string(root, "convergence_reference", t.convergence_reference);
         put_double(root, "convergence_tolerance", t.convergence_tolerance);
@@ -281,6 +298,8 @@ ModeTable read_mode_table(const std::filesystem::path& path) {
     t.tolerance = get_double(root, "tolerance");
     t.wall_seconds = get_double(root, "wall_seconds");
     if (has_attr(root, "normalisation")) t.normalisation = get_string(root, "normalisation");
+    if (has_attr(root, "ekman")) t.ekman = get_double(root, "ekman");
+    if (has_attr(root, "mesh_h_wall")) t.mesh_h_wall = get_double(root, "mesh_h_wall");
     if (H5Lexists(root, "modes", H5P_DEFAULT) <= 0) throw std::runtime_error("missing group /modes");
     Hid modes(H5Gopen2(root, "modes", H5P_DEFAULT), H5Gclose);
     t.kappa = get_vector<double>(modes.get(), "kappa", H5T_NATIVE_DOUBLE, true);
@@ -294,6 +313,9 @@ ModeTable read_mode_table(const std::filesystem::path& path) {
     t.dlambda = get_vector<double>(modes.get(), "dlambda", H5T_NATIVE_DOUBLE, false);
     t.dE = get_vector<double>(modes.get(), "dE", H5T_NATIVE_DOUBLE, false);
     t.converged = get_vector<int>(modes.get(), "converged", H5T_NATIVE_INT, false);
+    t.decay = get_vector<double>(modes.get(), "decay", H5T_NATIVE_DOUBLE, false);
+    t.E_imag = get_vector<double>(modes.get(), "E_imag", H5T_NATIVE_DOUBLE, false);
+    t.a_imag = get_vector<double>(modes.get(), "a_imag", H5T_NATIVE_DOUBLE, false);
     if (has_attr(root, "convergence_reference")) {
       t.convergence_reference = get_string(root, "convergence_reference");
       t.convergence_tolerance = get_double(root, "convergence_tolerance");

@@ -11,7 +11,9 @@
 namespace rc {
 
 inline constexpr const char* kModeTableFormat = "cavity-mode-table";
-inline constexpr int kModeTableVersion = 1;
+// Version 2 added the viscous fields (ekman, mesh_h_wall, /modes/decay, E_imag, a_imag); version 1 tables read as
+// ideal tables (ekman = 0).
+inline constexpr int kModeTableVersion = 2;
 
 struct ModeTable {
   // --- root attributes -------------------------------------------------------------------
@@ -35,6 +37,8 @@ struct ModeTable {
   std::string normalisation; // how a and N2 are normalised (free text, stored in the file)
   std::string convergence_reference;  // the coarser discretisation the clusters were compared with
   double convergence_tolerance = 0;   // a cluster is "converged" if its λ and E moved less than this (relative)
+  double ekman = 0;          // Ek = ν/(ω0 L²); 0: ideal fluid (docs/viscous.md)
+  double mesh_h_wall = 0;    // > 0: element size at the wall of a wall-graded mesh (viscous tables)
 
   // --- /modes datasets, one entry per mode ------------------------------------------------
   std::vector<double> kappa, lambda, E, a, N2, residual;
@@ -42,6 +46,11 @@ struct ModeTable {
   std::vector<int> members;    // number of discrete eigenpairs in the cluster
   std::vector<double> dlambda, dE;  // relative change of λ and E against the coarser discretisation
   std::vector<int> converged;       // 1 if both changes are within convergence_tolerance
+  // Viscous tables only (ekman > 0; empty otherwise): a mode is e^{iλt} with λ = lambda + i·decay, so its
+  // amplitude decays as e^{−decay·ω0 t}; its coupling residue is E + i·E_imag (the ideal E is its Ek → 0 limit)
+  // and a + i·a_imag its square root times 1/√2 (N2 = 1 in the complex symmetric normalisation).
+  std::vector<double> decay, E_imag, a_imag;
+  bool viscous() const { return ekman > 0; }
 
   // --- /bands: the spectral weight in λ-bands covering (−2, 2) (optional) ---------------------
   struct Bands {

@@ -41,6 +41,14 @@ void check_options(const MeshOptions& options) {
   if (!std::isfinite(options.radial_size) || options.radial_size < 0)
     throw std::runtime_error("radial mesh size " + number(options.radial_size) +
                              " must be positive and finite (0 = unstructured)");
+  if (!std::isfinite(options.wall_size) || options.wall_size < 0)
+    throw std::runtime_error("wall mesh size " + number(options.wall_size) + " must be positive and finite (0 = none)");
+  if (!std::isfinite(options.wall_growth) || options.wall_growth <= 0 || options.wall_growth > 10)
+    throw std::runtime_error("wall size growth " + number(options.wall_growth) + " must be in (0, 10]");
+  if (!std::isfinite(options.wall_layer) || options.wall_layer < 0)
+    throw std::runtime_error("wall layer thickness " + number(options.wall_layer) + " must be >= 0 and finite");
+  if (options.wall_size > 0 && options.radial_size > 0)
+    throw std::runtime_error("a wall-graded mesh cannot also be structured (give either the wall size or the radial size)");
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -69,10 +77,53 @@ double model_smallest_side() {
   return std::min(x1 - x0, y1 - y0);
 }
 
-void generate(int order, double size, const std::string& where, double radial_size = 0) {
+std::vector<int> group_entities(int dim, int tag);
+int physical_tag(int dim, const std::string& name, const std::string& where);
+
+// Anisotropic layers along the wall (gmsh BoundaryLayer field), or isotropic elements of size wall_size at the
+// wall growing linearly with the distance d from it, size(d) = wall_size + growth · (d − wall_size), up to `size`
+// (gmsh Distance + Threshold fields; the wall sampled finely enough that the distance is accurate there).
+void grade_towards_wall(const MeshOptions& options, double size, const std::string& where) {
+  if (options.wall_size <= 0 || options.wall_size >= size) return;
+  const double extent = model_extent();
+  if (extent / options.wall_size > kMaxCellsPerExtent)
+    throw std::runtime_error(where + ": wall mesh size " + number(options.wall_size) +
+                             " is too small for a model of extent " + number(extent));
+  std::vector<double> curves;
+  for (int c : group_entities(1, physical_tag(1, "wall", where))) curves.push_back(c);
+  namespace field = gmsh::model::mesh::field;
+  if (options.wall_layer > 0) {
+    const int layers = field::add("BoundaryLayer");
+    field::setNumbers(layers, "EdgesList", curves);
+    field::setNumber(layers, "hwall_n", options.wall_size);
+    field::setNumber(layers, "ratio", 1 + options.wall_growth);
+    field::setNumber(layers, "thickness", options.wall_layer);
+    field::setNumber(layers, "hfar", size);
+    field::setNumber(layers, "Quads", 0);
+    field::setAsBoundaryLayer(layers);
+    return;
+  }
+  const int distance = field::add("Distance");
+  field::setNumbers(distance, "CurvesList", curves);
+  field::setNumber(distance, "NumPointsPerCurve", std::min(1e5, std::ceil(8 * extent / options.wall_size)));
+  const int threshold = field::add("Threshold");
+  field::setNumber(threshold, "InField", distance);
+  field::setNumber(threshold, "SizeMin", options.wall_size);
+  field::setNumber(threshold, "SizeMax", size);
+  field::setNumber(threshold, "DistMin", options.wall_size);
+  field::setNumber(threshold, "DistMax", options.wall_size + (size - options.wall_size) / options.wall_growth);
+  field::setAsBackgroundMesh(threshold);
+  gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+}
+
+void generate(int order, double size, const std::string& where, double radial_size = 0,
+              const MeshOptions* grading = nullptr) {
   if (model_extent() / size > kMaxCellsPerExtent || (radial_size > 0 && model_extent() / radial_size > kMaxCellsPerExtent))
     throw std::runtime_error(where + ": mesh size " + number(size) + " is too small for a model of extent " +
                              number(model_extent()));
+  if (grading) grade_towards_wall(*grading, size, where);
   gmsh::option::setNumber("Mesh.MeshSizeMax", size);
   gmsh::model::mesh::generate(2);
   // Only after the linear mesh exists: setOrder places the new edge nodes on the CAD curves
@@ -176,7 +227,7 @@ GmshMesh mesh_builtin(const ShapeSpec& shape, const MeshOptions& options) {
     gmsh::model::add("meridian");
     detail::build_shape(shape, size, options.radial_size);
     session.throw_if_error(where);
-    generate(options.order, size, where, options.radial_size);
+    generate(options.order, size, where, options.radial_size, &options);
     session.throw_if_error(where);
     GmshMesh m = read_mesh(where);
     m.size = size;
@@ -215,7 +266,7 @@ GmshMesh mesh_section(const ShapeSpec& shape, const MeshOptions& options) {
       return m;
     }
     const double size = options.size > 0 ? options.size : kDefaultSizeFraction * model_smallest_side();
-    generate(options.order, size, where);
+    generate(options.order, size, where, 0, &options);
     session.throw_if_error(where);
     GmshMesh m = read_mesh(where);
     m.size = size;

@@ -28,6 +28,16 @@ struct MeshOptions {
   double size = 0.0;    // target element size in the shape's length unit; 0 = default (see docs)
   double radial_size = 0.0;  // cylinder only: > 0 makes a structured mesh with this element size along r
                              // and `size` along z (docs/geometry.md, "Structured cylinder meshes")
+  // Meshes for viscous boundary layers (docs/geometry.md, "Wall-refined meshes"). wall_size > 0 refines towards
+  // the wall in one of two ways:
+  //   wall_layer > 0: anisotropic layers (gmsh BoundaryLayer field): the first layer wall_size thick, each next
+  //                   one (1 + wall_growth) times thicker, up to wall_layer from the wall; along the wall the
+  //                   elements keep `size`;
+  //   wall_layer = 0: isotropic grading: elements of size wall_size at the wall, growing by wall_growth per
+  //                   unit distance up to `size`.
+  double wall_size = 0.0;
+  double wall_growth = 0.25;
+  double wall_layer = 0.0;
 };
 
 struct MeridianMesh {

@@ -27,6 +27,10 @@ void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
   const rc::ModeTable& t = *tp;
   if (t.m != 1) fail(scene, w + ".table", cav.table.string() + " holds m = " + std::to_string(t.m) +
                                  " modes; only m = 1 modes couple to the tilt");
+  if (t.viscous())
+    fail(scene, w + ".table", cav.table.string() + " is a viscous table (ekman = " + std::to_string(t.ekman) +
+                                  "); chain-rom's model (26) takes ideal-fluid tables only (docs/viscous.md, 'Using a "
+                                  "viscous table')");
   const double rho = cav.density, L = cav.scale;
   const double L3 = L * L * L, L5 = L3 * L * L;
   // SPEC §4: mass ~ rho L^3, A_f, C_f, J_zh, E ~ rho L^5; lambda/omega0 scale-free.

@@ -71,3 +71,34 @@ TEST(ModeTable, InvalidTableLeavesNoFile) {
   EXPECT_THROW(rc::write_mode_table(t, p), std::runtime_error);
   EXPECT_FALSE(fs::exists(p));
 }
+
+// Format version 2: a viscous table keeps its decay and complex coupling; an ideal table has none of them.
+TEST(ModeTable, ViscousFieldsRoundTrip) {
+  rc::ModeTable t;
+  t.shape = "sphere";
+  t.dimensions = {{"radius", 1.0}};
+  t.kappa = {2.0}; t.lambda = {1.0}; t.E = {1.6}; t.a = {0.9}; t.N2 = {1.0}; t.residual = {1e-12};
+  t.ekman = 1e-4;
+  t.mesh_h_wall = 0.01;
+  t.decay = {0.027}; t.E_imag = {-0.08}; t.a_imag = {-0.02};
+  const auto p = std::filesystem::temp_directory_path() / "rc_viscous_roundtrip.h5";
+  rc::write_mode_table(t, p);
+  const auto r = rc::read_mode_table(p);
+  EXPECT_EQ(r.ekman, 1e-4);
+  EXPECT_EQ(r.mesh_h_wall, 0.01);
+  ASSERT_EQ(r.decay.size(), 1u);
+  EXPECT_EQ(r.decay[0], 0.027);
+  EXPECT_EQ(r.E_imag[0], -0.08);
+  EXPECT_EQ(r.a_imag[0], -0.02);
+  std::filesystem::remove(p);
+
+  auto growing = t;
+  growing.decay = {-0.1};
+  EXPECT_THROW(growing.validate(), std::runtime_error);
+  auto ideal_with_decay = t;
+  ideal_with_decay.ekman = 0;
+  EXPECT_THROW(ideal_with_decay.validate(), std::runtime_error);
+  auto missing = t;
+  missing.E_imag.clear();
+  EXPECT_THROW(missing.validate(), std::runtime_error);
+}

@@ -10,6 +10,7 @@
 #include "mode_table_report.hpp"
 #include "petsc_handles.hpp"
 #include "reference_table.hpp"
+#include "viscous_table.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -30,7 +31,20 @@ struct ShapeCommand {
 
 // --method auto|mesh|separable: auto is separable for a cylinder table without --fields, mesh otherwise
 // (docs/modes.md).
-void add_common_options(CLI::App* cmd, TableRequest& req, std::string& output, bool& fields, std::string& method) {
+// --ekman and --wall-size: the viscous table (docs/viscous.md).
+struct ViscousOptions {
+  double ekman = 0;
+  double wall_size = 0;
+};
+
+void add_common_options(CLI::App* cmd, TableRequest& req, std::string& output, bool& fields, std::string& method,
+                        ViscousOptions& viscous) {
+  cmd->add_option("--ekman", viscous.ekman,
+                  "viscous fluid with Ekman number Ek = nu/(omega0 L^2): damped modes (decay, complex coupling) "
+                  "continuing the ideal ones, on a wall-graded Taylor-Hood mesh (docs/viscous.md); --order, "
+                  "--mesh-size then set that mesh (default order 4, d/4)");
+  cmd->add_option("--wall-size", viscous.wall_size,
+                  "with --ekman: element size at the wall (default Ek^(1/2))");
   cmd->add_option("--method", method,
                   "auto (separable for cylinders without --fields, else mesh), mesh (gmsh mesh of the meridian "
                   "section, every shape) or separable (cylinder: exact separation on a tensor-product grid)")
@@ -89,6 +103,24 @@ void choose_method(const CLI::App& cmd, const std::string& choice, bool fields, 
                                                         "solver computes every eigenpair directly)");
 }
 
+// The viscous mesh from the user's --order, --mesh-size, --wall-size; the ideal targets keep the method's own
+// defaults (the request's mesh is reset) and skip their own convergence check.
+rc::modes::ViscousTableSettings viscous_request(const CLI::App& cmd, const ViscousOptions& v, bool fields,
+                                                TableRequest& req) {
+  if (fields) throw std::runtime_error("--fields is not available with --ekman yet (docs/viscous.md, \"Limits\")");
+  rc::modes::ViscousTableSettings s;
+  s.ekman = v.ekman;
+  s.mesh = req.mesh;
+  s.mesh.wall_size = v.wall_size;
+  s.convergence_tolerance = req.convergence_tolerance;
+  s.check_convergence = req.check_convergence;
+  s.mesh = rc::modes::viscous_mesh_defaults(req.shape, v.ekman, s.mesh);
+  req.mesh = {};
+  req.mesh.order = 0;
+  req.check_convergence = false;
+  return s;
+}
+
 int run(int argc, char** argv) {
   auto args = rc::modes::split_arguments(argc, argv);
   CLI::App app{"cavity-modes: inertial-mode tables (kappa, lambda, E, a, N2, J_zh, coverage) of a rotating "
@@ -116,8 +148,9 @@ int run(int argc, char** argv) {
   shape("cone", "cone, apex down, flat lid on top", {{"radius", "lid radius"}, {"height", "height"}});
   auto* section = app.add_subcommand("section", "the user's meridian section (.geo or .msh; see docs/geometry.md)");
   section->add_option("file", req.shape.file, "section file")->required();
-  for (auto& s : shapes) add_common_options(s.app, req, output, fields, method);
-  add_common_options(section, req, output, fields, method);
+  ViscousOptions viscous;
+  for (auto& s : shapes) add_common_options(s.app, req, output, fields, method, viscous);
+  add_common_options(section, req, output, fields, method, viscous);
 
   std::string info_file;
   bool json = false;
@@ -170,6 +203,10 @@ int run(int argc, char** argv) {
   if (section->parsed()) req.shape.kind = "section";
   for (auto& s : shapes)
     if (s.app->parsed()) { req.shape.kind = s.kind; req.shape.dims = s.dims; table_command = s.app; }
+  const bool is_viscous = table_command->count("--ekman") > 0;
+  rc::modes::ViscousTableSettings viscous_settings;
+  if (is_viscous) viscous_settings = viscous_request(*table_command, viscous, fields, req);
+  else if (table_command->count("--wall-size") > 0) throw std::runtime_error("--wall-size applies with --ekman only");
   choose_method(*table_command, method, fields, req);
 
   int petsc_argc = static_cast<int>(args.petsc.size());
@@ -180,8 +217,11 @@ int run(int argc, char** argv) {
   rc::modes::PetscSession session(&petsc_argc, &pargv);
   if (fields) rc::check_companion_name(output);  // before the long computation
   rc::ModeFields mode_fields;
-  auto table = rc::modes::compute_mode_table(req, [](const std::string& line) { std::cerr << line << "\n"; },
-                                             fields ? &mode_fields : nullptr);
+  const bool root = rc::modes::is_root_rank();
+  const auto report = [root](const std::string& line) { if (root) std::cerr << line << "\n"; };
+  auto table = rc::modes::compute_mode_table(req, report, fields ? &mode_fields : nullptr);
+  if (is_viscous) table = rc::modes::compute_viscous_table(req.shape, viscous_settings, table, report);
+  if (!root) return 0;  // under mpirun: rank 0 writes the table
   rc::write_mode_table(table, output, fields ? &mode_fields : nullptr);
   std::cout << rc::modes::table_text(table) << std::flush;
   return 0;

@@ -18,17 +18,22 @@ std::string table_text(const ModeTable& t) {
       t.shape, dims, t.fe_order, t.mesh_h,
       t.mesh_h_radial > 0 ? fmt::format(" (axial; structured, radial h = {:g})", t.mesh_h_radial) : std::string(), t.ndof, t.m, t.volume, t.centroid_z, t.A_f, t.C_f, t.J_zh, t.sum_rule,
       t.coverage, t.solver, t.tolerance, t.wall_seconds);
+  if (t.viscous())
+    s += fmt::format("viscous: Ekman number {:g}, wall element {:g}; each mode decays as exp(-decay t), its coupling "
+                     "residue is E + i E_imag (docs/viscous.md)\n", t.ekman, t.mesh_h_wall);
   const bool conv = !t.converged.empty();
   if (conv)
     s += fmt::format("convergence: against {}, tolerance {:g}; {} of {} clusters converged\n", t.convergence_reference,
                      t.convergence_tolerance, std::count(t.converged.begin(), t.converged.end(), 1), t.size());
   s += fmt::format("{:>4} {:>18} {:>18} {:>18} {:>10} {:>10} {:>4}", "#", "kappa", "lambda", "E", "spread",
                    "residual", "n");
+  if (t.viscous()) s += fmt::format(" {:>14} {:>11}", "decay", "E_imag");
   s += conv ? fmt::format(" {:>9} {:>9} {:>5}\n", "dlambda", "dE", "conv") : "\n";
   for (std::size_t i = 0; i < t.size(); ++i) {
     s += fmt::format("{:>4} {:>18.12f} {:>18.12f} {:>18.12e} {:>10.2e} {:>10.2e} {:>4}", i + 1, t.kappa[i],
                      t.lambda[i], t.E[i], t.spread.empty() ? 0.0 : t.spread[i], t.residual[i],
                      t.members.empty() ? 1 : t.members[i]);
+    if (t.viscous()) s += fmt::format(" {:>14.8e} {:>11.3e}", t.decay[i], t.E_imag[i]);
     s += conv ? fmt::format(" {:>9.1e} {:>9.1e} {:>5}\n", t.dlambda[i], t.dE[i], t.converged[i] ? "yes" : "NO")
               : "\n";
   }
@@ -57,6 +62,8 @@ std::string table_json(const ModeTable& t) {
   j["tolerance"] = t.tolerance;
   j["wall_seconds"] = t.wall_seconds;
   j["normalisation"] = t.normalisation;
+  j["ekman"] = t.ekman;
+  if (t.mesh_h_wall > 0) j["mesh_h_wall"] = t.mesh_h_wall;
   nlohmann::json m;
   m["kappa"] = t.kappa;
   m["lambda"] = t.lambda;
@@ -65,6 +72,11 @@ std::string table_json(const ModeTable& t) {
   m["N2"] = t.N2;
   m["residual"] = t.residual;
   if (!t.spread.empty()) m["spread"] = t.spread;
+  if (t.viscous()) {
+    m["decay"] = t.decay;
+    m["E_imag"] = t.E_imag;
+    m["a_imag"] = t.a_imag;
+  }
   if (!t.members.empty()) m["members"] = t.members;
   if (!t.converged.empty()) {
     j["convergence_reference"] = t.convergence_reference;

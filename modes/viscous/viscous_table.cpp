@@ -1,0 +1,167 @@
+#include "viscous_table.hpp"
+
+#include "poincare_forms.hpp"
+#include "taylor_hood_space.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+namespace rc::modes {
+namespace {
+
+constexpr double kMinEkman = 1e-8, kMaxEkman = 1e3;
+constexpr double kMaxWallSizePerLayer = 4.0;  // a wall element may span at most this many Ek^{1/2}
+constexpr double kLayersThickness = 10.0;     // anisotropic wall layers cover this many Ek^{1/2}
+
+double smallest_dimension(const geometry::ShapeSpec& shape) {
+  if (shape.kind == "sphere") return shape.dims.at("radius");
+  if (shape.kind == "spheroid") return std::min(shape.dims.at("a"), shape.dims.at("c"));
+  if (shape.kind == "cylinder" || shape.kind == "cone")
+    return std::min(shape.dims.at("radius"), shape.dims.at("height"));
+  return 0;  // section: the geometry layer's default (1/8 of the smallest side)
+}
+
+struct Solved {
+  std::vector<ViscousMode> rows;  // one per target
+  long unknowns = 0;
+};
+
+// Anisotropic wall layers where they fit, else (or if gmsh's layers give an inverted element) isotropic grading.
+geometry::MeridianMesh viscous_mesh(const geometry::ShapeSpec& shape, geometry::MeshOptions& mesh) {
+  if (mesh.wall_layer > 0) {
+    try {
+      return geometry::mesh_meridian(shape, mesh);
+    } catch (const std::runtime_error&) {
+      mesh.wall_layer = 0;  // recorded in the table's solver attribute
+    }
+  }
+  return geometry::mesh_meridian(shape, mesh);
+}
+
+// One damped mode per target: of the pairs found near it, the one whose coupling is largest.
+Solved solve_targets(const geometry::ShapeSpec& shape, geometry::MeshOptions& mesh, double centroid_z,
+                     const ViscousTableSettings& s, const std::vector<double>& targets,
+                     const std::function<void(std::size_t, std::size_t)>& progress) {
+  TaylorHoodSpace space(viscous_mesh(shape, mesh));
+  const ViscousForms forms = assemble_viscous_forms(space, centroid_z, s.ekman, PETSC_COMM_WORLD);
+  Solved out;
+  out.unknowns = 2L * forms.complex_size;
+  for (std::size_t i = 0; i < targets.size(); ++i) {
+    const auto near = viscous_modes_near(forms, targets[i], s.solve);
+    out.rows.push_back(*std::max_element(near.begin(), near.end(), [](const auto& a, const auto& b) {
+      return std::abs(a.residue) < std::abs(b.residue);
+    }));
+    progress(i + 1, targets.size());
+  }
+  return out;
+}
+
+double relative(std::complex<double> a, std::complex<double> b) { return std::abs(a - b) / std::abs(b); }
+
+}  // namespace
+
+geometry::MeshOptions viscous_mesh_defaults(const geometry::ShapeSpec& shape, double ekman,
+                                            geometry::MeshOptions mesh) {
+  if (!(ekman >= kMinEkman && ekman <= kMaxEkman))
+    throw std::runtime_error(fmt::format("--ekman {} is outside [{:g}, {:g}] (below 1e-8 the Ekman layers need more "
+                                         "than this machine: docs/viscous.md, \"Limits\")", ekman, kMinEkman,
+                                         kMaxEkman));
+  geometry::check_shape(shape);
+  const double layer = std::sqrt(ekman), d = smallest_dimension(shape);
+  if (mesh.order == 0) mesh.order = 6;
+  if (mesh.order < 2) throw std::runtime_error("--ekman needs --order >= 2 (Taylor-Hood P_k/P_(k-1) elements)");
+  if (mesh.radial_size > 0) throw std::runtime_error("--radial-size (structured meshes) does not apply with --ekman");
+  if (mesh.size == 0 && d > 0) mesh.size = d / 8;
+  if (mesh.wall_size == 0) mesh.wall_size = layer;
+  if (mesh.size > 0) mesh.wall_size = std::min(mesh.wall_size, mesh.size);
+  // Layers at most half as thick as the interior elements (gmsh's layers invert otherwise); beyond them the
+  // interior elements carry the rest of a thick Ekman layer.
+  const double interior = mesh.size > 0 ? mesh.size : 0.125 * d;
+  mesh.wall_layer = std::min(kLayersThickness * layer, interior / 2);
+  if (mesh.wall_layer <= mesh.wall_size) mesh.wall_layer = 0;
+  if (mesh.wall_size > kMaxWallSizePerLayer * layer)
+    throw std::runtime_error(fmt::format("--wall-size {:g} does not resolve the Ekman layer at Ek = {:g} (thickness "
+                                         "{:.3g}): use --wall-size {:.3g} or less", mesh.wall_size, ekman, layer,
+                                         kMaxWallSizePerLayer * layer));
+  return mesh;
+}
+
+ModeTable compute_viscous_table(const geometry::ShapeSpec& shape, const ViscousTableSettings& s,
+                                const ModeTable& ideal, const std::function<void(const std::string&)>& report) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  geometry::MeshOptions mesh = viscous_mesh_defaults(shape, s.ekman, s.mesh);
+  std::vector<double> targets = ideal.lambda;
+  if (targets.empty()) throw std::runtime_error("the ideal table has no mode to continue");
+
+  auto progress = [&](const char* what) {
+    return [&, what](std::size_t done, std::size_t total) {
+      if (report) report(fmt::format("[{:6.2f} s] {} mode {}/{}", seconds(), what, done, total));
+    };
+  };
+  const Solved fine = solve_targets(shape, mesh, ideal.centroid_z, s, targets, progress("viscous"));
+
+  ModeTable t = ideal;
+  t.ekman = s.ekman;
+  t.fe_order = mesh.order;
+  t.mesh_h = mesh.size;
+  t.mesh_h_radial = 0;
+  t.mesh_h_wall = mesh.wall_size;
+  t.ndof = fine.unknowns;
+  t.bands = {};
+  t.kappa.clear(); t.lambda.clear(); t.E.clear(); t.a.clear(); t.N2.clear(); t.residual.clear();
+  t.spread.clear(); t.members.clear(); t.dlambda.clear(); t.dE.clear(); t.converged.clear();
+  double kept = 0;
+  for (const auto& m : fine.rows) {
+    const std::complex<double> a = std::sqrt(m.residue / 2.0);
+    t.lambda.push_back(m.lambda.real());
+    t.kappa.push_back(2 / m.lambda.real());
+    t.decay.push_back(m.lambda.imag());
+    t.E.push_back(m.residue.real());
+    t.E_imag.push_back(m.residue.imag());
+    t.a.push_back(a.real());
+    t.a_imag.push_back(a.imag());
+    t.N2.push_back(1.0);
+    t.residual.push_back(m.residual);
+    kept += m.residue.real();
+  }
+  t.coverage = t.sum_rule > 0 ? kept / t.sum_rule : 1.0;
+  t.normalisation = "rho = 1, omega0 = 1; each mode x is normalised to x^T M x = 1 (complex symmetric, unconjugated), "
+                    "a + i a_imag = (e1 x r, V) / (i sqrt(2 pi)) and E + i E_imag = 2 (a + i a_imag)^2: the residue of "
+                    "the fluid's response at lambda + i decay (docs/viscous.md)";
+  const std::string wall = mesh.wall_layer > 0
+                               ? fmt::format("anisotropic wall layers (first {:.3g}, ratio {:g}, {:.3g} thick)",
+                                             mesh.wall_size, 1 + mesh.wall_growth, mesh.wall_layer)
+                               : fmt::format("isotropic wall grading (wall {:.3g}, growth {:g})", mesh.wall_size,
+                                             mesh.wall_growth);
+  t.solver = fmt::format("Taylor-Hood P{}/P{}, interior size {:.3g}, {}; real 2x2 block form, SLEPc Krylov-Schur "
+                         "shift-and-invert (MUMPS LU) at each ideal mode's lambda; ideal targets: {}",
+                         mesh.order, mesh.order - 1, mesh.size, wall, ideal.solver);
+  t.tolerance = s.solve.tolerance;
+
+  if (s.check_convergence) {
+    geometry::MeshOptions coarse = mesh;
+    coarse.size *= 2;
+    coarse.wall_size *= 2;
+    const Solved ref = solve_targets(shape, coarse, ideal.centroid_z, s, targets, progress("convergence check"));
+    t.convergence_reference = fmt::format("order {} with the interior and wall sizes doubled (h = {:.3g}, wall {:.3g})",
+                                          coarse.order, coarse.size, coarse.wall_size);
+    t.convergence_tolerance = s.convergence_tolerance;
+    for (std::size_t i = 0; i < fine.rows.size(); ++i) {
+      const double dl = relative(ref.rows[i].lambda, fine.rows[i].lambda);
+      const double dE = relative(ref.rows[i].residue, fine.rows[i].residue);
+      t.dlambda.push_back(dl);
+      t.dE.push_back(dE);
+      t.converged.push_back(dl <= s.convergence_tolerance && dE <= s.convergence_tolerance ? 1 : 0);
+    }
+  }
+  t.sort_by_energy();
+  t.wall_seconds = seconds();
+  return t;
+}
+
+}  // namespace rc::modes

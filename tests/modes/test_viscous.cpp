@@ -1,0 +1,134 @@
+// The viscous fluid (docs/viscous.md): the boundary-layer limit (Greenspan's Ek^{1/2} formula) against the
+// literature, and the full Navier–Stokes solver against that limit and the ideal mode it continues.
+#include "boundary_layer.hpp"
+#include "cavity_table.hpp"
+#include "closed_forms.hpp"
+#include "viscous_table.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <complex>
+#include <cstdio>
+#include <numbers>
+
+using namespace rc::modes;
+using cd = std::complex<double>;
+using rc::ModeTable;
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+const cd I(0, 1);
+
+// The sphere's spin-over mode (SPEC §2: p = −z r, λ0 = 1): V = (i z, −z, −i r) e^{iφ}, ‖V‖² = 2π · 8/15.
+std::array<cd, 3> spin_over(double r, double z) { return {I * z, cd(-z), -I * r}; }
+constexpr double kSpinOverNorm2 = 2 * kPi * 8.0 / 15.0;
+
+// Stewartson's mode p = J1(ξ r) sin(k z) of the cylinder of radius 1 (SPEC §2 formulas for V).
+struct StewartsonMode {
+  double lambda, k, xi;
+  std::array<cd, 3> operator()(double r, double z) const {
+    const double D = 4 - lambda * lambda;
+    const double J = std::cyl_bessel_j(1, xi * r), dJ = xi * 0.5 * (std::cyl_bessel_j(0, xi * r) - std::cyl_bessel_j(2, xi * r));
+    const double p = J * std::sin(k * z), pr = dJ * std::sin(k * z), pz = J * k * std::cos(k * z);
+    const double p_over_r = r > 0 ? p / r : 0.5 * xi * std::sin(k * z);
+    return {-I * (lambda * pr + 2 * p_over_r) / D, cd((2 * pr + lambda * p_over_r) / D), I / lambda * pz};
+  }
+  // 2π ∫∫ |V|² r dr dz by Gauss panels.
+  double norm2(double height) const {
+    const auto wall = cylinder_wall(1.0, height, 64);  // its bottom segment is a Gauss rule on r in [0, 1]
+    const auto side = cylinder_wall(height, 1.0, 64);  // ... and on [0, height] (reused as a 1-D rule)
+    double sum = 0;
+    for (std::size_t i = 0; i < wall.size() / 3; ++i)
+      for (std::size_t j = 0; j < side.size() / 3; ++j) {
+        const double r = wall[i].r, z = side[j].r - height / 2;
+        const auto V = (*this)(r, z);
+        sum += (std::norm(V[0]) + std::norm(V[1]) + std::norm(V[2])) * r * wall[i].weight * side[j].weight;
+      }
+    return 2 * kPi * sum;
+  }
+};
+
+ModeTable viscous_sphere(double ekman) {
+  TableRequest ideal;
+  ideal.shape = {"sphere", {{"radius", 1.0}}, {}};
+  ideal.mesh.order = 6;
+  ideal.selection.modes = 1;
+  ideal.check_convergence = false;
+  ViscousTableSettings s;
+  s.ekman = ekman;
+  s.mesh.order = 0;  // the program's defaults (viscous_mesh_defaults)
+  s.check_convergence = false;
+  return compute_viscous_table(ideal.shape, s, compute_mode_table(ideal), {});
+}
+
+}  // namespace
+
+// Greenspan (1968), "The Theory of Rotating Fluids", quotes the spin-over mode's Ek^{1/2} correction as
+// 0.259 (frequency) and 2.62 (decay), Ek = ν/(ΩR²); the quadrature gives 0.25847 and 2.62047.
+TEST(BoundaryLayerLimit, SphereSpinOverModeIsGreenspans) {
+  // The integrand has |z ∓ 1/2|^{1/2} kinks at the critical latitudes, so the composite rule converges like
+  // panels^{-3/2}: 3200 panels for ~1e-6.
+  const cd l400 = boundary_layer_correction(1.0, ellipse_wall(1, 1, 1600), spin_over, kSpinOverNorm2);
+  const cd l800 = boundary_layer_correction(1.0, ellipse_wall(1, 1, 3200), spin_over, kSpinOverNorm2);
+  std::printf("spin-over: lambda1 = %.7f + %.7f i (3200 panels), change from 1600 panels %.1e; literature 0.259 + 2.62 i\n",
+              l800.real(), l800.imag(), std::abs(l800 - l400));
+  EXPECT_LE(std::abs(l800 - l400), 1e-5);
+  EXPECT_NEAR(l800.real(), 0.259, 1e-3);
+  EXPECT_NEAR(l800.imag(), 2.62, 5e-3);
+}
+
+TEST(BoundaryLayerLimit, CylinderDominantModeQuadratureConverges) {
+  const auto modes = exact::cylinder_modes(1.0, 2.0);
+  const auto& m = modes.front();
+  const double k = kPi / 2;  // n = 0, 2h = 2
+  const StewartsonMode mode{m.lambda, k, k * std::sqrt(m.kappa * m.kappa - 1)};
+  const double n2 = mode.norm2(2.0);
+  // E of the closed-form fields reproduces the table value: the fields and norm are right.
+  const auto coupling = [&] {  // (e1 × r, V) = iπ ∫∫ (−z u− + r u_z) r, u− = V_r − i V_φ
+    const auto w = cylinder_wall(1.0, 2.0, 64), s = cylinder_wall(2.0, 1.0, 64);
+    cd sum = 0;
+    for (std::size_t i = 0; i < w.size() / 3; ++i)
+      for (std::size_t j = 0; j < s.size() / 3; ++j) {
+        const double r = w[i].r, z = s[j].r - 1.0;
+        const auto V = mode(r, z);
+        sum += (-z * (V[0] - I * V[1]) + r * V[2]) * r * w[i].weight * s[j].weight;
+      }
+    return I * kPi * sum;
+  }();
+  const double E = 2 * std::norm(coupling) / n2;
+  const cd l1 = boundary_layer_correction(m.lambda, cylinder_wall(1, 2, 400), mode, n2);
+  const cd l2 = boundary_layer_correction(m.lambda, cylinder_wall(1, 2, 800), mode, n2);
+  std::printf("cylinder 2h/a = 2, dominant mode (lambda0 %.8f): E %.10f (exact %.10f), lambda1 = %.6f + %.6f i\n",
+              m.lambda, E, m.E, l2.real(), l2.imag());
+  EXPECT_LE(std::abs(E - m.E) / m.E, 1e-8);
+  EXPECT_LE(std::abs(l2 - l1), 1e-6 * std::abs(l2));
+  EXPECT_GT(l2.imag(), 0);
+}
+
+// The damped spin-over mode: λ → 1 with decay → 0, decay/Ek^{1/2} approaching Greenspan's 2.6205 from above (the
+// next corrections fall like a fractional power of Ek: docs/viscous.md, "Measured"), and the coupling residue
+// approaching the ideal E = 8π/15.
+TEST(ViscousSphere, SpinOverModeTendsToTheBoundaryLayerLimit) {
+  const cd limit = boundary_layer_correction(1.0, ellipse_wall(1, 1, 400), spin_over, kSpinOverNorm2);
+  const double E0 = 8 * kPi / 15;
+  double previous_gap = 0;
+  for (double ek : {1e-3, 1e-4}) {
+    const ModeTable t = viscous_sphere(ek);
+    ASSERT_EQ(t.size(), 1u);
+    const double slope = t.decay[0] / std::sqrt(ek), gap = std::abs(slope - limit.imag()) / limit.imag();
+    std::printf("Ek %.0e: lambda %.9f decay %.9f (decay/Ek^1/2 %.5f, %.1f %% above the limit), E %.6f%+.6fi "
+                "(ideal %.6f), residual %.1e, %ld unknowns, %.1f s\n", ek, t.lambda[0], t.decay[0], slope, 100 * gap,
+                t.E[0], t.E_imag[0], E0, t.residual[0], t.ndof, t.wall_seconds);
+    EXPECT_NEAR(t.lambda[0], 1.0, 3 * limit.real() * std::sqrt(ek) + ek);
+    EXPECT_GT(slope, limit.imag());
+    EXPECT_LE(std::abs(t.E[0] - E0) / E0, 10 * std::sqrt(ek));
+    EXPECT_LE(t.residual[0], 1e-8);
+    if (previous_gap > 0) {
+      EXPECT_LE(gap, previous_gap / 3) << "decay/Ek^1/2 does not approach the limit";
+    }
+    previous_gap = gap;
+  }
+  EXPECT_LE(previous_gap, 0.06);
+}

@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# cavity-modes --ekman on the command line: bad input gives one line, a non-zero exit and no file; a small good
+# run writes a viscous table that info --json shows; chain-rom refuses a viscous table with one line.
+set -u
+source "$(cd "$(dirname "$0")" && pwd)/cli_checks.sh"
+BIN=$1
+ROM=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+small=(--order 3 --mesh-size 0.5 --no-convergence-check)
+
+expect_error "zero Ekman number" "outside" "$BIN" sphere --radius 1 --ekman 0 -o out.h5
+expect_error "negative Ekman number" "outside" "$BIN" sphere --radius 1 --ekman -1e-3 -o out.h5
+expect_error "NaN Ekman number" "outside" "$BIN" sphere --radius 1 --ekman nan -o out.h5
+expect_error "Ekman number too small for this machine" "outside" "$BIN" cylinder --radius 1 --height 2 --ekman 1e-9 -o out.h5
+expect_error "wall mesh too coarse for the Ekman layer" "does not resolve the Ekman layer" "$BIN" sphere --radius 1 --ekman 1e-4 --wall-size 0.1 -o out.h5
+expect_error "wall size without --ekman" "applies with --ekman only" "$BIN" sphere --radius 1 --wall-size 0.01 -o out.h5
+expect_error "--fields with --ekman" "not available with --ekman" "$BIN" sphere --radius 1 --ekman 1e-2 --fields -o out.h5
+expect_error "order 1 with --ekman" "order >= 2" "$BIN" sphere --radius 1 --ekman 1e-2 --order 1 -o out.h5
+expect_error "viscous solver failure" "did not converge" "$BIN" sphere --radius 1 --ekman 1e-2 "${small[@]}" -o out.h5 \
+  -viscous_eps_max_it 1 -viscous_eps_tol 1e-30
+
+if "$BIN" sphere --radius 1 --ekman 1e-2 --modes 1 "${small[@]}" -o visc.h5 > run.txt 2>&1 &&
+   "$BIN" info visc.h5 --json > visc.json && python3 -c '
+import json
+j = json.load(open("visc.json"))
+m = j["modes"]
+assert j["ekman"] == 1e-2, j["ekman"]
+assert len(m["decay"]) == len(m["E"]) == len(m["E_imag"]) == 1
+assert 0 < m["decay"][0] < 1 and abs(m["lambda"][0] - 1) < 0.05, (m["lambda"], m["decay"])
+print("Ek = 1e-2 sphere: lambda %.6f decay %.6f E %.6f%+.6fi" % (m["lambda"][0], m["decay"][0], m["E"][0], m["E_imag"][0]))
+'; then ok "viscous sphere table and info --json"; else bad "viscous table: $(tail -2 run.txt)"; fi
+
+cat > scene.toml <<SCENE
+[system]
+kind = "fixed"
+gravity = 9.81
+[[body]]
+mass = 2.0
+A = 0.05
+C = 0.08
+com = 0.05
+spin = 200.0
+[body.cavity]
+table = "visc.h5"
+density = 1000.0
+scale = 0.04
+center = 0.05
+SCENE
+rm -f out.h5
+expect_error "chain-rom refuses a viscous table" "viscous table" "$ROM" spectrum scene.toml
+finish
