@@ -52,6 +52,12 @@ TaylorHoodSpace::TaylorHoodSpace(geometry::MeridianMesh mesh, int quadrature_deg
     for (std::size_t i = 0; i < ne * npe; ++i) velocity_[c][i] = node_dof[m.triangles[i]];
   }
 
+  for (std::size_t e = 0; e < ne; ++e) {
+    const int* v = m.triangles.data() + e * npe;
+    const auto boundary = [&](int n) { return on_wall[n] || on_axis[n]; };
+    if (boundary(v[0]) && boundary(v[1]) && boundary(v[2])) ++boundary_locked_;
+  }
+
   // Pressure: order k − 1 nodes, shared by key, none on the axis.
   const int pk = m.order - 1;
   const auto nodes = geometry::triangle_nodes(pk);

@@ -39,10 +39,13 @@ class TaylorHoodSpace {
   std::span<const int> pressure(std::size_t e) const;
   // Pressure basis values at the quadrature points of FESpace::quadrature: Np[q * pressure_npe + b].
   const std::vector<double>& pressure_basis() const { return pressure_basis_; }
+  // Triangles whose three vertices all lie on the wall or the axis. Taylor–Hood is stable only when every
+  // triangle has an interior vertex; each such triangle can carry a spurious pressure mode.
+  int boundary_locked_triangles() const { return boundary_locked_; }
 
  private:
   FESpace geometry_;
-  int velocity_dofs_ = 0, pressure_dofs_ = 0, pressure_npe_ = 0;
+  int velocity_dofs_ = 0, pressure_dofs_ = 0, pressure_npe_ = 0, boundary_locked_ = 0;
   std::array<std::vector<int>, 3> velocity_;  // per component: per element, per local node
   std::vector<int> pressure_;                 // per element, per local pressure node
   std::vector<double> pressure_basis_;

@@ -1,5 +1,6 @@
 #include "viscous_table.hpp"
 
+#include "mesh_broadcast.hpp"
 #include "poincare_forms.hpp"
 #include "taylor_hood_space.hpp"
 
@@ -46,7 +47,7 @@ geometry::MeridianMesh viscous_mesh(const geometry::ShapeSpec& shape, geometry::
 Solved solve_targets(const geometry::ShapeSpec& shape, geometry::MeshOptions& mesh, double centroid_z,
                      const ViscousTableSettings& s, const std::vector<double>& targets,
                      const std::function<void(std::size_t, std::size_t)>& progress) {
-  TaylorHoodSpace space(viscous_mesh(shape, mesh));
+  TaylorHoodSpace space(mesh_on_root([&] { return viscous_mesh(shape, mesh); }, PETSC_COMM_WORLD));
   const ViscousForms forms = assemble_viscous_forms(space, centroid_z, s.ekman, PETSC_COMM_WORLD);
   Solved out;
   out.unknowns = 2L * forms.complex_size;
@@ -79,9 +80,12 @@ geometry::MeshOptions viscous_mesh_defaults(const geometry::ShapeSpec& shape, do
   if (mesh.wall_size == 0) mesh.wall_size = layer;
   if (mesh.size > 0) mesh.wall_size = std::min(mesh.wall_size, mesh.size);
   // Layers at most half as thick as the interior elements (gmsh's layers invert otherwise); beyond them the
-  // interior elements carry the rest of a thick Ekman layer.
+  // interior elements carry the rest of a thick Ekman layer. Only where the wall meets the axis at a right
+  // angle (sphere, spheroid, cylinder): on a cone gmsh 4.8's layers crashed (SIGSEGV) or inverted at the apex,
+  // so cones and user sections get the isotropic grading.
+  const bool layers = shape.kind == "sphere" || shape.kind == "spheroid" || shape.kind == "cylinder";
   const double interior = mesh.size > 0 ? mesh.size : 0.125 * d;
-  mesh.wall_layer = std::min(kLayersThickness * layer, interior / 2);
+  mesh.wall_layer = layers ? std::min(kLayersThickness * layer, interior / 2) : 0;
   if (mesh.wall_layer <= mesh.wall_size) mesh.wall_layer = 0;
   if (mesh.wall_size > kMaxWallSizePerLayer * layer)
     throw std::runtime_error(fmt::format("--wall-size {:g} does not resolve the Ekman layer at Ek = {:g} (thickness "

@@ -11,6 +11,7 @@
 #include <complex>
 #include <cstdio>
 #include <numbers>
+#include <vector>
 
 using namespace rc::modes;
 using cd = std::complex<double>;
@@ -50,9 +51,9 @@ struct StewartsonMode {
   }
 };
 
-ModeTable viscous_sphere(double ekman) {
+ModeTable viscous_table(const rc::geometry::ShapeSpec& shape, double ekman) {
   TableRequest ideal;
-  ideal.shape = {"sphere", {{"radius", 1.0}}, {}};
+  ideal.shape = shape;
   ideal.mesh.order = 6;
   ideal.selection.modes = 1;
   ideal.check_convergence = false;
@@ -61,6 +62,14 @@ ModeTable viscous_sphere(double ekman) {
   s.mesh.order = 0;  // the program's defaults (viscous_mesh_defaults)
   s.check_convergence = false;
   return compute_viscous_table(ideal.shape, s, compute_mode_table(ideal), {});
+}
+
+ModeTable viscous_sphere(double ekman) { return viscous_table({"sphere", {{"radius", 1.0}}, {}}, ekman); }
+
+StewartsonMode cylinder_dominant_mode() {
+  const auto m = exact::cylinder_modes(1.0, 2.0).front();
+  const double k = kPi / 2;  // n = 0, 2h = 2
+  return {m.lambda, k, k * std::sqrt(m.kappa * m.kappa - 1)};
 }
 
 }  // namespace
@@ -80,10 +89,8 @@ TEST(BoundaryLayerLimit, SphereSpinOverModeIsGreenspans) {
 }
 
 TEST(BoundaryLayerLimit, CylinderDominantModeQuadratureConverges) {
-  const auto modes = exact::cylinder_modes(1.0, 2.0);
-  const auto& m = modes.front();
-  const double k = kPi / 2;  // n = 0, 2h = 2
-  const StewartsonMode mode{m.lambda, k, k * std::sqrt(m.kappa * m.kappa - 1)};
+  const auto m = exact::cylinder_modes(1.0, 2.0).front();
+  const StewartsonMode mode = cylinder_dominant_mode();
   const double n2 = mode.norm2(2.0);
   // E of the closed-form fields reproduces the table value: the fields and norm are right.
   const auto coupling = [&] {  // (e1 × r, V) = iπ ∫∫ (−z u− + r u_z) r, u− = V_r − i V_φ
@@ -131,4 +138,26 @@ TEST(ViscousSphere, SpinOverModeTendsToTheBoundaryLayerLimit) {
     previous_gap = gap;
   }
   EXPECT_LE(previous_gap, 0.06);
+}
+
+// The cylinder has no critical latitude, so (λ − λ0)/Ek^{1/2} = λ1 + O(Ek^{1/2}) and one Richardson step on
+// Ek = 1e-3 and 1e-4 must land on the boundary-layer λ1 of the closed-form mode.
+TEST(ViscousCylinder, DominantModeExtrapolatesToTheBoundaryLayerLimit) {
+  const StewartsonMode mode = cylinder_dominant_mode();
+  const cd limit = boundary_layer_correction(mode.lambda, cylinder_wall(1, 2, 400), mode, mode.norm2(2.0));
+  std::vector<cd> slope;
+  const std::vector<double> eks = {1e-3, 1e-4};
+  for (double ek : eks) {
+    const ModeTable t = viscous_table({"cylinder", {{"radius", 1.0}, {"height", 2.0}}, {}}, ek);
+    ASSERT_EQ(t.size(), 1u);
+    slope.push_back((cd(t.lambda[0], t.decay[0]) - mode.lambda) / std::sqrt(ek));
+    std::printf("Ek %.0e: lambda %.9f decay %.9f, (lambda - lambda0)/Ek^1/2 = %.5f%+.5fi, E %.6f%+.6fi, %.1f s\n", ek,
+                t.lambda[0], t.decay[0], slope.back().real(), slope.back().imag(), t.E[0], t.E_imag[0], t.wall_seconds);
+  }
+  const double h1 = std::sqrt(eks[0]), h2 = std::sqrt(eks[1]);
+  const cd extrapolated = (slope[1] * h1 - slope[0] * h2) / (h1 - h2);
+  std::printf("extrapolated lambda1 = %.5f%+.5fi, boundary-layer formula %.5f%+.5fi, difference %.1e relative\n",
+              extrapolated.real(), extrapolated.imag(), limit.real(), limit.imag(),
+              std::abs(extrapolated - limit) / std::abs(limit));
+  EXPECT_LE(std::abs(extrapolated - limit), 0.01 * std::abs(limit));
 }

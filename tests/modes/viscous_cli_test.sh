@@ -32,6 +32,24 @@ assert 0 < m["decay"][0] < 1 and abs(m["lambda"][0] - 1) < 0.05, (m["lambda"], m
 print("Ek = 1e-2 sphere: lambda %.6f decay %.6f E %.6f%+.6fi" % (m["lambda"][0], m["decay"][0], m["E"][0], m["E_imag"][0]))
 '; then ok "viscous sphere table and info --json"; else bad "viscous table: $(tail -2 run.txt)"; fi
 
+# Distributed: the same table with mpirun -n 1 and -n 2 (PETSc's distributed matrices, parallel MUMPS).
+if command -v mpirun > /dev/null; then
+  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+  if mpirun -n 1 "$BIN" sphere --radius 1 --ekman 1e-3 --modes 1 "${small[@]}" -o mpi1.h5 > mpi1.txt 2>&1 &&
+     mpirun -n 2 "$BIN" sphere --radius 1 --ekman 1e-3 --modes 1 "${small[@]}" -o mpi2.h5 > mpi2.txt 2>&1 &&
+     [ ! -e mpi2.h5.tmp* ] && /usr/bin/python3 -c '
+import h5py
+a, b = h5py.File("mpi1.h5")["modes"], h5py.File("mpi2.h5")["modes"]
+for name, re, im in (("lambda + i decay", "lambda", "decay"), ("E + i E_imag", "E", "E_imag")):
+    x, y = complex(a[re][0], a[im][0]), complex(b[re][0], b[im][0])
+    d = abs(x - y) / abs(x)
+    print("%s: -n 1 %.15g%+.15gi, -n 2 %.15g%+.15gi, relative difference %.1e" % (name, x.real, x.imag, y.real, y.imag, d))
+    assert d < 1e-10, name
+'; then ok "mpirun -n 1 and -n 2 give the same table"; else bad "mpirun: $(tail -3 mpi2.txt)"; fi
+else
+  ok "mpirun not installed: distributed check skipped"
+fi
+
 cat > scene.toml <<SCENE
 [system]
 kind = "fixed"
