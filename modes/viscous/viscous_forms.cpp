@@ -93,7 +93,10 @@ PMat create_block_matrix(MPI_Comm comm, int complex_size, std::vector<PetscInt>&
                          const std::vector<PetscScalar>& v) {
   PMat A;
   petsc_check(MatCreate(comm, A.out()), "MatCreate");
-  petsc_check(MatSetSizes(A, PETSC_DECIDE, PETSC_DECIDE, 2 * complex_size, 2 * complex_size), "MatSetSizes");
+  // Whole (Re, Im) pairs per rank, so that a complex unknown never straddles two ranks.
+  PetscInt local = PETSC_DECIDE, global = complex_size;
+  petsc_check(PetscSplitOwnership(comm, &local, &global), "PetscSplitOwnership");
+  petsc_check(MatSetSizes(A, 2 * local, 2 * local, 2 * global, 2 * global), "MatSetSizes");
   petsc_check(MatSetType(A, MATAIJ), "MatSetType");
   petsc_check(MatSetPreallocationCOO(A, static_cast<PetscCount>(i.size()), i.data(), j.data()),
               "MatSetPreallocationCOO");
@@ -125,6 +128,17 @@ PMat block_mass(MPI_Comm comm, int n, const Triplets& m) {
   std::vector<PetscScalar> V;
   for (std::size_t k = 0; k < m.v.size(); ++k)
     for (int part : {0, 1}) { I.push_back(2 * m.i[k] + part); J.push_back(2 * m.j[k] + part); V.push_back(m.v[k]); }
+  for (int d = 0; d < 2 * n; ++d) { I.push_back(d); J.push_back(d); V.push_back(0.0); }
+  return create_block_matrix(comm, n, I, J, V);
+}
+
+PMat block_imaginary_mass(MPI_Comm comm, int n, const Triplets& m) {
+  std::vector<PetscInt> I, J;
+  std::vector<PetscScalar> V;
+  for (std::size_t k = 0; k < m.v.size(); ++k) {
+    I.push_back(2 * m.i[k]); J.push_back(2 * m.j[k] + 1); V.push_back(-m.v[k]);
+    I.push_back(2 * m.i[k] + 1); J.push_back(2 * m.j[k]); V.push_back(m.v[k]);
+  }
   for (int d = 0; d < 2 * n; ++d) { I.push_back(d); J.push_back(d); V.push_back(0.0); }
   return create_block_matrix(comm, n, I, J, V);
 }
@@ -166,6 +180,7 @@ ViscousForms assemble_viscous_forms(const TaylorHoodSpace& space, double centroi
   forms.complex_size = n;
   forms.A = block_operator(comm, n, ar, ai);
   forms.M = block_mass(comm, n, mass);
+  forms.iM = block_imaginary_mass(comm, n, mass);
   forms.coupling = block_vector(forms.A, f_all);
   forms.real_slots = block_vector(forms.A, std::vector<double>(n, 1.0));
   petsc_check(MatCreateVecs(forms.M, forms.mass_diagonal.out(), nullptr), "MatCreateVecs");

@@ -34,6 +34,7 @@ namespace rc::modes {
 struct ViscousForms {
   int complex_size = 0;    // unknowns of the complex problem (velocity and pressure)
   PMat A, M;               // Â, M̂ (distributed over the communicator's ranks)
+  PMat iM;                 // the block form of i𝓜: [[0, −𝓜], [𝓜, 0]] pairwise (complex shifts σ𝓜 = Re σ M̂ + Im σ iM)
   PVec coupling;           // f on the real slots, 0 on the imaginary ones
   PVec real_slots;         // 1 on the real slots, 0 on the imaginary ones
   PVec mass_diagonal;      // diagonal of M̂ (for scaling checks)

@@ -3,10 +3,15 @@
 #include "boundary_layer.hpp"
 #include "cavity_table.hpp"
 #include "closed_forms.hpp"
+#include "mesh_broadcast.hpp"
+#include "taylor_hood_space.hpp"
+#include "viscous_eigensolver.hpp"
+#include "viscous_response.hpp"
 #include "viscous_table.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <cstdio>
@@ -160,4 +165,37 @@ TEST(ViscousCylinder, DominantModeExtrapolatesToTheBoundaryLayerLimit) {
               extrapolated.real(), extrapolated.imag(), limit.real(), limit.imag(),
               std::abs(extrapolated - limit) / std::abs(limit));
   EXPECT_LE(std::abs(extrapolated - limit), 0.01 * std::abs(limit));
+}
+
+// The response by forced solves (no modes) has a pole at the damped mode with the mode's residue E_c: the
+// trapezoidal rule on a small circle around λ recovers the residue (1/2πi)∮R dσ to the solver's accuracy.
+TEST(ViscousResponse, PoleAndResidueAreTheDampedModes) {
+  const rc::geometry::ShapeSpec sphere{"sphere", {{"radius", 1.0}}, {}};
+  const double ek = 1e-3;
+  const auto mesh = viscous_mesh_defaults(sphere, ek, [] {
+    rc::geometry::MeshOptions m;
+    m.order = 4;
+    m.size = 0.25;
+    return m;
+  }());
+  const TaylorHoodSpace space(rc::geometry::mesh_meridian(sphere, mesh));
+  const ViscousForms forms = assemble_viscous_forms(space, 0.0, ek, PETSC_COMM_WORLD);
+  ViscousSolveSettings settings;
+  settings.tolerance = 1e-12;
+  const auto modes = viscous_modes_near(forms, 1.0, settings);
+  const auto& mode = *std::max_element(modes.begin(), modes.end(), [](const auto& a, const auto& b) {
+    return std::abs(a.residue) < std::abs(b.residue);
+  });
+  const double radius = 1e-3;
+  const int points = 8;
+  std::vector<cd> sigma;
+  for (int k = 0; k < points; ++k) sigma.push_back(mode.lambda + radius * std::exp(I * (2 * kPi * k / points)));
+  const auto R = viscous_response(forms, sigma);
+  cd residue = 0;
+  for (int k = 0; k < points; ++k) residue += (sigma[k] - mode.lambda) * R[k] / double(points);
+  const double err = std::abs(residue - mode.residue) / std::abs(mode.residue);
+  std::printf("damped mode lambda %.10f%+.10fi, residue from the eigenvector %.10f%+.10fi, from forced solves "
+              "%.10f%+.10fi: %.1e relative\n", mode.lambda.real(), mode.lambda.imag(), mode.residue.real(),
+              mode.residue.imag(), residue.real(), residue.imag(), err);
+  EXPECT_LE(err, 1e-7);
 }

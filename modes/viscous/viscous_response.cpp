@@ -1,0 +1,64 @@
+#include "viscous_response.hpp"
+
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+namespace rc::modes {
+
+std::vector<std::complex<double>> viscous_response(const ViscousForms& forms,
+                                                   const std::vector<std::complex<double>>& sigmas) {
+  std::vector<std::complex<double>> out;
+  PVec x;
+  petsc_check(VecDuplicate(forms.coupling, x.out()), "VecDuplicate");
+  for (const auto sigma : sigmas) {
+    // S = σ𝓜 − A in block form: Re σ M̂ + Im σ (i𝓜 block) − Â.
+    PMat S;
+    petsc_check(MatDuplicate(forms.A, MAT_COPY_VALUES, S.out()), "MatDuplicate");
+    petsc_check(MatScale(S, -1.0), "MatScale");
+    petsc_check(MatAXPY(S, sigma.real(), forms.M, DIFFERENT_NONZERO_PATTERN), "MatAXPY");
+    petsc_check(MatAXPY(S, sigma.imag(), forms.iM, DIFFERENT_NONZERO_PATTERN), "MatAXPY");
+    MPI_Comm comm;
+    petsc_check(PetscObjectGetComm(reinterpret_cast<PetscObject>(S.get()), &comm), "PetscObjectGetComm");
+    PKSP ksp;
+    PC pc;
+    Mat F;
+    petsc_check(KSPCreate(comm, ksp.out()), "KSPCreate");
+    petsc_check(KSPSetOperators(ksp, S, S), "KSPSetOperators");
+    petsc_check(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
+    petsc_check(KSPGetPC(ksp, &pc), "KSPGetPC");
+    petsc_check(PCSetType(pc, PCLU), "PCSetType");
+    petsc_check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
+    petsc_check(PCFactorSetUpMatSolverType(pc), "PCFactorSetUpMatSolverType");
+    petsc_check(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
+    petsc_check(MatMumpsSetIcntl(F, 24, 1), "MatMumpsSetIcntl");   // as viscous_eigensolver.cpp
+    petsc_check(MatMumpsSetIcntl(F, 14, 100), "MatMumpsSetIcntl");
+    petsc_check(KSPSetOptionsPrefix(ksp, "response_"), "KSPSetOptionsPrefix");
+    petsc_check(KSPSetFromOptions(ksp), "KSPSetFromOptions");
+    const std::string where = "forced solve at sigma = " + std::to_string(sigma.real()) +
+                              (sigma.imag() < 0 ? " - " : " + ") + std::to_string(std::abs(sigma.imag())) + "i";
+    petsc_check(KSPSolve(ksp, forms.coupling, x), where.c_str());
+    KSPConvergedReason reason;
+    petsc_check(KSPGetConvergedReason(ksp, &reason), "KSPGetConvergedReason");
+    if (reason < 0) throw std::runtime_error("the forced solve failed (KSP reason " + std::to_string(reason) + ")");
+    // fᵀx with x = a + ib on the real and imaginary slots: the coupling vector sits on the real slots only.
+    PetscScalar fa = 0, fb = 0;
+    petsc_check(VecDot(x, forms.coupling, &fa), "VecDot");  // Σ f_j a_j
+    // Σ f_j b_j: each pair (a_j, b_j) is local to one rank (viscous_forms.cpp).
+    const PetscScalar* xs = nullptr;
+    const PetscScalar* fs = nullptr;
+    PetscInt lo = 0, hi = 0;
+    petsc_check(VecGetOwnershipRange(x, &lo, &hi), "VecGetOwnershipRange");
+    petsc_check(VecGetArrayRead(x, &xs), "VecGetArrayRead");
+    petsc_check(VecGetArrayRead(forms.coupling, &fs), "VecGetArrayRead");
+    double local = 0;
+    for (PetscInt g = lo; g + 1 < hi; g += 2) local += fs[g - lo] * xs[g + 1 - lo];  // pairs never straddle ranks
+    petsc_check(VecRestoreArrayRead(x, &xs), "VecRestoreArrayRead");
+    petsc_check(VecRestoreArrayRead(forms.coupling, &fs), "VecRestoreArrayRead");
+    MPI_Allreduce(&local, &fb, 1, MPI_DOUBLE, MPI_SUM, comm);
+    out.push_back(std::numbers::pi * std::complex<double>(fa, fb));
+  }
+  return out;
+}
+
+}  // namespace rc::modes

@@ -1,0 +1,19 @@
+// The fluid's moment response at complex frequencies by direct forced solves, no modes (docs/viscous.md,
+// "Response function"):
+//   R(σ) = π fᵀ (σ𝓜 − A)⁻¹ f = Σ_l E_l / (σ − λ_l) + (a constant from the pencil's infinite eigenvalues),
+// with A, 𝓜, f of viscous_forms.hpp; its poles are the damped modes and their residues the table's E + i E_imag.
+// σ − A is solved in the real block form (one MUMPS LU per σ).
+#pragma once
+
+#include "viscous_forms.hpp"
+
+#include <complex>
+#include <vector>
+
+namespace rc::modes {
+
+// Throws std::runtime_error if a factorisation fails (σ on an eigenvalue, or a singular matrix).
+std::vector<std::complex<double>> viscous_response(const ViscousForms& forms,
+                                                   const std::vector<std::complex<double>>& sigmas);
+
+}  // namespace rc::modes
