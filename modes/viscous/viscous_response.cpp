@@ -1,5 +1,9 @@
 #include "viscous_response.hpp"
 
+#include "mesh_broadcast.hpp"
+#include "poincare_forms.hpp"
+#include "taylor_hood_space.hpp"
+
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -59,6 +63,16 @@ std::vector<std::complex<double>> viscous_response(const ViscousForms& forms,
     out.push_back(std::numbers::pi * std::complex<double>(fa, fb));
   }
   return out;
+}
+
+std::vector<std::complex<double>> cavity_response(const geometry::ShapeSpec& shape, geometry::MeshOptions mesh,
+                                                  double ekman, const std::vector<std::complex<double>>& sigmas,
+                                                  long* unknowns) {
+  const TaylorHoodSpace space(mesh_on_root([&] { return geometry::mesh_meridian(shape, mesh); }, PETSC_COMM_WORLD));
+  const double centroid_z = integrate_fluid(space.geometry()).centroid_z;
+  const ViscousForms forms = assemble_viscous_forms(space, centroid_z, ekman, PETSC_COMM_WORLD);
+  if (unknowns) *unknowns = 2L * forms.complex_size;
+  return viscous_response(forms, sigmas);
 }
 
 }  // namespace rc::modes

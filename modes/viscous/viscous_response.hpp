@@ -5,6 +5,7 @@
 // σ − A is solved in the real block form (one MUMPS LU per σ).
 #pragma once
 
+#include "meridian_mesh.hpp"
 #include "viscous_forms.hpp"
 
 #include <complex>
@@ -15,5 +16,11 @@ namespace rc::modes {
 // Throws std::runtime_error if a factorisation fails (σ on an eigenvalue, or a singular matrix).
 std::vector<std::complex<double>> viscous_response(const ViscousForms& forms,
                                                    const std::vector<std::complex<double>>& sigmas);
+
+// The same for a cavity: meshes it (viscous_mesh_defaults must have resolved `mesh`), assembles at `ekman` with
+// z measured from the fluid centroid, and solves at every σ. `unknowns` receives the real unknowns' count.
+std::vector<std::complex<double>> cavity_response(const geometry::ShapeSpec& shape, geometry::MeshOptions mesh,
+                                                  double ekman, const std::vector<std::complex<double>>& sigmas,
+                                                  long* unknowns = nullptr);
 
 }  // namespace rc::modes

@@ -32,6 +32,23 @@ assert 0 < m["decay"][0] < 1 and abs(m["lambda"][0] - 1) < 0.05, (m["lambda"], m
 print("Ek = 1e-2 sphere: lambda %.6f decay %.6f E %.6f%+.6fi" % (m["lambda"][0], m["decay"][0], m["E"][0], m["E_imag"][0]))
 '; then ok "viscous sphere table and info --json"; else bad "viscous table: $(tail -2 run.txt)"; fi
 
+# cavity-modes response: R(sigma) by forced solves, CSV.
+expect_error "response without --ekman" "needs --ekman" "$BIN" response sphere --radius 1 --sigma 0.5:1.5:3 -o out.h5
+expect_error "response without --sigma" "needs --sigma" "$BIN" response sphere --radius 1 --ekman 1e-2 -o out.h5
+expect_error "--sigma on a table command" "belong to 'cavity-modes response" "$BIN" sphere --radius 1 --ekman 1e-2 --sigma 0:1:3 -o out.h5
+expect_error "malformed --sigma" "is not FROM:TO:N" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 1:0.5:3 -o out.h5
+if "$BIN" response sphere --radius 1 --ekman 1e-2 "${small[@]}" --sigma 0.5:1.5:11 --sigma-imag 0.2 -o resp.csv > resp.txt 2>&1 &&
+   [ ! -e resp.csv.tmp* ] && python3 -c '
+import csv, math
+rows = [r for r in csv.reader(l for l in open("resp.csv") if not l.startswith("#"))]
+assert rows[0] == ["sigma_re", "sigma_im", "R_re", "R_im"], rows[0]
+vals = [[float(x) for x in r] for r in rows[1:]]
+assert len(vals) == 11 and all(math.isfinite(x) for r in vals for x in r)
+peak = max(vals, key=lambda r: math.hypot(r[2], r[3]))
+print("response: |R| peaks at sigma = %.2f%+.2fi (the damped spin-over mode is near 1)" % (peak[0], peak[1]))
+assert abs(peak[0] - 1) <= 0.15
+'; then ok "response CSV"; else bad "response: $(tail -2 resp.txt)"; fi
+
 # Distributed: the same table with mpirun -n 1 and -n 2 (PETSc's distributed matrices, parallel MUMPS).
 if command -v mpirun > /dev/null; then
   export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
