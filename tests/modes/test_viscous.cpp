@@ -199,3 +199,28 @@ TEST(ViscousResponse, PoleAndResidueAreTheDampedModes) {
               mode.residue.imag(), residue.real(), residue.imag(), err);
   EXPECT_LE(err, 1e-7);
 }
+
+// The strong-viscosity end (Kononov 1999 after (18), from Chernousko 1968): for Re ≪ 1 the fluid's moment is
+// −ρ Re P¹ ω̇ with P¹ from a Stokes problem. In a sphere the Stokes flow driven by −ω̇ × r with no slip is
+// (ω̇ × r)(R² − r²)/(10ν), whose moment gives P¹ = 8πR⁷/525 per unit ρ/ν. In our units (ρ = ω0 = R = 1, ν = Ek) the
+// same limit of the response is R(0) = i (8π/525)/Ek + O(Ek⁻²): the modes become Stokes modes λ_l = i Ek μ_l, and
+// R(0) = Σ E_l/(0 − λ_l) = (i/Ek) Σ E_l/μ_l (docs/viscous.md, "Strong viscosity").
+TEST(ViscousResponse, StrongViscosityIsTheStokesLimit) {
+  const rc::geometry::ShapeSpec sphere{"sphere", {{"radius", 1.0}}, {}};
+  const double P1 = 8 * kPi / 525;
+  double previous = 0;
+  for (double ek : {1e2, 1e3}) {
+    rc::geometry::MeshOptions m;
+    m.order = 0;
+    const auto R = cavity_response(sphere, viscous_mesh_defaults(sphere, ek, m), ek, {cd(0, 0)});
+    const cd scaled = ek * R[0];
+    const double err = std::abs(scaled - cd(0, P1)) / P1;
+    std::printf("Ek %.0e: Ek R(0) = %.10f%+.10fi, Stokes limit %.10fi, relative difference %.2e\n", ek,
+                scaled.real(), scaled.imag(), P1, err);
+    if (previous > 0) {
+      EXPECT_LE(err, previous / 5) << "the difference must fall like 1/Ek";
+    }
+    previous = err;
+  }
+  EXPECT_LE(previous, 1e-4);
+}
