@@ -56,7 +56,7 @@ struct StewartsonMode {
   }
 };
 
-ModeTable viscous_table(const rc::geometry::ShapeSpec& shape, double ekman) {
+ModeTable viscous_table(const rc::geometry::ShapeSpec& shape, double ekman, double mesh_size = 0) {
   TableRequest ideal;
   ideal.shape = shape;
   ideal.mesh.order = 6;
@@ -65,6 +65,7 @@ ModeTable viscous_table(const rc::geometry::ShapeSpec& shape, double ekman) {
   ViscousTableSettings s;
   s.ekman = ekman;
   s.mesh.order = 0;  // the program's defaults (viscous_mesh_defaults)
+  s.mesh.size = mesh_size;
   s.check_convergence = false;
   return compute_viscous_table(ideal.shape, s, compute_mode_table(ideal), {});
 }
@@ -223,4 +224,48 @@ TEST(ViscousResponse, StrongViscosityIsTheStokesLimit) {
     previous = err;
   }
   EXPECT_LE(previous, 1e-4);
+}
+
+// The spheroid's coupling mode (SPEC §2: λ0 = 2a²/(a² + c²)) is the linear flow of p = −z r, like the sphere's;
+// its boundary-layer λ1 from the closed form, and the full solver approaching it as Ek → 0.
+TEST(ViscousSpheroid, OblateCouplingModeApproachesTheBoundaryLayerLimit) {
+  const double a = 1, c = 0.5;
+  const auto x = exact::spheroid(a, c);
+  const double lambda0 = x.mode.lambda, D = 4 - lambda0 * lambda0;
+  // p = −z r: p_r = −z, p/r = −z, p_z = −r (SPEC §2's V).
+  const ModeVelocity mode = [&](double r, double z) -> std::array<cd, 3> {
+    return {-I * (lambda0 * -z + 2 * -z) / D, cd((2 * -z + lambda0 * -z) / D), I / lambda0 * -r};
+  };
+  // ‖V‖² = 2π ∫∫ |V|² r dr dz over the half-ellipse, by Gauss panels in (ρ, θ) with r = aρ cos θ, z = cρ sin θ.
+  const auto arc = ellipse_wall(1, 1, 64);  // a unit half-circle: its points give θ and its weights dθ
+  double n2 = 0, f = 0;
+  const auto radial = cylinder_wall(1.0, 1.0, 32);  // its first segment: a Gauss rule on ρ in [0, 1]
+  for (std::size_t i = 0; i < radial.size() / 3; ++i)
+    for (const auto& p : arc) {
+      const double rho = radial[i].r, theta = std::atan2(p.z, p.r);
+      const double r = a * rho * std::cos(theta), z = c * rho * std::sin(theta);
+      const double w = radial[i].weight * p.weight * a * c * rho * r;  // dr dz = a c ρ dρ dθ, times r
+      const auto V = mode(r, z);
+      n2 += (std::norm(V[0]) + std::norm(V[1]) + std::norm(V[2])) * w;
+      f += std::imag(-z * (V[0] - I * V[1]) + r * V[2]) * w;  // (e1 × r, V) = iπ f, f real times i here
+    }
+  n2 *= 2 * kPi;
+  const double E = 2 * std::pow(kPi * f, 2) / n2;
+  const cd limit = boundary_layer_correction(lambda0, ellipse_wall(a, c, 3200), mode, n2);
+  std::printf("spheroid c/a = 0.5: lambda0 %.6f, E of the closed-form fields %.10f (exact %.10f), lambda1 = %.5f%+.5fi\n",
+              lambda0, E, x.mode.E, limit.real(), limit.imag());
+  ASSERT_LE(std::abs(E - x.mode.E) / x.mode.E, 1e-8);
+  double previous_gap = 0;
+  for (double ek : {1e-4, 1e-5}) {
+    const ModeTable t = viscous_table({"spheroid", {{"a", a}, {"c", c}}, {}}, ek, 0.125);  // default: c/8
+    const double slope = t.decay[0] / std::sqrt(ek), gap = std::abs(slope - limit.imag()) / limit.imag();
+    std::printf("Ek %.0e: lambda %.9f decay %.9f, decay/Ek^1/2 %.5f (%.1f %% from the limit), E %.6f%+.6fi (ideal %.6f), "
+                "%.1f s\n", ek, t.lambda[0], t.decay[0], slope, 100 * gap, t.E[0], t.E_imag[0], x.mode.E, t.wall_seconds);
+    EXPECT_NEAR(t.lambda[0], lambda0, 5 * std::abs(limit) * std::sqrt(ek));
+    if (previous_gap > 0) {
+      EXPECT_LE(gap, 0.7 * previous_gap) << "decay/Ek^1/2 does not approach the limit";
+    }
+    previous_gap = gap;
+  }
+  EXPECT_LE(previous_gap, 0.08);
 }
