@@ -19,7 +19,60 @@ double dot(Vec a, Vec b) {
   return s;
 }
 
-// x = a + i b on the real slots (the complex problem's unknowns); the imaginary slots hold −i x.
+double norm(Vec a) {
+  PetscReal s = 0;
+  petsc_check(VecNorm(a, NORM_2, &s), "VecNorm");
+  return s;
+}
+
+// The shift-and-invert operator T v = S⁻¹ M̂ v, S the block of A − τ𝓜 (MUMPS LU). The symmetric form of S
+// (its imaginary rows negated) factorised as LDLᵀ was measured 4× slower than this LU (15 s against 3.5 s on the
+// Ek = 1e-4 sphere): the indefinite saddle point makes MUMPS's 2 × 2 pivoting expensive.
+struct ShiftInvert {
+  const ViscousForms* forms = nullptr;
+  PMat S;
+  PKSP ksp;
+  PVec work;
+};
+
+PetscErrorCode apply_shift_invert(Mat T, Vec x, Vec y) {
+  ShiftInvert* op = nullptr;
+  PetscCall(MatShellGetContext(T, &op));
+  PetscCall(MatMult(op->forms->M, x, op->work));
+  PetscCall(KSPSolve(op->ksp, op->work, y));
+  KSPConvergedReason reason;
+  PetscCall(KSPGetConvergedReason(op->ksp, &reason));
+  PetscCheck(reason >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "the shifted solve failed");
+  return 0;
+}
+
+// S = Â − Re τ M̂ − Im τ (block of i𝓜), factorised once. MUMPS with null-pivot detection (ICNTL 24: a Taylor–Hood
+// triangle with no interior vertex carries a massless spurious pressure mode) and 100 % more workspace than its
+// estimate (ICNTL 14: the zero pressure block makes it delay many pivots, about 24 000 of 200 000 on the
+// Ek = 1e-4 sphere; the default 20 % overran, INFO(1) = −9). Options under -viscous_st_ override both.
+void factorise(ShiftInvert& op, std::complex<double> target, MPI_Comm comm) {
+  petsc_check(MatDuplicate(op.forms->A, MAT_COPY_VALUES, op.S.out()), "MatDuplicate");
+  petsc_check(MatAXPY(op.S, -target.real(), op.forms->M, DIFFERENT_NONZERO_PATTERN), "MatAXPY");
+  petsc_check(MatAXPY(op.S, -target.imag(), op.forms->iM, DIFFERENT_NONZERO_PATTERN), "MatAXPY");
+  PC pc;
+  Mat F;
+  petsc_check(KSPCreate(comm, op.ksp.out()), "KSPCreate");
+  petsc_check(KSPSetOptionsPrefix(op.ksp, "viscous_st_"), "KSPSetOptionsPrefix");
+  petsc_check(KSPSetOperators(op.ksp, op.S, op.S), "KSPSetOperators");
+  petsc_check(KSPSetType(op.ksp, KSPPREONLY), "KSPSetType");
+  petsc_check(KSPGetPC(op.ksp, &pc), "KSPGetPC");
+  petsc_check(PCSetType(pc, PCLU), "PCSetType");
+  petsc_check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
+  petsc_check(PCFactorSetUpMatSolverType(pc), "PCFactorSetUpMatSolverType");
+  petsc_check(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
+  petsc_check(MatMumpsSetIcntl(F, 24, 1), "MatMumpsSetIcntl");
+  petsc_check(MatMumpsSetIcntl(F, 14, 100), "MatMumpsSetIcntl");
+  petsc_check(KSPSetFromOptions(op.ksp), "KSPSetFromOptions");
+  petsc_check(KSPSetUp(op.ksp), "the LU factorisation of the shifted viscous pencil (MUMPS)");
+  petsc_check(MatCreateVecs(op.forms->M, op.work.out(), nullptr), "MatCreateVecs");
+}
+
+// x = a + ib on the real slots (the complex problem's unknowns). E_c = π (fᵀx)² / xᵀ𝓜x.
 std::complex<double> coupling_residue(const ViscousForms& forms, Vec xr, Vec xi) {
   PVec a, b, Ma, Mb;
   for (PVec* v : {&a, &b, &Ma, &Mb}) petsc_check(VecDuplicate(xr, v->out()), "VecDuplicate");
@@ -33,71 +86,103 @@ std::complex<double> coupling_residue(const ViscousForms& forms, Vec xr, Vec xi)
   return std::numbers::pi * fx * fx / xMx;
 }
 
+// The block eigenvector X = P + iQ of (Â, M̂) for λ: ‖ÂX − λM̂X‖ / (|λ| ‖X‖) in real arithmetic.
+double block_residual(const ViscousForms& forms, Vec P, Vec Q, std::complex<double> lambda) {
+  PVec AP, AQ, MP, MQ;
+  for (PVec* v : {&AP, &AQ, &MP, &MQ}) petsc_check(VecDuplicate(P, v->out()), "VecDuplicate");
+  petsc_check(MatMult(forms.A, P, AP), "MatMult");
+  petsc_check(MatMult(forms.A, Q, AQ), "MatMult");
+  petsc_check(MatMult(forms.M, P, MP), "MatMult");
+  petsc_check(MatMult(forms.M, Q, MQ), "MatMult");
+  // Re: ÂP − λr M̂P + λi M̂Q;  Im: ÂQ − λr M̂Q − λi M̂P.
+  petsc_check(VecAXPBYPCZ(AP, -lambda.real(), lambda.imag(), 1.0, MP, MQ), "VecAXPBYPCZ");
+  petsc_check(VecAXPBYPCZ(AQ, -lambda.real(), -lambda.imag(), 1.0, MQ, MP), "VecAXPBYPCZ");
+  const double r = std::hypot(norm(AP), norm(AQ)), x = std::hypot(norm(P), norm(Q));
+  return r / (std::abs(lambda) * x);
+}
+
+// Which problem an eigenvector of T belongs to: the wanted one has the pairs (x, −ix), i.e. odd = −i·even.
+bool is_wanted_pair_structure(Vec Xr, Vec Xi) {
+  const PetscScalar *re = nullptr, *im = nullptr;
+  PetscInt lo = 0, hi = 0;
+  petsc_check(VecGetOwnershipRange(Xr, &lo, &hi), "VecGetOwnershipRange");
+  petsc_check(VecGetArrayRead(Xr, &re), "VecGetArrayRead");
+  petsc_check(VecGetArrayRead(Xi, &im), "VecGetArrayRead");
+  double local[2] = {0, 0};  // ‖odd + i even‖², ‖odd − i even‖²
+  for (PetscInt g = lo; g + 1 < hi; g += 2) {  // pairs never straddle ranks (viscous_forms.cpp)
+    const std::complex<double> even(re[g - lo], im[g - lo]), odd(re[g + 1 - lo], im[g + 1 - lo]);
+    local[0] += std::norm(odd + std::complex<double>(0, 1) * even);
+    local[1] += std::norm(odd - std::complex<double>(0, 1) * even);
+  }
+  petsc_check(VecRestoreArrayRead(Xr, &re), "VecRestoreArrayRead");
+  petsc_check(VecRestoreArrayRead(Xi, &im), "VecRestoreArrayRead");
+  double global[2] = {0, 0};
+  MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_SUM, PetscObjectComm(reinterpret_cast<PetscObject>(Xr)));
+  return global[0] < global[1];
+}
+
 }  // namespace
 
-std::vector<ViscousMode> viscous_modes_near(const ViscousForms& forms, double target,
+std::vector<ViscousMode> viscous_modes_near(const ViscousForms& forms, std::complex<double> target,
                                             const ViscousSolveSettings& settings) {
-  MPI_Comm comm = PETSC_COMM_WORLD;
-  petsc_check(PetscObjectGetComm(reinterpret_cast<PetscObject>(forms.A.get()), &comm), "PetscObjectGetComm");
+  MPI_Comm comm = PetscObjectComm(reinterpret_cast<PetscObject>(forms.A.get()));
+  ShiftInvert op;
+  op.forms = &forms;
+  factorise(op, target, comm);
+  PetscInt local = 0, global = 0;
+  petsc_check(MatGetLocalSize(forms.A, &local, nullptr), "MatGetLocalSize");
+  petsc_check(MatGetSize(forms.A, &global, nullptr), "MatGetSize");
+  PMat T;
+  petsc_check(MatCreateShell(comm, local, local, global, global, &op, T.out()), "MatCreateShell");
+  petsc_check(MatShellSetOperation(T, MATOP_MULT, reinterpret_cast<void (*)(void)>(apply_shift_invert)),
+              "MatShellSetOperation");
+
   PEPS eps;
   petsc_check(EPSCreate(comm, eps.out()), "EPSCreate");
-  // Own prefix (-viscous_eps_..., -viscous_st_...) and two MUMPS defaults the saddle-point pencil needs:
-  //  * null-pivot detection (ICNTL 24), because a Taylor–Hood triangle with no interior vertex (where the wall
-  //    meets the axis) carries a spurious pressure mode that parallel MUMPS may otherwise report as a singular
-  //    matrix; that mode has no mass and never touches the eigenvalues sought;
-  //  * 100 % more workspace than the analysis estimates (ICNTL 14), because the zero pressure block makes
-  //    MUMPS delay many pivots (measured: 24 000 of 200 000), which overruns the default 20 %.
   petsc_check(EPSSetOptionsPrefix(eps, "viscous_"), "EPSSetOptionsPrefix");
-  for (auto [name, value] : {std::pair{"-viscous_st_mat_mumps_icntl_24", "1"}, {"-viscous_st_mat_mumps_icntl_14", "100"}}) {
-    PetscBool given = PETSC_FALSE;
-    petsc_check(PetscOptionsHasName(nullptr, nullptr, name, &given), "PetscOptionsHasName");
-    if (!given) petsc_check(PetscOptionsSetValue(nullptr, name, value), "PetscOptionsSetValue");
-  }
-  petsc_check(EPSSetOperators(eps, forms.A, forms.M), "EPSSetOperators");
-  petsc_check(EPSSetProblemType(eps, EPS_GNHEP), "EPSSetProblemType");
+  petsc_check(EPSSetOperators(eps, T, nullptr), "EPSSetOperators");
+  petsc_check(EPSSetProblemType(eps, EPS_NHEP), "EPSSetProblemType");
   petsc_check(EPSSetType(eps, EPSKRYLOVSCHUR), "EPSSetType");
-  petsc_check(EPSSetTarget(eps, target), "EPSSetTarget");
-  petsc_check(EPSSetWhichEigenpairs(eps, EPS_TARGET_MAGNITUDE), "EPSSetWhichEigenpairs");
+  petsc_check(EPSSetWhichEigenpairs(eps, EPS_LARGEST_MAGNITUDE), "EPSSetWhichEigenpairs");
+  // Each wanted θ comes with its conjugate: ask for both.
   petsc_check(EPSSetDimensions(eps, 2 * settings.pairs, PETSC_DEFAULT, PETSC_DEFAULT), "EPSSetDimensions");
   petsc_check(EPSSetTolerances(eps, settings.tolerance, settings.max_iterations), "EPSSetTolerances");
-  ST st;
-  KSP ksp;
-  PC pc;
-  petsc_check(EPSGetST(eps, &st), "EPSGetST");
-  petsc_check(STSetType(st, STSINVERT), "STSetType");
-  petsc_check(STGetKSP(st, &ksp), "STGetKSP");
-  petsc_check(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
-  petsc_check(KSPGetPC(ksp, &pc), "KSPGetPC");
-  petsc_check(PCSetType(pc, PCLU), "PCSetType");
-  petsc_check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
   petsc_check(EPSSetFromOptions(eps), "EPSSetFromOptions");
-  petsc_check(EPSSolve(eps), "EPSSolve (shift-and-invert of the viscous pencil; a singular factorisation means "
-                             "the target sits on an eigenvalue or the mesh is degenerate)");
+  petsc_check(EPSSolve(eps), "EPSSolve (shift-and-invert of the viscous pencil)");
   EPSConvergedReason reason;
   petsc_check(EPSGetConvergedReason(eps, &reason), "EPSGetConvergedReason");
   PetscInt converged = 0;
   petsc_check(EPSGetConverged(eps, &converged), "EPSGetConverged");
+  const std::string near = "near lambda = " + std::to_string(target.real()) + " + " + std::to_string(target.imag()) + "i";
   if (reason < 0 && converged == 0)
-    throw std::runtime_error("SLEPc did not converge near lambda = " + std::to_string(target) +
-                             " (reason " + std::to_string(reason) + ")");
+    throw std::runtime_error("SLEPc did not converge " + near + " (reason " + std::to_string(reason) + ")");
 
-  PVec xr, xi;
-  petsc_check(MatCreateVecs(forms.A, xr.out(), nullptr), "MatCreateVecs");
-  petsc_check(VecDuplicate(xr, xi.out()), "VecDuplicate");
+  PVec Xr, Xi, minusXi;
+  petsc_check(MatCreateVecs(forms.A, Xr.out(), nullptr), "MatCreateVecs");
+  petsc_check(VecDuplicate(Xr, Xi.out()), "VecDuplicate");
+  petsc_check(VecDuplicate(Xr, minusXi.out()), "VecDuplicate");
   std::vector<ViscousMode> modes;
   for (PetscInt k = 0; k < converged; ++k) {
-    PetscScalar kr = 0, ki = 0;
-    petsc_check(EPSGetEigenpair(eps, k, &kr, &ki, xr, xi), "EPSGetEigenpair");
-    if (!(ki > 0)) continue;  // the conjugate problem's copy (or a real eigenvalue: none is physical with Ek > 0)
+    PetscScalar tr = 0, ti = 0;
+    petsc_check(EPSGetEigenpair(eps, k, &tr, &ti, Xr, Xi), "EPSGetEigenpair");
+    if (!(ti > 0)) continue;  // one of each conjugate pair; the other is its mirror image
+    std::complex<double> theta(tr, ti);
+    Vec imag_part = Xi;
+    if (!is_wanted_pair_structure(Xr, Xi)) {  // the conjugate problem's; the wanted one is the conjugate pair
+      theta = std::conj(theta);
+      petsc_check(VecAXPBY(minusXi, -1.0, 0.0, Xi), "VecAXPBY");
+      imag_part = minusXi;
+    }
     ViscousMode m;
-    m.lambda = {kr, ki};
-    petsc_check(EPSComputeError(eps, k, EPS_ERROR_RELATIVE, &m.residual), "EPSComputeError");
-    m.residue = coupling_residue(forms, xr, xi);
+    m.lambda = target + 1.0 / theta;
+    if (!(m.lambda.imag() > 0)) continue;  // not a damped mode of the wanted problem (none exists with Ek > 0)
+    m.residue = coupling_residue(forms, Xr, imag_part);
+    m.residual = block_residual(forms, Xr, imag_part, m.lambda);
     modes.push_back(m);
   }
   if (modes.empty())
-    throw std::runtime_error("SLEPc found no damped mode near lambda = " + std::to_string(target) + " (" +
-                             std::to_string(converged) + " eigenpairs converged)");
+    throw std::runtime_error("SLEPc found no damped mode " + near + " (" + std::to_string(converged) +
+                             " eigenpairs converged)");
   std::sort(modes.begin(), modes.end(), [&](const ViscousMode& a, const ViscousMode& b) {
     return std::abs(a.lambda - target) < std::abs(b.lambda - target);
   });

@@ -1,9 +1,12 @@
-// Damped inertial modes near a real target: SLEPc's Krylov–Schur with shift-and-invert on the real block
-// pencil (Â, M̂) of viscous_forms.hpp, MUMPS LU of Â − σM̂ (distributed under mpirun).
+// Damped inertial modes near a complex target τ: SLEPc's Krylov–Schur on T = (block of A − τ𝓜)⁻¹ M̂, the
+// shift-and-invert operator of a complex shift written in real arithmetic (viscous_forms.hpp; MUMPS LU,
+// distributed under mpirun).
 //
-// A real shift serves because the wanted eigenvalues λ = λ_r + i·decay lie near the real axis (decay ~ Ek^{1/2}
-// for the modes that continue the ideal ones); each appears with its conjugate, the eigenvalue of the conjugate
-// problem, which is dropped (docs/viscous.md, "Why a real block form").
+// The block of the complex matrix B = A − τ𝓜 acts as B on the pairs (x, −ix) and as its conjugate on the pairs
+// (y, iy). So T has the eigenvalues θ = 1/(λ − τ) of the wanted problem and their conjugates, which belong to the
+// conjugate problem; an eigenvector's pair structure tells which is which, and λ = τ + 1/θ. A target near the
+// damped mode (the ideal λ plus a guess of its decay) makes that θ by far the largest: the Krylov–Schur iteration
+// then needs few solves (docs/viscous.md, "Discretisation and solver").
 #pragma once
 
 #include "viscous_forms.hpp"
@@ -17,18 +20,18 @@ struct ViscousMode {
   std::complex<double> lambda;    // e^{iλt}: Re λ the frequency in the rotating frame, Im λ = decay ≥ 0
   std::complex<double> residue;   // E_c = π (fᵀx)² / xᵀ𝓜x (bilinear, unconjugated): the coupling whose Ek → 0
                                   // limit is the ideal E (viscous_forms.hpp)
-  double residual = 0;            // SLEPc's relative residual ‖Âx − λM̂x‖ / (|λ| ‖x‖)
+  double residual = 0;            // ‖A x − λ 𝓜 x‖ / (|λ| ‖x‖), computed from the matrices
 };
 
 struct ViscousSolveSettings {
-  int pairs = 2;             // complex eigenvalues wanted near the target (each comes with its conjugate)
+  int pairs = 2;             // damped modes wanted near the target
   double tolerance = 1e-10;  // SLEPc's relative tolerance
   int max_iterations = 500;
 };
 
-// The damped modes closest to the real target σ, sorted by distance from it. Throws std::runtime_error when
-// SLEPc fails, converges to fewer than one physical pair, or the factorisation is singular.
-std::vector<ViscousMode> viscous_modes_near(const ViscousForms& forms, double target,
+// The damped modes closest to the complex target, sorted by distance from it. Throws std::runtime_error when
+// SLEPc fails, converges to no physical mode, or the factorisation fails.
+std::vector<ViscousMode> viscous_modes_near(const ViscousForms& forms, std::complex<double> target,
                                             const ViscousSolveSettings& settings);
 
 }  // namespace rc::modes

@@ -183,7 +183,7 @@ TEST(ViscousResponse, PoleAndResidueAreTheDampedModes) {
   const ViscousForms forms = assemble_viscous_forms(space, 0.0, ek, PETSC_COMM_WORLD);
   ViscousSolveSettings settings;
   settings.tolerance = 1e-12;
-  const auto modes = viscous_modes_near(forms, 1.0, settings);
+  const auto modes = viscous_modes_near(forms, {1.0, 0.05}, settings);
   const auto& mode = *std::max_element(modes.begin(), modes.end(), [](const auto& a, const auto& b) {
     return std::abs(a.residue) < std::abs(b.residue);
   });
