@@ -37,6 +37,30 @@ struct Solved {
 // boundary-layer damped (large Ek).
 double decay_guess(double ekman) { return std::min(2 * std::sqrt(ekman), 0.5); }
 
+// Two ideal targets can lead to the same damped mode (measured on the cone: two neighbouring unconverged ideal
+// clusters, one damped mode): it is kept once, with its first target, and the drop is reported.
+void drop_repeats(Solved& solved, std::vector<double>& targets, const std::function<void(const std::string&)>& report) {
+  Solved kept;
+  kept.unknowns = solved.unknowns;
+  std::vector<double> kept_targets;
+  for (std::size_t i = 0; i < solved.rows.size(); ++i) {
+    const auto& m = solved.rows[i];
+    const bool repeat = std::any_of(kept.rows.begin(), kept.rows.end(), [&](const ViscousMode& k) {
+      return std::abs(k.lambda - m.lambda) <= 1e-8 * std::abs(k.lambda);
+    });
+    if (repeat) {
+      if (report)
+        report(fmt::format("the ideal mode at lambda = {:.6f} continues into the damped mode {:.6f}{:+.6f}i, already "
+                           "in the table: kept once", targets[i], m.lambda.real(), m.lambda.imag()));
+      continue;
+    }
+    kept.rows.push_back(m);
+    kept_targets.push_back(targets[i]);
+  }
+  solved = std::move(kept);
+  targets = std::move(kept_targets);
+}
+
 // Anisotropic wall layers where they fit, else (or if gmsh's layers give an inverted element) isotropic grading.
 geometry::MeridianMesh viscous_mesh(const geometry::ShapeSpec& shape, geometry::MeshOptions& mesh) {
   if (mesh.wall_layer > 0) {
@@ -113,7 +137,8 @@ ModeTable compute_viscous_table(const geometry::ShapeSpec& shape, const ViscousT
       if (report) report(fmt::format("[{:6.2f} s] {} mode {}/{}", seconds(), what, done, total));
     };
   };
-  const Solved fine = solve_targets(shape, mesh, ideal.centroid_z, s, targets, progress("viscous"));
+  Solved fine = solve_targets(shape, mesh, ideal.centroid_z, s, targets, progress("viscous"));
+  drop_repeats(fine, targets, report);
 
   ModeTable t = ideal;
   t.ekman = s.ekman;
