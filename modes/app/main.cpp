@@ -85,7 +85,7 @@ void add_common_options(CLI::App* cmd, TableRequest& req, std::string& output, b
   cmd->add_option("--ekman", viscous.ekman,
                   "viscous fluid with Ekman number Ek = nu/(omega0 L^2): damped modes (decay, complex coupling) "
                   "continuing the ideal ones, on a wall-graded Taylor-Hood mesh (docs/viscous.md); --order, "
-                  "--mesh-size then set that mesh (default order 4, d/4)");
+                  "--mesh-size then set that mesh (default order 6, d/8)");
   cmd->add_option("--wall-size", viscous.wall_size,
                   "with --ekman: element size at the wall (default Ek^(1/2))");
   cmd->add_option("--sigma", viscous.sigma,

@@ -21,10 +21,11 @@ struct ViscousTableSettings {
   bool check_convergence = true;
 };
 
-// Defaults where the settings leave 0 (docs/viscous.md, "Meshes"): order 4, interior size d/4 (d the smallest
-// dimension), wall size Ek^{1/2} (capped at the interior size). Throws std::runtime_error, with one line naming
-// the mesh it would take, when Ek is outside [1e-8, 1e3] or a given wall size is coarser than 4 Ek^{1/2}
-// (an unresolved Ekman layer).
+// Defaults where the settings leave 0 (docs/viscous.md, "Discretisation and solver"): order 6, interior size d/8
+// (d the smallest dimension; sections: the geometry's default), first wall layer Ek^{1/2} (capped at the interior
+// size), anisotropic layers up to 10 Ek^{1/2} but at most half the interior size for spheres, spheroids and
+// cylinders, isotropic grading otherwise. Throws std::runtime_error, with one line naming the limit, when Ek is
+// outside [1e-8, 1e3] or a given wall size is coarser than 4 Ek^{1/2} (an unresolved Ekman layer).
 geometry::MeshOptions viscous_mesh_defaults(const geometry::ShapeSpec& shape, double ekman,
                                             geometry::MeshOptions mesh);
 
