@@ -32,6 +32,17 @@ assert 0 < m["decay"][0] < 1 and abs(m["lambda"][0] - 1) < 0.05, (m["lambda"], m
 print("Ek = 1e-2 sphere: lambda %.6f decay %.6f E %.6f%+.6fi" % (m["lambda"][0], m["decay"][0], m["E"][0], m["E_imag"][0]))
 '; then ok "viscous sphere table and info --json"; else bad "viscous table: $(tail -2 run.txt)"; fi
 
+# Two ideal cone targets (unconverged ideal clusters) lead to one damped mode: kept once, and said so.
+if "$BIN" cone --radius 1 --height 1 --modes 4 --ekman 1e-3 --order 4 --mesh-size 0.25 --no-convergence-check \
+     -o cone.h5 > cone.txt 2> cone.err && grep -q "kept once" cone.err && "$BIN" info cone.h5 --json > cone.json &&
+   python3 -c '
+import json
+m = json.load(open("cone.json"))["modes"]
+pairs = sorted(zip(m["lambda"], m["decay"]))
+assert all(abs(a[0] - b[0]) + abs(a[1] - b[1]) > 1e-6 for a, b in zip(pairs, pairs[1:])), pairs
+print("cone Ek = 1e-3: %d distinct damped modes from 4 ideal targets" % len(pairs))
+'; then ok "a damped mode reached from two targets is kept once"; else bad "cone repeat: $(tail -2 cone.err)"; fi
+
 # cavity-modes response: R(sigma) by forced solves, CSV.
 expect_error "response without --ekman" "needs --ekman" "$BIN" response sphere --radius 1 --sigma 0.5:1.5:3 -o out.h5
 expect_error "response without --sigma" "needs --sigma" "$BIN" response sphere --radius 1 --ekman 1e-2 -o out.h5
