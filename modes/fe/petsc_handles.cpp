@@ -16,7 +16,7 @@ void petsc_check(PetscErrorCode ierr, const char* what) {
 
 namespace {
 
-// We run serially (PETSC_COMM_SELF). Started outside mpirun, OpenMPI's singleton start-up probes network
+// Serial runs (no mpirun; the default) start MPI as a singleton. Started outside mpirun, OpenMPI's start-up probes network
 // transports and a runtime daemon, which costs ~0.3 s per process — measured: MPI_Init 0.31 s by default,
 // 0.03 s with these settings. Values the user has set are kept; under mpirun nothing is changed.
 void fast_serial_mpi_startup() {
