@@ -170,7 +170,7 @@ void work_precision(const ChainModel& m, const Scene& scene, const BenchOptions&
   r.error = ref.method_difference;
   out.rows.push_back(r);
   if (progress) progress(r);
-  if (!m.has_friction()) {
+  if (!m.dissipative()) {
     // H is conserved without friction (docs/rom.md, "Energy"): its change from y0 to the reference's
     // final state, relative to the size of its parts.
     const EnergyMeter meter(m);
@@ -191,7 +191,7 @@ void work_precision(const ChainModel& m, const Scene& scene, const BenchOptions&
   Eigen::VectorXcd y;
   std::string how;
   const Timing te = time_runs([&] {
-    ModalForm mf = modal_form(w.f, !m.has_friction(), kRealTolerance);
+    ModalForm mf = modal_form(w.f, !m.dissipative(), kRealTolerance);
     if (mf.usable) {
       if (mf.undamped_real && !mf.real) snap_to_imaginary_axis(mf);
       y = modal_state_at(mf, w.y0, w.T);

@@ -12,6 +12,28 @@ namespace {
   throw SceneError(s.file.string() + ": " + key + ": " + cause);
 }
 
+// A viscous table needs the scene's viscosity, and the two must give the same Ekman number
+// Ek = nu/(|omega_k0| L^2) within kEkmanTolerance (docs/rom.md, "Viscous tanks"); an ideal table takes none.
+void check_viscosity(const Scene& scene, const std::string& w, const CavitySpec& cav, const rc::ModeTable& t,
+                     double omega) {
+  const std::string name = cav.table.filename().string();
+  if (cav.viscosity && !t.viscous())
+    fail(scene, w + ".viscosity", "given, but " + name + " is an ideal-fluid table (no ekman); make a viscous one with cavity-modes --ekman");
+  if (!t.viscous()) return;
+  std::ostringstream os;
+  if (!cav.viscosity) {
+    os << name << " is a viscous table (ekman = " << t.ekman << "): give the fluid's viscosity (m^2/s)";
+    fail(scene, w + ".viscosity", os.str());
+  }
+  if (omega == 0) fail(scene, w + ".viscosity", "a viscous tank needs a spinning body (Ek = nu/(omega L^2))");
+  const double ek = *cav.viscosity / (std::abs(omega) * cav.scale * cav.scale);
+  if (std::abs(ek / t.ekman - 1) > kEkmanTolerance) {
+    os << "Ek = nu/(|spin| scale^2) = " << ek << " but " << name << " was made for ekman = " << t.ekman
+       << " (they must agree to " << kEkmanTolerance * 100 << " %)";
+    fail(scene, w + ".viscosity", os.str());
+  }
+}
+
 // Fluid of body k: mass, frozen inertia, centre of mass, kept modes (SPEC §4 scaling).
 void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
                std::vector<FluidMode>& modes, TableCache* tables) {
@@ -27,10 +49,7 @@ void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
   const rc::ModeTable& t = *tp;
   if (t.m != 1) fail(scene, w + ".table", cav.table.string() + " holds m = " + std::to_string(t.m) +
                                  " modes; only m = 1 modes couple to the tilt");
-  if (t.viscous())
-    fail(scene, w + ".table", cav.table.string() + " is a viscous table (ekman = " + std::to_string(t.ekman) +
-                                  "); chain-rom's model (26) takes ideal-fluid tables only (docs/viscous.md, 'Using a "
-                                  "viscous table')");
+  check_viscosity(scene, w, cav, t, b.omega);
   const double rho = cav.density, L = cav.scale;
   const double L3 = L * L * L, L5 = L3 * L * L;
   // SPEC §4: mass ~ rho L^3, A_f, C_f, J_zh, E ~ rho L^5; lambda/omega0 scale-free.
@@ -47,8 +66,9 @@ void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
   // Modes with E = 0 do not couple (e.g. a spheroid's table beyond its single mode): left out.
   std::vector<int> idx;
   const double tiny = 1e-14 * std::max(t.A_f - t.J_zh, 1e-300);
+  // A viscous mode's residue may have a negative real part (docs/viscous.md section 5): kept by its modulus.
   for (std::size_t l = 0; l < t.size(); ++l)
-    if (t.E[l] > tiny) idx.push_back(static_cast<int>(l));
+    if (t.viscous() ? std::hypot(t.E[l], t.E_imag[l]) > tiny : t.E[l] > tiny) idx.push_back(static_cast<int>(l));
   std::size_t keep = idx.size();
   if (cav.modes) {
     if (static_cast<std::size_t>(*cav.modes) > idx.size())
@@ -78,11 +98,24 @@ void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
     m.nu = b.omega - m.lambda;
     // a ~ rho L^4, N^2 ~ rho L^3 (N^2 carries rho so that E = 2a^2/N^2 ~ rho L^5): a/N^2 ~ L.
     m.a_over_N2 = (t.N2[l] != 0) ? L * t.a[l] / t.N2[l] : 0.0;
+    if (t.viscous()) {
+      // Spin -omega mirrors the flow (phi -> -phi) and conjugates it: lambda_c -> -conj(lambda_c), so the
+      // decay scales with |omega| and E_c -> conj(E_c) (docs/rom.md, "Viscous tanks").
+      m.decay = std::abs(b.omega) * t.decay[l];
+      m.E_imag = (b.omega < 0 ? -1 : 1) * rho * L5 * t.E_imag[l];
+    }
     b.E_kept += m.E;
+    b.E_kept_imag += m.E_imag;
     modes.push_back(m);
   }
+  b.ekman = t.ekman;
   b.coverage = b.sum_rule > 0 ? b.E_kept / b.sum_rule : 1.0;
-  if (cav.static_correction) b.E_rem = std::max(0.0, b.sum_rule - b.E_kept);
+  // The residues of all modes sum to the real A_f - J_zh (the response's 1/sigma term involves only the
+  // real mass and divergence matrices), so the remainder of a viscous table is complex too.
+  if (cav.static_correction) {
+    b.E_rem = std::max(0.0, b.sum_rule - b.E_kept);
+    b.E_rem_imag = -b.E_kept_imag;
+  }
 }
 
 }  // namespace
@@ -163,7 +196,12 @@ ChainModel build_model(const Scene& scene, TableCache* tables) {
   for (int k = 0; k < n; ++k) cm.G[k] = cm.bodies[k].C * cm.bodies[k].omega;
 
   cm.M_eff = cm.M;
-  for (int k = 0; k < n; ++k) cm.M_eff(k, k) -= cm.bodies[k].E_kept + cm.bodies[k].E_rem;
+  cm.M_eff_imag.setZero(n);
+  for (int k = 0; k < n; ++k) {
+    cm.M_eff(k, k) -= cm.bodies[k].E_kept + cm.bodies[k].E_rem;
+    cm.M_eff_imag[k] = -(cm.bodies[k].E_kept_imag + cm.bodies[k].E_rem_imag);
+    cm.viscous = cm.viscous || cm.bodies[k].ekman > 0;
+  }
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(cm.M_eff, Eigen::EigenvaluesOnly);
   // Against the inertia M with the fluid frozen, not M_eff itself: M_eff = M - diag(sum E) cancels
   // digits, and below ~1e-13 of M what is left is rounding (a shell of 1e-15 around a sphere).
@@ -177,6 +215,12 @@ ChainModel build_model(const Scene& scene, TableCache* tables) {
     fail(scene, "body", os.str());
   }
   return cm;
+}
+
+Eigen::MatrixXcd ChainModel::M_eff_complex() const {
+  Eigen::MatrixXcd Mc = M_eff.cast<std::complex<double>>();
+  Mc.diagonal().imag() += M_eff_imag;
+  return Mc;
 }
 
 }  // namespace rc::rom

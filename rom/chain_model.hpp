@@ -8,6 +8,7 @@
 
 #include <Eigen/Dense>
 
+#include <complex>
 #include <map>
 #include <string>
 #include <vector>
@@ -21,6 +22,13 @@ struct FluidMode {
   double lambda = 0;        // lambda_kl = omega_k0 * lambda_table (rad/s), seed 000 (21)
   double nu = 0;            // omega_k0 - lambda_kl
   double a_over_N2 = 0;     // a_kl / N_kl^2 (m), converts the scaled coordinate z back to S'
+  // Viscous tables (docs/viscous.md section 1, docs/rom.md "Viscous tanks"): the mode is e^{i lambda_c t} with
+  // lambda_c = lambda + i decay (rad/s), its coupling the complex residue E_c = E + i E_imag. Both 0 when ideal.
+  double E_imag = 0;        // kg m^2
+  double decay = 0;         // omega_k0 * decay_table (1/s)
+  std::complex<double> E_c() const { return {E, E_imag}; }
+  std::complex<double> lambda_c() const { return {lambda, decay}; }
+  std::complex<double> nu_c() const { return {nu, -decay}; }  // omega_k0 - lambda_c
 };
 
 struct BodyModel {
@@ -30,6 +38,8 @@ struct BodyModel {
   double m_f = 0, A_f = 0, C_f = 0, J_zh = 0, sum_rule = 0;  // scaled fluid data (A_f, J_zh about the centroid)
   double E_kept = 0;         // sum of the kept E_kl
   double E_rem = 0;          // static-correction inertia (0 unless static_correction)
+  double E_kept_imag = 0, E_rem_imag = 0;  // imaginary parts of the two (viscous tables); E_rem_imag = -E_kept_imag
+  double ekman = 0;          // the table's Ek (0: ideal fluid)
   double coverage = 0;       // E_kept / sum_rule
   std::string table;
 };
@@ -45,11 +55,20 @@ struct ChainModel {
   Eigen::MatrixXd K;     // -diag(a_k g) (fixed only) + elastic joints, seed 000 (27)
   Eigen::MatrixXd D;     // joint friction, seed 002 (43)
   Eigen::VectorXd G;     // C_k omega_k0 (gyroscopic term of (26))
-  Eigen::MatrixXd M_eff; // M - diag(sum_l E_kl + E_rem_k): inertia seen by u-double-dot
+  Eigen::MatrixXd M_eff; // M - diag(sum_l E_kl + E_rem_k): inertia seen by u-double-dot (its real part)
+  Eigen::VectorXd M_eff_imag;  // -Im(sum_l E_kl + E_rem_k) per body: 0 for ideal tables and with static_correction
+  bool viscous = false;  // some cavity has a viscous table (complex lambda_kl, E_kl)
   int size() const { return n; }
   int n_modes() const { return static_cast<int>(modes.size()); }
   bool has_friction() const { return D.cwiseAbs().maxCoeff() > 0; }
+  // Friction or viscous fluid: roots leave the real axis, and stable means no growing root.
+  bool dissipative() const { return has_friction() || viscous; }
+  // M_eff + i diag(M_eff_imag): the complex inertia (26) puts on u-double-dot.
+  Eigen::MatrixXcd M_eff_complex() const;
 };
+
+// Relative tolerance between the scene's Ek = nu/(|omega_k0| L^2) and a viscous table's ekman.
+inline constexpr double kEkmanTolerance = 0.01;
 
 // Mode tables read once and kept, for callers that build many models from one scene (sweeps).
 // get() reads a file the first time it is asked for (throws what rc::read_mode_table throws);

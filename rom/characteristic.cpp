@@ -23,11 +23,11 @@ Terms evaluate(const ChainModel& m, cd sigma) {
   Eigen::MatrixXcd gyro = Eigen::MatrixXcd::Zero(n, n), fluid = Eigen::MatrixXcd::Zero(n, n);
   for (int k = 0; k < n; ++k) {
     gyro(k, k) = m.G[k] / sigma;
-    fluid(k, k) = m.bodies[k].E_rem;  // static correction: frequency-independent inertia
+    fluid(k, k) = cd(m.bodies[k].E_rem, m.bodies[k].E_rem_imag);  // static correction: frequency-independent inertia
   }
   for (const auto& md : m.modes) {
     const double w0 = m.bodies[md.body].omega;
-    fluid(md.body, md.body) += (sigma + w0) * md.E / (sigma + w0 - md.lambda);
+    fluid(md.body, md.body) += (sigma + w0) * md.E_c() / (sigma + w0 - md.lambda_c());
   }
   Eigen::MatrixXcd damp = (-I / sigma) * m.D.cast<cd>();
   Eigen::MatrixXcd stiff = (-1.0 / (sigma * sigma)) * m.K.cast<cd>();
@@ -39,13 +39,25 @@ Terms evaluate(const ChainModel& m, cd sigma) {
 
 Eigen::MatrixXcd characteristic_matrix(const ChainModel& m, cd sigma) { return evaluate(m, sigma).Phi; }
 
+Eigen::MatrixXcd characteristic_derivative(const ChainModel& m, cd sigma) {
+  const int n = m.n;
+  const cd I(0, 1);
+  Eigen::MatrixXcd d = (I / (sigma * sigma)) * m.D.cast<cd>() + (2.0 / (sigma * sigma * sigma)) * m.K.cast<cd>();
+  for (int k = 0; k < n; ++k) d(k, k) -= m.G[k] / (sigma * sigma);
+  for (const auto& md : m.modes) {
+    const cd p = sigma + m.bodies[md.body].omega - md.lambda_c();
+    d(md.body, md.body) += md.E_c() * md.lambda_c() / (p * p);  // -d/dsigma of (sigma + w0) E/(sigma + w0 - lambda)
+  }
+  return d;
+}
+
 double characteristic_residual(const ChainModel& m, cd sigma, double scale) {
   const double tiny = 1e-9 * scale;
   const bool has_inverse_terms =
       m.G.cwiseAbs().maxCoeff() > 0 || m.has_friction() || m.K.cwiseAbs().maxCoeff() > 0;
   if (has_inverse_terms && std::abs(sigma) <= tiny) return std::numeric_limits<double>::quiet_NaN();
   for (const auto& md : m.modes)
-    if (std::abs(sigma + m.bodies[md.body].omega - md.lambda) <= tiny)
+    if (std::abs(sigma + m.bodies[md.body].omega - md.lambda_c()) <= tiny)
       return std::numeric_limits<double>::quiet_NaN();
   Terms t = evaluate(m, sigma);
   Eigen::BDCSVD<Eigen::MatrixXcd> svd(t.Phi);  // values only; Jacobi is O(n^3) with a large constant: 12 s at n = 100

@@ -13,6 +13,10 @@ namespace rc::rom {
 
 Eigen::MatrixXcd characteristic_matrix(const ChainModel& m, std::complex<double> sigma);
 
+// dPhi/dsigma, term by term from characteristic_matrix:
+//   -diag(C_k w_k0)/sigma^2 + i D/sigma^2 + 2K/sigma^3 + diag( sum_l E_kl lambda_kl/(sigma + w_k0 - lambda_kl)^2 ).
+Eigen::MatrixXcd characteristic_derivative(const ChainModel& m, std::complex<double> sigma);
+
 // Scaled residual of det Phi(sigma) = 0: smallest singular value of Phi over the sum of the
 // 2-norms of its terms (a backward error: 0 at an exact root, O(1) far from one). Returns NaN
 // where (22) is undefined: sigma = 0 (with 1/sigma terms present) or sigma at a pole

@@ -12,7 +12,9 @@ Eigen::VectorXd fluid_weights(const ChainModel& m) {
   for (int l = 0; l < m.n_modes(); ++l) {
     const FluidMode& md = m.modes[l];
     const double w0 = m.bodies[md.body].omega;
-    if (w0 == 0) c[l] = md.E;
+    // A viscous mode (complex lambda, E) has no such weight: the modal truncation keeps no fluid energy.
+    if (md.decay != 0 || md.E_imag != 0) c[l] = std::numeric_limits<double>::quiet_NaN();
+    else if (w0 == 0) c[l] = md.E;
     else if (md.lambda != 0) c[l] = -md.E * md.nu / md.lambda;
     else c[l] = std::numeric_limits<double>::quiet_NaN();
   }

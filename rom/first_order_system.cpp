@@ -11,25 +11,36 @@ Eigen::Matrix<std::complex<Real>, Eigen::Dynamic, Eigen::Dynamic> first_order_ma
   using CMat = Eigen::Matrix<C, Eigen::Dynamic, Eigen::Dynamic>;
   const C I(0, 1);
   const int n = m.n, nm = m.n_modes(), D = 2 * n + nm;
-  const Eigen::LDLT<RMat> ldlt(m.M_eff.cast<Real>());
-  const RMat MiK = ldlt.solve(m.K.cast<Real>());
-  const RMat Minv = ldlt.solve(RMat::Identity(n, n));
-  Eigen::Matrix<Real, Eigen::Dynamic, 1> Gamma = m.G.cast<Real>();  // C_k w_k0 - sum_l E_kl lambda_kl
-  for (const auto& md : m.modes) Gamma[md.body] -= Real(md.E) * Real(md.lambda);
+  // M_eff^{-1}: real (LDL^T) unless a viscous tank's kept residues leave an imaginary part on it.
+  CMat Minv, MiK;
+  if (m.M_eff_imag.cwiseAbs().maxCoeff() == 0) {
+    const Eigen::LDLT<RMat> ldlt(m.M_eff.cast<Real>());
+    Minv = ldlt.solve(RMat::Identity(n, n)).template cast<C>();
+    MiK = ldlt.solve(m.K.cast<Real>()).template cast<C>();
+  } else {
+    CMat Mc = m.M_eff.cast<Real>().template cast<C>();
+    for (int k = 0; k < n; ++k) Mc(k, k) += I * Real(m.M_eff_imag[k]);
+    const Eigen::PartialPivLU<CMat> lu(Mc);
+    Minv = lu.inverse();
+    MiK = lu.solve(m.K.cast<Real>().template cast<C>());
+  }
+  // Gamma_k = C_k w_k0 - sum_l E_kl lambda_kl (complex for viscous modes: E_c lambda_c)
+  Eigen::Matrix<C, Eigen::Dynamic, 1> Gamma = m.G.cast<Real>().template cast<C>();
+  for (const auto& md : m.modes) Gamma[md.body] -= C(md.E_c()) * C(md.lambda_c());
 
   CMat B = CMat::Zero(D, D);
   // (s u)' = s u-dot
   B.block(0, n, n, n) = C(s) * CMat::Identity(n, n);
   // M_eff u'' = -K u - (i Gamma + D) u' + i sum E nu w      [(26) with (21) substituted]
-  const CMat Cdamp = I * Gamma.asDiagonal().toDenseMatrix().template cast<C>() + m.D.cast<Real>().template cast<C>();
-  B.block(n, 0, n, n) = (-MiK / s).template cast<C>();
-  B.block(n, n, n, n) = -(Minv.template cast<C>() * Cdamp);
+  const CMat Cdamp = I * CMat(Gamma.asDiagonal()) + m.D.cast<Real>().template cast<C>();
+  B.block(n, 0, n, n) = -MiK / C(s);
+  B.block(n, n, n, n) = -(Minv * Cdamp);
   for (int l = 0; l < nm; ++l) {
     const FluidMode& md = m.modes[l];
-    B.block(n, 2 * n + l, n, 1) = (I * Real(md.E) * Real(md.nu)) * Minv.col(md.body).template cast<C>();
+    B.block(n, 2 * n + l, n, 1) = (I * C(md.E_c()) * C(md.nu_c())) * Minv.col(md.body);
     // w' = -i nu w - i lambda u'      [fluid equation of (26) in w = z + u-dot]
-    B(2 * n + l, n + md.body) = -I * Real(md.lambda);
-    B(2 * n + l, 2 * n + l) = -I * Real(md.nu);
+    B(2 * n + l, n + md.body) = -I * C(md.lambda_c());
+    B(2 * n + l, 2 * n + l) = -I * C(md.nu_c());
   }
   return B;
 }
@@ -42,6 +53,7 @@ FirstOrderSystem build_first_order(const ChainModel& m) {
   FirstOrderSystem f;
   f.n = m.n;
   f.nm = m.n_modes();
+  // The scale only balances the blocks: the real parts of M_eff and Gamma set it well enough.
   const Eigen::LDLT<Eigen::MatrixXd> ldlt(m.M_eff);
   Eigen::VectorXd Gamma = m.G;  // Gamma_k = C_k w_k0 - sum_l E_kl lambda_kl
   for (const auto& md : m.modes) Gamma[md.body] -= md.E * md.lambda;
@@ -50,7 +62,7 @@ FirstOrderSystem build_first_order(const ChainModel& m) {
   double s = std::sqrt(ldlt.solve(m.K).norm());
   if (!(s > 0)) s = ldlt.solve(Eigen::MatrixXd(Gamma.asDiagonal())).norm();
   if (!(s > 0))
-    for (const auto& md : m.modes) s = std::max(s, std::abs(md.nu));
+    for (const auto& md : m.modes) s = std::max(s, std::abs(md.nu_c()));
   if (!(s > 0) || !std::isfinite(s)) s = 1;
   f.s = s;
   f.B = first_order_matrix<double>(m, s);

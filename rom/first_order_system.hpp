@@ -3,7 +3,9 @@
 // z being the fluid coordinate scaled to angular-velocity units (docs/rom.md, "scaling"). Then
 //   M_eff u'' = -K u - (i Gamma + D) u' + i sum_l E_kl nu_kl w_kl,   Gamma_k = C_k w_k0 - sum_l E_kl lambda_kl,
 //   w_kl'    = -i nu_kl w_kl - i lambda_kl u_k',                   nu_kl = w_k0 - lambda_kl,
-// with M_eff = M - diag(sum_l E_kl) — only E_kl enters, never a_kl or N_kl alone.
+// with M_eff = M - diag(sum_l E_kl) — only E_kl enters, never a_kl or N_kl alone. With a viscous tank
+// E_kl and lambda_kl are complex (lambda_c = lambda + i decay, E_c the residue; docs/rom.md "Viscous tanks"):
+// the same equations hold unchanged, B is then truly complex and M_eff may be complex symmetric.
 // s is a frequency scale that balances the u and u-dot blocks. Roots: y ~ e^{i sigma t},
 // i.e. sigma = -i * eigenvalue(B).
 #pragma once

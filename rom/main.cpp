@@ -209,9 +209,12 @@ int main(int argc, char** argv) {
       rc::rom::write_history(model, h, out_file);
       std::cout << "wrote " << out_file << ": " << h.t.size() << " samples, method " << h.method_used
                 << ", " << h.wall_seconds << " s (CPU " << h.cpu_seconds << " s)\n";
-      std::cout << "energy: H(0) = " << h.H.front() << ", H(end) = " << h.H.back() << ", "
-                << (model.has_friction() ? "largest relative increase per step " : "largest relative drift ")
-                << h.max_energy_drift << "\n";
+      if (model.viscous)
+        std::cout << "energy: not computed with viscous tanks (docs/rom.md, \"Viscous tanks\")\n";
+      else
+        std::cout << "energy: H(0) = " << h.H.front() << ", H(end) = " << h.H.back() << ", "
+                  << (model.has_friction() ? "largest relative increase per step " : "largest relative drift ")
+                  << h.max_energy_drift << "\n";
     }
   } catch (const std::exception& e) {
     std::string msg = e.what();

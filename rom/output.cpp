@@ -134,6 +134,10 @@ std::string spectrum_json(const Spectrum& sp) {
   j["stable"] = sp.stable;
   j["margin"] = sp.margin;
   j["det_residual"] = sp.det_residual;
+  // beyond SPEC §4: the largest -Im sigma (1/s) and the second root finder's agreement (root_newton.hpp)
+  j["growth"] = sp.growth;
+  j["root_agreement"] = sp.root_agreement;
+  j["newton_failed"] = sp.newton_failed;
   return j.dump();
 }
 
@@ -148,6 +152,7 @@ void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp) {
       os << ", fluid " << b.m_f << " kg, A_f = " << b.A_f << ", J_zh = " << b.J_zh
          << ", kept sum E = " << b.E_kept << " (coverage " << b.coverage << ")"
          << (b.E_rem > 0 ? ", static correction " + std::to_string(b.E_rem) : std::string());
+    if (b.ekman > 0) os << ", viscous (Ek = " << b.ekman << ", kept Im sum E = " << b.E_kept_imag << ")";
     os << "\n";
   }
   os << "roots sigma (rad/s, solutions e^{i sigma t}):\n";
@@ -161,8 +166,18 @@ void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp) {
   }
   os << std::setprecision(6);
   os << "stable: " << (sp.stable ? "yes" : "no") << " (|Im sigma| <= " << sp.tolerance
-     << " counts as real" << (m.has_friction() ? "; friction: no root with Im sigma < 0" : "") << ")\n";
-  os << "margin (largest |Im sigma|): " << sp.margin << " rad/s\n";
+     << " counts as real"
+     << (m.dissipative() ? std::string("; ") + (m.has_friction() ? "friction" : "viscous fluid") +
+                               ": no root with Im sigma < 0"
+                         : "")
+     << ")\n";
+  if (!m.dissipative()) os << "margin (largest |Im sigma|): " << sp.margin << " rad/s\n";
+  if (m.dissipative())
+    os << "largest growth rate (-Im sigma): " << sp.growth << " 1/s" << (sp.growth > sp.tolerance ? " (growing)" : "")
+       << "\n";
+  os << "Newton on det Phi = 0 from every root: worst shift " << sp.root_agreement << " of the spectral radius";
+  if (sp.newton_failed) os << ", " << sp.newton_failed << " roots where Newton did not converge";
+  os << "\n";
   os << "worst det residual of (22): " << sp.det_residual << " (" << sp.unchecked
      << " roots at sigma = 0 or a pole not checked)\n";
 }

@@ -157,7 +157,7 @@ History propagate(const ChainModel& m, const Scene& scene) {
 
   bool done = false;
   if (method == "exact") {
-    ModalForm mf = modal_form(f, !m.has_friction(), kRealTolerance);
+    ModalForm mf = modal_form(f, !m.dissipative(), kRealTolerance);
     hist.eigvec_condition = mf.condition;
     if (mf.usable) {
       // Undamped and stable: the roots are real; drop their rounding-level imaginary parts so that
@@ -216,7 +216,8 @@ History propagate(const ChainModel& m, const Scene& scene) {
   if (!done) throw std::runtime_error("run.method: unknown method " + method);
 
   const double H0 = hist.H[0], S0 = std::max(hist.H_scale[0], 1e-300);
-  for (long j = 1; j <= steps; ++j) {
+  if (m.viscous) hist.max_energy_drift = std::numeric_limits<double>::quiet_NaN();  // no H (energy.cpp)
+  else for (long j = 1; j <= steps; ++j) {
     if (m.has_friction()) hist.max_energy_drift = std::max(hist.max_energy_drift, (hist.H[j] - hist.H[j - 1]) / S0);
     else hist.max_energy_drift = std::max(hist.max_energy_drift, std::abs(hist.H[j] - H0) / S0);
   }

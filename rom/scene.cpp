@@ -86,7 +86,7 @@ std::vector<std::complex<double>> get_complex_array(const Ctx& c, const toml::ta
 CavitySpec parse_cavity(const Ctx& c, const toml::table& t, const std::string& where,
                         const std::filesystem::path& base) {
   check_keys(c, t, where, {"table", "density", "scale", "center", "modes", "coverage",
-                           "static_correction"});
+                           "static_correction", "viscosity"});
   CavitySpec cav;
   const toml::node* tab = t.get("table");
   if (!tab) c.fail(where + ".table", "missing");
@@ -109,6 +109,7 @@ CavitySpec parse_cavity(const Ctx& c, const toml::table& t, const std::string& w
     if (!s->is_boolean()) c.fail(where + ".static_correction", "must be true or false");
     cav.static_correction = s->as_boolean()->get();
   }
+  cav.viscosity = get_number(c, t, "viscosity", where + ".viscosity", Sign::pos, false);
   return cav;
 }
 

@@ -1,10 +1,12 @@
 #include "spectrum.hpp"
 
 #include "characteristic.hpp"
+#include "root_newton.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace rc::rom {
 namespace {
@@ -16,15 +18,18 @@ Verdict verdict_of(const ChainModel& m, const Eigen::VectorXcd& sigma) {
   for (Eigen::Index j = 0; j < sigma.size(); ++j) radius = std::max(radius, std::abs(sigma[j]));
   v.tolerance = kRealTolerance * std::max(radius, 1e-300);
   v.roots = static_cast<int>(sigma.size());
+  v.growth = sigma.size() ? -std::numeric_limits<double>::infinity() : 0.0;
   for (Eigen::Index j = 0; j < sigma.size(); ++j) {
     const double im = sigma[j].imag();
     v.margin = std::max(v.margin, std::abs(im));
     v.growth = std::max(v.growth, -im);
     if (std::abs(im) > v.tolerance) ++v.nonreal;
   }
-  // Without friction the seed's necessary condition: all roots real. With friction roots move
-  // into Im sigma > 0 (decay); stable then means no root with Im sigma < 0 (growth).
-  v.stable = m.has_friction() ? v.growth <= v.tolerance : v.margin <= v.tolerance;
+  // A dissipative chain's margin is its largest growth rate: negative when every root decays.
+  if (m.dissipative()) v.margin = v.growth;
+  // Without friction the seed's necessary condition: all roots real. With friction or a viscous
+  // tank roots move into Im sigma > 0 (decay); stable then means no root with Im sigma < 0 (growth).
+  v.stable = m.dissipative() ? v.growth <= v.tolerance : v.margin <= v.tolerance;
   return v;
 }
 
@@ -33,7 +38,7 @@ Verdict verdict_of(const ChainModel& m, const Eigen::VectorXcd& sigma) {
 Verdict compute_verdict(const ChainModel& m) {
   using cd = std::complex<double>;
   const FirstOrderSystem f = build_first_order(m);
-  if (!m.has_friction()) {
+  if (!m.dissipative()) {
     // Without friction, sigma are the eigenvalues of -iB, and -iB conjugated by diag(iI, I, I)
     // (rows of the s*u block times -i, its columns times i) is real: the real QR algorithm does
     // the same job at about a quarter of the cost of the complex one.
@@ -74,13 +79,19 @@ Spectrum compute_spectrum(const ChainModel& m) {
     for (int l = 0; l < m.n_modes(); ++l) {
       const FluidMode& md = m.modes[l];
       ++count[md.body];
-      const double wgt = md.E * std::norm(y[2 * n + l] - y[n + md.body]);
+      const double wgt = std::abs(md.E_c()) * std::norm(y[2 * n + l] - y[n + md.body]);
       if (wgt > best) {
         best = wgt;
         r.owner = "fluid " + std::to_string(md.body + 1) + "." + std::to_string(count[md.body]);
       }
     }
     r.residual = characteristic_residual(m, r.sigma, std::max(radius, 1e-300));
+    r.newton_shift = std::numeric_limits<double>::quiet_NaN();
+    if (!std::isnan(r.residual)) {
+      const NewtonRoot nr = newton_root(m, r.sigma, std::max(radius, 1e-300));
+      if (nr.converged) r.newton_shift = std::abs(nr.sigma - r.sigma) / std::max(radius, 1e-300);
+      else ++sp.newton_failed;
+    }
     sp.roots.push_back(r);
   }
   std::sort(sp.roots.begin(), sp.roots.end(), [](const Root& a, const Root& b) {
@@ -90,6 +101,7 @@ Spectrum compute_spectrum(const ChainModel& m) {
   for (const Root& r : sp.roots) {
     if (std::isnan(r.residual)) ++sp.unchecked;
     else sp.det_residual = std::max(sp.det_residual, r.residual);
+    if (!std::isnan(r.newton_shift)) sp.root_agreement = std::max(sp.root_agreement, r.newton_shift);
   }
   sp.margin = v.margin;
   sp.growth = v.growth;

@@ -16,16 +16,21 @@ struct Root {
   std::complex<double> sigma;  // rad/s
   std::string owner;           // "body 2" or "fluid 1.3" (body 1, kept mode 3)
   double residual = 0;         // scaled det residual; NaN where (22) is undefined
+  // Newton on det Phi = 0 started here (root_newton.hpp): |sigma_Newton - sigma| / spectral radius;
+  // NaN where (22) is undefined or Newton did not converge.
+  double newton_shift = 0;
 };
 
 struct Spectrum {
   std::vector<Root> roots;     // sorted by Re sigma, then Im sigma
   double tolerance = 0;        // |Im sigma| <= tolerance counts as real
   bool stable = false;         // no friction: all roots real; friction: no growing root
-  double margin = 0;           // largest |Im sigma|
-  double growth = 0;           // largest -Im sigma (> tolerance: a growing solution)
+  double margin = 0;           // largest |Im sigma|; friction or viscous fluid: the largest growth rate
+  double growth = 0;           // largest -Im sigma (> tolerance: a growing solution; < 0: every root decays)
   double det_residual = 0;     // worst scaled residual over the roots where (22) is defined
   int unchecked = 0;           // roots at sigma = 0 or at a pole of (22)
+  double root_agreement = 0;   // worst newton_shift: eigen-roots of (26) against Newton on (22)
+  int newton_failed = 0;       // roots where (22) is defined but Newton did not converge
   int nonreal = 0;             // roots with |Im sigma| > tolerance
 };
 

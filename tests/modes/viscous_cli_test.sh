@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # cavity-modes --ekman on the command line: bad input gives one line, a non-zero exit and no file; a small good
-# run writes a viscous table that info --json shows; chain-rom refuses a viscous table with one line.
+# run writes a viscous table that info --json shows; chain-rom reads it with the fluid's viscosity (and refuses it
+# with one line without one, or with one whose Ekman number is not the table's).
 set -u
 source "$(cd "$(dirname "$0")" && pwd)/cli_checks.sh"
 BIN=$1
@@ -82,7 +83,9 @@ else
   ok "mpirun not installed: distributed check skipped"
 fi
 
-cat > scene.toml <<SCENE
+# chain-rom with the viscous table (docs/rom.md, "Viscous tanks"): Ek = nu/(spin scale^2) must be the table's.
+scene() {  # the cavity's extra lines
+  cat > scene.toml <<SCENE
 [system]
 kind = "fixed"
 gravity = 9.81
@@ -97,7 +100,34 @@ table = "visc.h5"
 density = 1000.0
 scale = 0.04
 center = 0.05
+$1
+[initial]
+tilt = [[0.01, 0.0]]
+[run]
+t_end = 0.2
+output_step = 0.001
 SCENE
-rm -f out.h5
-expect_error "chain-rom refuses a viscous table" "viscous table" "$ROM" spectrum scene.toml
+}
+scene ""
+expect_error "chain-rom: a viscous table needs the viscosity" "give the fluid's viscosity" "$ROM" spectrum scene.toml
+scene "viscosity = 3.0e-3"   # Ek = 3e-3/(200 * 0.04^2) = 9.4e-3, the table's is 1e-2
+expect_error "chain-rom: viscosity inconsistent with the table's Ek" "must agree" "$ROM" spectrum scene.toml
+scene "viscosity = -3.2e-3"
+expect_error "chain-rom: negative viscosity" "must be > 0" "$ROM" spectrum scene.toml
+scene "viscosity = 0"
+expect_error "chain-rom: zero viscosity" "must be > 0" "$ROM" spectrum scene.toml
+"$BIN" sphere --radius 1 "${small[@]}" -o ideal.h5 > /dev/null 2>&1
+sed -i 's/visc.h5/ideal.h5/' scene.toml && sed -i 's/^viscosity = 0$/viscosity = 3.2e-3/' scene.toml
+expect_error "chain-rom: viscosity with an ideal table" "ideal-fluid table" "$ROM" spectrum scene.toml
+scene "viscosity = 3.2e-3"   # Ek = 1e-2
+if "$ROM" spectrum scene.toml --json > spec.json && "$ROM" run scene.toml -o out.h5 > run.txt && python3 -c '
+import json
+j = json.load(open("spec.json"))
+assert j["stable"] and j["growth"] < 0 and j["root_agreement"] < 1e-8 and j["newton_failed"] == 0, j
+print("viscous top: slowest decay %.4f 1/s, Newton on det Phi agrees to %.1e" % (-j["growth"], j["root_agreement"]))
+' && grep -q "not computed with viscous tanks" run.txt && [ -s out.h5 ]; then
+  ok "chain-rom spectrum and run with the viscous table"
+else
+  bad "chain-rom with the viscous table: $(cat spec.json run.txt 2>/dev/null | tail -3)"
+fi
 finish

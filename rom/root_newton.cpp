@@ -1,0 +1,30 @@
+#include "root_newton.hpp"
+
+#include "characteristic.hpp"
+
+#include <Eigen/LU>
+#include <cmath>
+
+namespace rc::rom {
+
+NewtonRoot newton_root(const ChainModel& m, std::complex<double> sigma0, double scale) {
+  using cd = std::complex<double>;
+  NewtonRoot r;
+  r.sigma = sigma0;
+  const double tiny = 1e-14 * std::max(scale, 1e-300);
+  for (r.iterations = 0; r.iterations < 50; ++r.iterations) {
+    const Eigen::MatrixXcd Phi = characteristic_matrix(m, r.sigma);
+    const Eigen::PartialPivLU<Eigen::MatrixXcd> lu(Phi);
+    const cd det = lu.determinant();
+    if (det == 0.0) { r.converged = true; return r; }  // exactly singular: on the root
+    const cd trace = lu.solve(characteristic_derivative(m, r.sigma)).trace();
+    if (!std::isfinite(std::abs(trace)) || trace == 0.0) return r;
+    const cd step = -1.0 / trace;
+    r.sigma += step;
+    if (!std::isfinite(std::abs(r.sigma))) return r;
+    if (std::abs(step) <= tiny) { r.converged = true; ++r.iterations; return r; }
+  }
+  return r;
+}
+
+}  // namespace rc::rom

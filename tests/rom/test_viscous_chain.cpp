@@ -1,0 +1,140 @@
+// The chain with a viscous tank (docs/rom.md, "Viscous tanks"): one spinning body about a fixed point at
+// its centre of mass, no gravity, a water-like sphere of fluid at the centre, tables made by
+// cavity-modes --ekman (make_viscous_tables.sh). Checked against
+//  * the closed form: for one body and one mode (22) is the quadratic
+//      (A' sigma + C w)(sigma + w - lambda_c) - sigma (sigma + w) E_c = 0   (times sigma: the root 0),
+//  * a direct time integration of (26) (Dormand-Prince, no eigen-decomposition): growth rate of the tilt,
+//  * Newton on det Phi = 0 (the second root finder of `chain-rom spectrum`),
+//  * the ideal sphere (Ek -> 0) and the energy-sink rule (Thomson & Reiter 1960; Kaplan, Modern Spacecraft
+//    Dynamics and Control, 1976, §5): with internal dissipation a body spinning about its axis of least
+//    inertia (C < A) nutates ever wider, one spinning about its axis of most inertia (C > A) settles.
+#include "chain_model.hpp"
+#include "propagation.hpp"
+#include "scene.hpp"
+#include "spectrum.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <complex>
+#include <cstdio>
+#include <sstream>
+#include <string>
+
+namespace rc::rom {
+namespace {
+using cd = std::complex<double>;
+
+constexpr double kSpin = 100, kScale = 0.05, kDensity = 1000;
+const char* const kEkmans[] = {"1e-3", "1e-4", "1e-5"};
+
+std::string table_path(const std::string& ek) {
+  return std::string(RC_VISCOUS_TABLES) + "/sphere_ek" + ek + ".h5";
+}
+
+// The body: shell A = 0.002, C = C_shell kg m^2; the fluid sphere (radius 5 cm, water's density) adds
+// A_f = C_f = 8 pi/15 rho L^5 = 5.2e-4 to both.
+Scene body_scene(const std::string& ek, double C_shell, bool viscous = true, const std::string& run = "") {
+  std::ostringstream s;
+  s.precision(17);
+  s << "[system]\nkind = \"fixed\"\ngravity = 0.0\n[[body]]\nmass = 0.5\nA = 0.002\nC = " << C_shell
+    << "\ncom = 0.0\nspin = " << kSpin << "\n[body.cavity]\ntable = \"" << table_path(ek) << "\"\ndensity = "
+    << kDensity << "\nscale = " << kScale << "\ncenter = 0.0\n";
+  if (viscous) s << "viscosity = " << std::stod(ek) * kSpin * kScale * kScale << "\n";
+  s << "[initial]\ntilt = [[0.01, 0.0]]\nrate = [[0.0, 0.5]]\n" << run;
+  return parse_scene_text(s.str(), ".", "viscous-body");
+}
+
+// The nutation root: the one of largest |sigma| (the other two are 0 and the fluid's, near lambda - w).
+cd nutation_root(const Spectrum& sp) {
+  cd best = 0;
+  for (const Root& r : sp.roots)
+    if (std::abs(r.sigma) > std::abs(best)) best = r.sigma;
+  return best;
+}
+
+TEST(ViscousChain, OneBodyRootsAreTheClosedForm) {
+  for (const char* ek : kEkmans) {
+    const ChainModel m = build_model(body_scene(ek, 0.001));
+    ASSERT_EQ(m.n_modes(), 1);
+    ASSERT_TRUE(m.viscous);
+    const FluidMode& md = m.modes[0];
+    const double A = m.M(0, 0), C = m.G[0] / kSpin, w = kSpin;
+    const cd lam = md.lambda_c(), E = md.E_c();
+    // (A - E) sigma^2 + (A (w - lam) + C w - E w) sigma + C w (w - lam) = 0
+    const cd a2 = A - E, a1 = A * (w - lam) + C * w - E * w, a0 = C * w * (w - lam);
+    const cd disc = std::sqrt(a1 * a1 - 4.0 * a2 * a0);
+    const cd r1 = (-a1 + disc) / (2.0 * a2), r2 = (-a1 - disc) / (2.0 * a2);
+    const Spectrum sp = compute_spectrum(m);
+    double radius = 0, err = 0;
+    for (const Root& r : sp.roots) radius = std::max(radius, std::abs(r.sigma));
+    for (const Root& r : sp.roots)
+      err = std::max(err, std::min({std::abs(r.sigma), std::abs(r.sigma - r1), std::abs(r.sigma - r2)}) / radius);
+    std::printf("  Ek = %s: lambda_c = %.6f%+.6fi rad/s, roots %.9f%+.9fi, %.9f%+.9fi; closed form to %.1e\n", ek,
+                lam.real(), lam.imag(), r1.real(), r1.imag(), r2.real(), r2.imag(), err);
+    EXPECT_EQ(sp.roots.size(), 3u);
+    EXPECT_LT(err, 1e-13);
+  }
+}
+
+// Growth (prolate shell) and decay (oblate) of the nutation from a Dormand-Prince run of (26) itself, fitted
+// on the tilt rate (the root 0, a steady tilt, drops out of u-dot) once the fluid's root has died out.
+TEST(ViscousChain, TrajectoryGrowthRateIsTheRoot) {
+  for (const double C_shell : {0.001, 0.004}) {
+    const std::string run = "[run]\nt_end = 6.0\noutput_step = 0.001\nmethod = \"rk45\"\ntolerance = 1e-13\n";
+    const Scene scene = body_scene("1e-3", C_shell, true, run);
+    const ChainModel m = build_model(scene);
+    const cd root = nutation_root(compute_spectrum(m));
+    const History h = propagate(m, scene);
+    std::printf("  %zu samples, %s\n", h.t.size(), h.method_used.c_str());
+    // u-dot by the nutation's own frequency: u ~ e^{i sigma t}, so |u(t2) - u(t2 - dt)| / |u(t1) - u(t1 - dt)|
+    // = e^{-Im sigma (t2 - t1)} exactly for a single root.
+    const long j1 = 3000, j2 = 6000;
+    const double d1 = std::abs(h.u(j1, 0) - h.u(j1 - 1, 0)), d2 = std::abs(h.u(j2, 0) - h.u(j2 - 1, 0));
+    const double growth = std::log(d2 / d1) / (h.t[j2] - h.t[j1]);
+    const double rel = std::abs(growth - (-root.imag())) / std::abs(root.imag());
+    std::printf("  C_shell = %.3f: root %.10f%+.10fi, growth from the rk45 trajectory %.10f (root's -Im sigma "
+                "%.10f), relative difference %.1e\n", C_shell, root.real(), root.imag(), growth, -root.imag(), rel);
+    EXPECT_LT(rel, 1e-6);
+  }
+}
+
+TEST(ViscousChain, NewtonOnTheCharacteristicEquationAgrees) {
+  for (const char* ek : kEkmans)
+    for (const double C_shell : {0.001, 0.004}) {
+      const Spectrum sp = compute_spectrum(build_model(body_scene(ek, C_shell)));
+      std::printf("  Ek = %s, C_shell = %.3f: Newton on det Phi from every root moves it %.1e (%d failed)\n", ek,
+                  C_shell, sp.root_agreement, sp.newton_failed);
+      EXPECT_LT(sp.root_agreement, 1e-8);
+      EXPECT_EQ(sp.newton_failed, 0);
+    }
+}
+
+// Thomson & Reiter's energy sink: growth with C < A, decay with C > A, at every Ek; the ideal fluid's roots
+// are real (Ek = 0: the closed-form sphere, E = A_f, lambda = w).
+TEST(ViscousChain, EnergySinkRuleAndIdealLimit) {
+  double prev = 0;
+  for (const char* ek : kEkmans) {
+    const Spectrum prolate = compute_spectrum(build_model(body_scene(ek, 0.001)));
+    const Spectrum oblate = compute_spectrum(build_model(body_scene(ek, 0.004)));
+    const cd np = nutation_root(prolate), no = nutation_root(oblate);
+    // Ideal: (A' - A_f) sigma + (C - A_f) w = 0 (lambda = w), A' = 0.002 + A_f, C = C_shell + A_f.
+    const double ideal = -kSpin * 0.001 / 0.002;
+    const double shift = std::abs(np - ideal);
+    std::printf("  Ek = %s: prolate nutation %.6f%+.6fi (growth %.4f 1/s), oblate %.6f%+.6fi (decay %.4f 1/s); "
+                "prolate shift from the ideal root %.4f rad/s%s\n", ek, np.real(), np.imag(), -np.imag(), no.real(),
+                no.imag(), no.imag(), shift,
+                prev > 0 ? (", observed order " + std::to_string(std::log10(prev / shift))).c_str() : "");
+    EXPECT_FALSE(prolate.stable);
+    EXPECT_GT(-np.imag(), 0);
+    EXPECT_TRUE(oblate.stable);
+    EXPECT_GT(no.imag(), 0);
+    if (prev > 0) {
+      EXPECT_LT(shift, prev);
+    }
+    prev = shift;
+  }
+}
+
+}  // namespace
+}  // namespace rc::rom
