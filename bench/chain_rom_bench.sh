@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# chain-rom benchmark (issue 5): error against run time and the speed targets, on the default scene's
+# chain-rom benchmark: error against run time and the speed targets, on the default scene's
 # real mode tables. Benchmarks, not tests; figures go into docs/benchmarks.md ("chain-rom").
 #
 #   bash bench/chain_rom_bench.sh [--repeat N]

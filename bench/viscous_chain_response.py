@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """One spinning body with a viscous sphere of fluid (the scene of tests/rom/test_viscous_chain.cpp): the nutation
 root of (22) with the fluid's full response function R(s) (cavity-modes response: a forced solve per frequency,
-every mode included) against the root chain-rom finds with the table's single damped spin-over mode.
+every mode included) against the root chain-rom finds with the table's single damped spin-over mode, and against the classic boundary-layer
+response (Greenspan's Ek^1/2 theory with the Ekman layer driven at the nutation frequency).
 
   /usr/bin/python3 bench/viscous_chain_response.py [--bin build/modes/cavity-modes] [--rom build/rom/chain-rom]
 
@@ -12,6 +13,7 @@ around the ideal nutation frequency and continued as a polynomial to the complex
 Writes bench/results/viscous_chain_response_<date>.csv and prints a markdown table."""
 import argparse, csv, datetime, os, subprocess, tempfile
 import numpy as np
+from scipy.integrate import quad
 
 RHO, L, W = 1000.0, 0.05, 100.0
 A_SHELL = 0.002
@@ -42,6 +44,25 @@ def chain_root(rom, ek, c_shell, table):
     return max(roots, key=abs)
 
 
+def boundary_layer_lambda1(s):
+    """Greenspan's Ek^1/2 coefficient for the sphere's spin-over flow, with its Ekman layer driven at the
+    frequency s instead of the mode's own lambda0 = 1 (docs/viscous.md section 4: q+- = (i(s +- 2c))^1/2;
+    on the wall U_s + iU_phi = cos(theta) - 1, U_s - iU_phi = -1 - cos(theta), c = cos(theta), |V|^2 over the ball
+    16 pi/15). At s = 1 it is 0.2585 + 2.6205i, Greenspan's (1968) values."""
+    def part(th, k):
+        c = np.cos(th)
+        v = 0.5 * (np.sqrt(1j * (s + 2 * c)) * (1 - c)**2 + np.sqrt(1j * (s - 2 * c)) * (1 + c)**2) * np.sin(th)
+        return v.real if k == 0 else v.imag
+    integral = quad(part, 0, np.pi, args=(0,), limit=400)[0] + 1j * quad(part, 0, np.pi, args=(1,), limit=400)[0]
+    return 1j * 2 * np.pi * integral / (16 * np.pi / 15)
+
+
+def boundary_layer_response(ek):
+    """R(s) = E/(s - 1 - Ek^1/2 lambda1(s)), E = 8 pi/15: the ideal sphere's single coupling mode with the
+    boundary layer at the forcing frequency (other modes couple only at O(Ek))."""
+    return lambda s: (8 * np.pi / 15) / (s - 1 - np.sqrt(ek) * boundary_layer_lambda1(s))
+
+
 def solve(c_shell, R, s0):
     A, C = A_SHELL + AF, c_shell + AF
     F = lambda sg: A + C * W / sg - (sg + W) * RHO * L**5 / W * R((sg + W) / W)
@@ -61,6 +82,8 @@ def main():
     ap.add_argument("--bin", default="build/modes/cavity-modes")
     ap.add_argument("--rom", default="build/rom/chain-rom")
     args = ap.parse_args()
+    print("| Ek | C_shell | root with R(s) (response) | root with the table's damped mode | root with the boundary-layer R(s) | fit |")
+    print("|---|---|---|---|---|---|")
     rows = []
     for ek in (1e-3, 1e-4, 1e-5):
         with tempfile.TemporaryDirectory() as d:
@@ -74,10 +97,12 @@ def main():
                 R = lambda x: np.polyval(coef, x - s0)
                 full = solve(c_shell, R, s0)
                 modal = chain_root(args.rom, ek, c_shell, table)
+                layer = solve(c_shell, boundary_layer_response(ek), s0)
                 rows.append(dict(ekman=ek, C_shell=c_shell, sigma_response_re=full.real, sigma_response_im=full.imag,
-                                 sigma_modal_re=modal.real, sigma_modal_im=modal.imag, fit_error=fit_err))
-                print("| %.0e | %.3f | %.6f %+.6fi | %.6f %+.6fi | %.1e |" % (ek, c_shell, full.real, full.imag,
-                                                                          modal.real, modal.imag, fit_err), flush=True)
+                                 sigma_modal_re=modal.real, sigma_modal_im=modal.imag, sigma_layer_re=layer.real,
+                                 sigma_layer_im=layer.imag, fit_error=fit_err))
+                print("| %.0e | %.3f | %.6f %+.6fi | %.6f %+.6fi | %.6f %+.6fi | %.1e |" % (
+                    ek, c_shell, full.real, full.imag, modal.real, modal.imag, layer.real, layer.imag, fit_err), flush=True)
     os.makedirs("bench/results", exist_ok=True)
     out = "bench/results/viscous_chain_response_%s.csv" % datetime.date.today().isoformat()
     with open(out, "w", newline="") as f:

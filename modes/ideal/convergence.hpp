@@ -1,4 +1,4 @@
-// How far a table can be trusted (issue 4): every cluster is recomputed on a coarser discretisation and
+// How far a table can be trusted: every cluster is recomputed on a coarser discretisation and
 // its relative change of λ and E reported, with a converged flag; and the spectral weight in λ-bands
 // covering (−2, 2) is reported from the survey's Gauss rule. See docs/modes.md, "Convergence".
 #pragma once

@@ -1,4 +1,4 @@
-// Reference tables of published (or closed-form) κ and E, and `cavity-modes compare` (issue 4).
+// Reference tables of published (or closed-form) κ and E, and `cavity-modes compare`.
 //
 // CSV format (docs/reference-tables.md): '#' comment lines and blank lines are skipped; the first other
 // line is the header, naming the columns in any order:

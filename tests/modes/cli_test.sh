@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Command-line behaviour of cavity-modes: help, a good run with info --json, and every bad-input case
-# of issue 2 giving a one-line error, a non-zero exit and no file left behind.
+# giving a one-line error, a non-zero exit and no file left behind.
 set -u
 source "$(cd "$(dirname "$0")" && pwd)/cli_checks.sh"
 BIN=$1

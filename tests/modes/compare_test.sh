@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# `cavity-modes compare` against the shipped closed-form reference tables (data/reference/, issue 4):
+# `cavity-modes compare` against the shipped closed-form reference tables (data/reference/):
 # default-order tables of two spheroids and the 2h/a = 2 cylinder must pass at 1e-6; a reference row
 # that is off, mismatched dimensions and malformed CSVs must fail with one line on stderr naming the cause.
 set -u

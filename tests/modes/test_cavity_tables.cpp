@@ -38,7 +38,7 @@ void expect_spheroid(double a, double c) {
   for (std::size_t i = 1; i < t.size(); ++i) EXPECT_LE(t.E[i], 1e-8 * t.E[0]) << "cluster " << i;
 }
 
-// Issue 4: a cluster flagged converged must agree with its exact mode to the flag's tolerance (the flag
+// a cluster flagged converged must agree with its exact mode to the flag's tolerance (the flag
 // compares with one order lower, so it is conservative); the dominant cluster must be flagged converged.
 void expect_honest_convergence_flags(const rc::ModeTable& t, const std::vector<exact::Mode>& modes) {
   ASSERT_EQ(t.converged.size(), t.size());
@@ -135,7 +135,7 @@ TEST(CavityTables, StructuredCylinderResolvesHighRadialModes) { expect_structure
 // The survey has no node for the 15th largest mode (n = 0, j = 8, measured); --fill-gaps finds it.
 TEST(CavityTables, GapSearchFindsTheModesTheSurveyMissed) { expect_structured_cylinder(15, true); }
 
-// Issue 4: inertial waves focus at a cone's apex; at modest resolution its clusters do not converge, and a
+// inertial waves focus at a cone's apex; at modest resolution its clusters do not converge, and a
 // table must say so rather than present them as converged.
 TEST(CavityTables, ConeClustersAreNotPresentedAsConverged) {
   auto req = request("cone", {{"radius", 1.0}, {"height", 1.0}});

@@ -1,4 +1,4 @@
-// Issue 4, cones (docs/cones.md): inertial waves focus towards a cone's apex and the positive-λ part of its
+// Cones (docs/cones.md): inertial waves focus towards a cone's apex and the positive-λ part of its
 // spectrum does not resolve into converging modes, so at the default discretisation a cone table must show
 // unconverged clusters, and must never present an unconverged cluster as converged.
 #include "cavity_table.hpp"

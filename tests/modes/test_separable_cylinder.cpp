@@ -1,5 +1,5 @@
 // The separable cylinder solver (modes/separable/separable_cylinder.hpp, --method separable) against Stewartson's closed
-// form (SPEC §2), the J_zh series of issue 2, its own discrete sum rule, exact fluid integrals, and the
+// form (SPEC §2), the J_zh series of the exact cylinder solution (docs/modes.md, "Separable cylinder solver"), its own discrete sum rule, exact fluid integrals, and the
 // independent mesh method. Every comparison prints its error.
 #include "cavity_table.hpp"
 #include "closed_forms.hpp"
@@ -59,7 +59,7 @@ double expect_largest_exact_modes(double radius, double height, std::size_t coun
 
 }  // namespace
 
-// Issue 2's cylinders (2h/a = 1, 2, 4) at default settings: the 20 largest exact modes, none missed, each to
+// The cylinders 2h/a = 1, 2, 4 at default settings: the 20 largest exact modes, none missed, each to
 // 1e-7 (issue: 1e-6; measured worst 7e-8), J_zh to 1e-9 (issue: 1e-7).
 TEST(SeparableCylinder, TwentyLargestStewartsonModesHeightOne) { expect_largest_exact_modes(1, 1, 20, 1e-7); }
 TEST(SeparableCylinder, TwentyLargestStewartsonModesHeightTwo) { expect_largest_exact_modes(1, 2, 20, 1e-7); }

@@ -1,4 +1,4 @@
-// Stiff and extreme scenes (issue 5): spins to 1e4 rad/s, joint stiffness to 1e8, 200 kept modes,
+// Stiff and extreme scenes: spins to 1e4 rad/s, joint stiffness to 1e8, 200 kept modes,
 // n = 100 bodies, near-massless shells, cavities of aspect 1/50 and 50. Each must give finite roots,
 // a small det residual of (22)/(29) and the verdict of an independent criterion; exact propagation
 // keeps the energy on the stiff and fast scenes; gauss and rk45 refuse runs they cannot finish.
