@@ -102,3 +102,61 @@ TEST(ChainChecks, IdenticalFreeBodiesFactorAs33And34) {
     EXPECT_LT(err, 1e-10);
   }
 }
+
+// Seed 000 (27)-(28): n identical Lagrange gyroscopes (c_k = c, s_k = 2c, m_k = m, central inertia A^c), a free
+// chain with elastic joints, for general n. The seed's coefficients, built here from its formulas:
+//   A'_k = A^c + mu m c [(2n - 2k + 1)(2k - 1) - n],  a_k = (2n - 2k + 1) m c,  mu = c/n,
+//   mu_ij = mu (2i - 1) a_j  (i < j; the seed prints a_i, but its equations (27) carry mu a_k (2i - 1) for i < k),
+// against the model's inertia matrix; then the roots of sigma^2 M' u + sigma C w u - K_el u = 0 (the quadratic
+// eigenproblem of (27) without fluid, K_el the joints' Laplacian with kappa_k^2), by its companion matrix, against
+// chain-rom's spectrum, and det (28) at each root.
+TEST(ChainChecks, IdenticalGyroscopesSeed27And28GeneralN) {
+  const double m = 1.3, c = 0.07, Ac = 0.011, C = 0.017, w = 120;
+  for (int n : {4, 7, 10}) {
+    Body b; b.mass = m; b.A = Ac + m * c * c; b.C = C; b.com = c; b.next = 2 * c; b.spin = w;
+    std::vector<Joint> joints(n - 1);
+    for (int k = 0; k + 1 < n; ++k) joints[k].stiffness = 50.0 * (1 + 0.3 * k);  // kappa_k^2, all different
+    const ChainModel model = model_of(scene_text(std::vector<Body>(n, b), joints, 0, true));
+    const double mu = c / n;
+    Eigen::MatrixXd seed(n, n), Kel = Eigen::MatrixXd::Zero(n, n);
+    for (int k = 1; k <= n; ++k) {
+      seed(k - 1, k - 1) = Ac + mu * m * c * ((2.0 * n - 2 * k + 1) * (2.0 * k - 1) - n);
+      for (int j = k + 1; j <= n; ++j)
+        seed(k - 1, j - 1) = seed(j - 1, k - 1) = mu * (2.0 * k - 1) * (2.0 * n - 2 * j + 1) * m * c;
+    }
+    for (int k = 0; k + 1 < n; ++k) {
+      const double kap = joints[k].stiffness;
+      Kel(k, k) += kap; Kel(k + 1, k + 1) += kap; Kel(k, k + 1) -= kap; Kel(k + 1, k) -= kap;
+    }
+    const double eM = (model.M - seed).norm() / seed.norm();
+    // Companion form of sigma^2 M' u + sigma G u - K_el u = 0 (G = C w I): [u; sigma u] eigenvector.
+    Eigen::MatrixXd Z = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+    const Eigen::MatrixXd Mi = seed.inverse();
+    Z.topRightCorner(n, n).setIdentity();
+    Z.bottomLeftCorner(n, n) = Mi * Kel;
+    Z.bottomRightCorner(n, n) = -Mi * (C * w);
+    Eigen::EigenSolver<Eigen::MatrixXd> es(Z, false);
+    std::vector<cd> ref(es.eigenvalues().data(), es.eigenvalues().data() + 2 * n);
+    const std::vector<cd> got = roots_of(compute_spectrum(model));
+    double radius = 0;
+    for (const cd& r : ref) radius = std::max(radius, std::abs(r));
+    double err = 0, det = 0;
+    for (const cd& r : ref) {
+      double best = 1e300;
+      for (const cd& g : got) best = std::min(best, std::abs(g - r));
+      err = std::max(err, best / radius);
+      if (std::abs(r) < 1e-9 * radius) continue;  // the free chain's zero roots: (28) has 1/sigma terms there
+      // (28): F_k = A'_k + C w/sigma - (kappa_{k-1}^2 + kappa_k^2)/sigma^2 on the diagonal, mu_ij (+ kappa^2/sigma^2).
+      Eigen::MatrixXcd Phi = seed.cast<cd>() - Kel.cast<cd>() / (r * r);
+      Phi.diagonal().array() += C * w / r;
+      Eigen::JacobiSVD<Eigen::MatrixXcd> svd(Phi);
+      det = std::max(det, svd.singularValues().minCoeff() / svd.singularValues().maxCoeff());
+    }
+    std::printf("  n = %2d: |M - seed (27)|/|M| = %.1e, roots against the companion form of (27) %.1e, "
+                "det (28) at them (smallest/largest singular value) %.1e\n", n, eM, err, det);
+    EXPECT_EQ(got.size(), static_cast<std::size_t>(2 * n));
+    EXPECT_LT(eM, 1e-14);
+    EXPECT_LT(err, 1e-12);
+    EXPECT_LT(det, 1e-12);
+  }
+}
