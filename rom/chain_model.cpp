@@ -100,7 +100,7 @@ void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
     m.a_over_N2 = (t.N2[l] != 0) ? L * t.a[l] / t.N2[l] : 0.0;
     if (t.viscous()) {
       // Spin -omega mirrors the flow (phi -> -phi) and conjugates it: lambda_c -> -conj(lambda_c), so the
-      // decay scales with |omega| and E_c -> conj(E_c) (docs/rom.md, "Viscous tanks").
+      // decay scales with |omega| and E_c -> conj(E_c) (docs/rom.md, "Viscous tanks"; derived, no test yet).
       m.decay = std::abs(b.omega) * t.decay[l];
       m.E_imag = (b.omega < 0 ? -1 : 1) * rho * L5 * t.E_imag[l];
     }
@@ -111,7 +111,8 @@ void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
   b.ekman = t.ekman;
   b.coverage = b.sum_rule > 0 ? b.E_kept / b.sum_rule : 1.0;
   // The residues of all modes sum to the real A_f - J_zh (the response's 1/sigma term involves only the
-  // real mass and divergence matrices), so the remainder of a viscous table is complex too.
+  // real mass and divergence matrices; an argument, not measured: a table holds too few modes to sum), so the
+  // remainder of a viscous table is complex too.
   if (cav.static_correction) {
     b.E_rem = std::max(0.0, b.sum_rule - b.E_kept);
     b.E_rem_imag = -b.E_kept_imag;
@@ -215,12 +216,6 @@ ChainModel build_model(const Scene& scene, TableCache* tables) {
     fail(scene, "body", os.str());
   }
   return cm;
-}
-
-Eigen::MatrixXcd ChainModel::M_eff_complex() const {
-  Eigen::MatrixXcd Mc = M_eff.cast<std::complex<double>>();
-  Mc.diagonal().imag() += M_eff_imag;
-  return Mc;
 }
 
 }  // namespace rc::rom

@@ -63,8 +63,6 @@ struct ChainModel {
   bool has_friction() const { return D.cwiseAbs().maxCoeff() > 0; }
   // Friction or viscous fluid: roots leave the real axis, and stable means no growing root.
   bool dissipative() const { return has_friction() || viscous; }
-  // M_eff + i diag(M_eff_imag): the complex inertia (26) puts on u-double-dot.
-  Eigen::MatrixXcd M_eff_complex() const;
 };
 
 // Relative tolerance between the scene's Ek = nu/(|omega_k0| L^2) and a viscous table's ekman.

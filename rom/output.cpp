@@ -171,8 +171,9 @@ void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp) {
                                ": no root with Im sigma < 0"
                          : "")
      << ")\n";
-  if (!m.dissipative()) os << "margin (largest |Im sigma|): " << sp.margin << " rad/s\n";
-  if (m.dissipative())
+  if (!m.dissipative())
+    os << "margin (largest |Im sigma|): " << sp.margin << " rad/s\n";
+  else
     os << "largest growth rate (-Im sigma): " << sp.growth << " 1/s" << (sp.growth > sp.tolerance ? " (growing)" : "")
        << "\n";
   os << "Newton on det Phi = 0 from every root: worst shift " << sp.root_agreement << " of the spectral radius";

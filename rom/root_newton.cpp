@@ -15,8 +15,9 @@ NewtonRoot newton_root(const ChainModel& m, std::complex<double> sigma0, double 
   for (r.iterations = 0; r.iterations < 50; ++r.iterations) {
     const Eigen::MatrixXcd Phi = characteristic_matrix(m, r.sigma);
     const Eigen::PartialPivLU<Eigen::MatrixXcd> lu(Phi);
-    const cd det = lu.determinant();
-    if (det == 0.0) { r.converged = true; return r; }  // exactly singular: on the root
+    // A zero pivot: Phi exactly singular, sigma is on the root (the determinant itself would under- or
+    // overflow for large chains long before it is exactly 0).
+    if ((lu.matrixLU().diagonal().array() == cd(0)).any()) { r.converged = true; return r; }
     const cd trace = lu.solve(characteristic_derivative(m, r.sigma)).trace();
     if (!std::isfinite(std::abs(trace)) || trace == 0.0) return r;
     const cd step = -1.0 / trace;

@@ -3,7 +3,7 @@
 // on the first-order matrix of (26). With f = det Phi, f'/f = tr(Phi^{-1} Phi'), so a Newton step is
 //   sigma <- sigma - 1 / tr(Phi(sigma)^{-1} Phi'(sigma)).
 // Started from an eigen-root it converges to the root of (22) nearest it; the distance between the two
-// is the cross-check reported for every root (docs/rom.md, "Two root finders").
+// is the cross-check reported for every root (docs/rom.md, "Spectrum", second root finder).
 #pragma once
 
 #include "chain_model.hpp"

@@ -87,8 +87,8 @@ TEST(ViscousChain, TrajectoryGrowthRateIsTheRoot) {
     const cd root = nutation_root(compute_spectrum(m));
     const History h = propagate(m, scene);
     std::printf("  %zu samples, %s\n", h.t.size(), h.method_used.c_str());
-    // u-dot by the nutation's own frequency: u ~ e^{i sigma t}, so |u(t2) - u(t2 - dt)| / |u(t1) - u(t1 - dt)|
-    // = e^{-Im sigma (t2 - t1)} exactly for a single root.
+    // Once only the nutation root is left, u = u_inf + c e^{i sigma t}, so the one-step differences obey
+    // |u(t2) - u(t2 - dt)| / |u(t1) - u(t1 - dt)| = e^{-Im sigma (t2 - t1)} exactly.
     const long j1 = 3000, j2 = 6000;
     const double d1 = std::abs(h.u(j1, 0) - h.u(j1 - 1, 0)), d2 = std::abs(h.u(j2, 0) - h.u(j2 - 1, 0));
     const double growth = std::log(d2 / d1) / (h.t[j2] - h.t[j1]);
