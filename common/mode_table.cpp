@@ -135,6 +135,10 @@ void ModeTable::validate() const {
   if (!viscous() && !(decay.empty() && E_imag.empty() && a_imag.empty()))
     throw std::runtime_error("/modes/decay, E_imag or a_imag in a table whose ekman is not positive");
   if (!std::isfinite(ekman) || ekman < 0) throw std::runtime_error("root attribute ekman must be >= 0 and finite");
+  if (!std::isfinite(fit_lo) || !std::isfinite(fit_hi) || !(fit_error >= 0) || !std::isfinite(fit_error) ||
+      fit_hi < fit_lo || (response_fit() && !viscous()))
+    throw std::runtime_error("root attributes fit_lo, fit_hi, fit_error: not a window with a finite error of a "
+                             "viscous table");
   for (double d : decay)
     if (d < 0) throw std::runtime_error("/modes/decay holds a negative value (a growing viscous mode)");
   if (!members.empty() && members.size() != n) throw std::runtime_error("/modes/members has the wrong length");
@@ -205,6 +209,11 @@ void write_mode_table(const ModeTable& t, const std::filesystem::path& path, con
       put_string(root, "normalisation", t.normalisation);
       put_double(root, "ekman", t.ekman);
       if (t.mesh_h_wall > 0) put_double(root, "mesh_h_wall", t.mesh_h_wall);
+      if (t.response_fit()) {
+        put_double(root, "fit_lo", t.fit_lo);
+        put_double(root, "fit_hi", t.fit_hi);
+        put_double(root, "fit_error", t.fit_error);
+      }
       Hid modes(H5Gcreate2(root, "modes", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
       put_vector(modes.get(), "kappa", t.kappa, H5T_NATIVE_DOUBLE);
       put_vector(modes.get(), "lambda", t.lambda, H5T_NATIVE_DOUBLE);
@@ -300,6 +309,11 @@ ModeTable read_mode_table(const std::filesystem::path& path) {
     if (has_attr(root, "normalisation")) t.normalisation = get_string(root, "normalisation");
     if (has_attr(root, "ekman")) t.ekman = get_double(root, "ekman");
     if (has_attr(root, "mesh_h_wall")) t.mesh_h_wall = get_double(root, "mesh_h_wall");
+    if (has_attr(root, "fit_lo") || has_attr(root, "fit_hi") || has_attr(root, "fit_error")) {
+      t.fit_lo = get_double(root, "fit_lo");
+      t.fit_hi = get_double(root, "fit_hi");
+      t.fit_error = get_double(root, "fit_error");
+    }
     if (H5Lexists(root, "modes", H5P_DEFAULT) <= 0) throw std::runtime_error("missing group /modes");
     Hid modes(H5Gopen2(root, "modes", H5P_DEFAULT), H5Gclose);
     t.kappa = get_vector<double>(modes.get(), "kappa", H5T_NATIVE_DOUBLE, true);

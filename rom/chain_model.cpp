@@ -109,6 +109,9 @@ void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
     modes.push_back(m);
   }
   b.ekman = t.ekman;
+  b.fit_lo = t.fit_lo;
+  b.fit_hi = t.fit_hi;
+  b.fit_error = t.fit_error;
   b.coverage = b.sum_rule > 0 ? b.E_kept / b.sum_rule : 1.0;
   // The residues of all modes sum to the real A_f - J_zh (the response's 1/sigma term involves only the
   // real mass and divergence matrices; an argument, not measured: a table holds too few modes to sum), so the

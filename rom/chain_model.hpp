@@ -40,6 +40,9 @@ struct BodyModel {
   double E_rem = 0;          // static-correction inertia (0 unless static_correction)
   double E_kept_imag = 0, E_rem_imag = 0;  // imaginary parts of the two (viscous tables); E_rem_imag = -E_kept_imag
   double ekman = 0;          // the table's Ek (0: ideal fluid)
+  // A response-fit table (docs/viscous.md, "Response fit"): its modes stand for R(s) on s in [fit_lo, fit_hi]
+  // (table units, s = (sigma + omega)/omega) to fit_error; outside, the fit is extrapolated. fit_hi > fit_lo marks it.
+  double fit_lo = 0, fit_hi = 0, fit_error = 0;
   double coverage = 0;       // E_kept / sum_rule
   std::string table;
 };

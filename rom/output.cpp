@@ -138,6 +138,7 @@ std::string spectrum_json(const Spectrum& sp) {
   j["growth"] = sp.growth;
   j["root_agreement"] = sp.root_agreement;
   j["newton_failed"] = sp.newton_failed;
+  j["outside_fit"] = sp.outside_fit;
   return j.dump();
 }
 
@@ -153,6 +154,8 @@ void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp) {
          << ", kept sum E = " << b.E_kept << " (coverage " << b.coverage << ")"
          << (b.E_rem > 0 ? ", static correction " + std::to_string(b.E_rem) : std::string());
     if (b.ekman > 0) os << ", viscous (Ek = " << b.ekman << ", kept Im sum E = " << b.E_kept_imag << ")";
+    if (b.fit_hi > b.fit_lo)
+      os << ", modes of a response fit on s in [" << b.fit_lo << ", " << b.fit_hi << "] (error " << b.fit_error << ")";
     os << "\n";
   }
   os << "roots sigma (rad/s, solutions e^{i sigma t}):\n";
@@ -179,6 +182,9 @@ void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp) {
   os << "Newton on det Phi = 0 from every root: worst shift " << sp.root_agreement << " of the spectral radius";
   if (sp.newton_failed) os << ", " << sp.newton_failed << " roots where Newton did not converge";
   os << "\n";
+  if (sp.outside_fit)
+    os << sp.outside_fit << " roots lie outside a tank's response-fit window, where its fit is extrapolated "
+       << "(docs/viscous.md, \"Response fit\")\n";
   os << "worst det residual of (22): " << sp.det_residual << " (" << sp.unchecked
      << " roots at sigma = 0 or a pole not checked)\n";
 }

@@ -102,6 +102,14 @@ Spectrum compute_spectrum(const ChainModel& m) {
     if (std::isnan(r.residual)) ++sp.unchecked;
     else sp.det_residual = std::max(sp.det_residual, r.residual);
     if (!std::isnan(r.newton_shift)) sp.root_agreement = std::max(sp.root_agreement, r.newton_shift);
+    for (const BodyModel& b : m.bodies)
+      if (b.fit_hi > b.fit_lo && b.omega != 0) {
+        const double s = ((r.sigma + b.omega) / b.omega).real();
+        if (s < b.fit_lo || s > b.fit_hi) {
+          ++sp.outside_fit;
+          break;
+        }
+      }
   }
   sp.margin = v.margin;
   sp.growth = v.growth;

@@ -32,6 +32,8 @@ struct Spectrum {
   double root_agreement = 0;   // worst newton_shift: eigen-roots of (26) against Newton on (22)
   int newton_failed = 0;       // roots where (22) is defined but Newton did not converge
   int nonreal = 0;             // roots with |Im sigma| > tolerance
+  // Roots where some tank's response-fit table is extrapolated: Re (sigma + omega_k)/omega_k outside its window.
+  int outside_fit = 0;
 };
 
 // The verdict alone (eigenvalues only: no eigenvectors, owners or det residuals), by the same

@@ -21,11 +21,11 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// The mesh method's element size where the request leaves it 0: geometry's default (1/8 of the smallest
-// dimension, docs/geometry.md), except for spheres and spheroids, whose single coupling mode p ∝ r z is a
-// polynomial that every order ≥ 2 represents exactly, so that only the wall's approximation errs: at order 6
-// a fifth of the smallest dimension gives λ, E, J_zh and A_f to ≤ 3e-10 (docs/modes.md, "Accuracy at default
-// settings") in about 60 % of the time of an eighth.
+}  // namespace
+
+// Spheres and spheroids: their single coupling mode p ∝ r z is a polynomial that every order ≥ 2 represents
+// exactly, so that only the wall's approximation errs: at order 6 a fifth of the smallest dimension gives λ, E,
+// J_zh and A_f to ≤ 3e-10 (docs/modes.md, "Accuracy at default settings") in about 60 % of the time of an eighth.
 geometry::MeshOptions mesh_method_defaults(const geometry::ShapeSpec& shape, geometry::MeshOptions mesh) {
   if (mesh.size == 0 && (shape.kind == "sphere" || shape.kind == "spheroid")) {
     geometry::check_shape(shape);
@@ -35,6 +35,8 @@ geometry::MeshOptions mesh_method_defaults(const geometry::ShapeSpec& shape, geo
   }
   return mesh;
 }
+
+namespace {
 
 // Survey nodes worth refining, heaviest first. A node's weight only approximates its cluster's E, and two
 // nodes may refine to one cluster, so a few spare nodes are refined beyond what the selection asks for.

@@ -30,6 +30,10 @@ struct TableRequest {
   bool check_convergence = true;
 };
 
+// The mesh method's element size where the request leaves it 0: geometry's default (1/8 of the smallest
+// dimension, docs/geometry.md), except spheres and spheroids: 1/5 (cavity_table.cpp says why).
+geometry::MeshOptions mesh_method_defaults(const geometry::ShapeSpec& shape, geometry::MeshOptions mesh);
+
 using ProgressFn = std::function<void(const std::string&)>;
 
 // Throws std::runtime_error with a one-line cause on bad input or solver failure. With `fields`, also the

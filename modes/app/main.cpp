@@ -5,6 +5,7 @@
 //   cavity-modes compare cyl.h5 data/reference/cylinder_radius1_height2.csv [--tolerance 1e-6]
 //   cavity-modes sphere --radius 1 --ekman 1e-4 -o visc.h5                      (viscous, docs/viscous.md)
 //   cavity-modes response sphere --radius 1 --ekman 1e-4 --sigma 0.5:1.5:101 -o R.csv
+//   cavity-modes response cylinder --radius 1 --height 2 --sigma 0.5+0.1i,1.2-0.05i -o R.csv   (ideal fluid)
 // PETSc/SLEPc options (-pep_type ..., -log_view) pass through.
 #include "cavity_table.hpp"
 #include "command_line.hpp"
@@ -12,7 +13,7 @@
 #include "mode_table_report.hpp"
 #include "petsc_handles.hpp"
 #include "reference_table.hpp"
-#include "viscous_response.hpp"
+#include "cavity_response.hpp"
 #include "viscous_table.hpp"
 
 #include <CLI/CLI.hpp>
@@ -42,43 +43,10 @@ struct ShapeCommand {
 struct ViscousOptions {
   double ekman = 0;
   double wall_size = 0;
-  std::string sigma;       // FROM:TO:N (real parts)
+  std::string sigma;       // FROM:TO:N (real parts) or a list of complex numbers
   double sigma_imag = 0;   // imaginary part of every σ
+  double max_fit_error = 1e-6;  // response to FILE.h5: the largest fit error accepted
 };
-
-// FROM:TO:N -> N complex σ evenly spaced on the real parts, all with imaginary part `imag`.
-std::vector<std::complex<double>> parse_sigmas(const std::string& spec, double imag) {
-  double from = 0, to = 0;
-  long n = 0;
-  char c1 = 0, c2 = 0, extra = 0;
-  if (std::sscanf(spec.c_str(), "%lf%c%lf%c%ld%c", &from, &c1, &to, &c2, &n, &extra) != 5 || c1 != ':' || c2 != ':' ||
-      !std::isfinite(from) || !std::isfinite(to) || n < 1 || n > 100000 || (n > 1 && !(to > from)))
-    throw std::runtime_error("--sigma '" + spec + "' is not FROM:TO:N with finite FROM < TO and 1 <= N <= 100000");
-  if (!std::isfinite(imag)) throw std::runtime_error("--sigma-imag must be finite");
-  std::vector<std::complex<double>> s;
-  for (long k = 0; k < n; ++k) s.emplace_back(n == 1 ? from : from + (to - from) * k / (n - 1), imag);
-  return s;
-}
-
-// sigma_re, sigma_im, R_re, R_im per line, written to a temporary name and renamed into place.
-void write_response_csv(const std::filesystem::path& path, const std::vector<std::complex<double>>& sigma,
-                        const std::vector<std::complex<double>>& R, const std::string& header) {
-  const std::filesystem::path tmp = path.string() + ".tmp" + std::to_string(::getpid());
-  {
-    std::ofstream out(tmp);
-    if (!out) throw std::runtime_error("cannot create " + path.string());
-    out << header << "sigma_re,sigma_im,R_re,R_im\n";
-    out.precision(17);
-    for (std::size_t k = 0; k < sigma.size(); ++k)
-      out << sigma[k].real() << ',' << sigma[k].imag() << ',' << R[k].real() << ',' << R[k].imag() << '\n';
-    if (!out) {
-      std::error_code ec;
-      std::filesystem::remove(tmp, ec);
-      throw std::runtime_error("cannot write " + path.string());
-    }
-  }
-  std::filesystem::rename(tmp, path);
-}
 
 void add_common_options(CLI::App* cmd, TableRequest& req, std::string& output, bool& fields, std::string& method,
                         ViscousOptions& viscous) {
@@ -89,9 +57,13 @@ void add_common_options(CLI::App* cmd, TableRequest& req, std::string& output, b
   cmd->add_option("--wall-size", viscous.wall_size,
                   "with --ekman: element size at the wall (default Ek^(1/2))");
   cmd->add_option("--sigma", viscous.sigma,
-                  "cavity-modes response only: FROM:TO:N, the real parts of the complex frequencies sigma at which the "
-                  "fluid's moment response R(sigma) is computed (CSV to -o)");
+                  "cavity-modes response only: the complex frequencies sigma at which the fluid's moment response "
+                  "R(sigma) is computed (CSV to -o): FROM:TO:N (real parts, with --sigma-imag) or a list such as "
+                  "0.5+0.1i,1.2-0.05i");
   cmd->add_option("--sigma-imag", viscous.sigma_imag, "cavity-modes response only: the imaginary part of every sigma");
+  cmd->add_option("--max-fit-error", viscous.max_fit_error,
+                  "cavity-modes response -o FILE.h5 only: the largest relative error of the rational fit of R between "
+                  "its samples that is accepted (default 1e-6)");
   cmd->add_option("--method", method,
                   "auto (separable for cylinders without --fields, else mesh), mesh (gmsh mesh of the meridian "
                   "section, every shape) or separable (cylinder: exact separation on a tensor-product grid)")
@@ -175,9 +147,9 @@ int run(int argc, char** argv) {
   if (response) args.ours.erase(args.ours.begin() + 1);
   CLI::App app{"cavity-modes: inertial-mode tables (kappa, lambda, E, a, N2, J_zh, coverage) of a rotating "
                "fluid in an axisymmetric cavity: ideal, or viscous with --ekman (damped modes). "
-               "'cavity-modes response SHAPE ... --ekman Ek --sigma FROM:TO:N [--sigma-imag y] -o R.csv' computes the "
-               "viscous fluid's moment response R(sigma) instead (docs/viscous.md). PETSc/SLEPc options (-pep_type, "
-               "-log_view) pass through."};
+               "'cavity-modes response SHAPE ... [--ekman Ek] --sigma FROM:TO:N [--sigma-imag y] -o R.csv' computes the "
+               "fluid's moment response R(sigma) instead (docs/viscous.md, section 6). PETSc/SLEPc options "
+               "(-pep_type, -log_view) pass through."};
   app.require_subcommand(1);
   TableRequest req;
   req.mesh.order = 0;  // the method's default, set below
@@ -261,10 +233,12 @@ int run(int argc, char** argv) {
                                       : "--sigma and --sigma-imag belong to 'cavity-modes response SHAPE ...'");
   if (!response && table_command->count("--sigma-imag") > 0)
     throw std::runtime_error("--sigma and --sigma-imag belong to 'cavity-modes response SHAPE ...'");
+  if (table_command->count("--max-fit-error") > 0 &&
+      !(response && output.size() > 3 && output.compare(output.size() - 3, 3, ".h5") == 0))
+    throw std::runtime_error("--max-fit-error belongs to 'cavity-modes response SHAPE ... -o FILE.h5'");
+  if (!(viscous.max_fit_error > 0) || !std::isfinite(viscous.max_fit_error))
+    throw std::runtime_error("--max-fit-error must be positive and finite");
   const bool is_viscous = table_command->count("--ekman") > 0;
-  if (response && !is_viscous)
-    throw std::runtime_error("cavity-modes response needs --ekman for now (the ideal fluid's response: docs/viscous.md, "
-                             "\"Limits\")");
   rc::modes::ViscousTableSettings viscous_settings;
   if (is_viscous) viscous_settings = viscous_request(*table_command, viscous, fields, req);
   else if (table_command->count("--wall-size") > 0) throw std::runtime_error("--wall-size applies with --ekman only");
@@ -277,16 +251,25 @@ int run(int argc, char** argv) {
   char** pargv = petsc_argv.data();
   rc::modes::PetscSession session(&petsc_argc, &pargv);
   if (response) {
-    const auto sigmas = parse_sigmas(viscous.sigma, viscous.sigma_imag);
-    long unknowns = 0;
-    const auto R = rc::modes::cavity_response(req.shape, viscous_settings.mesh, viscous.ekman, sigmas, &unknowns);
+    rc::modes::ResponseRequest r;
+    r.shape = req.shape;
+    r.sigmas = rc::modes::parse_sigma_spec(viscous.sigma, viscous.sigma_imag);
+    r.ekman = is_viscous ? viscous.ekman : 0;
+    r.mesh = is_viscous ? viscous_settings.mesh : req.mesh;
+    r.separable = !is_viscous && method == "separable";  // auto: forced solves for every shape
+    if (!is_viscous && !r.separable && r.mesh.order == 0) r.mesh.order = 6;
+    if (output.size() > 3 && output.compare(output.size() - 3, 3, ".h5") == 0) {
+      // A response-fit table: the fit's poles and residues as damped modes (docs/viscous.md, "Response fit").
+      const auto table = rc::modes::response_fit_table(r, viscous.max_fit_error);
+      if (!rc::modes::is_root_rank()) return 0;
+      rc::write_mode_table(table, output);
+      std::cout << rc::modes::table_text(table) << std::flush;
+      return 0;
+    }
+    const auto R = rc::modes::compute_cavity_response(r);
     if (!rc::modes::is_root_rank()) return 0;
-    write_response_csv(output, sigmas, R,
-                       fmt::format("# cavity-modes response {}: Ekman number {:g}, Taylor-Hood P{}/P{}, {} real "
-                                   "unknowns; R(sigma) = sum_l E_l/(sigma - lambda_l) + const (docs/viscous.md)\n",
-                                   req.shape.kind, viscous.ekman, viscous_settings.mesh.order,
-                                   viscous_settings.mesh.order - 1, unknowns));
-    std::cout << "wrote " << output << ": R(sigma) at " << sigmas.size() << " frequencies\n";
+    rc::modes::write_response(output, r.sigmas, R.R, R.method);
+    std::cout << "wrote " << output << ": R(sigma) at " << r.sigmas.size() << " frequencies (" << R.method << ")\n";
     return 0;
   }
   if (fields) rc::check_companion_name(output);  // before the long computation

@@ -10,21 +10,24 @@
 
 namespace rc::modes {
 
-std::vector<std::complex<double>> viscous_response(const ViscousForms& forms,
-                                                   const std::vector<std::complex<double>>& sigmas) {
-  std::vector<std::complex<double>> out;
-  PVec x;
-  petsc_check(VecDuplicate(forms.coupling, x.out()), "VecDuplicate");
-  for (const auto sigma : sigmas) {
-    // S = σ𝓜 − A in block form: Re σ M̂ + Im σ (i𝓜 block) − Â.
-    PMat S;
-    petsc_check(MatDuplicate(forms.A, MAT_COPY_VALUES, S.out()), "MatDuplicate");
-    petsc_check(MatScale(S, -1.0), "MatScale");
-    petsc_check(MatAXPY(S, sigma.real(), forms.M, DIFFERENT_NONZERO_PATTERN), "MatAXPY");
-    petsc_check(MatAXPY(S, sigma.imag(), forms.iM, DIFFERENT_NONZERO_PATTERN), "MatAXPY");
+namespace {
+
+// One KSP (preonly, MUMPS LU) for every σ: S = σ𝓜 − A keeps one nonzero pattern (the union of A's, M̂'s and the i𝓜
+// block's), so PETSc refactors numerically and MUMPS keeps its ordering and symbolic analysis across σ.
+struct ForcedSolver {
+  PMat base, S;  // −A on the union pattern; the current σ𝓜 − A
+  PKSP ksp;
+
+  explicit ForcedSolver(const ViscousForms& forms) {
+    // The union pattern (MatAXPY skips a zero multiple, hence 1 and then zeroed), then −A on it.
+    petsc_check(MatDuplicate(forms.A, MAT_COPY_VALUES, base.out()), "MatDuplicate");
+    petsc_check(MatAXPY(base, 1.0, forms.M, DIFFERENT_NONZERO_PATTERN), "MatAXPY");
+    petsc_check(MatAXPY(base, 1.0, forms.iM, DIFFERENT_NONZERO_PATTERN), "MatAXPY");
+    petsc_check(MatZeroEntries(base), "MatZeroEntries");
+    petsc_check(MatAXPY(base, -1.0, forms.A, SUBSET_NONZERO_PATTERN), "MatAXPY");
+    petsc_check(MatDuplicate(base, MAT_COPY_VALUES, S.out()), "MatDuplicate");
     MPI_Comm comm;
     petsc_check(PetscObjectGetComm(reinterpret_cast<PetscObject>(S.get()), &comm), "PetscObjectGetComm");
-    PKSP ksp;
     PC pc;
     Mat F;
     petsc_check(KSPCreate(comm, ksp.out()), "KSPCreate");
@@ -39,12 +42,35 @@ std::vector<std::complex<double>> viscous_response(const ViscousForms& forms,
     petsc_check(MatMumpsSetIcntl(F, 14, 100), "MatMumpsSetIcntl");
     petsc_check(KSPSetOptionsPrefix(ksp, "response_"), "KSPSetOptionsPrefix");
     petsc_check(KSPSetFromOptions(ksp), "KSPSetFromOptions");
+  }
+
+  void solve(const ViscousForms& forms, std::complex<double> sigma, Vec x) {
+    // S = σ𝓜 − A in block form: Re σ M̂ + Im σ (i𝓜 block) − Â.
+    petsc_check(MatCopy(base, S, SAME_NONZERO_PATTERN), "MatCopy");
+    petsc_check(MatAXPY(S, sigma.real(), forms.M, SUBSET_NONZERO_PATTERN), "MatAXPY");
+    petsc_check(MatAXPY(S, sigma.imag(), forms.iM, SUBSET_NONZERO_PATTERN), "MatAXPY");
+    petsc_check(KSPSetOperators(ksp, S, S), "KSPSetOperators");
     const std::string where = "forced solve at sigma = " + std::to_string(sigma.real()) +
                               (sigma.imag() < 0 ? " - " : " + ") + std::to_string(std::abs(sigma.imag())) + "i";
     petsc_check(KSPSolve(ksp, forms.coupling, x), where.c_str());
     KSPConvergedReason reason;
     petsc_check(KSPGetConvergedReason(ksp, &reason), "KSPGetConvergedReason");
-    if (reason < 0) throw std::runtime_error("the forced solve failed (KSP reason " + std::to_string(reason) + ")");
+    if (reason < 0) throw std::runtime_error("the " + where + " failed (KSP reason " + std::to_string(reason) + ")");
+  }
+};
+
+}  // namespace
+
+std::vector<std::complex<double>> viscous_response(const ViscousForms& forms,
+                                                   const std::vector<std::complex<double>>& sigmas) {
+  std::vector<std::complex<double>> out;
+  PVec x;
+  petsc_check(VecDuplicate(forms.coupling, x.out()), "VecDuplicate");
+  ForcedSolver solver(forms);
+  MPI_Comm comm;
+  petsc_check(PetscObjectGetComm(reinterpret_cast<PetscObject>(x.get()), &comm), "PetscObjectGetComm");
+  for (const auto sigma : sigmas) {
+    solver.solve(forms, sigma, x);
     // fᵀx with x = a + ib on the real and imaginary slots: the coupling vector sits on the real slots only.
     PetscScalar fa = 0, fb = 0;
     petsc_check(VecDot(x, forms.coupling, &fa), "VecDot");  // Σ f_j a_j

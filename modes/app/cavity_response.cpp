@@ -1,0 +1,237 @@
+#include "cavity_response.hpp"
+
+#include "cavity_table.hpp"
+#include "discretisation.hpp"
+#include "ideal_response.hpp"
+#include "mesh_broadcast.hpp"
+#include "petsc_handles.hpp"
+#include "rational_fit.hpp"
+#include "table_assembly.hpp"
+#include "separable_table.hpp"
+#include "viscous_response.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <unistd.h>
+
+namespace rc::modes {
+namespace {
+
+// Σ E_l/(σ − λ_l) over every eigenpair of the separated cylinder problem.
+CavityResponse separable_response(const ResponseRequest& req) {
+  if (req.shape.kind != "cylinder") throw std::runtime_error("--method separable is for cylinders only");
+  const SeparableGrid grid = separable_grid(req.shape, req.mesh);
+  const SeparableSpectrum s =
+      solve_separable_cylinder(req.shape.dims.at("radius"), req.shape.dims.at("height"), grid);
+  CavityResponse out;
+  for (const auto sigma : req.sigmas) {
+    std::complex<double> R = 0;
+    for (const auto& m : s.modes) R += m.E / (sigma - m.lambda);
+    out.R.push_back(R);
+  }
+  out.method = fmt::format("ideal fluid, sum of E/(sigma - lambda) over all {} eigenpairs of the separable cylinder "
+                           "(order {}, {} x {} elements; sum of E = {:.12g}, A_f - J_zh = {:.12g})",
+                           s.modes.size(), grid.order, grid.radial_elements(), grid.axial_elements(), s.sum_E,
+                           s.sum_rule);
+  return out;
+}
+
+CavityResponse mesh_response(const ResponseRequest& req) {
+  const Discretisation d(req.shape, mesh_method_defaults(req.shape, req.mesh));
+  CavityResponse out;
+  out.R = ideal_response(d.velocity, d.forms, req.sigmas);
+  out.method = fmt::format("ideal fluid, forced solves of the Poincare problem (no modes) on P{} elements of size {:g}, "
+                           "{} pressure unknowns; A_f - J_zh = {:.12g}",
+                           d.space.order(), d.space.mesh().size, d.space.ndof(), d.sum_rule);
+  return out;
+}
+
+CavityResponse viscous_cavity_response(const ResponseRequest& req) {
+  long unknowns = 0;
+  CavityResponse out;
+  out.R = cavity_response(req.shape, req.mesh, req.ekman, req.sigmas, &unknowns);
+  out.unknowns = unknowns;
+  out.method = fmt::format("viscous fluid, Ekman number {:g}, forced solves on Taylor-Hood P{}/P{} ({} real unknowns); "
+                           "R = sum_l E_l/(sigma - lambda_l) + const",
+                           req.ekman, req.mesh.order, req.mesh.order - 1, unknowns);
+  return out;
+}
+
+// One complex number: "a", "a+bi", "a-bi", "bi" (no spaces).
+std::complex<double> parse_complex(const std::string& item) {
+  const auto bad = [&] { return std::runtime_error("--sigma item '" + item + "' is not a complex number like 0.5+0.1i"); };
+  if (item.empty()) throw bad();
+  std::size_t used = 0;
+  double a = 0, b = 0;
+  try {
+    a = std::stod(item, &used);
+  } catch (...) {
+    throw bad();
+  }
+  if (used == item.size()) return {a, 0};
+  if (item.substr(used) == "i") return {0, a};
+  if (item.back() != 'i' || (item[used] != '+' && item[used] != '-')) throw bad();
+  const std::string rest = item.substr(used, item.size() - used - 1);
+  std::size_t used_b = 0;
+  try {
+    b = std::stod(rest, &used_b);
+  } catch (...) {
+    throw bad();
+  }
+  if (used_b != rest.size()) throw bad();
+  return {a, b};
+}
+
+}  // namespace
+
+CavityResponse compute_cavity_response(const ResponseRequest& req) {
+  if (req.sigmas.empty()) throw std::runtime_error("no frequency sigma given");
+  for (const auto s : req.sigmas)
+    if (!std::isfinite(s.real()) || !std::isfinite(s.imag())) throw std::runtime_error("every sigma must be finite");
+  if (req.ekman > 0) return viscous_cavity_response(req);
+  return req.separable ? separable_response(req) : mesh_response(req);
+}
+
+ModeTable response_fit_table(const ResponseRequest& req, double max_error, std::vector<std::complex<double>>* response) {
+  const auto start = std::chrono::steady_clock::now();
+  if (!(req.ekman > 0)) throw std::runtime_error("a response-fit table (-o FILE.h5) needs --ekman");
+  const std::size_t n = req.sigmas.size();
+  if (n < 9) throw std::runtime_error("a response-fit table needs --sigma FROM:TO:N with N >= 9 real frequencies");
+  for (std::size_t k = 0; k < n; ++k)
+    if (req.sigmas[k].imag() != 0 || (k > 0 && !(req.sigmas[k].real() > req.sigmas[k - 1].real())))
+      throw std::runtime_error("a response-fit table needs increasing real frequencies (--sigma FROM:TO:N, no "
+                               "--sigma-imag)");
+  // Beyond the window the fit must still fall off as R ~ (its weight)/s, as R does (docs/viscous.md, "Response
+  // fit"): without samples there AAA may spend a pole far off with a huge residue on the window's near-constant
+  // background, a pseudo-mode whose coupling E would swamp the chain's inertia. So R is also sampled on a
+  // geometric tail on both sides, which the fit matches but the window's error does not count.
+  ResponseRequest all = req;
+  const double lo = req.sigmas.front().real(), hi = req.sigmas.back().real();
+  const double reach = std::max({std::abs(lo), std::abs(hi), 1.0});
+  std::vector<double> tail;
+  for (double t = 1.5 * reach; t <= 1000 * reach; t *= 1.5) {
+    if (t > hi) tail.push_back(t);
+    if (-t < lo) tail.push_back(-t);
+  }
+  for (const double t : tail) all.sigmas.emplace_back(t, 0.0);
+  const CavityResponse R = viscous_cavity_response(all);
+  if (response) response->assign(R.R.begin(), R.R.begin() + static_cast<std::ptrdiff_t>(n));
+
+  // Fitted on the even window samples and the tail, judged on the odd window samples: the error is that of the
+  // fit between its data.
+  std::vector<double> z, z_held;
+  std::vector<std::complex<double>> f, f_held;
+  for (std::size_t k = 0; k < n; ++k) {
+    (k % 2 ? z_held : z).push_back(req.sigmas[k].real());
+    (k % 2 ? f_held : f).push_back(R.R[k]);
+  }
+  for (std::size_t k = 0; k < tail.size(); ++k) {
+    z.push_back(tail[k]);
+    f.push_back(R.R[n + k]);
+  }
+  const RationalFit fit = fit_response(z, f, 1e-10);
+  double err = 0, scale = 0;
+  for (std::size_t k = 0; k < n; ++k) scale = std::max(scale, std::abs(R.R[k]));
+  for (std::size_t k = 0; k < z_held.size(); ++k) err = std::max(err, std::abs(fit(z_held[k]) - f_held[k]));
+  err /= scale;
+  if (!(err <= max_error))
+    throw std::runtime_error(fmt::format("the rational fit of R(s) on [{:g}, {:g}] errs by {:.2g} between its samples "
+                                         "(allowed {:.2g}): give more frequencies N", lo, hi, err, max_error));
+
+  // The frozen-fluid integrals and J_zh: the ideal problem on the shape's default mesh.
+  rc::geometry::MeshOptions ideal_mesh;
+  ideal_mesh.order = 6;
+  const Discretisation d(req.shape, mesh_method_defaults(req.shape, ideal_mesh));
+  ModeTable t = start_table(req.shape, d.fluid, d.zhukovsky.J_zh);
+  t.ekman = req.ekman;
+  t.fe_order = req.mesh.order;
+  t.mesh_h = req.mesh.size;
+  t.mesh_h_wall = req.mesh.wall_size;
+  t.ndof = R.unknowns;
+  t.fit_lo = lo;
+  t.fit_hi = hi;
+  t.fit_error = err;
+  std::complex<double> sum = 0;
+  for (std::size_t j = 0; j < fit.poles.size(); ++j) {
+    const auto p = fit.poles[j], r = fit.residues[j];
+    const std::complex<double> a = std::sqrt(r / 2.0);
+    t.lambda.push_back(p.real());
+    t.kappa.push_back(2 / p.real());
+    t.decay.push_back(p.imag());
+    t.E.push_back(r.real());
+    t.E_imag.push_back(r.imag());
+    t.a.push_back(a.real());
+    t.a_imag.push_back(a.imag());
+    t.N2.push_back(1.0);
+    t.residual.push_back(0.0);
+    sum += r;
+  }
+  t.coverage = t.sum_rule > 0 ? sum.real() / t.sum_rule : 1.0;
+  t.normalisation = "pseudo-modes of a rational fit: lambda + i decay a pole of R(s), E + i E_imag its residue, "
+                    "a + i a_imag = sqrt((E + i E_imag)/2), N2 = 1 (docs/viscous.md, \"Response fit\")";
+  t.solver = fmt::format("AAA rational fit of R(s) (degree {}, {} poles kept, {} dropped) on every other of {} real "
+                         "samples in [{:g}, {:g}] and {} beyond it up to |s| = {:.3g}, max error between the window's samples {:.2g}; "
+                         "sum of residues {:.9g}{:+.9g}i, s R(s) at s = {:.3g}: {:.9g}, A_f - J_zh = {:.9g}; R by {}",
+                         fit.aaa_degree, fit.poles.size(), fit.dropped_poles, n, lo, hi, tail.size(), std::abs(tail.back()),
+                         err, sum.real(), sum.imag(), tail.back(), (tail.back() * R.R.back()).real(), t.sum_rule,
+                         R.method);
+  t.tolerance = 1e-10;
+  t.sort_by_energy();
+  t.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return t;
+}
+
+std::vector<std::complex<double>> parse_sigma_spec(const std::string& spec, double imag) {
+  if (!std::isfinite(imag)) throw std::runtime_error("--sigma-imag must be finite");
+  std::vector<std::complex<double>> s;
+  if (spec.find(':') == std::string::npos) {
+    if (imag != 0) throw std::runtime_error("--sigma-imag applies to a range FROM:TO:N, not to a list of sigmas");
+    std::stringstream in(spec);
+    std::string item;
+    while (std::getline(in, item, ',')) s.push_back(parse_complex(item));
+    if (s.empty() || s.size() > 100000 || spec.back() == ',')
+      throw std::runtime_error("--sigma '" + spec + "' is neither FROM:TO:N nor a list of 1 to 100000 complex numbers");
+    for (const auto z : s)
+      if (!std::isfinite(z.real()) || !std::isfinite(z.imag())) throw std::runtime_error("every sigma must be finite");
+    return s;
+  }
+  double from = 0, to = 0;
+  long n = 0;
+  char c1 = 0, c2 = 0, extra = 0;
+  if (std::sscanf(spec.c_str(), "%lf%c%lf%c%ld%c", &from, &c1, &to, &c2, &n, &extra) != 5 || c1 != ':' || c2 != ':' ||
+      !std::isfinite(from) || !std::isfinite(to) || n < 1 || n > 100000 || (n > 1 && !(to > from)))
+    throw std::runtime_error("--sigma '" + spec + "' is not FROM:TO:N with finite FROM < TO and 1 <= N <= 100000");
+  for (long k = 0; k < n; ++k) s.emplace_back(n == 1 ? from : from + (to - from) * k / (n - 1), imag);
+  return s;
+}
+
+void write_response(const std::string& path, const std::vector<std::complex<double>>& sigma,
+                    const std::vector<std::complex<double>>& R, const std::string& method) {
+  const std::filesystem::path tmp = path + ".tmp" + std::to_string(::getpid());
+  {
+    std::ofstream out(tmp);
+    if (!out) throw std::runtime_error("cannot create " + path);
+    out << "# cavity-modes response: " << method << "\n# R(sigma) = sum_l E_l/(sigma - lambda_l) (docs/viscous.md, "
+        << "\"Response function\")\nsigma_re,sigma_im,R_re,R_im\n";
+    out.precision(17);
+    for (std::size_t k = 0; k < sigma.size(); ++k)
+      out << sigma[k].real() << ',' << sigma[k].imag() << ',' << R[k].real() << ',' << R[k].imag() << '\n';
+    if (!out) {
+      out.close();
+      std::error_code ec;
+      std::filesystem::remove(tmp, ec);
+      throw std::runtime_error("cannot write " + path);
+    }
+  }
+  std::filesystem::rename(tmp, path);
+}
+
+}  // namespace rc::modes

@@ -1,0 +1,54 @@
+// `cavity-modes response SHAPE ...`: the fluid's moment response R(σ) = Σ_l E_l/(σ − λ_l) (+ a constant for the
+// viscous fluid) at given complex frequencies, for one cavity, by the method the request names:
+//   viscous (--ekman):      forced solves on the Taylor–Hood wall-layer mesh (viscous/viscous_response.hpp);
+//   ideal, --method mesh:   forced solves of the Poincaré problem on the gmsh mesh, no modes (ideal/ideal_response.hpp);
+//   ideal, separable:       the cylinder's sum over EVERY eigenpair of the separated problem (separable_cylinder.hpp),
+//                           the independent mode-sum check of the forced solves (docs/viscous.md, "Response function").
+#pragma once
+
+#include "meridian_mesh.hpp"
+#include "mode_table.hpp"
+
+#include <complex>
+#include <string>
+#include <vector>
+
+namespace rc::modes {
+
+struct ResponseRequest {
+  geometry::ShapeSpec shape;
+  geometry::MeshOptions mesh;   // resolved: the viscous mesh, or the ideal mesh/grid (0 = the method's defaults)
+  double ekman = 0;             // 0: ideal fluid
+  bool separable = false;       // ideal cylinder: the separable mode sum instead of forced solves
+  std::vector<std::complex<double>> sigmas;
+};
+
+struct CavityResponse {
+  std::vector<std::complex<double>> R;
+  std::string method;  // one line: what computed R and on which discretisation (the CSV's header)
+  long unknowns = 0;   // real unknowns of the forced solves (0 for the separable sum)
+};
+
+// Throws std::runtime_error / std::invalid_argument with a one-line cause.
+CavityResponse compute_cavity_response(const ResponseRequest& request);
+
+// The viscous response sampled on FROM:TO:N (real σ, N >= 9) and fitted by a rational function on every other
+// sample (viscous/rational_fit.hpp), its error measured on the samples in between: a viscous mode table whose
+// modes are the fit's poles and residues, with the window and the error as root attributes (fit_lo, fit_hi,
+// fit_error) and the ideal table's frozen-fluid integrals and J_zh from the ideal mesh. `response` holds R at
+// every sample on return. Throws std::runtime_error with a one-line cause, also when the fit error exceeds
+// `max_error`.
+ModeTable response_fit_table(const ResponseRequest& request, double max_error,
+                             std::vector<std::complex<double>>* response = nullptr);
+
+// "FROM:TO:N" (N evenly spaced real parts, every one with imaginary part `imag`) or a comma-separated list of
+// complex numbers "0.5+0.1i,1.2,-0.3-2e-2i" (then `imag` must be 0). Throws std::runtime_error naming the
+// malformed item.
+std::vector<std::complex<double>> parse_sigma_spec(const std::string& spec, double imag);
+
+// CSV: two `#` lines (the method, the definition), then sigma_re, sigma_im, R_re, R_im per line. Written to a
+// temporary name and renamed, so no half-written file is ever left.
+void write_response(const std::string& path, const std::vector<std::complex<double>>& sigma,
+                    const std::vector<std::complex<double>>& R, const std::string& method);
+
+}  // namespace rc::modes
