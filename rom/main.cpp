@@ -134,7 +134,8 @@ int main(int argc, char** argv) {
                                    "(apt-get install python3-matplotlib); nothing written");
       }
       TableCache tables;
-      (void)build_model(scene, &tables);  // validates the scene as given and reads its tables once
+      // Validates the scene as given and reads its tables once; a dissipative chain's margin is a growth rate.
+      const bool growth_map = build_model(scene, &tables).dissipative();
       const SweepResult r = run_sweep(scene, tables, a1, a2, threads, [](long d, long total, double el) {
         std::fprintf(stderr, "chain-rom sweep: %ld/%ld points, %.1f s, about %.0f s left\n", d, total, el,
                      el * static_cast<double>(total - d) / static_cast<double>(d));
@@ -156,7 +157,9 @@ int main(int argc, char** argv) {
             break;
           }
       if (!png_file.empty()) {
-        const int rc = run_program({python, script, out_file, png_file});
+        std::vector<std::string> cmd = {python, script, out_file, png_file};
+        if (growth_map) cmd.push_back("--growth");
+        const int rc = run_program(cmd);
         if (rc != 0)
           throw std::runtime_error("--png: " + script + " failed (exit " + std::to_string(rc) + "); the CSV " +
                                    out_file + " was written, no PNG");

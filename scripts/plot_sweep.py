@@ -1,11 +1,14 @@
 #!/usr/bin/python3
 """Draws a chain-rom stability map (CSV from `chain-rom sweep ... -o OUT.csv`) as a PNG.
 
-    /usr/bin/python3 scripts/plot_sweep.py SWEEP.csv OUT.png [--title TEXT]
+    /usr/bin/python3 scripts/plot_sweep.py SWEEP.csv OUT.png [--title TEXT] [--growth]
 
 One swept value: the margin (largest |Im sigma|, rad/s) against the value, unstable points marked.
 Two: a map over both values, the margin in colour (log scale) on the unstable points, stable points
 white, the stability boundary drawn. Points the sweep could not evaluate (nan) are grey.
+--growth (chains with friction or viscous tanks, where the margin column is the largest growth rate -Im sigma,
+1/s, negative when every root decays; chain-rom sweep --png passes it for such scenes): the growth rate in colour
+on every point, red growing, blue decaying, on a symmetric log scale, the stability boundary drawn.
 `chain-rom sweep --png` runs this script. Uses Debian's python3-matplotlib and python3-numpy.
 """
 import argparse
@@ -13,18 +16,51 @@ import os
 import sys
 
 
+def draw_growth(fig, ax, np, SymLogNorm, keys, data, stable, growth):
+    """The largest growth rate (1/s; < 0: every root decays) of a dissipative chain."""
+    if len(keys) == 1:
+        x = data[:, 0]
+        ax.plot(x, growth, "-", color="0.3", lw=1)
+        ax.plot(x[stable == 0], growth[stable == 0], "o", ms=3, color="tab:red", label="growing (unstable)")
+        ax.plot(x[stable == 1], growth[stable == 1], "o", ms=3, color="tab:blue", label="decaying (stable)")
+        ax.axhline(0, color="k", lw=0.8)
+        ax.set_xlabel(keys[0])
+        ax.set_ylabel("largest growth rate −Im σ (1/s)")
+        ax.legend(loc="best")
+        ax.grid(alpha=0.3)
+        return
+    x, y = np.unique(data[:, 0]), np.unique(data[:, 1])
+    if len(x) * len(y) != len(data):
+        raise SystemExit("plot_sweep: error: 2D sweep rows do not form a grid")
+    G = growth.reshape(len(x), len(y)).T  # rows: first value outer, second inner
+    finite = np.abs(G[np.isfinite(G)])
+    ax.set_facecolor("0.75")  # nan: not evaluated
+    if finite.size and finite.max() > 0:
+        top = finite.max()
+        im = ax.pcolormesh(x, y, G, cmap="RdBu_r", shading="nearest",
+                           norm=SymLogNorm(linthresh=top * 1e-3, vmin=-top, vmax=top, base=10))
+        fig.colorbar(im, ax=ax, label="largest growth rate −Im σ (1/s): red grows, blue decays")
+    S = stable.reshape(len(x), len(y)).T
+    if len(x) > 1 and len(y) > 1 and np.nanmin(S) < 1 <= np.nanmax(S):  # growth within the tolerance is stable
+        ax.contour(x, y, np.nan_to_num(S, nan=0.5), levels=[0.5], colors="k", linewidths=1.2)
+    ax.set_xlabel(keys[0])
+    ax.set_ylabel(keys[1])
+    ax.text(0.01, 0.01, "black: stability boundary (growth within the verdict's tolerance); grey: not evaluated", transform=ax.transAxes, fontsize=8, va="bottom")
+
+
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("csv", help="CSV written by chain-rom sweep")
     ap.add_argument("png", help="PNG to write")
     ap.add_argument("--title", default=None, help="figure title (default: the CSV's file name)")
+    ap.add_argument("--growth", action="store_true", help="the margin column is a growth rate (dissipative chains)")
     args = ap.parse_args()
     try:
         import matplotlib
 
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
-        from matplotlib.colors import LogNorm
+        from matplotlib.colors import LogNorm, SymLogNorm
         import numpy as np
     except ImportError as e:
         print(f"plot_sweep: error: {e} (apt-get install python3-matplotlib python3-numpy)", file=sys.stderr)
@@ -46,7 +82,9 @@ def main() -> int:
     stable, margin = data[:, -3], data[:, -2]
     title = args.title or os.path.basename(args.csv)
     fig, ax = plt.subplots(figsize=(7, 5), dpi=110)
-    if len(keys) == 1:
+    if args.growth:
+        draw_growth(fig, ax, np, SymLogNorm, keys, data, stable, margin)
+    elif len(keys) == 1:
         x = data[:, 0]
         ax.plot(x, margin, "-", color="0.3", lw=1, label="margin")
         uns = stable == 0

@@ -177,4 +177,20 @@ PY
 then ok "response-fit table: pole, residue and R at the chain's roots"
 else bad "response-fit table: $(tail -3 fit.txt fitspec.txt 2>/dev/null)"
 fi
+
+# sweep over a viscous scene: its margin column is the largest growth rate (signed), and --png draws it as such.
+if "$ROM" sweep scene.toml --param 'body[1].C' --from 0.02 --to 0.12 --steps 6 --param2 'body[1].A' --from2 0.04 \
+     --to2 0.1 --steps2 4 -o gsweep.csv --png gsweep.png > gsweep.txt 2>&1 && [ -s gsweep.png ] && python3 -c '
+import csv
+rows = list(csv.DictReader(open("gsweep.csv")))
+g = [float(r["margin"]) for r in rows]
+s = [int(r["stable"]) for r in rows]
+assert len(rows) == 24 and all(x == x for x in g), g
+assert 0 < sum(s) < 24 and all(gi > 0 for gi, si in zip(g, s) if si == 0), list(zip(g, s))
+# stable: growth within the verdict tolerance, 1e-7 x the spectral radius (docs/rom.md, "Viscous tanks")
+assert max(gi for gi, si in zip(g, s) if si == 1) < 0.05 * max(g), list(zip(g, s))
+print("viscous sweep: growth rates from %.3g to %.3g 1/s, %d of 24 stable" % (min(g), max(g), sum(s)))
+'; then ok "sweep of a viscous scene: growth rates, PNG"
+else bad "viscous sweep: $(tail -3 gsweep.txt)"
+fi
 finish
