@@ -2,7 +2,7 @@
 """Error against run time for cavity-modes (issue "error against run time").
 
 Runs the cavity-modes binary over a sweep of --order and --mesh-size for three cavities with closed-form
-answers (SPEC section 2), compares each table with exact values computed here, independently of the C++
+answers (docs/physics.md §2), compares each table with exact values computed here, independently of the C++
 closed forms, and writes
 
   bench/results/cavity_modes_<date>.csv                one row per run
@@ -39,7 +39,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)
 
 # ---------------------------------------------------------------------------------------------------------
-# Exact values (rho = 1, omega0 = 1), computed here from SPEC section 2 and the issue, not from the C++.
+# Exact values (rho = 1, omega0 = 1), computed here from docs/physics.md §2 and the issue, not from the C++.
 # ---------------------------------------------------------------------------------------------------------
 
 
@@ -68,7 +68,7 @@ def _roots_on_grid(f, x):
 
 
 def stewartson_energy(a, h, k, xi, lam):
-    """E = 2 (e1 x r, V)^2 / |V|^2 for p = J1(xi r / a) sin(k z) on r < a, |z| < h (SPEC section 2).
+    """E = 2 (e1 x r, V)^2 / |V|^2 for p = J1(xi r / a) sin(k z) on r < a, |z| < h (docs/physics.md §2).
 
     The z integrals are done in closed form (k h = (2n+1) pi / 2, so cos(k h) = 0 and the integrals of sin^2 and
     cos^2 over (-h, h) are both h); (e1 x r, V) uses int_0^a (r J1)_r dr = a J1(q a) and

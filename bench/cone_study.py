@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Cone convergence study for cavity-modes (issue 4: "which cone clusters converge").
+"""Cone convergence study for cavity-modes (docs/cones.md: "which cone clusters converge").
 
 Cones of apex half-angle alpha = 15, 30, 45, 60, 75 degrees, all of the same volume pi/3 (R^2 H = 1, so
 R = tan(alpha)^(1/3), H = tan(alpha)^(-2/3); alpha = 45 is R = H = 1), each at a ladder of element orders and
@@ -460,7 +460,7 @@ def analyse_clusters(raw, angles, lines, cl_rows):
 
 
 def analyse_flags(raw, angles, lines):
-    """Issue 4's hard rule: a cone table must never present an unconverged cluster as converged. For every table
+    """The hard rule of docs/cones.md: a cone table must never present an unconverged cluster as converged. For every table
     with flags, each flagged cluster is compared with the finest table of the same cone (nearest lambda); also the
     flags a looser --convergence-tolerance tau would give (max(dlambda, dE) <= tau) against the same reference."""
     lines.append("## Are flags honest? (every table of the study with a convergence check)\n")

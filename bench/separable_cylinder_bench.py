@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Error against run time of the separable cylinder method (issue 2's speed targets).
+"""Error against run time of the separable cylinder method (the speed targets in docs/benchmarks.md).
 
 Runs `cavity-modes cylinder --method separable` for radius 1 and heights 1, 2, 4 (2h/a = 1, 2, 4) over a sweep
 of --order and --radial-size (axial size --mesh-size = 3 x radial, the ratio of the defaults 3d/8 : d/8 for a <= 2h), then
@@ -55,7 +55,7 @@ QUICK_RADIAL = [1 / 6, 1 / 12]
 TOP = 20  # rows of a table compared with the TOP largest exact modes
 KAPPA_MATCH = 1e-6  # an exact mode is "present" when some row has kappa within this (relative)
 
-# Targets (issue 2), judged on the whole process's wall clock. The dominant-E target is timed with --modes 1.
+# Targets (docs/benchmarks.md), judged on the whole process's wall clock. The dominant-E target is timed with --modes 1.
 TARGETS = [
     dict(key="dominant", name="dominant E to 1e-8", tol=1e-8, tmax=1.0, modes=1),
     dict(key="table20", name="20-cluster table: 20 largest exact modes present, each kappa and E to 1e-6",
@@ -569,7 +569,7 @@ def main():
           "(`process`) unless marked as the program's own `wall_seconds`" % (
               len(rows), sum(1 for r in rows if r["set"] == "sweep"), sweep_s, total_s),
           "- CSV: `%s`; plot: `%s`\n" % (os.path.relpath(csv_path, REPO), os.path.relpath(png_path, REPO)),
-          "## Targets (issue 2), default settings\n",
+          "## Targets, default settings\n",
           "Targets: (a) the dominant E to 1e-8 (relative) in < 1 s, timed with `--modes 1`; (b) a 20-cluster table "
           "in < 3 s: every one of the 20 largest exact modes has a row within 1e-6 in κ (\"present\") whose κ and E "
           "are within 1e-6 (relative), timed with `--modes 20`. Both judged on the process wall clock; the "

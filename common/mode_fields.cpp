@@ -101,7 +101,7 @@ void write_fields_group(hid_t file, const ModeFields& f) {
                  "mesh/points are (r, 0, z): the meridian half-plane phi = 0, z along the symmetry axis, in the "
                  "geometry's coordinates (not centroid-relative)");
   text_attribute(fields.get(), "phase_convention",
-                 "V = (i v_r, v_phi, i v_z) exp(i m phi) with m = 1 (SPEC section 2); V holds the real amplitudes "
+                 "V = (i v_r, v_phi, i v_z) exp(i m phi) with m = 1 (docs/physics.md §2); V holds the real amplitudes "
                  "(v_r, v_phi, v_z): the factor i of V_r and V_z is dropped. At phi = 0 these are also the x, y, z "
                  "components. p is the real pressure amplitude of P = p exp(i phi)");
   text_attribute(fields.get(), "normalisation",

@@ -1,4 +1,4 @@
-// Optional /fields of a mode table (SPEC §4): the meridian mesh and, for each kept mode (cluster), its
+// Optional /fields of a mode table (docs/physics.md §4): the meridian mesh and, for each kept mode (cluster), its
 // pressure p and velocity V at the mesh nodes, plus the XDMF companion that lets ParaView open them.
 // Layout, units and the phase convention: docs/modes.md, "Fields".
 #pragma once

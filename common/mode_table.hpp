@@ -1,5 +1,5 @@
 // The mode table: the contract between cavity-modes (writer) and chain-rom (reader).
-// Layout is SPEC §4: root attributes + datasets under /modes, one entry per mode (spectral
+// Layout is docs/physics.md §4: root attributes + datasets under /modes, one entry per mode (spectral
 // cluster), sorted by E descending. All values for rho = 1 in the geometry's length unit, omega0 = 1.
 #pragma once
 
@@ -29,7 +29,7 @@ struct ModeTable {
   double A_f = 0;            // frozen fluid transverse inertia about the centroid
   double C_f = 0;            // frozen fluid axial inertia
   double J_zh = 0;           // Zhukovsky transverse inertia about the centroid
-  double sum_rule = 0;       // A_f - J_zh = sum of E over all m = 1 modes (SPEC §2)
+  double sum_rule = 0;       // A_f - J_zh = sum of E over all m = 1 modes (docs/physics.md §2)
   double coverage = 0;       // sum of the kept E / sum_rule
   std::string solver;        // human-readable description of the eigen-solver used
   double tolerance = 0;      // solver tolerance

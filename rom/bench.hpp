@@ -7,7 +7,7 @@
 //     owned by the bodies with 1, 2, 4, ... up to all of that cavity's modes kept, with and without
 //     static_correction, against the roots with every mode of every table and the static correction
 //     (the full sum rule A_f - J_zh); at the scene's spins and with every spin set to zero, where the
-//     corrected roots are exact for any number of kept modes (seed 002 Theorem 2).
+//     corrected roots are exact for any number of kept modes (Batyr Theorem 2).
 #pragma once
 
 #include "scene.hpp"

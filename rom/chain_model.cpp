@@ -34,7 +34,7 @@ void check_viscosity(const Scene& scene, const std::string& w, const CavitySpec&
   }
 }
 
-// Fluid of body k: mass, frozen inertia, centre of mass, kept modes (SPEC §4 scaling).
+// Fluid of body k: mass, frozen inertia, centre of mass, kept modes (docs/physics.md §4 scaling).
 void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
                std::vector<FluidMode>& modes, TableCache* tables) {
   const std::string w = "body[" + std::to_string(k + 1) + "].cavity";
@@ -52,7 +52,7 @@ void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
   check_viscosity(scene, w, cav, t, b.omega);
   const double rho = cav.density, L = cav.scale;
   const double L3 = L * L * L, L5 = L3 * L * L;
-  // SPEC §4: mass ~ rho L^3, A_f, C_f, J_zh, E ~ rho L^5; lambda/omega0 scale-free.
+  // docs/physics.md §4: mass ~ rho L^3, A_f, C_f, J_zh, E ~ rho L^5; lambda/omega0 scale-free.
   b.has_fluid = true;
   b.table = cav.table.string();
   b.m_f = rho * L3 * t.volume;
@@ -94,7 +94,7 @@ void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
     m.body = k;
     m.table_index = l;
     m.E = rho * L5 * t.E[l];
-    m.lambda = b.omega * t.lambda[l];  // lambda_kl = 2 omega_k0 / kappa_kl (seed 000 (21))
+    m.lambda = b.omega * t.lambda[l];  // lambda_kl = 2 omega_k0 / kappa_kl (Kononov (21))
     m.nu = b.omega - m.lambda;
     // a ~ rho L^4, N^2 ~ rho L^3 (N^2 carries rho so that E = 2a^2/N^2 ~ rho L^5): a/N^2 ~ L.
     m.a_over_N2 = (t.N2[l] != 0) ? L * t.a[l] / t.N2[l] : 0.0;
@@ -158,7 +158,7 @@ ChainModel build_model(const Scene& scene, TableCache* tables) {
     cm.bodies.push_back(b);
   }
 
-  // Fixed chain, seed 000 after (10) and (26): A'_k = A_k + s_k^2 sum_{i>k} m_i,
+  // Fixed chain, Kononov after (10) and (26): A'_k = A_k + s_k^2 sum_{i>k} m_i,
   // a_k = m_k c_k + s_k sum_{i>k} m_i, M_ki = a_k s_i (i<k), M_ki = s_k a_i (i>k).
   cm.a.resize(n);
   cm.M.setZero(n, n);
@@ -173,7 +173,7 @@ ChainModel build_model(const Scene& scene, TableCache* tables) {
     for (int i = 0; i < k; ++i) cm.M(k, i) = cm.M(i, k) = cm.a[k] * cm.bodies[i].s;
   const double mtot = tail;
   if (scene.free_chain) {
-    // Free chain (docs/free-chain.md, from seed 000 (12)-(14)): the centre of mass of the
+    // Free chain (docs/free-chain.md, from Kononov (12)-(14)): the centre of mass of the
     // whole chain stays at rest, which removes a a^T / m from the fixed-chain matrix.
     if (!(mtot > 0)) fail(scene, "body", "a free chain needs a positive total mass");
     cm.M -= cm.a * cm.a.transpose() / mtot;
@@ -183,14 +183,14 @@ ChainModel build_model(const Scene& scene, TableCache* tables) {
   if (!scene.free_chain)  // gravity: - a_k g u_k in (26); a free chain falls freely (no torque)
     for (int k = 0; k < n; ++k) cm.K(k, k) -= cm.a[k] * scene.gravity;
   cm.D.setZero(n, n);
-  if (!scene.free_chain) cm.D(0, 0) += scene.support_friction;  // alpha_1, seed 002 (43)
+  if (!scene.free_chain) cm.D(0, 0) += scene.support_friction;  // alpha_1, Batyr (43)
   for (int k = 0; k + 1 < n; ++k) {
-    const double kap = scene.joints[k].stiffness;  // kappa_k^2, seed 000 (27)
+    const double kap = scene.joints[k].stiffness;  // kappa_k^2, Kononov (27)
     cm.K(k, k) += kap;
     cm.K(k + 1, k + 1) += kap;
     cm.K(k, k + 1) -= kap;
     cm.K(k + 1, k) -= kap;
-    const double al = scene.joints[k].friction;  // alpha_{k+1}, seed 002 (43)
+    const double al = scene.joints[k].friction;  // alpha_{k+1}, Batyr (43)
     cm.D(k, k) += al;
     cm.D(k + 1, k + 1) += al;
     cm.D(k, k + 1) -= al;

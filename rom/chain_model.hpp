@@ -1,6 +1,6 @@
-// The linearised chain (SPEC §3): mass properties with the fluid added, the kept fluid modes, and
-// the real matrices of system (26) of seed 000 (fixed chain) or of its free-chain form
-// (docs/free-chain.md), with elastic joints (27) and joint friction (seed 002 (43)).
+// The linearised chain (docs/physics.md §3): mass properties with the fluid added, the kept fluid modes, and
+// the real matrices of system (26) of Kononov (fixed chain) or of its free-chain form
+// (docs/free-chain.md), with elastic joints (27) and joint friction (Batyr (43)).
 #pragma once
 
 #include "mode_table.hpp"
@@ -19,7 +19,7 @@ struct FluidMode {
   int body = 0;             // 0-based body index k
   int table_index = 0;      // row in the mode table
   double E = 0;             // E_kl scaled by density*scale^5 (kg m^2)
-  double lambda = 0;        // lambda_kl = omega_k0 * lambda_table (rad/s), seed 000 (21)
+  double lambda = 0;        // lambda_kl = omega_k0 * lambda_table (rad/s), Kononov (21)
   double nu = 0;            // omega_k0 - lambda_kl
   double a_over_N2 = 0;     // a_kl / N_kl^2 (m), converts the scaled coordinate z back to S'
   // Viscous tables (docs/viscous.md section 1, docs/rom.md "Viscous tanks"): the mode is e^{i lambda_c t} with
@@ -32,7 +32,7 @@ struct FluidMode {
 };
 
 struct BodyModel {
-  // totals with the frozen fluid included (SPEC §3: A_k, C_k, m_k include the fluid)
+  // totals with the frozen fluid included (docs/physics.md §3: A_k, C_k, m_k include the fluid)
   double m = 0, A = 0, C = 0, c = 0, s = 0, omega = 0;
   bool has_fluid = false;
   double m_f = 0, A_f = 0, C_f = 0, J_zh = 0, sum_rule = 0;  // scaled fluid data (A_f, J_zh about the centroid)
@@ -53,10 +53,10 @@ struct ChainModel {
   double g = 0;
   std::vector<BodyModel> bodies;
   std::vector<FluidMode> modes;
-  Eigen::VectorXd a;     // a_k = m_k c_k + s_k sum_{i>k} m_i (seed 000 after (10))
+  Eigen::VectorXd a;     // a_k = m_k c_k + s_k sum_{i>k} m_i (Kononov after (10))
   Eigen::MatrixXd M;     // inertia matrix of (26) (fixed) or of the free chain
-  Eigen::MatrixXd K;     // -diag(a_k g) (fixed only) + elastic joints, seed 000 (27)
-  Eigen::MatrixXd D;     // joint friction, seed 002 (43)
+  Eigen::MatrixXd K;     // -diag(a_k g) (fixed only) + elastic joints, Kononov (27)
+  Eigen::MatrixXd D;     // joint friction, Batyr (43)
   Eigen::VectorXd G;     // C_k omega_k0 (gyroscopic term of (26))
   Eigen::MatrixXd M_eff; // M - diag(sum_l E_kl + E_rem_k): inertia seen by u-double-dot (its real part)
   Eigen::VectorXd M_eff_imag;  // -Im(sum_l E_kl + E_rem_k) per body: 0 for ideal tables and with static_correction

@@ -17,7 +17,7 @@ Terms evaluate(const ChainModel& m, cd sigma) {
   const int n = m.n;
   const cd I(0, 1);
   Terms t;
-  // seed 000 (22)/(29): F_k on the diagonal, M_ki (+ kappa^2/sigma^2) off it.
+  // Kononov (22)/(29): F_k on the diagonal, M_ki (+ kappa^2/sigma^2) off it.
   t.Phi = m.M.cast<cd>();
   t.norm_sum = m.M.norm();
   Eigen::MatrixXcd gyro = Eigen::MatrixXcd::Zero(n, n), fluid = Eigen::MatrixXcd::Zero(n, n);

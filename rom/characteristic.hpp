@@ -1,4 +1,4 @@
-// The matrix of the characteristic equation (22)/(29) of seed 000, with friction (seed 002 (43)):
+// The matrix of the characteristic equation (22)/(29) of Kononov, with friction (Batyr (43)):
 //   Phi(sigma) = M + diag(C_k w_k0)/sigma - i D/sigma - K/sigma^2
 //                - diag( (sigma + w_k0) sum_l E_kl/(sigma + w_k0 - lambda_kl) + E_rem_k ),
 // where -K/sigma^2 carries (a_k g - kappa_{k-1}^2 - kappa_k^2)/sigma^2 on the diagonal and

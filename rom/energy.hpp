@@ -2,7 +2,7 @@
 //   H = 1/2 u'^H M_eff u' + 1/2 u^H K u + 1/2 sum_kl c_kl |w_kl|^2,   w_kl = z_kl + u'_k,
 //   c_kl = E_kl (lambda_kl - w_k0)/lambda_kl  (w_k0 != 0),   c_kl = E_kl  (w_k0 = 0),
 //   dH/dt = - u'^H D u' <= 0.
-// At w_k0 = 0 this is the energy balance (11) of seed 002 (kinetic energy of shells and fluid in
+// At w_k0 = 0 this is the energy balance (11) of Batyr (kinetic energy of shells and fluid in
 // absolute motion + potential energy, friction power on the right); for spinning bodies it is the
 // quadratic integral of (26) that reduces to it (the second variation of energy - w0 x momentum),
 // and may be indefinite (gyroscopic stabilisation).
@@ -40,7 +40,7 @@ class EnergyMeter {
 // NaN-filled when some mode has lambda = 0 on a spinning body (no such integral then).
 Energy energy(const ChainModel& m, const Eigen::VectorXcd& u, const Eigen::VectorXcd& v,
               const Eigen::VectorXcd& w);
-// dH/dt = -u'^H D u' (friction power, seed 002 (11)).
+// dH/dt = -u'^H D u' (friction power, Batyr (11)).
 double dissipation(const ChainModel& m, const Eigen::VectorXcd& v);
 // Weights c_kl of the fluid term.
 Eigen::VectorXd fluid_weights(const ChainModel& m);

@@ -1,4 +1,4 @@
-// First-order form of system (26) (seed 000) in the state y = (s u, u-dot, w), with
+// First-order form of system (26) (Kononov) in the state y = (s u, u-dot, w), with
 //   w_kl = z_kl + u-dot_k,   S'_kl = (a_kl / N_kl^2) z_kl,
 // z being the fluid coordinate scaled to angular-velocity units (docs/rom.md, "scaling"). Then
 //   M_eff u'' = -K u - (i Gamma + D) u' + i sum_l E_kl nu_kl w_kl,   Gamma_k = C_k w_k0 - sum_l E_kl lambda_kl,

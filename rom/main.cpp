@@ -1,5 +1,5 @@
 // chain-rom: characteristic roots and time histories of a chain of spinning bodies with
-// fluid-filled cavities (SPEC §3-4). One-line error and exit code 1 on bad input.
+// fluid-filled cavities (docs/physics.md §3-4). One-line error and exit code 1 on bad input.
 #include "bench.hpp"
 #include "chain_model.hpp"
 #include "output.hpp"

@@ -83,7 +83,7 @@ void write_h5(const ChainModel& m, const History& h, const fs::path& tmp) {
   write_attr(file.id, "method", h.method_used);
   write_attr(file.id, "convention",
              "u_k = beta_k - i alpha_k (Krylov angles, rad); z_kl fluid coordinate in rad/s with "
-             "S'_kl = a_over_N2[l] * z_kl (seed 000 (26)); energy: docs/rom.md");
+             "S'_kl = a_over_N2[l] * z_kl (Kononov (26)); energy: docs/rom.md");
   write_attr(file.id, "max_energy_drift", h.max_energy_drift);
   write_attr(file.id, "wall_seconds", h.wall_seconds);
   write_dataset(file.id, "t", h.t, N, 0);
@@ -128,13 +128,13 @@ void write_history(const ChainModel& m, const History& h, const fs::path& out) {
 }
 
 std::string spectrum_json(const Spectrum& sp) {
-  nlohmann::ordered_json j;  // keys in the order of SPEC §4
+  nlohmann::ordered_json j;  // keys in the order of docs/physics.md §4
   j["roots"] = nlohmann::ordered_json::array();
   for (const Root& r : sp.roots) j["roots"].push_back({r.sigma.real(), r.sigma.imag()});
   j["stable"] = sp.stable;
   j["margin"] = sp.margin;
   j["det_residual"] = sp.det_residual;
-  // beyond SPEC §4: the largest -Im sigma (1/s) and the second root finder's agreement (root_newton.hpp)
+  // beyond docs/physics.md §4: the largest -Im sigma (1/s) and the second root finder's agreement (root_newton.hpp)
   j["growth"] = sp.growth;
   j["root_agreement"] = sp.root_agreement;
   j["newton_failed"] = sp.newton_failed;

@@ -16,7 +16,7 @@ namespace rc::rom {
 // HDF5 unless the name ends in .csv. Layout in docs/rom.md ("output").
 void write_history(const ChainModel& m, const History& h, const std::filesystem::path& out);
 
-// SPEC §4: {"roots": [[re, im], ...], "stable": bool, "margin": float, "det_residual": float}
+// docs/physics.md §4: {"roots": [[re, im], ...], "stable": bool, "margin": float, "det_residual": float}
 std::string spectrum_json(const Spectrum& sp);
 void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp);
 

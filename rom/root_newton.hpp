@@ -1,5 +1,5 @@
 // The second, independent root finder of `chain-rom spectrum`: Newton's method on det Phi(sigma) = 0, the
-// characteristic equation (22)/(29) of seed 000 itself (characteristic.hpp), where the eigen-solver works
+// characteristic equation (22)/(29) of Kononov itself (characteristic.hpp), where the eigen-solver works
 // on the first-order matrix of (26). With f = det Phi, f'/f = tr(Phi^{-1} Phi'), so a Newton step is
 //   sigma <- sigma - 1 / tr(Phi(sigma)^{-1} Phi'(sigma)).
 // Started from an eigen-root it converges to the root of (22) nearest it; the distance between the two

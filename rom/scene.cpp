@@ -1,4 +1,4 @@
-// Scene parser (SPEC §4). Every problem gives one SceneError naming the file and the key.
+// Scene parser (docs/physics.md §4). Every problem gives one SceneError naming the file and the key.
 #include "scene.hpp"
 
 #include <toml++/toml.h>

@@ -1,4 +1,4 @@
-// Scene file of chain-rom (SPEC §4, documented key by key in docs/scene-format.md).
+// Scene file of chain-rom (docs/physics.md §4, documented key by key in docs/scene-format.md).
 // parse_scene() validates everything and throws SceneError with a one-line cause naming the key.
 #pragma once
 

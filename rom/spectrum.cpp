@@ -27,7 +27,7 @@ Verdict verdict_of(const ChainModel& m, const Eigen::VectorXcd& sigma) {
   }
   // A dissipative chain's margin is its largest growth rate: negative when every root decays.
   if (m.dissipative()) v.margin = v.growth;
-  // Without friction the seed's necessary condition: all roots real. With friction or a viscous
+  // Without friction Kononov's necessary condition: all roots real. With friction or a viscous
   // tank roots move into Im sigma > 0 (decay); stable then means no root with Im sigma < 0 (growth).
   v.stable = m.dissipative() ? v.growth <= v.tolerance : v.margin <= v.tolerance;
   return v;

@@ -1,4 +1,4 @@
-// Characteristic roots sigma (solutions e^{i sigma t}, seed 000) as eigenvalues of the first-order
+// Characteristic roots sigma (solutions e^{i sigma t}, Kononov) as eigenvalues of the first-order
 // system — never by polynomial root finding — with the stability verdict, the margin, the owner
 // of each root and the cross-check against det Phi(sigma) = 0 of (22)/(29).
 #pragma once

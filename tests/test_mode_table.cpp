@@ -1,4 +1,4 @@
-// Round trip and rejection tests for the HDF5 mode table (SPEC §4).
+// Round trip and rejection tests for the HDF5 mode table (docs/physics.md §4).
 #include "mode_table.hpp"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // The whole cavity-modes pipeline for one cavity: mesh -> forms -> Zhukovsky inertia -> spectral survey
-// -> clusters -> mode table (SPEC §2 and §4).
+// -> clusters -> mode table (docs/physics.md §2 and §4).
 #pragma once
 
 #include "cluster.hpp"

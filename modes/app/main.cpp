@@ -1,4 +1,4 @@
-// cavity-modes: mode tables of the rotating ideal fluid in an axisymmetric cavity (SPEC §2, §4).
+// cavity-modes: mode tables of the rotating ideal fluid in an axisymmetric cavity (docs/physics.md §2, §4).
 //
 //   cavity-modes cylinder --radius 1 --height 2 [--order 4] [--mesh-size 0.2] [--modes N | --coverage c] -o cyl.h5
 //   cavity-modes info cyl.h5 [--json]
@@ -181,7 +181,7 @@ int run(int argc, char** argv) {
   bool json = false;
   auto* info = app.add_subcommand("info", "print a mode table's attributes and modes");
   info->add_option("file", info_file, "mode table (HDF5)")->required();
-  info->add_flag("--json", json, "print SPEC section 4's JSON object");
+  info->add_flag("--json", json, "print docs/physics.md §4's JSON object");
 
   std::string compare_table, compare_reference;
   double compare_tolerance = 1e-6;

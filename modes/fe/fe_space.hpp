@@ -1,5 +1,5 @@
 // The scalar Lagrange finite-element space on the meridian half-section for azimuthal number m >= 1:
-// one degree of freedom per mesh node except the nodes on the axis, where p = 0 (SPEC §2: p = 0 on the
+// one degree of freedom per mesh node except the nodes on the axis, where p = 0 (docs/physics.md §2: p = 0 on the
 // axis for m >= 1). Geometry is isoparametric: the same basis maps the reference triangle.
 #pragma once
 

@@ -1,7 +1,7 @@
 // A one-dimensional continuous Lagrange finite-element space on a partitioned interval: the factor spaces
 // of the tensor-product discretisation of the cylinder (separable_cylinder.hpp). Nodes are the
 // Gauss–Lobatto–Legendre points of each element (well conditioned at high order); dofs are numbered left
-// to right. The left end's dof can be left out (p = 0 on the axis for m = 1, SPEC §2).
+// to right. The left end's dof can be left out (p = 0 on the axis for m = 1, docs/physics.md §2).
 #pragma once
 
 #include <Eigen/Dense>

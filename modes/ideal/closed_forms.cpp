@@ -27,7 +27,7 @@ double bisect(const std::function<double(double)>& f, double lo, double hi) {
   return 0.5 * (lo + hi);
 }
 
-// E of p = J1(ξ r/a) sin(k z) with the SPEC §2 formulas (ω0 = 1), by tensor Gauss–Legendre quadrature.
+// E of p = J1(ξ r/a) sin(k z) with the docs/physics.md §2 formulas (ω0 = 1), by tensor Gauss–Legendre quadrature.
 double cylinder_mode_energy(double a, double h, double k, double xi, double lambda) {
   static std::vector<double> gx, gw;
   if (gx.empty()) gauss_legendre(96, gx, gw);

@@ -1,4 +1,4 @@
-// Closed-form validation cases of SPEC §2 (ρ = 1, ω0 = 1): the sphere and spheroid (one coupling mode
+// Closed-form validation cases of docs/physics.md §2 (ρ = 1, ω0 = 1): the sphere and spheroid (one coupling mode
 // each) and Stewartson's modes of the circular cylinder, plus the cylinder's Zhukovsky inertia series.
 // Used by the tests and by the shipped reference tables; nothing here touches the FE solver.
 #pragma once
@@ -21,7 +21,7 @@ struct SpheroidValues {
 SpheroidValues spheroid(double a, double c);
 
 // Stewartson's spinning-top modes of a cylinder of radius a and height 2h: p = J1(ξ r/a) sin(k z),
-// k = (2n+1)π/(2h), ξ J1′(ξ) + κ J1(ξ) = 0, ξ² = (k a)²(κ² − 1), κ of either sign. E is the SPEC §2
+// k = (2n+1)π/(2h), ξ J1′(ξ) + κ J1(ξ) = 0, ξ² = (k a)²(κ² − 1), κ of either sign. E is the docs/physics.md §2
 // integral evaluated by Gauss–Legendre quadrature of the exact fields. Returns the modes with
 // n < max_axial and ξ < max_xi, sorted by E descending.
 std::vector<Mode> cylinder_modes(double a, double height, int max_axial = 8, double max_xi = 60.0);

@@ -1,4 +1,4 @@
-// A table's "mode" (SPEC §2): a spectral cluster, and the settings of the two ways of refining the survey's
+// A table's "mode" (docs/physics.md §2): a spectral cluster, and the settings of the two ways of refining the survey's
 // nodes into clusters — shift-and-invert Lanczos Gauss rules (lanczos_refinement.hpp, the default) and
 // SLEPc spectrum slices (slice_refinement.hpp). See docs/modes.md, "Clusters".
 #pragma once

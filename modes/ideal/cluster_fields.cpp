@@ -126,9 +126,9 @@ std::vector<Eigenpair> cluster_members(const QuadraticEigenSolver& solver, doubl
 }
 
 // Coefficients c_l of W = Σ c_l V_l (normalised: N²(W) = 1) and a(W), from the assembled forms:
-//   a(V_l)        = −π [f1·p_l/(2 − λ_l) + f2·p_l/λ_l]                                  (SPEC §2)
+//   a(V_l)        = −π [f1·p_l/(2 − λ_l) + f2·p_l/λ_l]                                  (docs/physics.md §2)
 //   (V_l, V_k)    = 2π [((λ_l λ_k + 4) p_lᵀKh p_k + 2(λ_l + λ_k) p_lᵀGc p_k)/(D_l D_k) + p_lᵀKz p_k/(λ_l λ_k)]
-// (the second is SPEC §2's ‖V‖² polarised; for l = k it is coupling.hpp's ‖Ṽ‖²/(λD)²).
+// (the second is docs/physics.md §2's ‖V‖² polarised; for l = k it is coupling.hpp's ‖Ṽ‖²/(λD)²).
 struct Combination {
   std::vector<double> c;
   double a = 0;

@@ -4,12 +4,12 @@
 // slice: every eigenpair within 2δ of the row's λ (δ = cluster_width · max(|λ|, 0.1), the cluster rule of
 // docs/modes.md), the peak = the one of largest E, the members = those within δ of the peak. The cluster's
 // field is the part of the coupling flow it carries,
-//     W = Σ_l (a_l / N_l²) V_l,   a_l = (e1 × r, V_l),   N_l² = ‖V_l‖²   (SPEC §2),
+//     W = Σ_l (a_l / N_l²) V_l,   a_l = (e1 × r, V_l),   N_l² = ‖V_l‖²   (docs/physics.md §2),
 // independent of each eigenvector's scale and sign, and for a one-member cluster just its mode. W is
 // normalised like the table (N² = 1, a ≥ 0). With the members' V orthogonal in the kinetic-energy inner
 // product, a(W) = sqrt(Σ a_l²/N_l²) = sqrt(E/2): the stored a checks that.
 //
-// V from p (SPEC §2, m = 1, ω0 = 1, D = 4 − λ²) in real amplitudes, V = (i v_r, v_φ, i v_z) e^{iφ}:
+// V from p (docs/physics.md §2, m = 1, ω0 = 1, D = 4 − λ²) in real amplitudes, V = (i v_r, v_φ, i v_z) e^{iφ}:
 //     v_r = −(λ p_r + 2 p/r)/D,   v_φ = (2 p_r + λ p/r)/D,   v_z = p_z/λ,
 // with p/r → p_r on the axis (p = 0 there). Gradients at a node are the mean over the elements sharing it.
 #pragma once

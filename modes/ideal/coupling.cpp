@@ -9,7 +9,7 @@ namespace rc::modes {
 ModeCoupling coupling_from_forms(double lambda, double f1p, double f2p, double kh, double gc, double kz) {
   const double l = lambda, D = 4 - l * l;
   // With the real representation V = (i a, b, i c) e^{iφ} of an m = 1 field, the physical inner products
-  // are (U, V) = π ∫∫ U·V r dr dz and ‖V‖² = 2π ∫∫ |V|² r dr dz (SPEC §2). For Ṽ:
+  // are (U, V) = π ∫∫ U·V r dr dz and ‖V‖² = 2π ∫∫ |V|² r dr dz (docs/physics.md §2). For Ṽ:
   const double coupling = std::numbers::pi * ((l * l + 2 * l) * f1p + D * f2p);
   const double t1 = l * l * (l * l + 4) * kh, t2 = 4 * l * l * l * gc,
                t3 = D * D * kz;

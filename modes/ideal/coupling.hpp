@@ -1,6 +1,6 @@
-// Coupling of one eigenpair (λ, p) to the body's tilt: E = 2ρ |(e1 × r, V)|² / ‖V‖² (SPEC §2).
+// Coupling of one eigenpair (λ, p) to the body's tilt: E = 2ρ |(e1 × r, V)|² / ‖V‖² (docs/physics.md §2).
 //
-// Well-conditioned form. SPEC §2 writes V with factors 1/λ and 1/D, D = 4 − λ². E does not depend on
+// Well-conditioned form. docs/physics.md §2 writes V with factors 1/λ and 1/D, D = 4 − λ². E does not depend on
 // the scale of V, so we use Ṽ = λ D V, which has no divisions:
 //   Ṽ_r ∝ λ² p_r + 2λ p/r,   Ṽ_φ ∝ −(2λ p_r + λ² p/r),   Ṽ_z ∝ −D p_z
 // and, in terms of the assembled forms (m = 1, real p),

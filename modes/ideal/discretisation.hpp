@@ -1,5 +1,5 @@
 // One discretisation of a cavity, everything the cluster search needs built once: the FE space, the
-// frozen-fluid integrals, the forms of SPEC §2, the stiffness factorisation, Zhukovsky's inertia, the
+// frozen-fluid integrals, the forms of docs/physics.md §2, the stiffness factorisation, Zhukovsky's inertia, the
 // quadrature-point velocity space and the solenoidal coupling vector w = P_H(e1 × r), whose spectral
 // measure has mass π‖w‖² = A_f − J_zh (the sum rule). Used for the table and for its convergence check.
 #pragma once

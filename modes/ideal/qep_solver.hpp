@@ -1,4 +1,4 @@
-// The quadratic eigenproblem λ² M + 2λ Gc − 4 Kz = 0 (SPEC §2, m = 1, ω0 = 1) with SLEPc PEP.
+// The quadratic eigenproblem λ² M + 2λ Gc − 4 Kz = 0 (docs/physics.md §2, m = 1, ω0 = 1) with SLEPc PEP.
 //
 // The problem is real symmetric and hyperbolic (M > 0, Kz ≥ 0), so every eigenvalue is real and STOAR
 // with spectrum slicing finds ALL eigenvalues in an interval [lo, hi]: shift-and-invert steps with a

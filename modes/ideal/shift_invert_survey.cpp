@@ -12,7 +12,7 @@
 namespace rc::modes {
 namespace {
 
-// Q(σ) = σ² M + 2σ Gc − 4 Kz (SPEC §2, m = 1).
+// Q(σ) = σ² M + 2σ Gc − 4 Kz (docs/physics.md §2, m = 1).
 PMat quadratic_at(const PoincareForms& forms, double sigma) {
   PMat Q;
   petsc_check(MatDuplicate(forms.M, MAT_COPY_VALUES, Q.out()), "MatDuplicate");

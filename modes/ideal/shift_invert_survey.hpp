@@ -1,13 +1,13 @@
 // Shift-and-invert Gauss rules of the coupling's spectral measure: where the plain survey
 // (spectral_survey.hpp) resolves the extremes of the spectrum first, a Lanczos process on (A − σ)⁻¹
 // resolves the part of μ = Σ E_l δ(λ − λ_l) nearest the shift σ first. A node of its rule that has stopped
-// moving IS a cluster (SPEC §2): its λ is the eigenvalue and its weight the E summed over the discrete
+// moving IS a cluster (docs/physics.md §2): its λ is the eigenvalue and its weight the E summed over the discrete
 // eigenpairs it stands for — eigenpairs closer together than the Krylov space can tell apart, which is
 // exactly the splitting of one exact mode among several discrete copies.
 //
 // Each step solves the forced problem at frequency σ: with y = (S − σ)⁻¹u (pointwise),
 //   v = (A − σ)⁻¹ u = y + (S − σ)⁻¹ G p,   Gᵀ Ω (S − σ)⁻¹ G p = −Gᵀ Ω y,
-// and Gᵀ Ω (S − σ)⁻¹ G = −Q(σ) / (σ (σ² − 4)) with Q(σ) = σ² M + 2σ Gc − 4 Kz the QEP of SPEC §2 (m = 1),
+// and Gᵀ Ω (S − σ)⁻¹ G = −Q(σ) / (σ (σ² − 4)) with Q(σ) = σ² M + 2σ Gc − 4 Kz the QEP of docs/physics.md §2 (m = 1),
 // factorised once per shift (MUMPS LDLᵀ; Q(σ) is indefinite). A node θ maps back to λ = σ + 1/θ.
 #pragma once
 

@@ -1,5 +1,5 @@
 // Spectral survey: the Gauss quadrature of the coupling's spectral measure μ = Σ_l E_l δ(λ − λ_l)
-// (SPEC §2), computed by a Lanczos process started from the coupling vector.
+// (docs/physics.md §2), computed by a Lanczos process started from the coupling vector.
 //
 // Why: the discrete spectrum fills (−2, 2) densely (about 2·ndof eigenvalues), but E sits on a few of
 // them. The k-point Gauss rule of μ locates where E sits at the cost of k Lanczos steps, with no

@@ -11,7 +11,7 @@ VelocitySpace::VelocitySpace(const FESpace& space, double centroid_z)
     for (std::size_t q = 0; q < eq.w.size(); ++q) {
       const double r = eq.r[q];
       omega_.push_back(eq.w[q] * r);
-      W_.insert(W_.end(), {eq.z[q] - centroid_z, -(eq.z[q] - centroid_z), -r});  // e1 × r, SPEC §2
+      W_.insert(W_.end(), {eq.z[q] - centroid_z, -(eq.z[q] - centroid_z), -r});  // e1 × r, docs/physics.md §2
       for (int i = 0; i < npe_; ++i) {
         dof_.push_back(dofs[i]);
         ga_.push_back(eq.dNr[q * npe_ + i]);

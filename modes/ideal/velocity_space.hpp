@@ -15,7 +15,7 @@ namespace rc::modes {
 
 class VelocitySpace {
  public:
-  // centroid_z: the origin of z in the coupling field e1 × r (SPEC §2).
+  // centroid_z: the origin of z in the coupling field e1 × r (docs/physics.md §2).
   VelocitySpace(const FESpace& space, double centroid_z);
 
   Eigen::Index size() const { return static_cast<Eigen::Index>(W_.size()); }

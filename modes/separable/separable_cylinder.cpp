@@ -160,7 +160,7 @@ SeparableSpectrum solve_separable_cylinder(double radius, double height, const S
   const Eigen::VectorXd mu = axial.eigenvalues().cwiseMax(0.0);  // μ_0 = 0 (constant) may come out as −1e-15
   const Eigen::VectorXd s = axial.eigenvectors().transpose() * af.s, t = axial.eigenvectors().transpose() * af.t;
 
-  // Zhukovsky: J_zh = π Σ_n b_nᵀ (Ar + μ_n Br)⁻¹ b_n, b_n = g1 s_n − g2 t_n (SPEC §2, seed 002 (53)-(56)).
+  // Zhukovsky: J_zh = π Σ_n b_nᵀ (Ar + μ_n Br)⁻¹ b_n, b_n = g1 s_n − g2 t_n (docs/physics.md §2, Batyr (53)-(56)).
   for (int k = 0; k < Z.ndof(); ++k) {
     const Eigen::VectorXd b = rf.g1 * s(k) - rf.g2 * t(k);
     Eigen::LLT<Eigen::MatrixXd> llt(rf.A + mu(k) * rf.B);

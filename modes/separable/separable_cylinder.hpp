@@ -2,7 +2,7 @@
 // cylinder solver").
 //
 // On a tensor-product grid of 1-D Lagrange elements (r: 0..a with p = 0 on the axis; z over the height),
-// the forms of SPEC §2 are Kronecker products of 1-D forms:
+// the forms of docs/physics.md §2 are Kronecker products of 1-D forms:
 //   Kh = Ar ⊗ Bz,  Kz = Br ⊗ Az,  Gc = Cr ⊗ Bz,
 //   Ar = ∫ (φ_i′φ_j′ + φ_iφ_j/r²) r dr,  Br = ∫ φ_iφ_j r dr,  Cr = ∫ (φ_i′φ_j + φ_iφ_j′) dr,
 //   Az = ∫ ψ_i′ψ_j′ dz,  Bz = ∫ ψ_iψ_j dz,
@@ -15,7 +15,7 @@
 //   [−2Cr 4μBr; 4μBr 0] z = λ [Ar + μBr 0; 0 4μBr] z,   z = (λx, x),
 // is a symmetric-definite pencil: every eigenpair, real, by a dense solver. No eigenpair of different axial
 // vectors mixes, so an exact mode's E is not spread over copies: each discrete eigenpair is one mode.
-// Zhukovsky's problem (SPEC §2) splits the same way: (Ar + μ_n Br) χ_n = g1 s_n − g2 t_n.
+// Zhukovsky's problem (docs/physics.md §2) splits the same way: (Ar + μ_n Br) χ_n = g1 s_n − g2 t_n.
 #pragma once
 
 #include "poincare_forms.hpp"
@@ -52,7 +52,7 @@ struct SeparableSpectrum {
   FluidIntegrals fluid;
   double J_zh = 0;
   double sum_rule = 0;          // A_f − J_zh
-  double sum_E = 0;             // Σ E over every eigenpair: equals sum_rule (SPEC §2) up to rounding
+  double sum_E = 0;             // Σ E over every eigenpair: equals sum_rule (docs/physics.md §2) up to rounding
   long ndof = 0;                // radial × axial dofs of the 2-D tensor space
   int radial_dofs = 0, axial_dofs = 0;
   int coupled_axial = 0;        // axial vectors with a non-zero coupling projection (each solved)

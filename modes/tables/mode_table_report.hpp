@@ -1,4 +1,4 @@
-// Human-readable and JSON views of a mode table (`cavity-modes info`, SPEC §4).
+// Human-readable and JSON views of a mode table (`cavity-modes info`, docs/physics.md §4).
 #pragma once
 
 #include "mode_table.hpp"

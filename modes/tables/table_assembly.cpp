@@ -16,7 +16,7 @@ ModeTable start_table(const geometry::ShapeSpec& shape, const FluidIntegrals& fl
   t.J_zh = J_zh;
   t.sum_rule = fluid.A_f - J_zh;
   t.normalisation = "rho = 1, omega0 = 1; each cluster's V is normalised to N2 = |V|^2 = 1, a = (e1 x r, V), "
-                    "so E = 2 a^2 / N2 (SPEC section 2)";
+                    "so E = 2 a^2 / N2 (docs/physics.md §2)";
   return t;
 }
 

@@ -1,4 +1,4 @@
-// How the results of either method (mesh or separable, cavity_table.hpp) become a mode table (SPEC §4): the
+// How the results of either method (mesh or separable, cavity_table.hpp) become a mode table (docs/physics.md §4): the
 // attributes and datasets both methods fill, filled in one place.
 #pragma once
 

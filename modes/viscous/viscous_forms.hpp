@@ -16,7 +16,7 @@
 // With Ek > 0, Im λ = Ek x̄ᵀKx / x̄ᵀMx > 0: every mode decays as e^{−Im λ t}.
 //
 // The coupling to the body's tilt is (e1 × r, V) = iπ fᵀx with f(v) = ∫∫ (−z' v− + r v_z) r, z' = z − z_c, and
-// ‖V‖² = 2π x̄ᵀ𝓜x; for a real (ideal) mode E = 2|(e1 × r, V)|²/‖V‖² = π (fᵀx)² / xᵀ𝓜x (SPEC §2).
+// ‖V‖² = 2π x̄ᵀ𝓜x; for a real (ideal) mode E = 2|(e1 × r, V)|²/‖V‖² = π (fᵀx)² / xᵀ𝓜x (docs/physics.md §2).
 #pragma once
 
 #include "petsc_handles.hpp"

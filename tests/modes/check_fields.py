@@ -7,7 +7,7 @@
 3. Each mode: 2π ∫∫ energy_density dr dz = N² = 1, a = (e1 × r, V) recomputed from the nodal field against
    /modes/a, the members' E against /modes/E. Integrals use the straight sub-triangles and linear
    interpolation of the nodal values (what ParaView shows), so they carry an O((h/P)²) error.
-4. --sphere R: the single mode against SPEC §2's closed form p = −z r, V = s (z, −z, −r), s > 0 for N² = 1.
+4. --sphere R: the single mode against docs/physics.md §2's closed form p = −z r, V = s (z, −z, −r), s > 0 for N² = 1.
 Prints every error; exits 1 on the first failed check.
 """
 import argparse
@@ -118,7 +118,7 @@ def main():
             N2 = 2 * math.pi * integrate(rz, cells, e)[0]
             check(abs(N2 - 1) <= args.tol_integral, "mode_%d: 2 pi int int energy_density = %.6f (err %.2e)" %
                   (i, N2, abs(N2 - 1)))
-            # a = (e1 x r, V) = pi int int [z' (v_r - v_phi) - r v_z] r dr dz (SPEC section 2, real amplitudes)
+            # a = (e1 x r, V) = pi int int [z' (v_r - v_phi) - r v_z] r dr dz (docs/physics.md §2, real amplitudes)
             a = math.pi * integrate(rz, cells, (z * (V[:, 0] - V[:, 1]) - r * V[:, 2]) * r)[0]
             err = abs(a - a_table[i]) / a_table[i]
             check(err <= args.tol_a, "mode_%d: a from the nodal field %.6f vs /modes/a %.6f (rel err %.2e)" %

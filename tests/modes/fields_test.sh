@@ -22,7 +22,7 @@ run_checks() {  # name, check_fields arguments...
   grep -E "FAILED|Error|Traceback" check.txt | sed 's/^/    /'
 }
 
-# Sphere, order 4 on a coarse mesh (h = R/2): one mode, p = -z r (SPEC §2). The output goes to a
+# Sphere, order 4 on a coarse mesh (h = R/2): one mode, p = -z r (docs/physics.md §2). The output goes to a
 # subfolder and the checks run from elsewhere: the companion must name the table relative to itself.
 mkdir sub
 if "$BIN" sphere --radius 1 --order 4 --mesh-size 0.5 --fields -o sub/s.h5 > run.txt 2>&1 \

@@ -1,4 +1,4 @@
-// cavity-modes against SPEC §2's closed forms, at default settings unless a test says otherwise.
+// cavity-modes against docs/physics.md §2's closed forms, at default settings unless a test says otherwise.
 // Every comparison prints its error.
 #include "cavity_table.hpp"
 #include "closed_forms.hpp"

@@ -17,10 +17,10 @@ TEST(ClosedForms, SpheroidWithEqualAxesIsTheSphere) {
 }
 
 TEST(ClosedForms, CylinderDominantModeMatchesSpecValues) {
-  // SPEC §2: for a = 1, 2h = 2 the dominant mode has κ ≈ 2.00897, E ≈ 2.0544 (Stewartson).
+  // docs/physics.md §2: for a = 1, 2h = 2 the dominant mode has κ ≈ 2.00897, E ≈ 2.0544 (Stewartson).
   const auto modes = exact::cylinder_modes(1.0, 2.0, 3, 40.0);
   ASSERT_FALSE(modes.empty());
-  std::printf("dominant cylinder mode: kappa %.12f (SPEC 2.00897), E %.12f (SPEC 2.0544)\n", modes[0].kappa,
+  std::printf("dominant cylinder mode: kappa %.12f (Stewartson: 2.00897), E %.12f (2.0544)\n", modes[0].kappa,
               modes[0].E);
   EXPECT_NEAR(modes[0].kappa, 2.00897, 5e-6);
   EXPECT_NEAR(modes[0].E, 2.0544, 5e-5);

@@ -57,7 +57,7 @@ std::pair<double, double> nodal_norm_and_a(const Problem& P, const ModeFields::M
 
 }  // namespace
 
-// Sphere (SPEC §2): the one mode is p = −z r, V = s (z, −z, −r) with s = sqrt(15 / (16π R⁵)) for N² = 1, a ≥ 0.
+// Sphere (docs/physics.md §2): the one mode is p = −z r, V = s (z, −z, −r) with s = sqrt(15 / (16π R⁵)) for N² = 1, a ≥ 0.
 TEST(ClusterFields, SphereModeIsTheClosedForm) {
   const Problem P({"sphere", {{"radius", 1.0}}, {}}, 6, 0.25);
   const auto f = cluster_fields(P.space, P.forms, rows({1.0}), {});

@@ -1,5 +1,5 @@
 // The separable cylinder solver (modes/separable/separable_cylinder.hpp, --method separable) against Stewartson's closed
-// form (SPEC §2), the J_zh series of the exact cylinder solution (docs/modes.md, "Separable cylinder solver"), its own discrete sum rule, exact fluid integrals, and the
+// form (docs/physics.md §2), the J_zh series of the exact cylinder solution (docs/modes.md, "Separable cylinder solver"), its own discrete sum rule, exact fluid integrals, and the
 // independent mesh method. Every comparison prints its error.
 #include "cavity_table.hpp"
 #include "closed_forms.hpp"
@@ -71,7 +71,7 @@ TEST(SeparableCylinder, FlatAndTallCylinders) {
   expect_largest_exact_modes(0.1, 1.0, 20, 1e-7, 12);  // 2h/a = 10
 }
 
-// Σ E over every eigenpair equals A_f − J_zh: an exact identity of the discretisation (SPEC §2), here checked on
+// Σ E over every eigenpair equals A_f − J_zh: an exact identity of the discretisation (docs/physics.md §2), here checked on
 // every eigenpair of every coupled radial problem; the frozen-fluid integrals are exact.
 TEST(SeparableCylinder, SumRuleAndFluidIntegrals) {
   const double a = 1.0, H = 2.0, m = kPi * a * a * H;

@@ -1,4 +1,4 @@
-// Completeness: on a small mesh with every eigenpair computed, Σ E = A_f − J_zh (SPEC §2).
+// Completeness: on a small mesh with every eigenpair computed, Σ E = A_f − J_zh (docs/physics.md §2).
 // On straight-sided meshes (cylinder) it is an exact discrete identity: e1 × r is then a combination of
 // discrete gradients and their Coriolis images. On curved isoparametric meshes it holds up to the
 // geometry error, which falls fast with the order (measured on the spheroid c/a = 2: P3 h = 0.5 7.2e-7,

@@ -27,11 +27,11 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 const cd I(0, 1);
 
-// The sphere's spin-over mode (SPEC §2: p = −z r, λ0 = 1): V = (i z, −z, −i r) e^{iφ}, ‖V‖² = 2π · 8/15.
+// The sphere's spin-over mode (docs/physics.md §2: p = −z r, λ0 = 1): V = (i z, −z, −i r) e^{iφ}, ‖V‖² = 2π · 8/15.
 std::array<cd, 3> spin_over(double r, double z) { return {I * z, cd(-z), -I * r}; }
 constexpr double kSpinOverNorm2 = 2 * kPi * 8.0 / 15.0;
 
-// Stewartson's mode p = J1(ξ r) sin(k z) of the cylinder of radius 1 (SPEC §2 formulas for V).
+// Stewartson's mode p = J1(ξ r) sin(k z) of the cylinder of radius 1 (docs/physics.md §2 formulas for V).
 struct StewartsonMode {
   double lambda, k, xi;
   std::array<cd, 3> operator()(double r, double z) const {
@@ -226,13 +226,13 @@ TEST(ViscousResponse, StrongViscosityIsTheStokesLimit) {
   EXPECT_LE(previous, 1e-4);
 }
 
-// The spheroid's coupling mode (SPEC §2: λ0 = 2a²/(a² + c²)) is the linear flow of p = −z r, like the sphere's;
+// The spheroid's coupling mode (docs/physics.md §2: λ0 = 2a²/(a² + c²)) is the linear flow of p = −z r, like the sphere's;
 // its boundary-layer λ1 from the closed form, and the full solver approaching it as Ek → 0.
 TEST(ViscousSpheroid, OblateCouplingModeApproachesTheBoundaryLayerLimit) {
   const double a = 1, c = 0.5;
   const auto x = exact::spheroid(a, c);
   const double lambda0 = x.mode.lambda, D = 4 - lambda0 * lambda0;
-  // p = −z r: p_r = −z, p/r = −z, p_z = −r (SPEC §2's V).
+  // p = −z r: p_r = −z, p/r = −z, p_z = −r (docs/physics.md §2's V).
   const ModeVelocity mode = [&](double r, double z) -> std::array<cd, 3> {
     return {-I * (lambda0 * -z + 2 * -z) / D, cd((2 * -z + lambda0 * -z) / D), I / lambda0 * -r};
   };

@@ -1,4 +1,4 @@
-// Mode tables from the closed forms of SPEC §2 (rho = 1, omega0 = 1), written with
+// Mode tables from the closed forms of docs/physics.md §2 (rho = 1, omega0 = 1), written with
 // rc::write_mode_table: they stand in for cavity-modes output in the chain-rom tests.
 #pragma once
 
@@ -20,7 +20,7 @@ inline rc::ModeTable sphere_table(double R) {
   t.J_zh = 0;
   t.sum_rule = t.A_f;
   t.coverage = 1;
-  t.solver = "closed form (SPEC §2)";
+  t.solver = "closed form (docs/physics.md §2)";
   t.normalisation = "N2 = 1, a = sqrt(E/2)";
   t.kappa = {2.0};
   t.lambda = {1.0};
@@ -45,7 +45,7 @@ inline rc::ModeTable spheroid_table(double a, double c) {
   t.J_zh = m * (a * a - c * c) * (a * a - c * c) / (5 * s);
   t.sum_rule = t.A_f - t.J_zh;
   t.coverage = 1;
-  t.solver = "closed form (SPEC §2)";
+  t.solver = "closed form (docs/physics.md §2)";
   t.normalisation = "N2 = 1, a = sqrt(E/2)";
   const double lam = 2 * a * a / s;
   t.lambda = {lam};

@@ -1,6 +1,6 @@
 // chain-rom bench: the extended-precision reference against a closed form and against itself, the
 // integrators' observed orders, the CSV, and the static correction's exactness at zero spin
-// (seed 002 Theorem 2) for any number of kept modes.
+// (Batyr Theorem 2) for any number of kept modes.
 #include "bench.hpp"
 #include "exact_propagation.hpp"
 #include "reference_propagation.hpp"
@@ -170,7 +170,7 @@ TEST(Bench, GaussConvergesAtOrderFourAndRk45FollowsItsTolerance) {
   for (std::size_t i = 1; i < rk.size(); ++i) EXPECT_GE(rk[i].steps, rk[i - 1].steps);
 }
 
-// SPEC §3 / seed 002 Theorem 2: at w = 0 the fluid acts through its Zhukovsky inertia alone, so with
+// docs/physics.md §3 / Batyr Theorem 2: at w = 0 the fluid acts through its Zhukovsky inertia alone, so with
 // static_correction the tilt roots equal those of the rigid chain (fluid frozen as mass, transverse
 // inertia J_zh) for ANY number of kept modes, to rounding; without it they do not, even with all 12
 // modes kept (the table covers 0.9 of A_f - J_zh). The rigid chain is an independent model: no cavity.

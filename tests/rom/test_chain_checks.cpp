@@ -1,4 +1,4 @@
-// Checks the seeds give for free: decoupling (23)-(24), free chain (30)/(32), factorisations (33)/(34).
+// Checks Kononov's and Batyr's papers give for free: decoupling (23)-(24), free chain (30)/(32), factorisations (33)/(34).
 #include "rom_test_util.hpp"
 
 #include <gtest/gtest.h>
@@ -45,7 +45,7 @@ TEST(ChainChecks, DecouplingIntoEquations23And24) {
   EXPECT_LT(err, 1e-10);
 }
 
-// Free chain: the matrix derived in docs/free-chain.md against seed 000 (30) (n = 3) and (32) (n = 2),
+// Free chain: the matrix derived in docs/free-chain.md against Kononov (30) (n = 3) and (32) (n = 2),
 // whose A_k are about the centres of mass and whose c_1 is C_1 -> O_2.
 TEST(ChainChecks, FreeChainMatrixMatchesSeed30And32) {
   Body b1; b1.mass = 3; b1.A = 0.2; b1.com = 0.11; b1.next = 0.32;
@@ -53,7 +53,7 @@ TEST(ChainChecks, FreeChainMatrixMatchesSeed30And32) {
   Body b3; b3.mass = 0.9; b3.A = 0.03; b3.com = 0.05;
   const ChainModel m3 = model_of(scene_text({b1, b2, b3}, {{}, {}}, 9.81, true));
   const double m1 = 3, m2 = 1.7, mm3 = 0.9, m = m1 + m2 + mm3;
-  const double c1 = 0.32 - 0.11, c2 = 0.09, s2 = 0.27, c3 = 0.05;  // seed's c_1 = C_1 O_2
+  const double c1 = 0.32 - 0.11, c2 = 0.09, s2 = 0.27, c3 = 0.05;  // Kononov's c_1 = C_1 O_2
   const double Ac1 = 0.2 - m1 * 0.11 * 0.11, Ac2 = 0.07 - m2 * c2 * c2, Ac3 = 0.03 - mm3 * c3 * c3;
   Eigen::Matrix3d seed;
   seed(0, 0) = Ac1 + m1 * (m2 + mm3) / m * c1 * c1;
@@ -104,9 +104,9 @@ TEST(ChainChecks, IdenticalFreeBodiesFactorAs33And34) {
 }
 
 // Seed 000 (27)-(28): n identical Lagrange gyroscopes (c_k = c, s_k = 2c, m_k = m, central inertia A^c), a free
-// chain with elastic joints, for general n. The seed's coefficients, built here from its formulas:
+// chain with elastic joints, for general n. Kononov's coefficients, built here from its formulas:
 //   A'_k = A^c + mu m c [(2n - 2k + 1)(2k - 1) - n],  a_k = (2n - 2k + 1) m c,  mu = c/n,
-//   mu_ij = mu (2i - 1) a_j  (i < j; the seed prints a_i, but its equations (27) carry mu a_k (2i - 1) for i < k),
+//   mu_ij = mu (2i - 1) a_j  (i < j; Kononov prints a_i, but its equations (27) carry mu a_k (2i - 1) for i < k),
 // against the model's inertia matrix; then the roots of sigma^2 M' u + sigma C w u - K_el u = 0 (the quadratic
 // eigenproblem of (27) without fluid, K_el the joints' Laplacian with kappa_k^2), by its companion matrix, against
 // chain-rom's spectrum, and det (28) at each root.
@@ -152,7 +152,7 @@ TEST(ChainChecks, IdenticalGyroscopesSeed27And28GeneralN) {
       Eigen::JacobiSVD<Eigen::MatrixXcd> svd(Phi);
       det = std::max(det, svd.singularValues().minCoeff() / svd.singularValues().maxCoeff());
     }
-    std::printf("  n = %2d: |M - seed (27)|/|M| = %.1e, roots against the companion form of (27) %.1e, "
+    std::printf("  n = %2d: |M - Kononov (27)|/|M| = %.1e, roots against the companion form of (27) %.1e, "
                 "det (28) at them (smallest/largest singular value) %.1e\n", n, eM, err, det);
     EXPECT_EQ(got.size(), static_cast<std::size_t>(2 * n));
     EXPECT_LT(eM, 1e-14);

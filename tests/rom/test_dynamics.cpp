@@ -56,7 +56,7 @@ TEST(Batyr, TiltRootsDecayRespectTheoremSixAndProperty3) {
   int oscillatory = 0;
   double min_decay = 1e300, worst81 = -1e300;
   for (cd s : tilts) {
-    // seed 002 (73): exp(-lambda t) = exp(i sigma t), lambda = -i sigma: Re lambda = Im sigma.
+    // Batyr (73): exp(-lambda t) = exp(i sigma t), lambda = -i sigma: Re lambda = Im sigma.
     const cd lam = cd(0, -1) * s;
     min_decay = std::min(min_decay, lam.real());
     if (std::abs(lam.imag()) > sp.tolerance) {
@@ -198,7 +198,7 @@ TEST(Energy, FrictionNeverIncreasesTheEnergy) {
   EXPECT_LT(h.H.back(), h.H.front());
 }
 
-// SPEC §3: at w0 = 0 only sum E = A_f - J_zh matters. One kept mode + static correction must give the
+// docs/physics.md §3: at w0 = 0 only sum E = A_f - J_zh matters. One kept mode + static correction must give the
 // tilt roots of all four modes of a synthetic table (written in test_scene.cpp's table test).
 TEST(Energy, StaticCorrectionRestoresZhukovskyInertiaAtZeroSpin) {
   const rc::ModeTable t = four_mode_table();

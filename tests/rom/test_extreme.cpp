@@ -34,7 +34,7 @@ std::string run_section(double t_end, double step, const std::string& method, in
          "\nmethod = \"" + method + "\"\ntolerance = " + num(tol) + "\n";
 }
 
-// Roots of the E = 0 heavy top A' s^2 + C w s + a g = 0 (seed 000 (23) without fluid).
+// Roots of the E = 0 heavy top A' s^2 + C w s + a g = 0 (Kononov (23) without fluid).
 std::vector<cd> top_roots(double A, double Cw, double ag) {
   const cd disc = std::sqrt(cd(Cw * Cw - 4 * A * ag));
   return {(-Cw + disc) / (2 * A), (-Cw - disc) / (2 * A)};
@@ -285,7 +285,7 @@ rc::ModeTable many_mode_table(int count) {
 }
 }  // namespace
 
-// 200 kept modes in one top. At w = 0 only sum E = A_f - J_zh acts (seed 002 Theorem 2): the tilt
+// 200 kept modes in one top. At w = 0 only sum E = A_f - J_zh acts (Batyr Theorem 2): the tilt
 // roots equal the rigid body with Zhukovsky's inertia. Spinning: finite roots, small det residual, and
 // the verdict against an independent count: F(sigma) is real on the real axis with known signs next to
 // each pole sigma = lambda_l - w (-sign(lambda_l) right of it, +sign(lambda_l) left), next to 0 (sign of

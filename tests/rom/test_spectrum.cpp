@@ -8,7 +8,7 @@ using namespace rc::rom;
 using namespace rc::rom::test;
 using cd = std::complex<double>;
 
-// E = 0, one body: (22) is A' sigma^2 + C w sigma + a g = 0 (multiply F by sigma^2; seed 000
+// E = 0, one body: (22) is A' sigma^2 + C w sigma + a g = 0 (multiply F by sigma^2; Kononov
 // (26) has "= a g u" on the right, so gravity destabilises a top with a > 0).
 TEST(Spectrum, OneBodyWithoutFluidIsTheLagrangeTop) {
   for (double spin : {100.0, 5.0}) {

@@ -1,4 +1,4 @@
-// rom-closed-form-table: writes the SPEC §2 closed-form mode table of a sphere or a spheroid
+// rom-closed-form-table: writes the docs/physics.md §2 closed-form mode table of a sphere or a spheroid
 // (used by the command-line tests and the example scenes in data/scenes/).
 //   rom-closed-form-table sphere R OUT.h5
 //   rom-closed-form-table spheroid a c OUT.h5
