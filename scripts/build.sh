@@ -1,6 +1,12 @@
 #!/usr/bin/env bash
 # Installs what is missing, configures and builds everything into build/ (Release).
 set -euo pipefail
+# --help / -h: this text, nothing else (no install, no build).
+if [ "${1:-}" = "--help" ] || [ "${1:-}" = "-h" ]; then
+  echo "usage: bash scripts/build.sh"
+  sed -n '2,/^set -euo/p' "$0" | grep '^#' | grep -v -- '--help / -h' | sed 's/^# \{0,1\}//'
+  exit 0
+fi
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > build-configure.log 2>&1 || { cat build-configure.log; exit 1; }

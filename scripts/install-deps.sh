@@ -2,6 +2,12 @@
 # Installs every Debian package the build, the tests and the plotting scripts need.
 # Idempotent: packages already present are skipped, so repeat runs cost a second.
 set -euo pipefail
+# --help / -h: this text, nothing else (no install, no build).
+if [ "${1:-}" = "--help" ] || [ "${1:-}" = "-h" ]; then
+  echo "usage: bash scripts/install-deps.sh"
+  sed -n '2,/^set -euo/p' "$0" | grep '^#' | grep -v -- '--help / -h' | sed 's/^# \{0,1\}//'
+  exit 0
+fi
 
 PACKAGES=(
   build-essential cmake pkg-config

@@ -11,6 +11,12 @@
 #      out/default-map.csv and out/default-map.png (scripts/plot_sweep.py).
 # Exits non-zero on the first failure.
 set -euo pipefail
+# --help / -h: this text, nothing else (no install, no build).
+if [ "${1:-}" = "--help" ] || [ "${1:-}" = "-h" ]; then
+  echo "usage: bash scripts/run-default.sh"
+  sed -n '2,/^set -euo/p' "$0" | grep '^#' | grep -v -- '--help / -h' | sed 's/^# \{0,1\}//'
+  exit 0
+fi
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 SCENE="$ROOT/data/scenes/default.toml"

@@ -281,6 +281,10 @@ int run(int argc, char** argv) {
   if (!root) return 0;  // under mpirun: rank 0 writes the table
   rc::write_mode_table(table, output, fields ? &mode_fields : nullptr);
   std::cout << rc::modes::table_text(table) << std::flush;
+  if (req.selection.modes && table.size() < static_cast<std::size_t>(*req.selection.modes))
+    std::cerr << fmt::format("cavity-modes: note: --modes {} asked, the table holds {}: this cavity has no other "
+                             "coupling cluster above the selection's threshold (coverage {:.6f})\n",
+                             *req.selection.modes, table.size(), table.coverage);
   return 0;
 }
 

@@ -69,4 +69,12 @@ else
   bad "capsule section: $(tail -1 cap.txt)"
 fi
 
+# More modes asked than the cavity has: the table holds what exists, and one line says so.
+if "$BIN" sphere --radius 1 --order 3 --modes 3 --no-convergence-check -o few.h5 > few.txt 2> few.err &&
+   grep -q "modes 3 asked, the table holds 1" few.err && [ "$(wc -l < few.err)" -eq 1 ]; then
+  ok "fewer modes than --modes: $(cat few.err)"
+else
+  bad "fewer modes than --modes: $(cat few.err)"
+fi
+
 finish
