@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
+#include <cstdio>
 #include <numeric>
 #include <stdexcept>
 #include <unistd.h>
@@ -92,6 +94,13 @@ std::string get_string(hid_t loc, const std::string& name) {
   return std::string(buf.c_str());
 }
 
+template <class... Args>
+std::string fmt(const char* format, Args... args) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, format, args...);
+  return buf;
+}
+
 template <class T>
 std::vector<T> get_vector(hid_t loc, const std::string& name, hid_t mem_type, bool required) {
   if (H5Lexists(loc, name.c_str(), H5P_DEFAULT) <= 0) {
@@ -104,6 +113,12 @@ std::vector<T> get_vector(hid_t loc, const std::string& name, hid_t mem_type, bo
     throw std::runtime_error("dataset '" + name + "' is not one-dimensional");
   hsize_t n = 0;
   H5Sget_simple_extent_dims(space.get(), &n, nullptr);
+  // A corrupted size must not become a huge allocation: a dataset cannot hold more than its file (uncompressed,
+  // as written here; 16x leaves room for a compressed copy).
+  Hid file(H5Iget_file_id(loc), H5Fclose);
+  hsize_t file_size = 0;
+  if (!file.ok() || H5Fget_filesize(file.get(), &file_size) < 0 || n > (16 * file_size) / sizeof(T) + 1024)
+    throw std::runtime_error("dataset '" + name + "' claims " + std::to_string(n) + " entries, more than the file holds");
   std::vector<T> v(n);
   if (n > 0 && H5Dread(set.get(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0)
     throw std::runtime_error("cannot read dataset '" + name + "'");
@@ -151,6 +166,31 @@ void ModeTable::validate() const {
   if (!viscous())  // a viscous residue's real part is the ideal E only in the limit
     for (double e : E)
       if (e < 0) throw std::runtime_error("/modes/E holds a negative value");
+  check_identities();
+}
+
+// The table's own identities (docs/physics.md §2), so that an edited or corrupted table is refused on reading
+// with the identity it breaks rather than giving a chain nonsense.
+void ModeTable::check_identities() const {
+  const auto fail = [](const std::string& what) { throw std::runtime_error("table identity fails: " + what); };
+  const bool some = !dlambda.empty() || !dE.empty() || !converged.empty();
+  if (some && (dlambda.empty() || dE.empty() || converged.empty()))
+    fail("/modes/dlambda, dE and converged come together (the convergence check), one of them is missing");
+  if (!(volume > 0)) fail("volume > 0");
+  if (std::abs(sum_rule - (A_f - J_zh)) > 1e-9 * std::max({std::abs(A_f), std::abs(J_zh), 1e-300}))
+    fail(fmt("sum_rule = A_f - J_zh (%.12g against %.12g)", sum_rule, A_f - J_zh));
+  const double tiny = 1e-12 * std::max(std::abs(sum_rule), 1e-300);
+  for (std::size_t i = 0; i < E.size(); ++i) {
+    if (lambda[i] == 0) fail(fmt("lambda != 0 (row %zu)", i + 1));
+    if (std::abs(kappa[i] * lambda[i] - 2) > 1e-9) fail(fmt("kappa = 2/lambda (row %zu: kappa %.9g, lambda %.9g)", i + 1, kappa[i], lambda[i]));
+    if (!(N2[i] > 0)) fail(fmt("N2 > 0 (row %zu: %.9g)", i + 1, N2[i]));
+    if (!viscous() && std::abs(lambda[i]) > 2 * (1 + 1e-9))
+      fail(fmt("|lambda| <= 2 for an ideal fluid (row %zu: %.9g)", i + 1, lambda[i]));
+    if (!viscous() && a[i] < 0) fail(fmt("a >= 0, the normalisation a = sqrt(E N2/2) (row %zu: %.9g)", i + 1, a[i]));
+    const std::complex<double> a_c(a[i], viscous() ? a_imag[i] : 0.0), E_c(E[i], viscous() ? E_imag[i] : 0.0);
+    if (std::abs(E_c - 2.0 * a_c * a_c / N2[i]) > 1e-8 * std::abs(E_c) + tiny)
+      fail(fmt("E = 2 a^2/N2 (row %zu: E %.9g, a %.9g, N2 %.9g)", i + 1, E[i], a[i], N2[i]));
+  }
 }
 
 void ModeTable::sort_by_energy() {

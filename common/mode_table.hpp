@@ -66,8 +66,12 @@ struct ModeTable {
   } bands;
 
   std::size_t size() const { return E.size(); }
-  // Throws std::runtime_error if the arrays disagree in length or hold non-finite values.
+  // Throws std::runtime_error if the arrays disagree in length, hold non-finite values or break one of the table's
+  // identities (check_identities).
   void validate() const;
+  // κλ = 2, λ ≠ 0, N² > 0, E = 2a²/N² (complex for viscous tables), |λ| ≤ 2 for ideal tables, sum_rule = A_f − J_zh,
+  // volume > 0, the convergence columns together. Throws std::runtime_error("table identity fails: ...").
+  void check_identities() const;
   // Sorts every /modes array by E descending.
   void sort_by_energy();
 };

@@ -27,11 +27,13 @@ Eigen::VectorXd balance_in_place(Matrix& B) {
           c += static_cast<double>(std::abs(B(j, i)));
           r += static_cast<double>(std::abs(B(i, j)));
         }
-      if (c == 0 || r == 0) continue;
+      if (c == 0 || r == 0 || !std::isfinite(c) || !std::isfinite(r)) continue;
       const double s = c + r;
       double f = 1;
-      while (c < r / 2) { f *= 2; c *= 4; }
-      while (c > r * 2) { f /= 2; c /= 4; }
+      // At most 2^64 per sweep: norms near the ends of the double range (subnormal or huge) would otherwise
+      // take thousands of slow steps, and the 100 sweeps still reach any scale a double can hold.
+      for (int k = 0; k < 64 && c < r / 2; ++k) { f *= 2; c *= 4; }
+      for (int k = 0; k < 64 && c > r * 2; ++k) { f /= 2; c /= 4; }
       if ((c + r) / f < 0.95 * s) {  // worth it: the row + column norm drops by 5 % or more
         changed = true;
         scale[i] *= f;

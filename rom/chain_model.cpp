@@ -199,6 +199,11 @@ ChainModel build_model(const Scene& scene, TableCache* tables) {
   cm.G.resize(n);
   for (int k = 0; k < n; ++k) cm.G[k] = cm.bodies[k].C * cm.bodies[k].omega;
 
+  // Scene values that are each in range can still overflow together (mass 1e308 times com times g): the
+  // matrices of (26) must be finite before any solver sees them.
+  if (!cm.M.allFinite() || !cm.K.allFinite() || !cm.D.allFinite() || !cm.G.allFinite())
+    fail(scene, "body", "the chain's inertia, stiffness, friction or gyroscopic terms overflow double precision "
+                        "(masses, inertias, lengths, spins or gravity too large together)");
   cm.M_eff = cm.M;
   cm.M_eff_imag.setZero(n);
   for (int k = 0; k < n; ++k) {

@@ -209,6 +209,10 @@ int main(int argc, char** argv) {
     } else {
       if (!scene.run.present) throw std::runtime_error(scene_file + ": run: missing [run] section");
       const rc::rom::History h = rc::rom::propagate(model, scene);
+      // A trajectory that left the double range (a scene of extreme magnitudes) is reported, never written.
+      if (!h.u.allFinite() || !h.z.allFinite())
+        throw std::runtime_error("the trajectory is not finite (method " + h.method_used +
+                                 "): the scene's magnitudes leave double precision; nothing written");
       rc::rom::write_history(model, h, out_file);
       std::cout << "wrote " << out_file << ": " << h.t.size() << " samples, method " << h.method_used
                 << ", " << h.wall_seconds << " s (CPU " << h.cpu_seconds << " s)\n";

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <complex>
 #include <filesystem>
 #include <fstream>
 
@@ -17,7 +19,7 @@ rc::ModeTable sample() {
   t.volume = 6.28; t.centroid_z = 0; t.A_f = 2.5; t.C_f = 3.1; t.J_zh = 0.3;
   t.sum_rule = 2.2; t.coverage = 0.97; t.solver = "test"; t.tolerance = 1e-12; t.wall_seconds = 0.1;
   t.kappa = {2.5, 2.00897}; t.lambda = {0.8, 2 / 2.00897}; t.E = {0.01, 2.0544};
-  t.a = {0.1, 1.0}; t.N2 = {1.0, 0.5}; t.residual = {1e-12, 1e-13};
+  t.a = {std::sqrt(0.005), 1.0}; t.N2 = {1.0, 2 / 2.0544}; t.residual = {1e-12, 1e-13};  // E = 2a²/N²
   t.spread = {0, 1e-9}; t.members = {1, 3};
   t.dlambda = {1e-3, 1e-12}; t.dE = {0.5, 1e-10}; t.converged = {0, 1};
   t.convergence_reference = "order 5, same mesh"; t.convergence_tolerance = 1e-6;
@@ -77,10 +79,13 @@ TEST(ModeTable, ViscousFieldsRoundTrip) {
   rc::ModeTable t;
   t.shape = "sphere";
   t.dimensions = {{"radius", 1.0}};
-  t.kappa = {2.0}; t.lambda = {1.0}; t.E = {1.6}; t.a = {0.9}; t.N2 = {1.0}; t.residual = {1e-12};
+  t.kappa = {2.0}; t.lambda = {1.0}; t.E = {1.6}; t.N2 = {1.0}; t.residual = {1e-12};
+  t.volume = 4.18879020479; t.A_f = 1.67551608191; t.C_f = t.A_f; t.sum_rule = t.A_f;
   t.ekman = 1e-4;
   t.mesh_h_wall = 0.01;
-  t.decay = {0.027}; t.E_imag = {-0.08}; t.a_imag = {-0.02};
+  t.decay = {0.027}; t.E_imag = {-0.08};
+  const std::complex<double> a_c = std::sqrt(std::complex<double>(1.6, -0.08) / 2.0);  // E_c = 2 a_c² (N² = 1)
+  t.a = {a_c.real()}; t.a_imag = {a_c.imag()};
   const auto p = std::filesystem::temp_directory_path() / "rc_viscous_roundtrip.h5";
   rc::write_mode_table(t, p);
   const auto r = rc::read_mode_table(p);
@@ -89,7 +94,7 @@ TEST(ModeTable, ViscousFieldsRoundTrip) {
   ASSERT_EQ(r.decay.size(), 1u);
   EXPECT_EQ(r.decay[0], 0.027);
   EXPECT_EQ(r.E_imag[0], -0.08);
-  EXPECT_EQ(r.a_imag[0], -0.02);
+  EXPECT_EQ(r.a_imag[0], a_c.imag());
   std::filesystem::remove(p);
 
   auto growing = t;
@@ -101,4 +106,45 @@ TEST(ModeTable, ViscousFieldsRoundTrip) {
   auto missing = t;
   missing.E_imag.clear();
   EXPECT_THROW(missing.validate(), std::runtime_error);
+}
+
+// A table that breaks one of its identities (docs/physics.md §2) is refused, naming the identity.
+TEST(ModeTable, IdentitiesAreCheckedOnReading) {
+  const auto expect_identity = [](rc::ModeTable t, const char* what) {
+    try {
+      t.validate();
+      ADD_FAILURE() << "accepted a table breaking " << what;
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+    }
+  };
+  sample().validate();
+  auto t = sample();
+  t.lambda[0] = 0;
+  expect_identity(t, "lambda != 0");
+  t = sample();
+  t.kappa[0] = 3;
+  expect_identity(t, "kappa = 2/lambda");
+  t = sample();
+  t.N2[0] = -1;
+  expect_identity(t, "N2 > 0");
+  t = sample();
+  t.a[0] = -t.a[0];
+  expect_identity(t, "a >= 0");
+  t = sample();
+  t.E[0] *= 1.01;
+  expect_identity(t, "E = 2 a^2/N2");
+  t = sample();
+  t.kappa[1] = 0.5;
+  t.lambda[1] = 4;
+  expect_identity(t, "|lambda| <= 2");
+  t = sample();
+  t.sum_rule = 2.3;
+  expect_identity(t, "sum_rule = A_f - J_zh");
+  t = sample();
+  t.dE.clear();
+  expect_identity(t, "come together");
+  t = sample();
+  t.volume = 0;
+  expect_identity(t, "volume > 0");
 }

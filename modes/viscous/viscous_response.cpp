@@ -55,7 +55,23 @@ struct ForcedSolver {
     petsc_check(KSPSolve(ksp, forms.coupling, x), where.c_str());
     KSPConvergedReason reason;
     petsc_check(KSPGetConvergedReason(ksp, &reason), "KSPGetConvergedReason");
-    if (reason < 0) throw std::runtime_error("the " + where + " failed (KSP reason " + std::to_string(reason) + ")");
+    if (reason < 0) throw std::runtime_error("the " + where + " failed: " + factor_failure(reason));
+  }
+
+  // Why the factorisation failed, in words: MUMPS's INFOG(1) -9/-13/-17/-19/-20 are memory, -10 a singular matrix.
+  std::string factor_failure(KSPConvergedReason reason) {
+    PC pc;
+    Mat F;
+    PetscInt infog1 = 0, infog2 = 0;
+    petsc_check(KSPGetPC(ksp, &pc), "KSPGetPC");
+    if (PCFactorGetMatrix(pc, &F) == 0 && MatMumpsGetInfog(F, 1, &infog1) == 0 && MatMumpsGetInfog(F, 2, &infog2) == 0 &&
+        infog1 < 0) {
+      const bool memory = infog1 == -9 || infog1 == -13 || infog1 == -17 || infog1 == -19 || infog1 == -20;
+      return "MUMPS INFOG(1) = " + std::to_string(infog1) + ", INFOG(2) = " + std::to_string(infog2) +
+             (memory ? " (out of memory: a coarser --mesh-size/--wall-size, or mpirun over more memory)"
+                     : infog1 == -10 ? " (singular matrix: sigma on an eigenvalue?)" : "");
+    }
+    return "KSP reason " + std::to_string(reason);
   }
 };
 

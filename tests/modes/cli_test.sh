@@ -77,4 +77,31 @@ else
   bad "fewer modes than --modes: $(cat few.err)"
 fi
 
+# Edited and corrupted tables: refused on reading with one line naming what is wrong, fast.
+if "$BIN" sphere --radius 1 --order 3 --mesh-size 0.5 -o base.h5 > /dev/null 2>&1 && /usr/bin/python3 -c '
+import h5py, shutil
+def variant(name, edit):
+    shutil.copy("base.h5", name)
+    with h5py.File(name, "a") as f:
+        edit(f)
+variant("no_dlambda.h5", lambda f: f["modes"].__delitem__("dlambda"))
+variant("lambda0.h5", lambda f: f["modes/lambda"].__setitem__(0, 0.0))
+variant("kappa.h5", lambda f: f["modes/kappa"].__setitem__(0, 3.0))
+variant("negN2.h5", lambda f: f["modes/N2"].__setitem__(0, -1.0))
+variant("nega.h5", lambda f: f["modes/a"].__setitem__(0, -f["modes/a"][0]))
+def huge(f):  # a size the file cannot hold: two billion entries, none stored
+    del f["modes/E"]
+    f["modes"].create_dataset("E", shape=(2 * 10**9,), dtype="f8", chunks=(1024,))
+variant("huge.h5", huge)
+'; then
+  expect_error "table without /modes/dlambda" "come together" timeout 10 "$BIN" info no_dlambda.h5
+  expect_error "table with lambda = 0" "lambda != 0" timeout 10 "$BIN" info lambda0.h5
+  expect_error "table with kappa not 2/lambda" "kappa = 2/lambda" timeout 10 "$BIN" info kappa.h5
+  expect_error "table with N2 < 0" "N2 > 0" timeout 10 "$BIN" info negN2.h5
+  expect_error "table with a < 0" "a >= 0" timeout 10 "$BIN" info nega.h5
+  expect_error "table claiming 2e9 entries" "more than the file holds" timeout 10 "$BIN" info huge.h5
+else
+  bad "could not make the edited tables"
+fi
+
 finish

@@ -27,6 +27,7 @@ rom_cli(bad_unknown_key ARGS spectrum;bad_unknown_key.toml EXPECT_EXIT 1 MATCH "
 rom_cli(bad_table ARGS spectrum;bad_not_a_table.toml EXPECT_EXIT 1 MATCH "body\\[1\\]\\.cavity\\.table: .*not an HDF5 file")
 rom_cli(bad_modes ARGS spectrum;bad_modes.toml EXPECT_EXIT 1 MATCH "body\\[1\\]\\.cavity\\.modes: 3 requested")
 rom_cli(bad_joints ARGS spectrum;bad_joints.toml EXPECT_EXIT 1 MATCH "joint: the chain has 2 bodies and needs 1")
+rom_cli(bad_huge_mass_run ARGS run;bad_huge_mass.toml;-o;out_huge.h5 EXPECT_EXIT 1 MATCH "^chain-rom: error: the trajectory is not finite[^\n]*nothing written\n?$" NO_FILE out_huge.h5)
 rom_cli(bad_tilt ARGS run;bad_tilt.toml;-o;out_bad_tilt.h5 EXPECT_EXIT 1 MATCH "initial\\.tilt: has 1 entries" NO_FILE out_bad_tilt.h5)
 rom_cli(bad_output_dir ARGS run;two_tops.toml;-o;no_such_dir/out.h5 EXPECT_EXIT 1 MATCH "output folder does not exist" NO_FILE no_such_dir/out.h5)
 rom_cli(missing_scene ARGS spectrum;nope.toml EXPECT_EXIT 1 MATCH "nope.toml: cannot open")
