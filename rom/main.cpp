@@ -157,7 +157,7 @@ int main(int argc, char** argv) {
             break;
           }
       if (!png_file.empty()) {
-        std::vector<std::string> cmd = {python, script, out_file, png_file};
+        std::vector<std::string> cmd = {python, script, out_file, "-o", png_file};
         if (growth_map) cmd.push_back("--growth");
         const int rc = run_program(cmd);
         if (rc != 0)
@@ -192,7 +192,7 @@ int main(int argc, char** argv) {
         std::printf("wrote %s: %zu rows\n", out_file.c_str(), r.rows.size());
       }
       if (!png_file.empty()) {
-        const int rc = run_program({python, script, out_file, png_file});
+        const int rc = run_program({python, script, out_file, "-o", png_file});
         if (rc != 0)
           throw std::runtime_error("--png: " + script + " failed (exit " + std::to_string(rc) + "); the CSV " +
                                    out_file + " was written, no PNG");

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Draws a chain-rom benchmark (CSV from `chain-rom bench SCENE -o OUT.csv`) as a PNG.
 
-    /usr/bin/python3 scripts/plot_bench.py BENCH.csv OUT.png [--title TEXT]
+    /usr/bin/python3 scripts/plot_bench.py BENCH.csv -o OUT.png [--title TEXT]
 
 Left: work-precision, the relative error of the state at t_end against wall time, one line per
 integrator (gauss over its step sweep, rk45 over its tolerance sweep, exact as one point; the long
@@ -29,7 +29,7 @@ def num(s):
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("csv", help="CSV written by chain-rom bench")
-    ap.add_argument("png", help="PNG to write")
+    ap.add_argument("-o", "--output", dest="png", required=True, help="PNG to write")
     ap.add_argument("--title", default=None, help="figure title (default: the CSV's file name)")
     args = ap.parse_args()
     try:

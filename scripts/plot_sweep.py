@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Draws a chain-rom stability map (CSV from `chain-rom sweep ... -o OUT.csv`) as a PNG.
 
-    /usr/bin/python3 scripts/plot_sweep.py SWEEP.csv OUT.png [--title TEXT] [--growth]
+    /usr/bin/python3 scripts/plot_sweep.py SWEEP.csv -o OUT.png [--title TEXT] [--growth]
 
 One swept value: the margin (largest |Im sigma|, rad/s) against the value, unstable points marked.
 Two: a map over both values, the margin in colour (log scale) on the unstable points, stable points
@@ -51,7 +51,7 @@ def draw_growth(fig, ax, np, SymLogNorm, keys, data, stable, growth):
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("csv", help="CSV written by chain-rom sweep")
-    ap.add_argument("png", help="PNG to write")
+    ap.add_argument("-o", "--output", dest="png", required=True, help="PNG to write")
     ap.add_argument("--title", default=None, help="figure title (default: the CSV's file name)")
     ap.add_argument("--growth", action="store_true", help="the margin column is a growth rate (dissipative chains)")
     args = ap.parse_args()

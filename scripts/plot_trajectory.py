@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Draws a chain-rom time history (HDF5 from `chain-rom run ... -o OUT.h5`) as a PNG.
 
-    /usr/bin/python3 scripts/plot_trajectory.py HISTORY.h5 OUT.png [--title TEXT]
+    /usr/bin/python3 scripts/plot_trajectory.py HISTORY.h5 -o OUT.png [--title TEXT]
 
 Left: the path of each body's axis in the tilt plane (alpha_k, beta_k), from u_k = beta_k - i alpha_k
 (Krylov angles), in degrees. Right, top: tilt magnitude |u_k|(t). Right, bottom: relative drift of the
@@ -22,7 +22,7 @@ import numpy as np  # noqa: E402
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("history", help="HDF5 written by chain-rom run")
-    ap.add_argument("png", help="PNG to write")
+    ap.add_argument("-o", "--output", dest="png", required=True, help="PNG to write")
     ap.add_argument("--title", default=None, help="figure title (default: the history's file name)")
     args = ap.parse_args()
 

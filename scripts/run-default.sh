@@ -68,13 +68,13 @@ step "4/6 chain-rom run -> out/default-trajectory.h5"
 "$ROM" run "$SCENE" -o "$OUT/default-trajectory.h5" || fail "chain-rom run"
 
 step "5/6 plot -> out/default-trajectory.png"
-"$PY" "$ROOT/scripts/plot_trajectory.py" "$OUT/default-trajectory.h5" "$OUT/default-trajectory.png" \
+"$PY" "$ROOT/scripts/plot_trajectory.py" "$OUT/default-trajectory.h5" -o "$OUT/default-trajectory.png" \
   --title "default scene (data/scenes/default.toml)" || fail "scripts/plot_trajectory.py"
 
 step "6/6 stability map -> out/default-map.png (body[1].spin 100..400 x joint[1].stiffness 0..400)"
 "$ROM" sweep "$SCENE" --param 'body[1].spin' --from 100 --to 400 --steps 100 \
   --param2 'joint[1].stiffness' --from2 0 --to2 400 --steps2 100 -o "$OUT/default-map.csv" || fail "chain-rom sweep"
-"$PY" "$ROOT/scripts/plot_sweep.py" "$OUT/default-map.csv" "$OUT/default-map.png" \
+"$PY" "$ROOT/scripts/plot_sweep.py" "$OUT/default-map.csv" -o "$OUT/default-map.png" \
   --title "default scene: stability over body 1's spin and joint 1's stiffness" || fail "scripts/plot_sweep.py"
 
 verdict=$(grep -m1 '^stable:' "$OUT/default-spectrum.txt" || true)

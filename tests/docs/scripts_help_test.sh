@@ -22,4 +22,13 @@ for script in "$root"/scripts/*.sh; do
     echo "ok: $name ($(head -1 <<< "$out"))"
   done
 done
+# The plot scripts share one command line: the input positional, the PNG after -o.
+for script in "$root"/scripts/plot_*.py; do
+  usage=$(/usr/bin/python3 "$script" --help 2>&1 | tr '\n' ' ')
+  if grep -qE -- '-o (OUTPUT|PNG)' <<< "$usage" && ! grep -qE 'positional arguments: +[a-z]+ +[^-]*[a-z]+ +PNG' <<< "$usage"; then
+    echo "ok: $(basename "$script") takes -o"
+  else
+    echo "FAILED: $(basename "$script") does not take its output as -o: $usage"; fail=1
+  fi
+done
 [ $fail -eq 0 ] && echo "scripts --help: all passed" || { echo "scripts --help: FAILED"; exit 1; }
