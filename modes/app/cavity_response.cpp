@@ -57,7 +57,18 @@ CavityResponse mesh_response(const ResponseRequest& req) {
 CavityResponse viscous_cavity_response(const ResponseRequest& req) {
   long unknowns = 0;
   CavityResponse out;
-  out.R = cavity_response(req.shape, req.mesh, req.ekman, req.sigmas, &unknowns);
+  // A line at most every 5 s on stderr (rank 0), with the time left at the pace so far.
+  const auto start = std::chrono::steady_clock::now();
+  auto last = start;
+  const auto report = [&](std::size_t done, std::size_t total) {
+    const auto now = std::chrono::steady_clock::now();
+    if (done == total || std::chrono::duration<double>(now - last).count() < 5 || !is_root_rank()) return;
+    last = now;
+    const double t = std::chrono::duration<double>(now - start).count();
+    std::fprintf(stderr, "cavity-modes response: %zu/%zu frequencies, %.0f s, about %.0f s left\n", done, total, t,
+                 t * static_cast<double>(total - done) / static_cast<double>(done));
+  };
+  out.R = cavity_response(req.shape, req.mesh, req.ekman, req.sigmas, &unknowns, report);
   out.unknowns = unknowns;
   out.method = fmt::format("viscous fluid, Ekman number {:g}, forced solves on Taylor-Hood P{}/P{} ({} real unknowns); "
                            "R = sum_l E_l/(sigma - lambda_l) + const",

@@ -78,7 +78,8 @@ struct ForcedSolver {
 }  // namespace
 
 std::vector<std::complex<double>> viscous_response(const ViscousForms& forms,
-                                                   const std::vector<std::complex<double>>& sigmas) {
+                                                   const std::vector<std::complex<double>>& sigmas,
+                                                   const ResponseProgress& progress) {
   std::vector<std::complex<double>> out;
   PVec x;
   petsc_check(VecDuplicate(forms.coupling, x.out()), "VecDuplicate");
@@ -103,18 +104,19 @@ std::vector<std::complex<double>> viscous_response(const ViscousForms& forms,
     petsc_check(VecRestoreArrayRead(forms.coupling, &fs), "VecRestoreArrayRead");
     MPI_Allreduce(&local, &fb, 1, MPI_DOUBLE, MPI_SUM, comm);
     out.push_back(std::numbers::pi * std::complex<double>(fa, fb));
+    if (progress) progress(out.size(), sigmas.size());
   }
   return out;
 }
 
 std::vector<std::complex<double>> cavity_response(const geometry::ShapeSpec& shape, geometry::MeshOptions mesh,
                                                   double ekman, const std::vector<std::complex<double>>& sigmas,
-                                                  long* unknowns) {
+                                                  long* unknowns, const ResponseProgress& progress) {
   const TaylorHoodSpace space(mesh_on_root([&] { return geometry::mesh_meridian(shape, mesh); }, PETSC_COMM_WORLD));
   const double centroid_z = integrate_fluid(space.geometry()).centroid_z;
   const ViscousForms forms = assemble_viscous_forms(space, centroid_z, ekman, PETSC_COMM_WORLD);
   if (unknowns) *unknowns = 2L * forms.complex_size;
-  return viscous_response(forms, sigmas);
+  return viscous_response(forms, sigmas, progress);
 }
 
 }  // namespace rc::modes

@@ -9,18 +9,24 @@
 #include "viscous_forms.hpp"
 
 #include <complex>
+#include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace rc::modes {
 
+// Called after each σ with (done, total).
+using ResponseProgress = std::function<void(std::size_t, std::size_t)>;
+
 // Throws std::runtime_error if a factorisation fails (σ on an eigenvalue, or a singular matrix).
 std::vector<std::complex<double>> viscous_response(const ViscousForms& forms,
-                                                   const std::vector<std::complex<double>>& sigmas);
+                                                   const std::vector<std::complex<double>>& sigmas,
+                                                   const ResponseProgress& progress = {});
 
 // The same for a cavity: meshes it (viscous_mesh_defaults must have resolved `mesh`), assembles at `ekman` with
 // z measured from the fluid centroid, and solves at every σ. `unknowns` receives the real unknowns' count.
 std::vector<std::complex<double>> cavity_response(const geometry::ShapeSpec& shape, geometry::MeshOptions mesh,
                                                   double ekman, const std::vector<std::complex<double>>& sigmas,
-                                                  long* unknowns = nullptr);
+                                                  long* unknowns = nullptr, const ResponseProgress& progress = {});
 
 }  // namespace rc::modes
