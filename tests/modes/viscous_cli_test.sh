@@ -187,8 +187,9 @@ g = [float(r["margin"]) for r in rows]
 s = [int(r["stable"]) for r in rows]
 assert len(rows) == 24 and all(x == x for x in g), g
 assert 0 < sum(s) < 24 and all(gi > 0 for gi, si in zip(g, s) if si == 0), list(zip(g, s))
-# stable: growth within the verdict tolerance, 1e-7 x the spectral radius (docs/rom.md, "Viscous tanks")
-assert max(gi for gi, si in zip(g, s) if si == 1) < 0.05 * max(g), list(zip(g, s))
+# stable means no growth: the tolerance scales with the oscillating roots, not with the heavily
+# damped pseudo-roots (they once let 1.8e-3 1/s of growth at C = A pass as stable)
+assert max(gi for gi, si in zip(g, s) if si == 1) <= 0, list(zip(g, s))
 print("viscous sweep: growth rates from %.3g to %.3g 1/s, %d of 24 stable" % (min(g), max(g), sum(s)))
 '; then ok "sweep of a viscous scene: growth rates, PNG"
 else bad "viscous sweep: $(tail -3 gsweep.txt)"
