@@ -51,6 +51,9 @@ class PetscSession {
   ~PetscSession();
   PetscSession(const PetscSession&) = delete;
   PetscSession& operator=(const PetscSession&) = delete;
+
+ private:
+  std::string session_dir_;  // this process's own OpenMPI session directory (serial runs), removed at the end
 };
 
 }  // namespace rc::modes
