@@ -208,6 +208,18 @@ int main(int argc, char** argv) {
       else rc::rom::print_spectrum(std::cout, model, sp);
     } else {
       if (!scene.run.present) throw std::runtime_error(scene_file + ": run: missing [run] section");
+      // An unstable scene is integrated all the same (its growth may be what the user studies), but said first:
+      // the linear model's tilts then grow without bound (fuzz: 30 000 degrees without a word).
+      try {
+        const rc::rom::Verdict v = rc::rom::compute_verdict(model);
+        if (!v.stable)
+          std::fprintf(stderr, "chain-rom: warning: the scene is unstable (%s %.6g %s): the linearised tilts grow "
+                               "without bound and leave the model's small-angle range\n",
+                       model.dissipative() ? "largest growth rate" : "margin, largest |Im sigma|", v.margin,
+                       model.dissipative() ? "1/s" : "rad/s");
+      } catch (const std::runtime_error&) {
+        // No verdict (the eigen-solver failed): the propagation reports its own trouble.
+      }
       const rc::rom::History h = rc::rom::propagate(model, scene);
       // A trajectory that left the double range (a scene of extreme magnitudes) is reported, never written.
       if (!h.u.allFinite() || !h.z.allFinite())

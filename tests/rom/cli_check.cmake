@@ -1,5 +1,6 @@
 # Runs EXE with ARGS in WD; checks the exit code, that stdout+stderr match MATCH, and that NO_FILE
-# (if given) does not exist afterwards (no partial output file). PYTHON sets CHAIN_ROM_PYTHON (the
+# (if given) does not exist afterwards (no partial output file); with exit 0 MATCH applies to stdout alone and
+# MATCH_STDERR, if given, to stderr (warnings). PYTHON sets CHAIN_ROM_PYTHON (the
 # interpreter `sweep --png` runs); LINES_FILE, if given, must have LINES lines.
 if(NOT "${PYTHON}" STREQUAL "")
   set(ENV{CHAIN_ROM_PYTHON} "${PYTHON}")
@@ -15,6 +16,9 @@ if(EXPECT_EXIT EQUAL 0)
 endif()
 if(NOT "${MATCH}" STREQUAL "" AND NOT text MATCHES "${MATCH}")
   message(FATAL_ERROR "output does not match ${MATCH}")
+endif()
+if(NOT "${MATCH_STDERR}" STREQUAL "" AND NOT err MATCHES "${MATCH_STDERR}")
+  message(FATAL_ERROR "stderr does not match ${MATCH_STDERR}")
 endif()
 if(NOT EXPECT_EXIT EQUAL 0)
   string(STRIP "${err}" e)

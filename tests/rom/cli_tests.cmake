@@ -7,10 +7,10 @@ add_test(NAME rom_cli_setup
 set_tests_properties(rom_cli_setup PROPERTIES FIXTURES_SETUP rom_cli)
 
 function(rom_cli name)
-  cmake_parse_arguments(T "" "EXPECT_EXIT;MATCH;NO_FILE;PYTHON;LINES;LINES_FILE" "ARGS" ${ARGN})
+  cmake_parse_arguments(T "" "EXPECT_EXIT;MATCH;MATCH_STDERR;NO_FILE;PYTHON;LINES;LINES_FILE" "ARGS" ${ARGN})
   add_test(NAME rom_cli_${name}
     COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:chain-rom> "-DARGS=${T_ARGS}" -DEXPECT_EXIT=${T_EXPECT_EXIT}
-            "-DMATCH=${T_MATCH}" "-DNO_FILE=${T_NO_FILE}" "-DPYTHON=${T_PYTHON}" "-DLINES=${T_LINES}"
+            "-DMATCH=${T_MATCH}" "-DMATCH_STDERR=${T_MATCH_STDERR}" "-DNO_FILE=${T_NO_FILE}" "-DPYTHON=${T_PYTHON}" "-DLINES=${T_LINES}"
             "-DLINES_FILE=${T_LINES_FILE}" -DWD=${_scenes} -P ${CMAKE_CURRENT_SOURCE_DIR}/cli_check.cmake)
   set_tests_properties(rom_cli_${name} PROPERTIES FIXTURES_REQUIRED rom_cli)
 endfunction()
@@ -28,6 +28,7 @@ rom_cli(bad_table ARGS spectrum;bad_not_a_table.toml EXPECT_EXIT 1 MATCH "body\\
 rom_cli(bad_modes ARGS spectrum;bad_modes.toml EXPECT_EXIT 1 MATCH "body\\[1\\]\\.cavity\\.modes: 3 requested")
 rom_cli(bad_joints ARGS spectrum;bad_joints.toml EXPECT_EXIT 1 MATCH "joint: the chain has 2 bodies and needs 1")
 rom_cli(bad_huge_mass_run ARGS run;bad_huge_mass.toml;-o;out_huge.h5 EXPECT_EXIT 1 MATCH "^chain-rom: error: the trajectory is not finite[^\n]*nothing written\n?$" NO_FILE out_huge.h5)
+rom_cli(run_unstable_warns ARGS run;unstable_run.toml;-o;out_unstable.h5 EXPECT_EXIT 0 MATCH "wrote out_unstable.h5" MATCH_STDERR "^chain-rom: warning: the scene is unstable .margin, largest .Im sigma. [0-9.]+ rad.s.: the linearised tilts grow")
 rom_cli(bad_tilt ARGS run;bad_tilt.toml;-o;out_bad_tilt.h5 EXPECT_EXIT 1 MATCH "initial\\.tilt: has 1 entries" NO_FILE out_bad_tilt.h5)
 rom_cli(bad_output_dir ARGS run;two_tops.toml;-o;no_such_dir/out.h5 EXPECT_EXIT 1 MATCH "output folder does not exist" NO_FILE no_such_dir/out.h5)
 rom_cli(missing_scene ARGS spectrum;nope.toml EXPECT_EXIT 1 MATCH "nope.toml: cannot open")
