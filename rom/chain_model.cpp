@@ -98,6 +98,8 @@ void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
     m.nu = b.omega - m.lambda;
     // a ~ rho L^4, N^2 ~ rho L^3 (N^2 carries rho so that E = 2a^2/N^2 ~ rho L^5): a/N^2 ~ L.
     m.a_over_N2 = (t.N2[l] != 0) ? L * t.a[l] / t.N2[l] : 0.0;
+    if (!t.converged.empty()) m.converged = t.converged[l];
+    if (m.converged == 0) ++b.unconverged;
     if (t.viscous()) {
       // Spin -omega mirrors the flow (phi -> -phi) and conjugates it: lambda_c -> -conj(lambda_c), so the
       // decay scales with |omega| and E_c -> conj(E_c) (docs/rom.md, "Viscous tanks"; derived, no test yet).

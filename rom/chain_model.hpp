@@ -26,6 +26,7 @@ struct FluidMode {
   // lambda_c = lambda + i decay (rad/s), its coupling the complex residue E_c = E + i E_imag. Both 0 when ideal.
   double E_imag = 0;        // kg m^2
   double decay = 0;         // omega_k0 * decay_table (1/s)
+  int converged = -1;       // the table's flag for this cluster: 1 yes, 0 no, -1 the table has no flags
   std::complex<double> E_c() const { return {E, E_imag}; }
   std::complex<double> lambda_c() const { return {lambda, decay}; }
   std::complex<double> nu_c() const { return {nu, -decay}; }  // omega_k0 - lambda_c
@@ -44,6 +45,7 @@ struct BodyModel {
   // (table units, s = (sigma + omega)/omega) to fit_error; outside, the fit is extrapolated. fit_hi > fit_lo marks it.
   double fit_lo = 0, fit_hi = 0, fit_error = 0;
   double coverage = 0;       // E_kept / sum_rule
+  int unconverged = 0;       // kept clusters the table flags as not converged
   std::string table;
 };
 

@@ -139,6 +139,7 @@ std::string spectrum_json(const Spectrum& sp) {
   j["root_agreement"] = sp.root_agreement;
   j["newton_failed"] = sp.newton_failed;
   j["outside_fit"] = sp.outside_fit;
+  j["unconverged_owners"] = sp.unconverged_owners;
   return j.dump();
 }
 
@@ -154,6 +155,8 @@ void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp) {
          << ", kept sum E = " << b.E_kept << " (coverage " << b.coverage << ")"
          << (b.E_rem > 0 ? ", static correction " + std::to_string(b.E_rem) : std::string());
     if (b.ekman > 0) os << ", viscous (Ek = " << b.ekman << ", kept Im sum E = " << b.E_kept_imag << ")";
+    if (b.unconverged > 0)
+      os << ", " << b.unconverged << " kept clusters not converged (their roots marked *: docs/cones.md)";
     if (b.fit_hi > b.fit_lo)
       os << ", modes of a response fit on s in [" << b.fit_lo << ", " << b.fit_hi << "] (error " << b.fit_error << ")";
     os << "\n";
@@ -162,7 +165,7 @@ void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp) {
   os << std::setprecision(12);
   for (const Root& r : sp.roots) {
     os << "  " << std::setw(20) << r.sigma.real() << "  " << std::setw(20) << r.sigma.imag() << "i  "
-       << std::setw(10) << r.owner << "  det residual ";
+       << std::setw(10) << r.owner << (r.unconverged_owner ? "*" : " ") << " det residual ";
     if (std::isnan(r.residual)) os << "n/a (sigma = 0 or at a pole of (22))";
     else os << std::setprecision(3) << r.residual << std::setprecision(12);
     os << "\n";
@@ -182,6 +185,10 @@ void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp) {
   os << "Newton on det Phi = 0 from every root: worst shift " << sp.root_agreement << " of the spectral radius";
   if (sp.newton_failed) os << ", " << sp.newton_failed << " roots where Newton did not converge";
   os << "\n";
+  if (sp.unconverged_owners)
+    os << sp.unconverged_owners << " roots (marked *) belong to clusters their tables flag as not converged: their "
+       << "frequencies are not reliable (docs/cones.md); the body roots are compared with a finer table in "
+       << "docs/rom.md, \"Viscous tanks\"\n";
   if (sp.outside_fit)
     os << sp.outside_fit << " roots lie outside a tank's response-fit window, where its fit is extrapolated "
        << "(docs/viscous.md, \"Response fit\")\n";

@@ -93,6 +93,7 @@ Spectrum compute_spectrum(const ChainModel& m) {
       if (wgt > best) {
         best = wgt;
         r.owner = "fluid " + std::to_string(md.body + 1) + "." + std::to_string(count[md.body]);
+        r.unconverged_owner = md.converged == 0;
       }
     }
     r.residual = characteristic_residual(m, r.sigma, std::max(radius, 1e-300));
@@ -112,6 +113,7 @@ Spectrum compute_spectrum(const ChainModel& m) {
     if (std::isnan(r.residual)) ++sp.unchecked;
     else sp.det_residual = std::max(sp.det_residual, r.residual);
     if (!std::isnan(r.newton_shift)) sp.root_agreement = std::max(sp.root_agreement, r.newton_shift);
+    if (r.unconverged_owner) ++sp.unconverged_owners;
     for (const BodyModel& b : m.bodies)
       if (b.fit_hi > b.fit_lo && b.omega != 0) {
         const double s = ((r.sigma + b.omega) / b.omega).real();

@@ -19,6 +19,7 @@ struct Root {
   // Newton on det Phi = 0 started here (root_newton.hpp): |sigma_Newton - sigma| / spectral radius;
   // NaN where (22) is undefined or Newton did not converge.
   double newton_shift = 0;
+  bool unconverged_owner = false;  // owned by a cluster its table flags as not converged (docs/cones.md)
 };
 
 struct Spectrum {
@@ -34,6 +35,7 @@ struct Spectrum {
   int nonreal = 0;             // roots with |Im sigma| > tolerance
   // Roots where some tank's response-fit table is extrapolated: Re (sigma + omega_k)/omega_k outside its window.
   int outside_fit = 0;
+  int unconverged_owners = 0;  // roots owned by a kept cluster that its table flags as not converged
 };
 
 // The verdict alone (eigenvalues only: no eigenvectors, owners or det residuals), by the same
