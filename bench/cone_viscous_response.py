@@ -7,7 +7,9 @@ last in the interior and at the wall; prints the changes and the observed order.
       [--sizes 0.25,0.125,0.0625]
 
 Writes bench/results/cone_viscous_response_Ek<Ek>_<date>.csv."""
-import argparse, csv, datetime, math, os, subprocess, tempfile, time
+import argparse, math, os, subprocess, tempfile, time
+
+from results_csv import write_results
 
 SIGMAS = ["0.5", "1", "1.5", "-0.7", "0.5+0.1i", "1.2+0.05i"]
 
@@ -54,13 +56,7 @@ def main():
         d2 = abs(r[2] - r[1]) / abs(r[-1]) if len(r) > 2 else float("nan")
         order = math.log2(d1 / d2) if len(r) > 2 and d2 > 0 else float("nan")
         print("| %s | %.10f %+.10fi | %.2e | %.2e | %.2f |" % (s, r[-1].real, r[-1].imag, d1, d2, order))
-    os.makedirs("bench/results", exist_ok=True)
-    out = "bench/results/cone_viscous_response_Ek%g_%s.csv" % (args.ekman, datetime.date.today().isoformat())
-    with open(out, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0]))
-        w.writeheader()
-        w.writerows(rows)
-    print("wrote", out)
+    write_results("cone_viscous_response_Ek%g" % args.ekman, rows)
 
 
 if __name__ == "__main__":

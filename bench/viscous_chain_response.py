@@ -11,9 +11,11 @@ response (Greenspan's Ek^1/2 theory with the Ekman layer driven at the nutation 
 R is analytic near the real axis (the poles lambda_l have Im > 0), so it is sampled on a short real segment
 around the ideal nutation frequency and continued as a polynomial to the complex root (|Im s| ~ 1e-2).
 Writes bench/results/viscous_chain_response_<date>.csv and prints a markdown table."""
-import argparse, csv, datetime, os, subprocess, tempfile
+import argparse, json, os, subprocess, tempfile
 import numpy as np
 from scipy.integrate import quad
+
+from results_csv import write_results
 
 RHO, L, W = 1000.0, 0.05, 100.0
 A_SHELL = 0.002
@@ -30,18 +32,27 @@ def response(binary, ek, lo, hi, n):
     return data[:, 0], data[:, 2] + 1j * data[:, 3]
 
 
-def chain_root(rom, ek, c_shell, table):
+def chain_roots(rom, ek, c_shell, table):
+    """Every root of the one-body scene with `table` (chain-rom spectrum --json)."""
     with tempfile.TemporaryDirectory() as d:
         scene = os.path.join(d, "s.toml")
         with open(scene, "w") as f:
             f.write('[system]\nkind = "fixed"\ngravity = 0.0\n[[body]]\nmass = 0.5\nA = %r\nC = %r\ncom = 0.0\n'
                     'spin = %r\n[body.cavity]\ntable = "%s"\ndensity = %r\nscale = %r\ncenter = 0.0\n'
                     'viscosity = %r\n' % (A_SHELL, c_shell, W, table, RHO, L, ek * W * L * L))
-        import json
         j = json.loads(subprocess.run([rom, "spectrum", scene, "--json"], check=True, capture_output=True,
                                       text=True).stdout)
-    roots = [complex(r[0], r[1]) for r in j["roots"]]
-    return max(roots, key=abs)
+    return [complex(r[0], r[1]) for r in j["roots"]]
+
+
+def chain_root(rom, ek, c_shell, table):
+    return max(chain_roots(rom, ek, c_shell, table), key=abs)
+
+
+def characteristic(sg, Rs, c_shell):
+    """(22) for the one body: A' + C w/sigma - (sigma + w) (rho L^5 / w) R, with R = R(s) given."""
+    A, C = A_SHELL + AF, c_shell + AF
+    return A + C * W / sg - (sg + W) * RHO * L**5 / W * Rs
 
 
 def boundary_layer_lambda1(s):
@@ -64,8 +75,7 @@ def boundary_layer_response(ek):
 
 
 def solve(c_shell, R, s0):
-    A, C = A_SHELL + AF, c_shell + AF
-    F = lambda sg: A + C * W / sg - (sg + W) * RHO * L**5 / W * R((sg + W) / W)
+    F = lambda sg: characteristic(sg, R((sg + W) / W), c_shell)
     sg = (s0 - 1) * W
     for _ in range(60):
         h = 1e-6 * abs(sg)
@@ -103,13 +113,7 @@ def main():
                                  sigma_layer_im=layer.imag, fit_error=fit_err))
                 print("| %.0e | %.3f | %.6f %+.6fi | %.6f %+.6fi | %.6f %+.6fi | %.1e |" % (
                     ek, c_shell, full.real, full.imag, modal.real, modal.imag, layer.real, layer.imag, fit_err), flush=True)
-    os.makedirs("bench/results", exist_ok=True)
-    out = "bench/results/viscous_chain_response_%s.csv" % datetime.date.today().isoformat()
-    with open(out, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0]))
-        w.writeheader()
-        w.writerows(rows)
-    print("wrote", out)
+    write_results("viscous_chain_response", rows)
 
 
 if __name__ == "__main__":

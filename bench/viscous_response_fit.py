@@ -10,12 +10,11 @@ iteration started at the chain's root. Also the root with the table's single dam
 
 Samples: every --step (0.05) on [-1.5, 2], and graded towards the spin-over peak at s = 1 (s = 1 + d sinh(u), u every 0.25,
 d = 2.6 Ek^1/2 the boundary-layer decay). Writes bench/results/viscous_response_fit_<date>.csv and a markdown table."""
-import argparse, csv, datetime, json, os, subprocess, tempfile, time
+import argparse, os, subprocess, tempfile, time
 import numpy as np
 
-RHO, L, W = 1000.0, 0.05, 100.0
-A_SHELL = 0.002
-AF = 8 * np.pi / 15 * RHO * L**5
+from results_csv import write_results
+from viscous_chain_response import W, chain_roots, characteristic
 
 
 def samples(ek, step):
@@ -43,21 +42,6 @@ def fit_table(binary, ek, step, path):
     return time.time() - t0, len(sig.split(",")), solver
 
 
-def chain_roots(rom, ek, c_shell, table, static):
-    with tempfile.TemporaryDirectory() as d:
-        scene = os.path.join(d, "s.toml")
-        with open(scene, "w") as f:
-            f.write('[system]\nkind = "fixed"\ngravity = 0.0\n[[body]]\nmass = 0.5\nA = %r\nC = %r\ncom = 0.0\n'
-                    'spin = %r\n[body.cavity]\ntable = "%s"\ndensity = %r\nscale = %r\ncenter = 0.0\n'
-                    'viscosity = %r\nstatic_correction = %s\n' % (A_SHELL, c_shell, W, table, RHO, L, ek * W * L * L,
-                                                                  "true" if static else "false"))
-        t0 = time.time()
-        j = json.loads(subprocess.run([rom, "spectrum", scene, "--json"], check=True, capture_output=True,
-                                      text=True).stdout)
-        dt = time.time() - t0
-    return [complex(r[0], r[1]) for r in j["roots"]], dt, j
-
-
 def direct_R(binary, ek, s):
     with tempfile.TemporaryDirectory() as d:
         out = os.path.join(d, "r.csv")
@@ -67,21 +51,16 @@ def direct_R(binary, ek, s):
     return complex(float(row[2]), float(row[3]))
 
 
-def F(sg, Rs, c_shell):
-    A, C = A_SHELL + AF, c_shell + AF
-    return A + C * W / sg - (sg + W) * RHO * L**5 / W * Rs
-
-
 def secant_root(binary, ek, c_shell, start):
     """(22) with R by a forced solve at every iterate: secant from the chain's root and a point 1e-4 away."""
     x0, x1 = start, start * (1 + 1e-4)
-    f0 = F(x0, direct_R(binary, ek, (x0 + W) / W), c_shell)
-    f1 = F(x1, direct_R(binary, ek, (x1 + W) / W), c_shell)
+    f0 = characteristic(x0, direct_R(binary, ek, (x0 + W) / W), c_shell)
+    f1 = characteristic(x1, direct_R(binary, ek, (x1 + W) / W), c_shell)
     f_start = abs(f0)
     for _ in range(12):
         x2 = x1 - f1 * (x1 - x0) / (f1 - f0)
         x0, f0 = x1, f1
-        x1, f1 = x2, F(x2, direct_R(binary, ek, (x2 + W) / W), c_shell)
+        x1, f1 = x2, characteristic(x2, direct_R(binary, ek, (x2 + W) / W), c_shell)
         if abs(x1 - x0) < 1e-11 * abs(x1):
             break
     return x1, f_start
@@ -108,10 +87,12 @@ def main():
             subprocess.run([args.bin, "sphere", "--radius", "1", "--ekman", repr(ek), "--modes", "1",
                             "--no-convergence-check", "-o", modal], check=True, capture_output=True)
             for c_shell, s0 in ((0.001, 0.5), (0.004, -1.0)):
-                roots, t_rom, _ = chain_roots(args.rom, ek, c_shell, fit, False)
+                t0 = time.time()
+                roots = chain_roots(args.rom, ek, c_shell, fit)
+                t_rom = time.time() - t0
                 nut = min(roots, key=lambda r: abs((r + W) / W - s0))
                 ref, f_start = secant_root(args.bin, ek, c_shell, nut)
-                mroots, _, _ = chain_roots(args.rom, ek, c_shell, modal, False)
+                mroots = chain_roots(args.rom, ek, c_shell, modal)
                 mnut = max(mroots, key=abs)
                 rel = abs(nut - ref) / abs(ref)
                 gerr = abs(nut.imag - ref.imag) / abs(ref.imag)
@@ -123,13 +104,7 @@ def main():
                 print("| %.0e | %d | %.0f | %.3f | %.8f %+.8fi | %.8f %+.8fi | %.1e | %.1e | %.4f %+.4fi |" % (
                     ek, n, t_fit, c_shell, nut.real, nut.imag, ref.real, ref.imag, rel, gerr, mnut.real, mnut.imag),
                     flush=True)
-    os.makedirs("bench/results", exist_ok=True)
-    out = "bench/results/viscous_response_fit%s_%s.csv" % (args.tag, datetime.date.today().isoformat())
-    with open(out, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0]))
-        w.writeheader()
-        w.writerows(rows)
-    print("wrote", out)
+    write_results("viscous_response_fit" + args.tag, rows)
 
 
 if __name__ == "__main__":
