@@ -95,7 +95,7 @@ std::string get_string(hid_t loc, const std::string& name) {
 }
 
 template <class... Args>
-std::string fmt(const char* format, Args... args) {
+std::string formatted(const char* format, Args... args) {
   char buf[256];
   std::snprintf(buf, sizeof buf, format, args...);
   return buf;
@@ -178,18 +178,18 @@ void ModeTable::check_identities() const {
     fail("/modes/dlambda, dE and converged come together (the convergence check), one of them is missing");
   if (!(volume > 0)) fail("volume > 0");
   if (std::abs(sum_rule - (A_f - J_zh)) > 1e-9 * std::max({std::abs(A_f), std::abs(J_zh), 1e-300}))
-    fail(fmt("sum_rule = A_f - J_zh (%.12g against %.12g)", sum_rule, A_f - J_zh));
+    fail(formatted("sum_rule = A_f - J_zh (%.12g against %.12g)", sum_rule, A_f - J_zh));
   const double tiny = 1e-12 * std::max(std::abs(sum_rule), 1e-300);
   for (std::size_t i = 0; i < E.size(); ++i) {
-    if (lambda[i] == 0) fail(fmt("lambda != 0 (row %zu)", i + 1));
-    if (std::abs(kappa[i] * lambda[i] - 2) > 1e-9) fail(fmt("kappa = 2/lambda (row %zu: kappa %.9g, lambda %.9g)", i + 1, kappa[i], lambda[i]));
-    if (!(N2[i] > 0)) fail(fmt("N2 > 0 (row %zu: %.9g)", i + 1, N2[i]));
+    if (lambda[i] == 0) fail(formatted("lambda != 0 (row %zu)", i + 1));
+    if (std::abs(kappa[i] * lambda[i] - 2) > 1e-9) fail(formatted("kappa = 2/lambda (row %zu: kappa %.9g, lambda %.9g)", i + 1, kappa[i], lambda[i]));
+    if (!(N2[i] > 0)) fail(formatted("N2 > 0 (row %zu: %.9g)", i + 1, N2[i]));
     if (!viscous() && std::abs(lambda[i]) > 2 * (1 + 1e-9))
-      fail(fmt("|lambda| <= 2 for an ideal fluid (row %zu: %.9g)", i + 1, lambda[i]));
-    if (!viscous() && a[i] < 0) fail(fmt("a >= 0, the normalisation a = sqrt(E N2/2) (row %zu: %.9g)", i + 1, a[i]));
+      fail(formatted("|lambda| <= 2 for an ideal fluid (row %zu: %.9g)", i + 1, lambda[i]));
+    if (!viscous() && a[i] < 0) fail(formatted("a >= 0, the normalisation a = sqrt(E N2/2) (row %zu: %.9g)", i + 1, a[i]));
     const std::complex<double> a_c(a[i], viscous() ? a_imag[i] : 0.0), E_c(E[i], viscous() ? E_imag[i] : 0.0);
     if (std::abs(E_c - 2.0 * a_c * a_c / N2[i]) > 1e-8 * std::abs(E_c) + tiny)
-      fail(fmt("E = 2 a^2/N2 (row %zu: E %.9g, a %.9g, N2 %.9g)", i + 1, E[i], a[i], N2[i]));
+      fail(formatted("E = 2 a^2/N2 (row %zu: E %.9g, a %.9g, N2 %.9g)", i + 1, E[i], a[i], N2[i]));
   }
 }
 

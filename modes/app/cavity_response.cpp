@@ -3,7 +3,6 @@
 #include "cavity_table.hpp"
 #include "discretisation.hpp"
 #include "ideal_response.hpp"
-#include "mesh_broadcast.hpp"
 #include "petsc_handles.hpp"
 #include "rational_fit.hpp"
 #include "table_assembly.hpp"
@@ -111,7 +110,7 @@ CavityResponse compute_cavity_response(const ResponseRequest& req) {
   return req.separable ? separable_response(req) : mesh_response(req);
 }
 
-ModeTable response_fit_table(const ResponseRequest& req, double max_error, std::vector<std::complex<double>>* response) {
+ModeTable response_fit_table(const ResponseRequest& req, double max_error) {
   const auto start = std::chrono::steady_clock::now();
   if (!(req.ekman > 0)) throw std::runtime_error("a response-fit table (-o FILE.h5) needs --ekman");
   const std::size_t n = req.sigmas.size();
@@ -134,7 +133,6 @@ ModeTable response_fit_table(const ResponseRequest& req, double max_error, std::
   }
   for (const double t : tail) all.sigmas.emplace_back(t, 0.0);
   const CavityResponse R = viscous_cavity_response(all);
-  if (response) response->assign(R.R.begin(), R.R.begin() + static_cast<std::ptrdiff_t>(n));
 
   // Fitted on the even window samples and the tail, judged on the odd window samples: the error is that of the
   // fit between its data.

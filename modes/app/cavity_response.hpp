@@ -35,11 +35,9 @@ CavityResponse compute_cavity_response(const ResponseRequest& request);
 // The viscous response sampled on FROM:TO:N (real σ, N >= 9) and fitted by a rational function on every other
 // sample (viscous/rational_fit.hpp), its error measured on the samples in between: a viscous mode table whose
 // modes are the fit's poles and residues, with the window and the error as root attributes (fit_lo, fit_hi,
-// fit_error) and the ideal table's frozen-fluid integrals and J_zh from the ideal mesh. `response` holds R at
-// every sample on return. Throws std::runtime_error with a one-line cause, also when the fit error exceeds
-// `max_error`.
-ModeTable response_fit_table(const ResponseRequest& request, double max_error,
-                             std::vector<std::complex<double>>* response = nullptr);
+// fit_error) and the ideal table's frozen-fluid integrals and J_zh from the ideal mesh. Throws std::runtime_error
+// with a one-line cause, also when the fit error exceeds `max_error`.
+ModeTable response_fit_table(const ResponseRequest& request, double max_error);
 
 // "FROM:TO:N" (N evenly spaced real parts, every one with imaginary part `imag`) or a comma-separated list of
 // complex numbers "0.5+0.1i,1.2,-0.3-2e-2i" (then `imag` must be 0). Throws std::runtime_error naming the

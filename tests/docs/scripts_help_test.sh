@@ -22,13 +22,14 @@ for script in "$root"/scripts/*.sh; do
     echo "ok: $name ($(head -1 <<< "$out"))"
   done
 done
-# The plot scripts share one command line: the input positional, the PNG after -o.
+# The plot scripts share one command line: one positional argument (the input) and the PNG after -o.
 for script in "$root"/scripts/plot_*.py; do
-  usage=$(/usr/bin/python3 "$script" --help 2>&1 | tr '\n' ' ')
-  if grep -qE -- '-o (OUTPUT|PNG)' <<< "$usage" && ! grep -qE 'positional arguments: +[a-z]+ +[^-]*[a-z]+ +PNG' <<< "$usage"; then
-    echo "ok: $(basename "$script") takes -o"
+  help=$(/usr/bin/python3 "$script" --help 2>&1)
+  positional=$(awk '/^positional arguments:/{f=1; next} f && /^$/{exit} f && /^  [^ -]/{n++} END{print n+0}' <<< "$help")
+  if [ "$positional" -eq 1 ] && grep -qE '^  -o [A-Z]+, --output' <<< "$help"; then
+    echo "ok: $(basename "$script") takes INPUT -o PNG"
   else
-    echo "FAILED: $(basename "$script") does not take its output as -o: $usage"; fail=1
+    echo "FAILED: $(basename "$script"): $positional positional arguments, -o: $(grep -c -- '-o ' <<< "$help")"; fail=1
   fi
 done
 [ $fail -eq 0 ] && echo "scripts --help: all passed" || { echo "scripts --help: FAILED"; exit 1; }
