@@ -2,6 +2,7 @@
 
 #include "hdf5_handle.hpp"
 #include "mode_fields.hpp"
+#include "printable_text.hpp"
 
 #include <hdf5.h>
 
@@ -52,6 +53,18 @@ void put_vector(hid_t loc, const std::string& name, const std::vector<T>& v, hid
     throw std::runtime_error("cannot write dataset " + name);
 }
 
+// A scalar string dataset (a section file's text can pass the 64 KiB limit of an attribute).
+void put_text(hid_t loc, const std::string& name, const std::string& v) {
+  Hid type(H5Tcopy(H5T_C_S1), H5Tclose);
+  H5Tset_size(type.get(), std::max<std::size_t>(v.size(), 1));
+  H5Tset_strpad(type.get(), H5T_STR_NULLTERM);
+  Hid space(H5Screate(H5S_SCALAR), H5Sclose);
+  Hid set(H5Dcreate2(loc, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose);
+  std::string buf = v.empty() ? std::string(1, '\0') : v;
+  if (!set.ok() || H5Dwrite(set.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, buf.data()) < 0)
+    throw std::runtime_error("cannot write dataset " + name);
+}
+
 bool has_attr(hid_t loc, const std::string& name) { return H5Aexists(loc, name.c_str()) > 0; }
 
 double get_double(hid_t loc, const std::string& name) {
@@ -84,14 +97,14 @@ std::string get_string(hid_t loc, const std::string& name) {
     if (H5Aread(attr.get(), mtype.get(), &p) < 0) throw std::runtime_error("cannot read attribute '" + name + "'");
     std::string s = p ? p : "";
     free(p);
-    return s;
+    return printable_text(s);
   }
   std::size_t n = H5Tget_size(ftype.get());
   std::string buf(n + 1, '\0');
   Hid mtype(H5Tcopy(H5T_C_S1), H5Tclose);
   H5Tset_size(mtype.get(), n + 1);
   if (H5Aread(attr.get(), mtype.get(), buf.data()) < 0) throw std::runtime_error("cannot read attribute '" + name + "'");
-  return std::string(buf.c_str());
+  return printable_text(buf.c_str());  // a corrupted byte prints as \xNN, never raw
 }
 
 template <class... Args>
@@ -99,6 +112,25 @@ std::string formatted(const char* format, Args... args) {
   char buf[256];
   std::snprintf(buf, sizeof buf, format, args...);
   return buf;
+}
+
+std::string get_text(hid_t loc, const std::string& name) {
+  if (H5Lexists(loc, name.c_str(), H5P_DEFAULT) <= 0) return {};
+  Hid set(H5Dopen2(loc, name.c_str(), H5P_DEFAULT), H5Dclose);
+  Hid ftype(H5Dget_type(set.get()), H5Tclose);
+  if (!set.ok() || H5Tget_class(ftype.get()) != H5T_STRING || H5Tis_variable_str(ftype.get()) > 0)
+    throw std::runtime_error("dataset '" + name + "' is not a fixed-length string");
+  const std::size_t n = H5Tget_size(ftype.get());
+  Hid file(H5Iget_file_id(loc), H5Fclose);
+  hsize_t file_size = 0;
+  if (!file.ok() || H5Fget_filesize(file.get(), &file_size) < 0 || n > 16 * file_size + 1024)
+    throw std::runtime_error("dataset '" + name + "' claims " + std::to_string(n) + " bytes, more than the file holds");
+  std::string buf(n + 1, '\0');
+  Hid mtype(H5Tcopy(H5T_C_S1), H5Tclose);
+  H5Tset_size(mtype.get(), n + 1);
+  if (H5Dread(set.get(), mtype.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, buf.data()) < 0)
+    throw std::runtime_error("cannot read dataset '" + name + "'");
+  return printable_text(buf.c_str());
 }
 
 template <class T>
@@ -282,6 +314,12 @@ void write_mode_table(const ModeTable& t, const std::filesystem::path& path, con
         put_vector(bands.get(), "E", t.bands.E, H5T_NATIVE_DOUBLE);
         put_vector(bands.get(), "lambda_mean", t.bands.lambda_mean, H5T_NATIVE_DOUBLE);
       }
+      if (!t.geometry_source.empty() || !t.command_line.empty()) {
+        Hid prov(H5Gcreate2(root, "provenance", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+        put_text(prov.get(), "geometry_source", t.geometry_source);
+        put_text(prov.get(), "geometry_text", t.geometry_text);
+        put_text(prov.get(), "command_line", t.command_line);
+      }
       if (fields) write_fields_group(root, *fields);
     }
     // The companion names the table by its final name, relative to their common folder.
@@ -380,6 +418,12 @@ ModeTable read_mode_table(const std::filesystem::path& path) {
       t.bands.hi = get_vector<double>(bands.get(), "hi", H5T_NATIVE_DOUBLE, true);
       t.bands.E = get_vector<double>(bands.get(), "E", H5T_NATIVE_DOUBLE, true);
       t.bands.lambda_mean = get_vector<double>(bands.get(), "lambda_mean", H5T_NATIVE_DOUBLE, true);
+    }
+    if (H5Lexists(root, "provenance", H5P_DEFAULT) > 0) {
+      Hid prov(H5Gopen2(root, "provenance", H5P_DEFAULT), H5Gclose);
+      t.geometry_source = get_text(prov.get(), "geometry_source");
+      t.geometry_text = get_text(prov.get(), "geometry_text");
+      t.command_line = get_text(prov.get(), "command_line");
     }
     t.validate();
     return t;

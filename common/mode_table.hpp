@@ -44,6 +44,10 @@ struct ModeTable {
   // its samples to fit_error (max |R − fit| / max |R|). fit_hi > fit_lo marks such a table; 0, 0 otherwise.
   double fit_lo = 0, fit_hi = 0, fit_error = 0;
   bool response_fit() const { return fit_hi > fit_lo; }
+  // Provenance (/provenance, optional; docs/physics.md §4): how the table was made, so that it can be made again.
+  // geometry_source: "sphere radius=1" for a built-in shape, the section file's name for `section FILE`;
+  // geometry_text: that section file's full text (empty for built-in shapes); command_line: the command as typed.
+  std::string geometry_source, geometry_text, command_line;
 
   // --- /modes datasets, one entry per mode ------------------------------------------------
   std::vector<double> kappa, lambda, E, a, N2, residual;

@@ -125,6 +125,11 @@ void generate(int order, double size, const std::string& where, double radial_si
                              number(model_extent()));
   if (grading) grade_towards_wall(*grading, size, where);
   gmsh::option::setNumber("Mesh.MeshSizeMax", size);
+  // The options rule, not the sizes a .geo file gives its points (docs/geometry.md): with gmsh's default the file's
+  // `lc` caps the size, so that a coarser mesh asked for (the convergence check doubles the size) came out
+  // identical and every cluster was flagged converged (measured: data/sections/capsule.geo, lc = 0.25, at
+  // --mesh-size 0.25 against 0.5).
+  gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
   gmsh::model::mesh::generate(2);
   // Only after the linear mesh exists: setOrder places the new edge nodes on the CAD curves
   // (exact arcs) by their parametrisation; interior nodes are interpolated.

@@ -50,9 +50,14 @@ for recipe in "${RECIPES[@]}"; do
   fi
   echo "  $name: cavity-modes ${args[*]} ..."
   t0=$SECONDS
-  if ! "$MODES" "${args[@]}" -o "$table" > "$TABLES/${name%.h5}.log" 2>&1; then
-    tail -n 20 "$TABLES/${name%.h5}.log" >&2
-    fail "cavity-modes ${args[*]} (log: $TABLES/${name%.h5}.log)"
+  log="$TABLES/${name%.h5}.log"
+  : > "$log"
+  # The table report goes to the log; the progress lines (stderr, at least every 5 s) also to the terminal.
+  status=0
+  "$MODES" "${args[@]}" -o "$table" 2>&1 >> "$log" | tee -a "$log" | sed -u 's/^/    /' >&2 || status=$?
+  if [ "$status" -ne 0 ]; then
+    tail -n 20 "$log" >&2
+    fail "cavity-modes ${args[*]} (log: $log)"
   fi
   # one-line summary: mesh and dofs, coverage, number of clusters
   summary=$(grep -m1 'dofs' "$TABLES/${name%.h5}.log" || true)

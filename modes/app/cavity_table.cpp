@@ -3,6 +3,7 @@
 #include "cluster_fields.hpp"
 #include "cluster_selection.hpp"
 #include "convergence.hpp"
+#include "progress.hpp"
 #include "discretisation.hpp"
 #include "lanczos_refinement.hpp"
 #include "separable_table.hpp"
@@ -17,11 +18,6 @@
 #include <optional>
 
 namespace rc::modes {
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-}  // namespace
 
 // Spheres and spheroids: their single coupling mode p ∝ r z is a polynomial that every order ≥ 2 represents
 // exactly, so that only the wall's approximation errs: at order 6 a fifth of the smallest dimension gives λ, E,
@@ -56,7 +52,7 @@ std::vector<GaussNode> candidate_nodes(const SpectralSurvey& survey, const ModeS
 // consecutive clusters that the selection keeps, of one sign and below gap_lambda in |λ|, is searched once
 // (LanczosRefinement::search_gap) for clusters as heavy as the lightest one kept. Returns how many it added.
 int fill_gaps(const LanczosRefinement& refinement, std::vector<Cluster>& clusters, const TableRequest& req,
-              double sum_rule, const std::function<void(const std::string&)>& report) {
+              double sum_rule, Progress& progress) {
   if (clusters.empty()) return 0;
   auto kept = clusters;
   sort_by_energy(kept);
@@ -74,7 +70,7 @@ int fill_gaps(const LanczosRefinement& refinement, std::vector<Cluster>& cluster
       });
       if (!known) { clusters.push_back(c); ++added; }
     }
-    report(fmt::format("gap {}/{}", i + 1, kept.size() - 1));
+    progress.step(fmt::format("gap {}/{}", i + 1, kept.size() - 1), i + 1, kept.size() - 1);
   }
   return added;
 }
@@ -85,12 +81,12 @@ struct FoundClusters {
 };
 
 FoundClusters find_clusters(const Discretisation& d, const SpectralSurvey& survey, const TableRequest& req,
-                            const std::function<void(const std::string&)>& report) {
+                            Progress& progress) {
   FoundClusters f;
   if (req.clusters.method == ClusterMethod::slices) {
     const auto nodes = candidate_nodes(survey, req.selection, d.sum_rule);
     f.clusters = refine_clusters(d.forms, nodes, req.clusters, [&](std::size_t done, std::size_t total) {
-      report(fmt::format("cluster {}/{}", done, total));
+      progress.step(fmt::format("cluster {}/{}", done, total), done, total);
     }, &f.solver);
     return f;
   }
@@ -104,9 +100,9 @@ FoundClusters find_clusters(const Discretisation& d, const SpectralSurvey& surve
     return refine_node(*slicer, n, req.clusters);
   };
   f.clusters = refine_clusters_lanczos(refinement, nodes, req.clusters.cluster_width, [&](std::size_t done, std::size_t total) {
-    report(fmt::format("cluster {}/{}", done, total));
+    progress.step(fmt::format("cluster {}/{}", done, total), done, total);
   }, fallback, fallbacks);
-  const int added = req.clusters.fill_gaps ? fill_gaps(refinement, f.clusters, req, d.sum_rule, report) : 0;
+  const int added = req.clusters.fill_gaps ? fill_gaps(refinement, f.clusters, req, d.sum_rule, progress) : 0;
   f.solver = fmt::format("survey (Lanczos Gauss rule of the coupling measure, {} steps) + shift-and-invert Lanczos "
                          "Gauss rules (MUMPS LDL^T of Q(sigma)) around each node", survey.steps);
   if (fallbacks > 0)
@@ -120,16 +116,9 @@ FoundClusters find_clusters(const Discretisation& d, const SpectralSurvey& surve
 ModeTable compute_mode_table(const TableRequest& req, const ProgressFn& progress, ModeFields* fields) {
   validate(req.selection);
   if (req.check_convergence) validate_convergence_tolerance(req.convergence_tolerance);
-  const auto start = Clock::now();
-  auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
-  // Progress only on runs that take a while, and at most about once a second.
-  double last_report = 0;
-  auto report = [&](const std::string& what) {
-    const double t = elapsed();
-    if (!progress || t < 1.0 || t - last_report < 1.0) return;
-    last_report = t;
-    progress(fmt::format("[{:6.2f} s] {}", t, what));
-  };
+  // Lines at least every 5 s while working, with the time left once clusters are counted (progress.hpp).
+  Progress progress_lines(progress);
+  auto report = [&](const std::string& what) { progress_lines.step(what); };
 
   if (req.method == TableMethod::separable) {
     if (fields) throw std::runtime_error("--fields needs --method mesh (the separable solver keeps no 2-D mesh)");
@@ -145,14 +134,14 @@ ModeTable compute_mode_table(const TableRequest& req, const ProgressFn& progress
 
   const SpectralSurvey survey = survey_spectral_measure(d.velocity, d.stiffness, d.coupling, req.survey);
   report(fmt::format("spectral survey: {} Lanczos steps", survey.steps));
-  auto [found, solver] = find_clusters(d, survey, req, report);
+  auto [found, solver] = find_clusters(d, survey, req, progress_lines);
   auto clusters = select_clusters(std::move(found), req.selection, sum_rule);
   ConvergenceCheck convergence;
   if (req.check_convergence) {
     report("convergence check on a coarser discretisation");
     geometry::MeshOptions used = req.mesh;
     used.size = space.mesh().size;
-    convergence = check_convergence(req.shape, used, clusters, req.clusters, req.convergence_tolerance);
+    convergence = check_convergence(req.shape, used, clusters, req.clusters, req.convergence_tolerance, space.ndof());
   }
 
   ModeTable t = start_table(req.shape, fluid, zh.J_zh);
@@ -169,8 +158,10 @@ ModeTable compute_mode_table(const TableRequest& req, const ProgressFn& progress
   t.sort_by_energy();
   if (fields)
     *fields = cluster_fields(space, d.forms, t, {req.clusters.cluster_width, req.clusters.qep},
-                             [&](std::size_t done, std::size_t total) { report(fmt::format("fields {}/{}", done, total)); });
-  t.wall_seconds = elapsed();
+                             [&](std::size_t done, std::size_t total) {
+                               progress_lines.step(fmt::format("fields {}/{}", done, total), done, total);
+                             });
+  t.wall_seconds = progress_lines.elapsed();
   return t;
 }
 

@@ -14,6 +14,9 @@
 #include "petsc_handles.hpp"
 #include "reference_table.hpp"
 #include "cavity_response.hpp"
+#include "shape_commands.hpp"
+#include "table_comparison.hpp"
+#include "table_provenance.hpp"
 #include "viscous_table.hpp"
 
 #include <CLI/CLI.hpp>
@@ -31,14 +34,6 @@ namespace {
 
 using rc::modes::TableRequest;
 
-struct ShapeCommand {
-  CLI::App* app = nullptr;
-  std::string kind;
-  std::map<std::string, double> dims;
-};
-
-// --method auto|mesh|separable: auto is separable for a cylinder table without --fields, mesh otherwise
-// (docs/modes.md).
 // --ekman and --wall-size: the viscous table (docs/viscous.md); --sigma, --sigma-imag: `cavity-modes response`.
 struct ViscousOptions {
   double ekman = 0;
@@ -48,66 +43,108 @@ struct ViscousOptions {
   double max_fit_error = 1e-6;  // response to FILE.h5: the largest fit error accepted
 };
 
-void add_common_options(CLI::App* cmd, TableRequest& req, std::string& output, bool& fields, std::string& method,
-                        ViscousOptions& viscous) {
+// The mesh of every command; --radial-size and --method (auto|mesh|separable: auto is separable for a cylinder
+// table without --fields, mesh otherwise; docs/modes.md) only where the shape is a cylinder.
+// A default as people write it: 1e-6, not fmt's 1e-06.
+std::string number(double v) {
+  std::string s = fmt::format("{:g}", v);
+  const auto e = s.find("e-0");
+  if (e != std::string::npos) s.erase(e + 2, 1);
+  return s;
+}
+
+void add_mesh_options(CLI::App* cmd, const std::string& kind, bool response, TableRequest& req, std::string& method) {
+  const bool cylinder = kind == "cylinder";
+  cmd->add_option("--order", req.mesh.order, cylinder ? "Lagrange order: mesh 1..6 (default 6), separable 1..12 "
+                                                        "(default 10)"
+                                                      : "Lagrange order 1..6 (default 6)");
+  const char* size_help =
+      cylinder ? "target element size, d = min(radius, height): mesh (default d/8); separable, along z (default 3d/8)"
+      : kind == "sphere" || kind == "spheroid" ? "target element size, d the smallest semi-axis (default d/5)"
+      : kind == "cone" ? "target element size, d = min(radius, height) (default d/8)"
+                       : "target element size; the sizes the file gives its points are ignored (default 1/8 of the "
+                         "smaller side of the section's bounding box)";
+  cmd->add_option("--mesh-size", req.mesh.size, size_help);
+  if (!cylinder) return;
+  cmd->add_option("--radial-size", req.mesh.radial_size,
+                  "element size along r: mesh, a structured mesh (--mesh-size is then the size along z); separable "
+                  "(default max(d, radius/2)/8)");
+  cmd->add_option("--method", method,
+                  response ? "auto or mesh (forced solves on the gmsh mesh) or separable (the ideal fluid's "
+                             "Σ E/(sigma - lambda) over every eigenpair of the separated problem) (default auto)"
+                           : "auto (separable without --fields, else mesh), mesh (gmsh mesh of the meridian section) "
+                             "or separable (exact separation on a tensor-product grid) (default auto)")
+      ->check(CLI::IsMember({"auto", "mesh", "separable"}));
+}
+
+void add_viscous_options(CLI::App* cmd, ViscousOptions& viscous) {
   cmd->add_option("--ekman", viscous.ekman,
                   "viscous fluid with Ekman number Ek = nu/(omega0 L^2): damped modes (decay, complex coupling) "
-                  "continuing the ideal ones, on a wall-graded Taylor-Hood mesh (docs/viscous.md); --order, "
-                  "--mesh-size then set that mesh (default order 6, d/8)");
-  cmd->add_option("--wall-size", viscous.wall_size,
-                  "with --ekman: element size at the wall (default Ek^(1/2))");
-  cmd->add_option("--sigma", viscous.sigma,
-                  "cavity-modes response only: the complex frequencies sigma at which the fluid's moment response "
-                  "R(sigma) is computed (CSV to -o): FROM:TO:N (real parts, with --sigma-imag) or a list such as "
-                  "0.5+0.1i,1.2-0.05i");
-  cmd->add_option("--sigma-imag", viscous.sigma_imag, "cavity-modes response only: the imaginary part of every sigma");
-  cmd->add_option("--max-fit-error", viscous.max_fit_error,
-                  "cavity-modes response -o FILE.h5 only: the largest relative error of the rational fit of R between "
-                  "its samples that is accepted (default 1e-6)");
-  cmd->add_option("--method", method,
-                  "auto (separable for cylinders without --fields, else mesh), mesh (gmsh mesh of the meridian "
-                  "section, every shape) or separable (cylinder: exact separation on a tensor-product grid)")
-      ->check(CLI::IsMember({"auto", "mesh", "separable"}))
-      ->capture_default_str();
-  cmd->add_option("--order", req.mesh.order, "Lagrange order: mesh 1..6 (default 6), separable 1..12 (default 10)");
-  cmd->add_option("--mesh-size", req.mesh.size, "target element size in the shape's length unit (mesh: d/8, spheres "
-                                                "and spheroids d/5, d the smallest dimension; separable: axial size, 3d/8)");
-  cmd->add_option("--radial-size", req.mesh.radial_size,
-                  "cylinder: element size along r (mesh: a structured mesh, --mesh-size is then the size along z; "
-                  "separable: default max(d, radius/2)/8)");
+                  "continuing the ideal ones, on a wall-graded Taylor-Hood mesh (docs/viscous.md); --order and "
+                  "--mesh-size then set that mesh (order 6 and d/8 unless given)");
+  cmd->add_option("--wall-size", viscous.wall_size, "with --ekman: element size at the wall (default Ek^(1/2))");
+}
+
+// The cluster search and selection of a table (docs/modes.md).
+void add_table_options(CLI::App* cmd, TableRequest& req, bool& fields, std::string& cluster_method) {
   auto* modes = cmd->add_option("--modes", req.selection.modes, "keep the N clusters of largest E");
-  auto* coverage = cmd->add_option("--coverage", req.selection.coverage,
-                                   "keep clusters until their E sums to this fraction of A_f - J_zh");
+  auto* coverage = cmd->add_option(
+      "--coverage", req.selection.coverage,
+      fmt::format("keep clusters until their E sums to this fraction of A_f - J_zh; without --modes or --coverage, "
+                  "every cluster with E above {} (A_f - J_zh) is kept", number(req.selection.default_threshold)));
   modes->excludes(coverage);
   cmd->add_option("--min-lambda", req.selection.geostrophic_cutoff,
-                  "no cluster is sought with |lambda| below this (the lambda -> 0 accumulation)")
-      ->check(CLI::Range(1e-6, 1.9))->capture_default_str();
+                  fmt::format("no cluster is sought with |lambda| below this, the lambda -> 0 accumulation; "
+                              "1e-6..1.9 (default {})", number(req.selection.geostrophic_cutoff)));
   cmd->add_flag("--fill-gaps", req.clusters.fill_gaps,
                 "lanczos clusters: also search the gaps between kept clusters with |lambda| < 0.5 for modes the "
                 "survey missed (slower; on coarse meshes it can add unresolved clusters, flagged not converged)");
   cmd->add_option("--lanczos-steps", req.clusters.sil.max_steps,
-                  "lanczos clusters: shift-and-invert Lanczos steps per node (at most)")
-      ->check(CLI::Range(1, 100000))->capture_default_str();
-  cmd->add_option("--survey-steps", req.survey.max_steps, "Lanczos steps of the spectral survey (at most)")
-      ->capture_default_str();
-  cmd->add_option("--clusters", req.clusters.method,
+                  fmt::format("lanczos clusters: shift-and-invert Lanczos steps per node, at most; 1..100000 "
+                              "(default {})", req.clusters.sil.max_steps));
+  cmd->add_option("--survey-steps", req.survey.max_steps,
+                  fmt::format("Lanczos steps of the spectral survey, at most (default {})", req.survey.max_steps));
+  cmd->add_option("--clusters", cluster_method,
                   "how the survey's nodes are refined into clusters: lanczos (shift-and-invert Lanczos Gauss rules) "
-                  "or slices (SLEPc PEP STOAR spectrum slicing)")
-      ->transform(CLI::CheckedTransformer(std::map<std::string, rc::modes::ClusterMethod>{{"lanczos", rc::modes::ClusterMethod::lanczos},
-                                                                                {"slices", rc::modes::ClusterMethod::slices}}))
-      ->capture_default_str();
+                  "or slices (SLEPc PEP STOAR spectrum slicing) (default lanczos)")
+      ->check(CLI::IsMember({"lanczos", "slices"}));
   cmd->add_option_function<double>(
       "--tolerance", [&req](double tol) { req.clusters.sil.lambda_tolerance = req.clusters.qep.tolerance = tol; },
-      "lanczos: a Gauss node is settled when its lambda moves less than this (relative; default 1e-11); slices: "
-      "the SLEPc PEP tolerance (default 1e-12)");
+      fmt::format("lanczos: a Gauss node is settled when its lambda moves less than this, relative (default {}); "
+                  "slices: the SLEPc PEP tolerance (default {})",
+                  number(req.clusters.sil.lambda_tolerance), number(req.clusters.qep.tolerance)));
   cmd->add_option("--convergence-tolerance", req.convergence_tolerance,
-                  "a cluster is flagged converged if its lambda and E change by less than this against the same "
-                  "order on a mesh twice as coarse")->capture_default_str();
+                  fmt::format("a cluster is flagged converged if its lambda and E change by less than this against "
+                              "the same order on a mesh twice as coarse (default {})",
+                              number(req.convergence_tolerance)));
   cmd->add_flag("--no-convergence-check", [&req](std::int64_t) { req.check_convergence = false; },
                 "skip the per-cluster comparison with a coarser discretisation");
   cmd->add_flag("--fields", fields, "also store the mesh and each mode's p and V in /fields, with an XDMF companion "
                                     "FILE.xdmf for ParaView (docs/modes.md, Fields)");
-  cmd->add_option("-o,--output", output, "mode table to write (HDF5)")->required();
+}
+
+void add_response_options(CLI::App* cmd, ViscousOptions& viscous) {
+  cmd->add_option("--sigma", viscous.sigma,
+                  "the complex frequencies sigma at which the fluid's moment response R(sigma) is computed: "
+                  "FROM:TO:N (real parts, with --sigma-imag) or a list such as 0.5+0.1i,1.2-0.05i (required)");
+  cmd->add_option("--sigma-imag", viscous.sigma_imag,
+                  fmt::format("the imaginary part of every sigma of FROM:TO:N (default {})", number(viscous.sigma_imag)));
+  cmd->add_option("--max-fit-error", viscous.max_fit_error,
+                  fmt::format("-o FILE.h5 only: the largest relative error of the rational fit of R between its "
+                              "samples that is accepted (default {})", number(viscous.max_fit_error)));
+}
+
+// An option the parsed command does not take (CLI11 keeps it in remaining()): one line naming it and the command.
+void refuse_extras(const CLI::App& cmd, bool response) {
+  const auto extras = cmd.remaining();
+  if (extras.empty()) return;
+  const std::string& first = extras.front();
+  if (!response && (first == "--sigma" || first == "--sigma-imag" || first == "--max-fit-error"))
+    throw std::runtime_error("--sigma, --sigma-imag and --max-fit-error belong to 'cavity-modes response SHAPE ...'");
+  const std::string name = (response ? "cavity-modes response " : "cavity-modes ") + cmd.get_name();
+  if (first.rfind("--", 0) == 0)
+    throw std::runtime_error(name + " does not take " + first + " (its options: " + name + " --help)");
+  throw std::runtime_error(name + ": unexpected argument '" + first + "' (see " + name + " --help)");
 }
 
 // Resolves --method and the order's default; refuses options that only the other method has.
@@ -117,7 +154,7 @@ void choose_method(const CLI::App& cmd, const std::string& choice, bool fields, 
   if (req.mesh.order == 0 && !separable) req.mesh.order = 6;  // separable: its own default (separable_table.hpp)
   if (!separable) return;
   for (const char* mesh_only : {"--clusters", "--fill-gaps", "--lanczos-steps", "--survey-steps", "--tolerance"})
-    if (cmd.count(mesh_only) > 0)
+    if (cmd.get_option_no_throw(mesh_only) != nullptr && cmd.count(mesh_only) > 0)
       throw std::runtime_error(std::string(mesh_only) + " applies to --method mesh only (the separable cylinder "
                                                         "solver computes every eigenpair directly)");
 }
@@ -140,7 +177,20 @@ rc::modes::ViscousTableSettings viscous_request(const CLI::App& cmd, const Visco
   return s;
 }
 
+bool ends_with(const std::string& s, const std::string& tail) {
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+// The table's report, then the plain line on what converged (empty when everything did).
+void print_table(const rc::ModeTable& table) {
+  std::cout << rc::modes::table_text(table);
+  const auto note = rc::modes::convergence_note(table);
+  if (!note.empty()) std::cout << note << "\n";
+  std::cout << std::flush;
+}
+
 int run(int argc, char** argv) {
+  const std::string command_line = rc::modes::quoted_command_line(std::vector<std::string>(argv, argv + argc));
   auto args = rc::modes::split_arguments(argc, argv);
   // `cavity-modes response SHAPE ...`: the shape's command line, answered with R(sigma) instead of a table.
   const bool response = args.ours.size() > 1 && args.ours[1] == "response";
@@ -155,43 +205,40 @@ int run(int argc, char** argv) {
   req.mesh.order = 0;  // the method's default, set below
   std::string output;
   bool fields = false;
-  std::string method = "auto";
-  std::vector<ShapeCommand> shapes;
-  auto shape = [&](const std::string& kind, const std::string& help,
-                   std::vector<std::pair<std::string, std::string>> dims) {
-    ShapeCommand s;
-    s.kind = kind;
-    s.app = app.add_subcommand(kind, help);
-    shapes.push_back(std::move(s));
-    for (auto& [name, what] : dims)
-      shapes.back().app->add_option("--" + name, shapes.back().dims[name], what)->required();
-  };
-  shape("sphere", "sphere of radius R", {{"radius", "radius R"}});
-  shape("spheroid", "spheroid with equatorial semi-axis a and polar semi-axis c",
-        {{"a", "equatorial semi-axis"}, {"c", "polar semi-axis"}});
-  shape("cylinder", "circular cylinder", {{"radius", "radius"}, {"height", "full height"}});
-  shape("cone", "cone, apex down, flat lid on top", {{"radius", "lid radius"}, {"height", "height"}});
-  auto* section = app.add_subcommand("section", "the user's meridian section (.geo or .msh; see docs/geometry.md)");
-  section->add_option("file", req.shape.file, "section file")->required();
+  std::string method = "auto", cluster_method = "lanczos";
   ViscousOptions viscous;
-  for (auto& s : shapes) add_common_options(s.app, req, output, fields, method, viscous);
-  add_common_options(section, req, output, fields, method, viscous);
+  rc::modes::ShapeCommands shapes(app, response ? ": its moment response R(sigma)" : ": its mode table");
+  // Each shape lists only what it takes (cavity-modes sphere --help); anything else is refused by name.
+  for (auto& s : shapes.all()) {
+    add_mesh_options(s.app, s.kind, response, req, method);
+    add_viscous_options(s.app, viscous);
+    if (response) add_response_options(s.app, viscous);
+    else add_table_options(s.app, req, fields, cluster_method);
+    s.app->add_option("-o,--output", output, response ? "R(sigma) as CSV, or FILE.h5: a response-fit table"
+                                                      : "mode table to write (HDF5)")->required();
+    s.app->allow_extras();
+  }
 
   std::string info_file;
   bool json = false;
   auto* info = app.add_subcommand("info", "print a mode table's attributes and modes");
   info->add_option("file", info_file, "mode table (HDF5)")->required();
   info->add_flag("--json", json, "print docs/physics.md §4's JSON object");
+  bool geometry_text = false;
+  info->add_flag("--geometry", geometry_text, "print only the section file's text stored in the table (redirect it "
+                                              "to a file to mesh the same section again)");
 
   std::string compare_table, compare_reference;
   double compare_tolerance = 1e-6;
-  auto* compare = app.add_subcommand("compare", "compare a table's kappa and E with a reference CSV (published or "
-                                                "closed-form values, docs/reference-tables.md); fails past the "
-                                                "tolerance");
+  auto* compare = app.add_subcommand("compare", "compare a table with a reference CSV (published or closed-form "
+                                                "kappa and E, docs/reference-tables.md), or with another table of "
+                                                "the same cavity (REFERENCE.h5: integrals, band weights, clusters; "
+                                                "a refinement study, docs/trust.md); fails past the tolerance");
   compare->add_option("file", compare_table, "mode table (HDF5)")->required();
-  compare->add_option("reference", compare_reference, "reference table (CSV)")->required();
-  compare->add_option("--tolerance", compare_tolerance, "largest relative difference of kappa and E accepted")
-      ->capture_default_str();
+  compare->add_option("reference", compare_reference, "reference: a CSV, or a mode table (.h5)")->required();
+  compare->add_option("--tolerance", compare_tolerance,
+                      "largest relative difference accepted: of kappa and E (CSV); of the integrals and of the band "
+                      "weights over A_f - J_zh (table) (default " + number(compare_tolerance) + ")");
 
   const auto commands = app.get_subcommands([](CLI::App*) { return true; });
   const bool known = std::any_of(commands.begin(), commands.end(), [&](CLI::App* c) {
@@ -213,7 +260,24 @@ int run(int argc, char** argv) {
 
   if (info->parsed()) {
     auto table = rc::read_mode_table(info_file);
-    std::cout << (json ? rc::modes::table_json(table) : rc::modes::table_text(table)) << std::flush;
+    if (geometry_text) {
+      if (table.geometry_text.empty())
+        throw std::runtime_error(info_file + ": no section text stored (" +
+                                 (table.geometry_source.empty() ? "the table predates provenance"
+                                                                : "a built-in shape: " + table.geometry_source) + ")");
+      std::cout << table.geometry_text << std::flush;
+    } else if (json) {
+      std::cout << rc::modes::table_json(table) << std::flush;
+    } else {
+      print_table(table);
+    }
+    return 0;
+  }
+  if (compare->parsed() && ends_with(compare_reference, ".h5")) {
+    const auto a = rc::read_mode_table(compare_table), b = rc::read_mode_table(compare_reference);
+    const auto cmp = rc::modes::compare_tables(a, b, compare_tolerance);
+    std::cout << rc::modes::table_comparison_text(cmp, a, b, compare_table, compare_reference) << std::flush;
+    if (cmp.failing > 0) throw std::runtime_error(rc::modes::table_comparison_failure(cmp));
     return 0;
   }
   if (compare->parsed()) {
@@ -224,17 +288,15 @@ int run(int argc, char** argv) {
     if (cmp.failing > 0) throw std::runtime_error(rc::modes::comparison_failure(cmp, compare_reference));
     return 0;
   }
-  CLI::App* table_command = section;
-  if (section->parsed()) req.shape.kind = "section";
-  for (auto& s : shapes)
-    if (s.app->parsed()) { req.shape.kind = s.kind; req.shape.dims = s.dims; table_command = s.app; }
-  if (response != (table_command->count("--sigma") > 0))
-    throw std::runtime_error(response ? "cavity-modes response needs --sigma FROM:TO:N"
-                                      : "--sigma and --sigma-imag belong to 'cavity-modes response SHAPE ...'");
-  if (!response && table_command->count("--sigma-imag") > 0)
-    throw std::runtime_error("--sigma and --sigma-imag belong to 'cavity-modes response SHAPE ...'");
-  if (table_command->count("--max-fit-error") > 0 &&
-      !(response && output.size() > 3 && output.compare(output.size() - 3, 3, ".h5") == 0))
+  const rc::modes::ShapeCommand* parsed = shapes.parsed();
+  CLI::App* table_command = parsed->app;
+  refuse_extras(*table_command, response);
+  req.shape = shapes.parsed_shape();
+  req.clusters.method = cluster_method == "slices" ? rc::modes::ClusterMethod::slices : rc::modes::ClusterMethod::lanczos;
+  if (response && table_command->count("--sigma") == 0)
+    throw std::runtime_error("cavity-modes response needs --sigma FROM:TO:N");
+  if (response && table_command->count("--max-fit-error") > 0 &&
+      !ends_with(output, ".h5"))
     throw std::runtime_error("--max-fit-error belongs to 'cavity-modes response SHAPE ... -o FILE.h5'");
   if (!(viscous.max_fit_error > 0) || !std::isfinite(viscous.max_fit_error))
     throw std::runtime_error("--max-fit-error must be positive and finite");
@@ -258,12 +320,13 @@ int run(int argc, char** argv) {
     r.mesh = is_viscous ? viscous_settings.mesh : req.mesh;
     r.separable = !is_viscous && method == "separable";  // auto: forced solves for every shape
     if (!is_viscous && !r.separable && r.mesh.order == 0) r.mesh.order = 6;
-    if (output.size() > 3 && output.compare(output.size() - 3, 3, ".h5") == 0) {
+    if (ends_with(output, ".h5")) {
       // A response-fit table: the fit's poles and residues as damped modes (docs/viscous.md, "Response fit").
-      const auto table = rc::modes::response_fit_table(r, viscous.max_fit_error);
+      auto table = rc::modes::response_fit_table(r, viscous.max_fit_error);
       if (!rc::modes::is_root_rank()) return 0;
+      rc::modes::record_provenance(table, req.shape, command_line);
       rc::write_mode_table(table, output);
-      std::cout << rc::modes::table_text(table) << std::flush;
+      print_table(table);
       return 0;
     }
     const auto R = rc::modes::compute_cavity_response(r);
@@ -279,8 +342,9 @@ int run(int argc, char** argv) {
   auto table = rc::modes::compute_mode_table(req, report, fields ? &mode_fields : nullptr);
   if (is_viscous) table = rc::modes::compute_viscous_table(req.shape, viscous_settings, table, report);
   if (!root) return 0;  // under mpirun: rank 0 writes the table
+  rc::modes::record_provenance(table, req.shape, command_line);
   rc::write_mode_table(table, output, fields ? &mode_fields : nullptr);
-  std::cout << rc::modes::table_text(table) << std::flush;
+  print_table(table);
   if (req.selection.modes && table.size() < static_cast<std::size_t>(*req.selection.modes))
     std::cerr << fmt::format("cavity-modes: note: --modes {} asked, the table holds {}: this cavity has no other "
                              "coupling cluster above the selection's threshold (coverage {:.6f})\n",

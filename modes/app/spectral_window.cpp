@@ -1,18 +1,22 @@
 // spectral-window: the spectral weight Σ E of EVERY discrete eigenpair in given λ-windows, by spectrum
-// slicing (no Gauss rule). A development tool of the cone study (docs/cones.md, bench/cone_study.py):
-// a table's /bands come from the survey's Gauss rule, whose band weights are only as sharp as its node
-// spacing; this gives the exact discrete band weight of one discretisation, to separate the two errors.
+// slicing (no Gauss rule), for any shape, on the mesh cavity-modes would build with the same options. A table's
+// /bands come from the survey's Gauss rule, whose band weights are only as sharp as its node spacing; this gives
+// the exact discrete band weight of one discretisation, to separate the two errors (docs/cones.md,
+// docs/trust.md).
 //
-//   build/modes/spectral-window cone --radius 1 --height 1 --order 6 --mesh-size 0.1 --window -0.4,-0.3
+//   build/modes/spectral-window cone --radius 1 --height 1 --mesh-size 0.1 --window -0.4,-0.3
+//   build/modes/spectral-window section data/sections/capsule.geo --order 4 --window 0.6,0.7 --window 0.3,0.6
 //
 // Prints one JSON object per window (lo, hi, pairs, E, lambda_mean, E_max, lambda_of_E_max) plus ndof,
 // A_f − J_zh and the run time. Cost: the slice holds about 2·ndof·(hi − lo)/4 eigenpairs; keep windows narrow
 // on fine meshes.
+#include "cavity_table.hpp"
 #include "fe_space.hpp"
 #include "petsc_handles.hpp"
 #include "poincare_forms.hpp"
-#include "qep_solver.hpp"
+#include "shape_commands.hpp"
 #include "stiffness_solver.hpp"
+#include "window_weight.hpp"
 #include "zhukovsky.hpp"
 
 #include <CLI/CLI.hpp>
@@ -27,58 +31,66 @@ struct Window {
   double lo = 0, hi = 0;
 };
 
-nlohmann::json weigh(const rc::modes::QuadraticEigenSolver& solver, const Window& w) {
-  const auto sol = solver.solve_interval(w.lo, w.hi);
-  double E = 0, El = 0, Emax = 0, lmax = 0;
-  for (const auto& p : sol.pairs) {
-    E += p.coupling.E;
-    El += p.coupling.E * p.lambda;
-    if (p.coupling.E > Emax) { Emax = p.coupling.E; lmax = p.lambda; }
-  }
-  return {{"lo", w.lo}, {"hi", w.hi}, {"pairs", sol.pairs.size()}, {"E", E},
-          {"lambda_mean", E > 0 ? El / E : 0.0}, {"E_max", Emax}, {"lambda_of_E_max", lmax}};
-}
-
-int run(int argc, char** argv) {
-  CLI::App app{"spectral-window: sum of E over every eigenpair in lambda-windows (exact discrete band weights)"};
-  std::string kind;
-  double radius = 0, height = 0;
-  rc::geometry::MeshOptions mesh;
-  mesh.order = 6;
-  std::vector<std::string> windows;
-  app.add_option("shape", kind, "cylinder or cone")->required()->check(CLI::IsMember({"cylinder", "cone"}));
-  app.add_option("--radius", radius, "radius (cone: of the lid)")->required();
-  app.add_option("--height", height, "height")->required();
-  app.add_option("--order", mesh.order, "element order")->capture_default_str();
-  app.add_option("--mesh-size", mesh.size, "element size (0: the shape's default)")->capture_default_str();
-  app.add_option("--window", windows, "LO,HI (repeatable), inside (-2, 2)")->required();
-  CLI11_PARSE(app, argc, argv);
-
+std::vector<Window> parse_windows(const std::vector<std::string>& specs) {
   std::vector<Window> ws;
-  for (const auto& s : windows) {
+  for (const auto& s : specs) {
     Window w;
     const auto comma = s.find(',');
-    if (comma == std::string::npos) throw std::runtime_error("--window " + s + ": expected LO,HI");
-    w.lo = std::stod(s.substr(0, comma));
-    w.hi = std::stod(s.substr(comma + 1));
+    std::size_t used_lo = 0, used_hi = 0;
+    try {
+      if (comma == std::string::npos) throw std::invalid_argument("no comma");
+      w.lo = std::stod(s.substr(0, comma), &used_lo);
+      w.hi = std::stod(s.substr(comma + 1), &used_hi);
+    } catch (const std::logic_error&) {
+      throw std::runtime_error("--window " + s + ": expected LO,HI");
+    }
+    if (used_lo != comma || used_hi != s.size() - comma - 1) throw std::runtime_error("--window " + s + ": expected LO,HI");
     if (!(w.lo < w.hi && w.lo > -2 && w.hi < 2)) throw std::runtime_error("--window " + s + ": need -2 < LO < HI < 2");
     ws.push_back(w);
   }
+  return ws;
+}
+
+int run(int argc, char** argv) {
+  CLI::App app{"spectral-window: sum of E over every eigenpair in lambda-windows (exact discrete band weights of "
+               "the mesh cavity-modes builds with the same options)"};
+  app.require_subcommand(1);
+  rc::modes::ShapeCommands shapes(app, ": exact band weights");
+  rc::geometry::MeshOptions mesh;
+  mesh.order = 6;
+  std::vector<std::string> windows;
+  for (auto& s : shapes.all()) {
+    s.app->add_option("--order", mesh.order, "Lagrange order 1..6")->capture_default_str();
+    s.app->add_option("--mesh-size", mesh.size, "element size (default: as cavity-modes, d/8; spheres and "
+                                                "spheroids d/5; d the smallest dimension)");
+    if (s.kind == "cylinder")
+      s.app->add_option("--radial-size", mesh.radial_size, "element size along r (a structured mesh)");
+    s.app->add_option("--window", windows, "LO,HI (repeatable), inside (-2, 2)")->required();
+  }
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "spectral-window: error: " << e.what() << " (see --help)\n";
+    return e.get_exit_code() != 0 ? e.get_exit_code() : 2;
+  }
+  const auto ws = parse_windows(windows);
+  const auto shape = shapes.parsed_shape();
   int pargc = 1;
   char** pargv = argv;
   rc::modes::PetscSession session(&pargc, &pargv);
   const auto start = std::chrono::steady_clock::now();
-  rc::geometry::ShapeSpec shape;
-  shape.kind = kind;
-  shape.dims = {{"radius", radius}, {"height", height}};
-  const rc::modes::FESpace space(rc::geometry::mesh_meridian(shape, mesh));
+  const rc::modes::FESpace space(rc::geometry::mesh_meridian(shape, rc::modes::mesh_method_defaults(shape, mesh)));
   const auto fluid = rc::modes::integrate_fluid(space);
   const auto forms = rc::modes::assemble_poincare_forms(space, fluid.centroid_z);
   const rc::modes::StiffnessSolver stiffness(forms.M);
   const double sum_rule = fluid.A_f - rc::modes::zhukovsky_inertia(forms, stiffness).J_zh;
   const rc::modes::QuadraticEigenSolver solver(forms, rc::modes::QepSettings{});
   for (const auto& w : ws) {
-    auto j = weigh(solver, w);
+    const auto r = rc::modes::weigh_window(solver, w.lo, w.hi);
+    nlohmann::json j = {{"lo", r.lo}, {"hi", r.hi}, {"pairs", r.pairs}, {"E", r.E}, {"lambda_mean", r.lambda_mean},
+                        {"E_max", r.E_max}, {"lambda_of_E_max", r.lambda_of_E_max}};
     j["ndof"] = space.ndof();
     j["order"] = mesh.order;
     j["mesh_h"] = space.mesh().size;

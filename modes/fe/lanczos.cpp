@@ -1,5 +1,7 @@
 #include "lanczos.hpp"
 
+#include "progress.hpp"
+
 #include <Eigen/Eigenvalues>
 
 #include <cmath>
@@ -17,6 +19,7 @@ LanczosProcess::LanczosProcess(const Eigen::VectorXd& weights, const Eigen::Vect
 bool LanczosProcess::step(const Apply& apply) {
   const int j = steps();
   if (exhausted_ || j >= basis_.cols()) return false;
+  progress_tick();  // a fine mesh's step can take seconds: the run's progress line keeps coming
   apply(basis_.col(j), v_);
   alpha_.push_back(basis_.col(j).dot(weights_.cwiseProduct(v_)));
   // Full re-orthogonalisation, twice: the spectra met here are dense, and plain Lanczos would lose

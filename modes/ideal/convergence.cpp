@@ -33,10 +33,17 @@ ClusterChange cluster_change(const Cluster& c, const Cluster& r, double toleranc
 
 ConvergenceCheck check_convergence(const geometry::ShapeSpec& shape, const geometry::MeshOptions& mesh,
                                    const std::vector<Cluster>& clusters, const ClusterSettings& settings,
-                                   double tolerance) {
+                                   double tolerance, long fine_ndof) {
   ConvergenceCheck check;
   const geometry::MeshOptions reference = coarser(mesh, check.reference);
   const Discretisation d(shape, reference);
+  if (d.space.ndof() == fine_ndof) {
+    // The mesh did not change (a .msh section keeps its own mesh): nothing is compared, nothing is certified.
+    check.reference = "no coarser mesh: the section's mesh does not change with the mesh size (a .msh file); "
+                      "compare with a table of a coarser .msh (cavity-modes compare)";
+    for (std::size_t i = 0; i < clusters.size(); ++i) check.changes.push_back({1.0, 1.0, false});
+    return check;
+  }
   const LanczosRefinement lanczos(d.velocity, d.forms, d.coupling, d.sum_rule, settings);
   std::optional<QuadraticEigenSolver> slicer;
   if (settings.method == ClusterMethod::slices) slicer.emplace(d.forms, settings.qep);

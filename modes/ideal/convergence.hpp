@@ -45,9 +45,11 @@ inline constexpr double kLoosestConvergenceTolerance = 1e-5;
 void validate_convergence_tolerance(double tolerance);
 
 // Recomputes each cluster on `mesh` (as a node at its λ with its E, refined by the table's method) and compares.
+// fine_ndof: the table's own size; a coarser mesh of the same size (a .msh section) certifies nothing, and no
+// cluster is then flagged converged.
 ConvergenceCheck check_convergence(const geometry::ShapeSpec& shape, const geometry::MeshOptions& mesh,
                                    const std::vector<Cluster>& clusters, const ClusterSettings& settings,
-                                   double tolerance);
+                                   double tolerance, long fine_ndof);
 
 // Band edges used by every table: width 0.1 over (−2, 2) (40 bands).
 std::vector<double> band_edges();

@@ -1,5 +1,7 @@
 #include "qep_solver.hpp"
 
+#include "progress.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -37,6 +39,12 @@ void configure_slicing(PEP pep, double lo, double hi) {
   petsc_check(PetscOptionsInsertString(nullptr, "-mat_mumps_icntl_13 1"), "PetscOptionsInsertString");
 }
 
+// A slice can take long on a fine mesh: each iteration lets the run's progress line come (progress.hpp).
+PetscErrorCode tick_monitor(PEP, PetscInt, PetscInt, PetscScalar*, PetscScalar*, PetscReal*, PetscInt, void*) {
+  progress_tick();
+  return 0;
+}
+
 }  // namespace
 
 QuadraticEigenSolver::QuadraticEigenSolver(const PoincareForms& forms, const QepSettings& settings)
@@ -53,6 +61,7 @@ QepSolution QuadraticEigenSolver::solve_interval(double lo, double hi) const {
                                                                                    : PETSC_DEFAULT),
               "PEPSetTolerances");
   petsc_check(PEPSetFromOptions(pep), "PEPSetFromOptions");
+  petsc_check(PEPMonitorSet(pep, tick_monitor, nullptr, nullptr), "PEPMonitorSet");
   char where[96];
   std::snprintf(where, sizeof where, "eigensolver failed on the slice [%.6g, %.6g]", lo, hi);
   petsc_check(PEPSolve(pep), where);

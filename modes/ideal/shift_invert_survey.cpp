@@ -22,14 +22,14 @@ PMat quadratic_at(const PoincareForms& forms, double sigma) {
   return Q;
 }
 
-// The rule's nodes mapped back to λ = σ + 1/θ, with residual bounds in λ terms:
-// T y = θ y + r gives (A − λ) y = −(A − σ) r / θ, and ‖A − σ‖ <= 2 + |σ|.
+// The rule's nodes mapped back to λ = σ + 1/θ, with residual bounds in λ terms, relative to ‖A‖ = 2 (the spectrum
+// fills (−2, 2)): T y = θ y + r gives (A − λ) y = −(A − σ) r / θ, and ‖A − σ‖ <= 2 + |σ|.
 std::vector<GaussNode> mapped_rule(const LanczosProcess& lanczos, double sigma, double mass) {
   auto rule = lanczos.rule(mass);
   for (auto& n : rule) {
     const double theta = n.lambda;
     n.lambda = theta != 0 ? sigma + 1 / theta : std::numeric_limits<double>::infinity();
-    n.residual = theta != 0 ? (2 + std::abs(sigma)) * n.residual / std::abs(theta) : n.residual;
+    n.residual = theta != 0 ? (2 + std::abs(sigma)) * n.residual / (2 * std::abs(theta)) : n.residual;
   }
   return rule;
 }

@@ -21,6 +21,14 @@ std::string table_text(const ModeTable& t) {
   if (t.viscous())
     s += fmt::format("viscous: Ekman number {:g}, wall element {:g}; each mode decays as exp(-decay t), its coupling "
                      "residue is E + i E_imag (docs/viscous.md)\n", t.ekman, t.mesh_h_wall);
+  if (!t.geometry_source.empty()) {
+    const auto lines = std::count(t.geometry_text.begin(), t.geometry_text.end(), '\n');
+    s += fmt::format("geometry: {}{}\n", t.geometry_source,
+                     t.geometry_text.empty() ? std::string()
+                                             : fmt::format(" (its text, {} lines, is stored in the table: "
+                                                           "cavity-modes info FILE --geometry prints it)", lines));
+  }
+  if (!t.command_line.empty()) s += fmt::format("made by: {}\n", t.command_line);
   const bool conv = !t.converged.empty();
   if (conv)
     s += fmt::format("convergence: against {}, tolerance {:g}; {} of {} clusters converged\n", t.convergence_reference,
@@ -38,6 +46,20 @@ std::string table_text(const ModeTable& t) {
               : "\n";
   }
   return s;
+}
+
+std::string convergence_note(const ModeTable& t) {
+  const auto failed = std::count(t.converged.begin(), t.converged.end(), 0);
+  if (t.converged.empty() || failed == 0) return {};
+  const std::string trusted =
+      t.viscous() ? "the damped modes marked yes and, for any shape, the response R(sigma) of `cavity-modes response` "
+                    "(it converges where single modes do not)"
+                  : fmt::format("J_zh, A_f, A_f - J_zh and the band weights (/bands, {} bands of width {:g}; check "
+                                "them with `cavity-modes compare` against a finer table), and any cluster marked yes",
+                                t.bands.size(), t.bands.size() > 0 ? t.bands.hi[0] - t.bands.lo[0] : 0.0);
+  return fmt::format("note: {} of {} clusters did not converge (lambda or E moved more than {:g} against {}): do not "
+                     "rely on them one by one. What converges under refinement here: {}. See docs/trust.md.",
+                     failed, t.size(), t.convergence_tolerance, t.convergence_reference, trusted);
 }
 
 std::string table_json(const ModeTable& t) {
@@ -69,6 +91,9 @@ std::string table_json(const ModeTable& t) {
     j["fit_hi"] = t.fit_hi;
     j["fit_error"] = t.fit_error;
   }
+  if (!t.geometry_source.empty() || !t.command_line.empty())
+    j["provenance"] = {{"geometry_source", t.geometry_source}, {"geometry_text", t.geometry_text},
+                       {"command_line", t.command_line}};
   nlohmann::json m;
   m["kappa"] = t.kappa;
   m["lambda"] = t.lambda;

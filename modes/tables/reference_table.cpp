@@ -140,7 +140,9 @@ std::vector<ReferenceRow> parse_reference_csv(std::istream& in, const std::strin
     r.line = lineno;
     r.shape = fields[column["shape"]];
     if (r.shape.empty()) fail(name, lineno, "shape is empty");
-    r.dimensions = parse_dimensions(fields[column["dimensions"]], name, lineno);
+    // A user's section has no dimensions to name (the table keeps its file's text instead): empty is allowed.
+    if (!(r.shape == "section" && trim(fields[column["dimensions"]]).empty()))
+      r.dimensions = parse_dimensions(fields[column["dimensions"]], name, lineno);
     r.kappa = parse_number(fields[column["kappa"]], "kappa", name, lineno);
     if (!(std::abs(r.kappa) > 1))
       fail(name, lineno, fmt::format("kappa = {:g} is not an inertial mode (|kappa| > 1, |lambda| < 2)", r.kappa));
@@ -222,6 +224,9 @@ std::string comparison_text(const Comparison& c, const ModeTable& t, const std::
   for (const auto& [k, v] : t.dimensions) dims += fmt::format(" {}={:g}", k, v);
   std::string s = fmt::format("table {}: {}{}, order {}, h = {:g}, {} clusters\n", table_name, t.shape, dims,
                               t.fe_order, t.mesh_h, t.size());
+  if (t.shape == "section")
+    s += fmt::format("note: a CSV names no section file; this table was made from {}: make sure the reference "
+                     "describes that section\n", t.geometry_source.empty() ? "(not recorded)" : t.geometry_source);
   s += fmt::format("reference {}: {} rows; each matched to the cluster of nearest kappa; tolerance {:g} "
                    "(relative, kappa and E)\n",
                    reference_name, c.reference.size(), c.tolerance);

@@ -7,7 +7,7 @@
 //   cylinder,height=2;radius=1,2.0089...,2.0544...,"Stewartson (1959) J. Fluid Mech. 5, 577, ...",n=0 j=1
 // Values are for ρ = 1, ω0 = 1, in the table's length unit; E = 2a²/N² (docs/physics.md §2). Fields holding commas
 // or quotes are quoted ("..."; "" inside is a quote). A file describes one cavity: every row's shape and
-// dimensions must match the mode table it is compared with.
+// dimensions must match the mode table it is compared with. Rows of shape `section` may leave dimensions empty.
 #pragma once
 
 #include "mode_table.hpp"

@@ -1,6 +1,7 @@
 #include "table_assembly.hpp"
 
 #include <cmath>
+#include <limits>
 
 namespace rc::modes {
 
@@ -28,7 +29,9 @@ void add_modes(ModeTable& t, const std::vector<Cluster>& clusters) {
     t.E.push_back(c.E);
     t.a.push_back(std::sqrt(c.E / 2));
     t.N2.push_back(1.0);
-    t.residual.push_back(c.residual);
+    // Relative residuals of the discrete eigenproblem: a bound below the rounding of the arithmetic says no more
+    // than "solved to working precision", so it is stored as that (docs/modes.md, "The residual column").
+    t.residual.push_back(std::max(c.residual, std::numeric_limits<double>::epsilon()));
     t.spread.push_back(c.spread);
     t.members.push_back(c.members);
     kept += c.E;

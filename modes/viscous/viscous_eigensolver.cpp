@@ -1,5 +1,7 @@
 #include "viscous_eigensolver.hpp"
 
+#include "progress.hpp"
+
 #include <slepceps.h>
 
 #include <algorithm>
@@ -10,6 +12,13 @@
 
 namespace rc::modes {
 namespace {
+
+// Each Krylov-Schur restart lets the run's progress line come (progress.hpp).
+PetscErrorCode tick_monitor(EPS, PetscInt, PetscInt, PetscScalar*, PetscScalar*, PetscReal*, PetscInt, void*) {
+  progress_tick();
+  return 0;
+}
+
 
 using PEPS = PetscHandle<EPS, EPSDestroy>;
 
@@ -148,6 +157,7 @@ std::vector<ViscousMode> viscous_modes_near(const ViscousForms& forms, std::comp
   petsc_check(EPSSetDimensions(eps, 2 * settings.pairs, PETSC_DEFAULT, PETSC_DEFAULT), "EPSSetDimensions");
   petsc_check(EPSSetTolerances(eps, settings.tolerance, settings.max_iterations), "EPSSetTolerances");
   petsc_check(EPSSetFromOptions(eps), "EPSSetFromOptions");
+  petsc_check(EPSMonitorSet(eps, tick_monitor, nullptr, nullptr), "EPSMonitorSet");
   petsc_check(EPSSolve(eps), "EPSSolve (shift-and-invert of the viscous pencil)");
   EPSConvergedReason reason;
   petsc_check(EPSGetConvergedReason(eps, &reason), "EPSGetConvergedReason");

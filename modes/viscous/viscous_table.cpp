@@ -1,6 +1,7 @@
 #include "viscous_table.hpp"
 
 #include "mesh_broadcast.hpp"
+#include "progress.hpp"
 #include "poincare_forms.hpp"
 #include "taylor_hood_space.hpp"
 
@@ -9,6 +10,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace rc::modes {
@@ -150,9 +152,10 @@ ModeTable compute_viscous_table(const geometry::ShapeSpec& shape, const ViscousT
   std::vector<double> targets = ideal.lambda, energies = ideal.E;
   if (targets.empty()) throw std::runtime_error("the ideal table has no mode to continue");
 
+  Progress lines(report);  // at least every 5 s, with the time left (progress.hpp)
   auto progress = [&](const char* what) {
     return [&, what](std::size_t done, std::size_t total) {
-      if (report) report(fmt::format("[{:6.2f} s] {} mode {}/{}", seconds(), what, done, total));
+      lines.step(fmt::format("{} mode {}/{}", what, done, total), done, total);
     };
   };
   Solved fine = solve_targets(shape, mesh, ideal.centroid_z, s, targets, energies, progress("viscous"));
@@ -179,7 +182,7 @@ ModeTable compute_viscous_table(const geometry::ShapeSpec& shape, const ViscousT
     t.a.push_back(a.real());
     t.a_imag.push_back(a.imag());
     t.N2.push_back(1.0);
-    t.residual.push_back(m.residual);
+    t.residual.push_back(std::max(m.residual, std::numeric_limits<double>::epsilon()));  // as add_modes
     kept += m.residue.real();
   }
   t.coverage = t.sum_rule > 0 ? kept / t.sum_rule : 1.0;

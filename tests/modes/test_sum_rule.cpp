@@ -8,12 +8,14 @@
 #include "poincare_forms.hpp"
 #include "qep_solver.hpp"
 #include "stiffness_solver.hpp"
+#include "window_weight.hpp"
 #include "zhukovsky.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 using namespace rc;
 
@@ -51,4 +53,27 @@ TEST(SumRule, ExactOnStraightSidedMesh) {
 
 TEST(SumRule, CurvedMeshToGeometryError) {
   check_sum_rule({"spheroid", {{"a", 1.0}, {"c", 2.0}}, {}}, 6, 1.0, 1e-8);
+}
+
+// spectral-window's exact band weight (SLEPc spectrum slicing of one window) against the sum of E over the same
+// window of EVERY eigenpair (the dense solve), on a user section: the capsule of data/sections, order 3, h = 0.5.
+TEST(SumRule, WindowWeightIsTheSumOverEveryEigenpairInTheWindow) {
+  const geometry::ShapeSpec capsule{"section", {}, std::filesystem::path(RC_SECTIONS_DIR) / "capsule.geo"};
+  modes::FESpace space(geometry::mesh_meridian(capsule, {3, 0.5}));
+  const auto fluid = modes::integrate_fluid(space);
+  const auto forms = modes::assemble_poincare_forms(space, fluid.centroid_z);
+  const modes::QuadraticEigenSolver solver(forms, {});
+  const auto all = solver.solve_all_dense();
+  for (const auto& [lo, hi] : {std::pair{0.4, 0.5}, std::pair{-0.5, -0.2}, std::pair{1.0, 1.9}}) {
+    double dense = 0;
+    std::size_t pairs = 0;
+    for (const auto& p : all.pairs)
+      if (p.lambda >= lo && p.lambda < hi) { dense += p.coupling.E; ++pairs; }
+    const auto w = modes::weigh_window(solver, lo, hi);
+    const double err = std::abs(w.E - dense) / dense;
+    std::printf("capsule P3 h = 0.5, %d dofs, window [%g, %g): %zu pairs (dense %zu), E %.15g, dense %.15g, "
+                "rel err %.2e\n", space.ndof(), lo, hi, w.pairs, pairs, w.E, dense, err);
+    EXPECT_EQ(w.pairs, pairs);
+    EXPECT_LE(err, 1e-10);
+  }
 }

@@ -10,6 +10,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
 small=(--order 3 --mesh-size 0.5 --no-convergence-check)
+small_response=(--order 3 --mesh-size 0.5)  # a response has no convergence check
 
 expect_error "zero Ekman number" "outside" "$BIN" sphere --radius 1 --ekman 0 -o out.h5
 expect_error "negative Ekman number" "outside" "$BIN" sphere --radius 1 --ekman -1e-3 -o out.h5
@@ -50,11 +51,11 @@ expect_error "response-fit table without --ekman" "needs --ekman" "$BIN" respons
 expect_error "response-fit table with too few samples" "N >= 9" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:5 -o out.h5
 expect_error "response-fit table off the real axis" "increasing real frequencies" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:9 --sigma-imag 0.1 -o out.h5
 expect_error "--max-fit-error on a CSV response" "belongs to" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:9 --max-fit-error 1e-3 -o out.csv
-expect_error "response fit that misses its tolerance" "give more frequencies" "$BIN" response sphere --radius 1 --ekman 1e-2 "${small[@]}" --sigma -2:3:9 --max-fit-error 1e-14 -o out.h5
+expect_error "response fit that misses its tolerance" "give more frequencies" "$BIN" response sphere --radius 1 --ekman 1e-2 "${small_response[@]}" --sigma -2:3:9 --max-fit-error 1e-14 -o out.h5
 expect_error "response without --sigma" "needs --sigma" "$BIN" response sphere --radius 1 --ekman 1e-2 -o out.h5
 expect_error "--sigma on a table command" "belong to 'cavity-modes response" "$BIN" sphere --radius 1 --ekman 1e-2 --sigma 0:1:3 -o out.h5
 expect_error "malformed --sigma" "is not FROM:TO:N" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 1:0.5:3 -o out.h5
-if "$BIN" response sphere --radius 1 --ekman 1e-2 "${small[@]}" --sigma 0.5:1.5:11 --sigma-imag 0.2 -o resp.csv > resp.txt 2>&1 &&
+if "$BIN" response sphere --radius 1 --ekman 1e-2 "${small_response[@]}" --sigma 0.5:1.5:11 --sigma-imag 0.2 -o resp.csv > resp.txt 2>&1 &&
    [ ! -e resp.csv.tmp* ] && python3 -c '
 import csv, math
 rows = [r for r in csv.reader(l for l in open("resp.csv") if not l.startswith("#"))]
@@ -140,7 +141,7 @@ fi
 # pole is the eigensolver's damped mode on the same mesh (measured 3.8e-7; the residue 9.9e-6: the fit's pole also
 # carries its weak neighbours), and at the chain's body roots (near the real axis) the fit's R is the R of a forced
 # solve at that complex frequency (no fit, no modes; measured 1.4e-10 and 1.9e-10).
-if "$BIN" response sphere --radius 1 --ekman 1e-2 "${small[@]}" --sigma -1.5:2:36 -o fit.h5 > fit.txt 2>&1 &&
+if "$BIN" response sphere --radius 1 --ekman 1e-2 "${small_response[@]}" --sigma -1.5:2:36 -o fit.h5 > fit.txt 2>&1 &&
    "$BIN" info fit.h5 --json > fit.json && sed -i 's/visc.h5/fit.h5/' scene.toml &&
    "$ROM" spectrum scene.toml --json > fitspec.json && "$ROM" spectrum scene.toml > fitspec.txt &&
    grep -q "modes of a response fit" fitspec.txt && python3 - "$BIN" <<'PY'

@@ -1,0 +1,52 @@
+// Progress lines of long cavity-modes work (modes/fe/progress.hpp): a tick prints only after the interval, a
+// counted step carries the time left at the measured rate, and ticks go to the innermost installed Progress.
+#include "progress.hpp"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <string>
+#include <thread>
+#include <vector>
+
+using rc::modes::Progress;
+
+namespace {
+
+void wait(double seconds) { std::this_thread::sleep_for(std::chrono::duration<double>(seconds)); }
+
+}  // namespace
+
+TEST(Progress, TicksPrintOnlyAfterTheIntervalAndCarryTheTimeLeft) {
+  std::vector<std::string> lines;
+  Progress p([&](const std::string& l) { lines.push_back(l); }, 0.2);
+  rc::modes::progress_tick();
+  EXPECT_TRUE(lines.empty());  // nothing before the interval
+  p.step("cluster 1/4", 1, 4);  // the first item: its rate is measured from the start
+  EXPECT_TRUE(lines.empty());  // a step prints only after a second
+  wait(0.25);
+  rc::modes::progress_tick();
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_NE(lines[0].find("cluster 1/4 (working)"), std::string::npos) << lines[0];
+  rc::modes::progress_tick();
+  EXPECT_EQ(lines.size(), 1u);  // the interval starts again
+  wait(1.0);
+  p.step("cluster 2/4", 2, 4);  // 1.25 s for two items since the count began: 0.63 s per item, 2 left
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_NE(lines[1].find("cluster 2/4, about 1 s left"), std::string::npos) << lines[1];
+}
+
+TEST(Progress, TicksGoToTheInnermostProgressAndNowhereWithoutOne) {
+  std::vector<std::string> outer_lines, inner_lines;
+  {
+    Progress outer([&](const std::string& l) { outer_lines.push_back(l); }, 0.0);
+    {
+      Progress inner([&](const std::string& l) { inner_lines.push_back(l); }, 0.0);
+      rc::modes::progress_tick();
+    }
+    rc::modes::progress_tick();
+  }
+  rc::modes::progress_tick();  // none installed: nothing, no crash
+  EXPECT_EQ(inner_lines.size(), 1u);
+  EXPECT_EQ(outer_lines.size(), 1u);
+}
