@@ -60,6 +60,8 @@ void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
   b.C_f = rho * L5 * t.C_f;
   b.J_zh = rho * L5 * t.J_zh;
   b.sum_rule = rho * L5 * (t.A_f - t.J_zh);
+  // O_k -> the fluid's centroid: given, or placed by the table's origin (the table's z = 0 at `origin`).
+  b.fluid_center = cav.origin ? *cav.origin + L * t.centroid_z : cav.center;
   if (!(b.m_f > 0) || b.A_f < 0 || b.C_f < 0 || b.J_zh < 0)
     fail(scene, w + ".table", "non-physical table (volume, A_f, C_f or J_zh not positive)");
 
@@ -147,7 +149,7 @@ ChainModel build_model(const Scene& scene, TableCache* tables) {
     double m = bs.mass, first = bs.mass * bs.com, A = bs.A, C = bs.C;
     if (bs.cavity) {
       add_fluid(scene, k, *bs.cavity, b, cm.modes, tables);
-      const double d = bs.cavity->center;
+      const double d = b.fluid_center;
       m += b.m_f;
       first += b.m_f * d;
       A += b.A_f + b.m_f * d * d;  // parallel-axis theorem: fluid inertia about O_k

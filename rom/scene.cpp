@@ -85,7 +85,7 @@ std::vector<std::complex<double>> get_complex_array(const Ctx& c, const toml::ta
 
 CavitySpec parse_cavity(const Ctx& c, const toml::table& t, const std::string& where,
                         const std::filesystem::path& base) {
-  check_keys(c, t, where, {"table", "density", "scale", "center", "modes", "coverage",
+  check_keys(c, t, where, {"table", "density", "scale", "center", "origin", "modes", "coverage",
                            "static_correction", "viscosity"});
   CavitySpec cav;
   const toml::node* tab = t.get("table");
@@ -95,7 +95,13 @@ CavitySpec parse_cavity(const Ctx& c, const toml::table& t, const std::string& w
   cav.table = p.is_absolute() ? p : base / p;
   cav.density = *get_number(c, t, "density", where + ".density", Sign::pos, true);
   cav.scale = *get_number(c, t, "scale", where + ".scale", Sign::pos, true);
-  cav.center = *get_number(c, t, "center", where + ".center", Sign::any, true);
+  // Where the fluid sits: its centroid (center), or the table's own origin (origin), not both.
+  const auto center = get_number(c, t, "center", where + ".center", Sign::any, false);
+  cav.origin = get_number(c, t, "origin", where + ".origin", Sign::any, false);
+  if (center && cav.origin) c.fail(where + ".origin", "give either center or origin, not both");
+  if (!center && !cav.origin)
+    c.fail(where + ".center", "missing (or give origin: O_k -> the table's z = 0, and the centroid follows from the table)");
+  cav.center = center.value_or(0.0);
   if (const toml::node* m = t.get("modes")) {
     if (!m->is_integer()) c.fail(where + ".modes", "must be an integer");
     auto v = m->as_integer()->get();

@@ -19,7 +19,9 @@ struct CavitySpec {
   std::filesystem::path table;     // resolved against the scene file's folder
   double density = 0;              // kg/m^3
   double scale = 0;                // metres per table length unit
-  double center = 0;               // O_k -> fluid centroid along the axis (m)
+  double center = 0;               // O_k -> fluid centroid along the axis (m); or, with origin:
+  std::optional<double> origin;    // O_k -> the table's z = 0 along the axis (m): the centroid then follows
+                                   // from the table, center = origin + scale * centroid_z (chain_model.cpp)
   std::optional<int> modes;        // keep the first `modes` modes (table is sorted by E)
   std::optional<double> coverage;  // or: the fewest leading modes whose sum E >= coverage*sum_rule
   bool static_correction = false;  // add the unkept remainder (A_f - J_zh) - sum E as inertia

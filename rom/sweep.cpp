@@ -188,7 +188,10 @@ double& param_ref(Scene& s, const ParamKey& k) {
       CavitySpec& c = *s.bodies[k.index].cavity;
       if (k.field == "density") return c.density;
       if (k.field == "scale") return c.scale;
-      if (k.field == "center") return c.center;
+      if (k.field == "center") {
+        if (c.origin) throw SweepError(k.text + ": this cavity is placed by origin, not center");
+        return c.center;
+      }
       if (!c.coverage) c.coverage = 1.0;
       return *c.coverage;
     }

@@ -107,3 +107,30 @@ TEST(Scene, BadInputGivesOneLineErrorNamingTheKey) {
   expect_error(with(b.table, "missing.h5"), "body[1].cavity.table");
   expect_error("[system\nkind=1", "syntax error");
 }
+
+// `origin` places the tank by the table's own z = 0: the centroid follows as origin + scale·centroid_z, the same
+// model as `center` given by hand (docs/scene-format.md). Both keys, or neither, are one-line errors.
+TEST(Scene, OriginPlacesTheTankByTheTableOrigin) {
+  rc::ModeTable shifted = spheroid_table(1, 0.7);
+  shifted.centroid_z = 0.7;  // as if the geometry's z = 0 were 0.7 table units below the fluid's centroid
+  write_table(shifted, test_dir() / "spheroid_shifted.h5");
+  Body b;
+  b.mass = 2; b.A = 0.05; b.C = 0.03; b.com = 0.1; b.spin = 40;
+  b.table = "spheroid_shifted.h5"; b.scale = 0.1; b.center = 0.1 + 0.1 * 0.7;
+  const std::string by_center = scene_text({b}, {}, 9.81);
+  std::string by_origin = by_center;
+  by_origin.replace(by_origin.find("center = "), by_origin.find('\n', by_origin.find("center = ")) - by_origin.find("center = "),
+                    "origin = 0.1");
+  const ChainModel a = model_of(by_center), o = model_of(by_origin);
+  std::printf("  c: center %.15g, origin %.15g; A: %.15g, %.15g\n", a.bodies[0].c, o.bodies[0].c, a.bodies[0].A,
+              o.bodies[0].A);
+  EXPECT_NEAR(o.bodies[0].c, a.bodies[0].c, 1e-15);
+  EXPECT_NEAR(o.bodies[0].A, a.bodies[0].A, 1e-15);
+  EXPECT_NEAR(o.bodies[0].fluid_center, 0.17, 1e-15);
+  std::string both = by_center;
+  both.replace(both.find("center = "), 0, "origin = 0.1\n");
+  expect_error(both, "body[1].cavity.origin", "give either center or origin, not both");
+  std::string neither = by_center;
+  neither.erase(neither.find("center = "), neither.find('\n', neither.find("center = ")) - neither.find("center = ") + 1);
+  expect_error(neither, "body[1].cavity.center", "missing (or give origin");
+}
