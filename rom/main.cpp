@@ -10,6 +10,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -101,7 +103,8 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help: 0; every command-line error: 2, whatever CLI11's own code (docs/rom.md).
+    return app.exit(e) == 0 ? 0 : 2;
   }
   try {
     if (sweep->parsed()) {
@@ -222,7 +225,8 @@ int main(int argc, char** argv) {
       }
       const rc::rom::History h = rc::rom::propagate(model, scene);
       // A trajectory that left the double range (a scene of extreme magnitudes) is reported, never written.
-      if (!h.u.allFinite() || !h.z.allFinite())
+      const bool energy_finite = std::all_of(h.H.begin(), h.H.end(), [](double e) { return std::isfinite(e); });
+      if (!h.u.allFinite() || !h.z.allFinite() || !energy_finite)
         throw std::runtime_error("the trajectory is not finite (method " + h.method_used +
                                  "): the scene's magnitudes leave double precision; nothing written");
       rc::rom::write_history(model, h, out_file);

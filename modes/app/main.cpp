@@ -8,6 +8,7 @@
 //   cavity-modes response cylinder --radius 1 --height 2 --sigma 0.5+0.1i,1.2-0.05i -o R.csv   (ideal fluid)
 // PETSc/SLEPc options (-pep_type ..., -log_view) pass through.
 #include "cavity_table.hpp"
+#include "convergence.hpp"
 #include "command_line.hpp"
 #include "mode_fields.hpp"
 #include "mode_table_report.hpp"
@@ -255,7 +256,7 @@ int run(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     std::cerr << "cavity-modes: error: " << e.what() << " (see --help)\n";
-    return e.get_exit_code() != 0 ? e.get_exit_code() : 2;
+    return 2;  // every command-line error, whatever CLI11's own code
   }
 
   if (info->parsed()) {
@@ -300,6 +301,8 @@ int run(int argc, char** argv) {
     throw std::runtime_error("--max-fit-error belongs to 'cavity-modes response SHAPE ... -o FILE.h5'");
   if (!(viscous.max_fit_error > 0) || !std::isfinite(viscous.max_fit_error))
     throw std::runtime_error("--max-fit-error must be positive and finite");
+  // Checked here, once: the viscous path hands the tolerance on past compute_mode_table's own check.
+  if (!response && req.check_convergence) rc::modes::validate_convergence_tolerance(req.convergence_tolerance);
   const bool is_viscous = table_command->count("--ekman") > 0;
   rc::modes::ViscousTableSettings viscous_settings;
   if (is_viscous) viscous_settings = viscous_request(*table_command, viscous, fields, req);

@@ -73,7 +73,7 @@ int run(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     std::cerr << "spectral-window: error: " << e.what() << " (see --help)\n";
-    return e.get_exit_code() != 0 ? e.get_exit_code() : 2;
+    return 2;  // every command-line error, whatever CLI11's own code
   }
   const auto ws = parse_windows(windows);
   const auto shape = shapes.parsed_shape();
