@@ -2,6 +2,7 @@
 // fluid-filled cavities (docs/physics.md §3-4). One-line error and exit code 1 on bad input.
 #include "bench.hpp"
 #include "chain_model.hpp"
+#include "companion_check.hpp"
 #include "output.hpp"
 #include "propagation.hpp"
 #include "scene.hpp"
@@ -206,7 +207,10 @@ int main(int argc, char** argv) {
     const rc::rom::Scene scene = rc::rom::parse_scene(scene_file);
     const rc::rom::ChainModel model = rc::rom::build_model(scene);
     if (spec->parsed()) {
-      const rc::rom::Spectrum sp = rc::rom::compute_spectrum(model);
+      rc::rom::Spectrum sp = rc::rom::compute_spectrum(model);
+      if (rc::rom::has_companions(scene))
+        rc::rom::mark_companion_shifts(
+            sp, rc::rom::compute_spectrum(rc::rom::build_model(rc::rom::with_companions(scene))));
       if (json) std::cout << rc::rom::spectrum_json(sp) << "\n";
       else rc::rom::print_spectrum(std::cout, model, sp);
     } else {

@@ -1,5 +1,7 @@
 #include "output.hpp"
 
+#include "companion_check.hpp"
+
 #include <hdf5.h>
 #include <nlohmann/json.hpp>
 
@@ -142,6 +144,12 @@ std::string spectrum_json(const Spectrum& sp) {
   j["newton_failed"] = sp.newton_failed;
   j["outside_fit"] = sp.outside_fit;
   j["unconverged_owners"] = sp.unconverged_owners;
+  if (sp.companion_checked) {
+    j["companion_moved"] = sp.companion_moved;
+    j["companion_worst"] = sp.companion_worst;
+    j["companion_shift"] = nlohmann::ordered_json::array();
+    for (const Root& r : sp.roots) j["companion_shift"].push_back(r.companion_shift);
+  }
   return j.dump();
 }
 
@@ -167,7 +175,8 @@ void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp) {
   os << std::setprecision(12);
   for (const Root& r : sp.roots) {
     os << "  " << std::setw(20) << r.sigma.real() << "  " << std::setw(20) << r.sigma.imag() << "i  "
-       << std::setw(10) << r.owner << (r.unconverged_owner ? "*" : " ") << " det residual ";
+       << std::setw(10) << r.owner << (r.unconverged_owner ? "*" : " ") << (r.companion_moved ? "~" : " ")
+       << " det residual ";
     if (std::isnan(r.residual)) os << "n/a (sigma = 0 or at a pole of (22))";
     else os << std::setprecision(3) << r.residual << std::setprecision(12);
     os << "\n";
@@ -191,6 +200,10 @@ void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp) {
     os << sp.unconverged_owners << " roots (marked *) belong to clusters their tables flag as not converged: their "
        << "frequencies are not reliable (docs/cones.md); the body roots are compared with a finer table in "
        << "docs/rom.md, \"Viscous tanks\"\n";
+  if (sp.companion_checked)
+    os << "companion tables: " << sp.companion_moved << " roots (marked ~) move by more than " << kCompanionTolerance
+       << " (relative) when the tables are replaced by their coarser companions; the largest move "
+       << sp.companion_worst << (sp.companion_moved ? ": those roots depend on the mesh (docs/trust.md)" : "") << "\n";
   if (sp.outside_fit)
     os << sp.outside_fit << " roots lie outside a tank's response-fit window, where its fit is extrapolated "
        << "(docs/viscous.md, \"Response fit\")\n";

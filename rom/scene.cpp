@@ -85,7 +85,7 @@ std::vector<std::complex<double>> get_complex_array(const Ctx& c, const toml::ta
 
 CavitySpec parse_cavity(const Ctx& c, const toml::table& t, const std::string& where,
                         const std::filesystem::path& base) {
-  check_keys(c, t, where, {"table", "density", "scale", "center", "origin", "modes", "coverage",
+  check_keys(c, t, where, {"table", "companion", "density", "scale", "center", "origin", "modes", "coverage",
                            "static_correction", "viscosity"});
   CavitySpec cav;
   const toml::node* tab = t.get("table");
@@ -93,6 +93,11 @@ CavitySpec parse_cavity(const Ctx& c, const toml::table& t, const std::string& w
   if (!tab->is_string()) c.fail(where + ".table", "must be a string");
   std::filesystem::path p = tab->as_string()->get();
   cav.table = p.is_absolute() ? p : base / p;
+  if (const toml::node* comp = t.get("companion")) {
+    if (!comp->is_string()) c.fail(where + ".companion", "must be a string");
+    const std::filesystem::path q = comp->as_string()->get();
+    cav.companion = q.is_absolute() ? q : base / q;
+  }
   cav.density = *get_number(c, t, "density", where + ".density", Sign::pos, true);
   cav.scale = *get_number(c, t, "scale", where + ".scale", Sign::pos, true);
   // Where the fluid sits: its centroid (center), or the table's own origin (origin), not both.

@@ -7,6 +7,7 @@
 #include "first_order_system.hpp"
 
 #include <complex>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,10 @@ struct Root {
   // NaN where (22) is undefined or Newton did not converge.
   double newton_shift = 0;
   bool unconverged_owner = false;  // owned by a cluster its table flags as not converged (docs/cones.md)
+  // With companion tables (companion_check.hpp): the relative distance to the nearest root computed with them, and
+  // whether that passes kCompanionTolerance. NaN and false without companions.
+  double companion_shift = std::numeric_limits<double>::quiet_NaN();
+  bool companion_moved = false;
 };
 
 struct Spectrum {
@@ -36,6 +41,9 @@ struct Spectrum {
   // Roots where some tank's response-fit table is extrapolated: Re (sigma + omega_k)/omega_k outside its window.
   int outside_fit = 0;
   int unconverged_owners = 0;  // roots owned by a kept cluster that its table flags as not converged
+  bool companion_checked = false;  // the roots were recomputed with the companion tables
+  int companion_moved = 0;         // roots that moved past kCompanionTolerance
+  double companion_worst = 0;      // the largest relative move
 };
 
 // The verdict alone (eigenvalues only: no eigenvectors, owners or det residuals), by the same

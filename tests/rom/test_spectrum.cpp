@@ -1,5 +1,6 @@
 // Roots against closed forms: E = 0 (one body, Savchenko's chain), the sphere, Greenhill.
 #include "characteristic.hpp"
+#include "companion_check.hpp"
 #include "rom_test_util.hpp"
 
 #include <gtest/gtest.h>
@@ -134,4 +135,41 @@ TEST(Spectrum, RootsSatisfyTheCharacteristicDeterminant) {
   const double off = characteristic_residual(m, sp.roots[0].sigma * 1.01 + cd(0.5, 0), 100.0);
   std::printf("  residual away from a root %.2e\n", off);
   EXPECT_GT(off, 1e-6);
+}
+
+// Companion tables (rom/companion_check.hpp): a coarser-mesh table of the same cavity. An identical companion
+// moves no root; one whose cluster differs by 1e-3 in E moves the roots that cluster shapes, and they are marked;
+// a companion of another cavity is refused.
+TEST(Spectrum, CompanionTableMarksTheRootsThatMove) {
+  const rc::ModeTable t = spheroid_table(1, 0.7);
+  rc::ModeTable moved = t;
+  for (std::size_t i = 0; i < moved.size(); ++i) { moved.E[i] *= 1.001; moved.a[i] *= std::sqrt(1.001); }
+  moved.sum_rule = moved.A_f - moved.J_zh;
+  write_table(t, test_dir() / "companion_same.h5");
+  write_table(moved, test_dir() / "companion_moved.h5");
+  Body b;
+  b.mass = 2; b.A = 0.05; b.C = 0.03; b.com = 0.1; b.spin = 60;
+  b.table = spheroid_file(1, 0.7); b.scale = 0.05; b.center = 0.05;
+  const std::string text = scene_text({b}, {}, 9.81);
+  const auto with = [&](const std::string& companion) {
+    std::string s = text;
+    s.replace(s.find("table = "), 0, "companion = \"" + companion + "\"\n");
+    return parse_scene_text(s, test_dir(), "test-scene");
+  };
+  for (const std::string name : {"companion_same.h5", "companion_moved.h5"}) {
+    const Scene scene = with(name);
+    ASSERT_TRUE(has_companions(scene));
+    Spectrum sp = compute_spectrum(build_model(scene));
+    mark_companion_shifts(sp, compute_spectrum(build_model(with_companions(scene))));
+    std::printf("  %s: %d of %zu roots moved, largest move %.2e\n", name.c_str(), sp.companion_moved,
+                sp.roots.size(), sp.companion_worst);
+    if (name == "companion_same.h5") {
+      EXPECT_EQ(sp.companion_moved, 0);
+      EXPECT_LE(sp.companion_worst, 1e-12);
+    } else {
+      EXPECT_GE(sp.companion_moved, 1);
+      EXPECT_GT(sp.companion_worst, kCompanionTolerance);  // a 1e-3 change of E moves its roots by 6.6e-6
+    }
+  }
+  EXPECT_THROW(with_companions(with(sphere_file(1))), SceneError);
 }

@@ -1,0 +1,60 @@
+#include "companion_check.hpp"
+
+#include "mode_table.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace rc::rom {
+namespace {
+
+// The companion must be the same cavity: the check a user cannot see from the spectrum.
+void check_same_cavity(const std::filesystem::path& table, const std::filesystem::path& companion,
+                       const std::string& where) {
+  const rc::ModeTable a = rc::read_mode_table(table), b = rc::read_mode_table(companion);
+  std::string why;
+  if (a.shape != b.shape) why = "shape " + b.shape + ", the table's is " + a.shape;
+  else if (a.dimensions != b.dimensions) why = "other dimensions";
+  else if (!a.geometry_text.empty() && !b.geometry_text.empty() && a.geometry_text != b.geometry_text)
+    why = "another section file (their stored texts differ)";
+  else if (a.ekman != b.ekman) why = "another Ekman number";
+  if (!why.empty())
+    throw SceneError(where + ".companion: " + companion.string() + " describes another cavity than the table (" +
+                     why + ")");
+}
+
+}  // namespace
+
+bool has_companions(const Scene& scene) {
+  for (const BodySpec& b : scene.bodies)
+    if (b.cavity && !b.cavity->companion.empty()) return true;
+  return false;
+}
+
+Scene with_companions(const Scene& scene) {
+  Scene s = scene;
+  for (std::size_t k = 0; k < s.bodies.size(); ++k) {
+    auto& cav = s.bodies[k].cavity;
+    if (!cav || cav->companion.empty()) continue;
+    check_same_cavity(cav->table, cav->companion, "body[" + std::to_string(k + 1) + "].cavity");
+    cav->table = cav->companion;
+    cav->companion.clear();
+  }
+  return s;
+}
+
+void mark_companion_shifts(Spectrum& sp, const Spectrum& companion) {
+  sp.companion_moved = 0;
+  sp.companion_worst = 0;
+  for (Root& r : sp.roots) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const Root& c : companion.roots) nearest = std::min(nearest, std::abs(c.sigma - r.sigma));
+    r.companion_shift = nearest / std::max(std::abs(r.sigma), 1e-300);
+    r.companion_moved = !(r.companion_shift <= kCompanionTolerance);
+    if (r.companion_moved) ++sp.companion_moved;
+    sp.companion_worst = std::max(sp.companion_worst, r.companion_shift);
+  }
+  sp.companion_checked = true;
+}
+
+}  // namespace rc::rom
