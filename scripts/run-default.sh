@@ -63,6 +63,8 @@ for recipe in "${RECIPES[@]}"; do
   summary=$(grep -m1 'dofs' "$TABLES/${name%.h5}.log" || true)
   coverage=$(grep -o 'coverage [0-9.eE+-]*' "$TABLES/${name%.h5}.log" | head -n1 || true)
   echo "  $name: written in $((SECONDS - t0)) s; $summary; $coverage"
+  # The table's own line on unconverged clusters (docs/trust.md), if it has one.
+  grep -m1 '^note:' "$log" | sed 's/^/    /' || true
 done
 
 step "3/6 chain-rom spectrum ${SCENE#"$ROOT"/}"
