@@ -91,6 +91,12 @@ void ModeFields::validate() const {
     check_finite(m.p, mode_group(m.row) + "/p");
     check_finite(m.V, mode_group(m.row) + "/V");
     check_finite(m.energy_density, mode_group(m.row) + "/energy_density");
+    if (damped && (m.p_imag.size() != n || m.V_imag.size() != 3 * n))
+      throw std::runtime_error("fields: damped mode " + std::to_string(m.row) + " lacks its imaginary parts");
+    if (!damped && !(m.p_imag.empty() && m.V_imag.empty()))
+      throw std::runtime_error("fields: imaginary parts on an ideal mode");
+    check_finite(m.p_imag, mode_group(m.row) + "/p_imag");
+    check_finite(m.V_imag, mode_group(m.row) + "/V_imag");
   }
 }
 
@@ -100,17 +106,29 @@ void write_fields_group(hid_t file, const ModeFields& f) {
   text_attribute(fields.get(), "points",
                  "mesh/points are (r, 0, z): the meridian half-plane phi = 0, z along the symmetry axis, in the "
                  "geometry's coordinates (not centroid-relative)");
-  text_attribute(fields.get(), "phase_convention",
-                 "V = (i v_r, v_phi, i v_z) exp(i m phi) with m = 1 (docs/physics.md §2); V holds the real amplitudes "
-                 "(v_r, v_phi, v_z): the factor i of V_r and V_z is dropped. At phi = 0 these are also the x, y, z "
-                 "components. p is the real pressure amplitude of P = p exp(i phi)");
-  text_attribute(fields.get(), "normalisation",
-                 "each mode's V has N2 = 2 pi int int (v_r^2 + v_phi^2 + v_z^2) r dr dz = 1 and a = (e1 x r, V) >= 0, "
-                 "as /modes; energy_density = (v_r^2 + v_phi^2 + v_z^2) r per unit dr dz, so 2 pi int int "
-                 "energy_density dr dz = 1");
-  text_attribute(fields.get(), "cluster_field",
-                 "sum over the cluster's eigenpairs l of (a_l / N_l^2) V_l, normalised: the part of the coupling "
-                 "flow the cluster carries (a single mode for a one-member cluster)");
+  if (f.damped) {
+    text_attribute(fields.get(), "phase_convention",
+                   "damped modes of a viscous table: the velocity is Re[(V_r, V_phi, V_z) exp(i phi + i lambda t)] with "
+                   "complex amplitudes; V holds their real parts and V_imag their imaginary parts (no factor i "
+                   "dropped), p and p_imag those of the pressure P (docs/viscous.md, Fields)");
+    text_attribute(fields.get(), "normalisation",
+                   "each mode as /modes: x^T M x = 1 (unconjugated) with a = (e1 x r, V) / (i sqrt(2 pi)) of "
+                   "non-negative real part; energy_density = (|V_r|^2 + |V_phi|^2 + |V_z|^2) r / (2 pi int int "
+                   "(same) r dr dz), so 2 pi int int energy_density dr dz = 1");
+    text_attribute(fields.get(), "cluster_field", "one damped mode per /modes row");
+  } else {
+    text_attribute(fields.get(), "phase_convention",
+                   "V = (i v_r, v_phi, i v_z) exp(i m phi) with m = 1 (docs/physics.md §2); V holds the real "
+                   "amplitudes (v_r, v_phi, v_z): the factor i of V_r and V_z is dropped. At phi = 0 these are also "
+                   "the x, y, z components. p is the real pressure amplitude of P = p exp(i phi)");
+    text_attribute(fields.get(), "normalisation",
+                   "each mode's V has N2 = 2 pi int int (v_r^2 + v_phi^2 + v_z^2) r dr dz = 1 and a = (e1 x r, V) "
+                   ">= 0, as /modes; energy_density = (v_r^2 + v_phi^2 + v_z^2) r per unit dr dz, so 2 pi int int "
+                   "energy_density dr dz = 1");
+    text_attribute(fields.get(), "cluster_field",
+                   "sum over the cluster's eigenpairs l of (a_l / N_l^2) V_l, normalised: the part of the coupling "
+                   "flow the cluster carries (a single mode for a one-member cluster)");
+  }
   Hid mesh(create_group(fields.get(), "mesh"), H5Gclose);
   dataset(mesh.get(), "points", f.points, 3, H5T_NATIVE_DOUBLE);
   dataset(mesh.get(), "cells", f.cells, 3, H5T_NATIVE_INT);
@@ -129,6 +147,10 @@ void write_fields_group(hid_t file, const ModeFields& f) {
     dataset(g.get(), "p", m.p, 1, H5T_NATIVE_DOUBLE);
     dataset(g.get(), "V", m.V, 3, H5T_NATIVE_DOUBLE);
     dataset(g.get(), "energy_density", m.energy_density, 1, H5T_NATIVE_DOUBLE);
+    if (f.damped) {
+      dataset(g.get(), "p_imag", m.p_imag, 1, H5T_NATIVE_DOUBLE);
+      dataset(g.get(), "V_imag", m.V_imag, 3, H5T_NATIVE_DOUBLE);
+    }
   }
 }
 
@@ -153,6 +175,10 @@ std::string fields_xdmf(const ModeFields& f, const std::string& h5_name) {
     node_attribute("p", "Scalar", n);
     node_attribute("V", "Vector", n + " 3");
     node_attribute("energy_density", "Scalar", n);
+    if (f.damped) {
+      node_attribute("p_imag", "Scalar", n);
+      node_attribute("V_imag", "Vector", n + " 3");
+    }
   }
   x << "    </Grid>\n  </Domain>\n</Xdmf>\n";
   return x.str();

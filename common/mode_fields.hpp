@@ -29,8 +29,12 @@ struct ModeFields {
     std::vector<double> p;        // N: pressure amplitude
     std::vector<double> V;        // N × 3: real amplitudes (v_r, v_φ, v_z); V = (i v_r, v_φ, i v_z) e^{iφ}
     std::vector<double> energy_density;  // N: (v_r² + v_φ² + v_z²) r, so 2π ∫∫ (it) dr dz = N² = 1
+    std::vector<double> p_imag, V_imag;  // damped modes only (N, N × 3): imaginary parts
   };
   std::vector<Mode> modes;
+  // Damped modes of a viscous table (docs/viscous.md, "Fields"): complex amplitudes, V and p their real parts and
+  // V_imag, p_imag (in each Mode) their imaginary parts; V is then the physical (V_r, V_phi, V_z), no factor i.
+  bool damped = false;
 
   std::size_t num_points() const { return points.size() / 3; }
   std::size_t num_cells() const { return cells.size() / 3; }

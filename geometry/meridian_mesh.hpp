@@ -71,6 +71,10 @@ struct ReferenceTriangle {
 };
 ReferenceTriangle reference_triangle(int order, int quadrature_degree);
 
+// The Lagrange basis of `order` (gmsh's local node order) at given reference points: N[i * nodes_per_element + a].
+// E.g. a pressure of order k − 1 evaluated at the nodes of order k.
+std::vector<double> triangle_basis_at(int order, const std::vector<std::array<double, 2>>& points);
+
 // The same for a reference edge [0, 1] of the wall (for boundary integrals).
 struct ReferenceEdge {
   int order = 0;

@@ -133,6 +133,15 @@ ReferenceTriangle reference_triangle(int order, int quadrature_degree) {
   return cached(order, quadrature_degree, build_triangle);
 }
 
+std::vector<double> triangle_basis_at(int order, const std::vector<std::array<double, 2>>& points) {
+  check_arguments("triangle_basis_at", order, 1);
+  std::vector<double> uvw;
+  for (const auto& p : points) uvw.insert(uvw.end(), {p[0], p[1], 0.0});
+  return detail::with_gmsh("triangle_basis_at", [&](detail::GmshSession&) {
+    return lagrange_basis(gmsh::model::mesh::getElementType("Triangle", order), uvw).N;
+  });
+}
+
 ReferenceEdge reference_edge(int order, int quadrature_degree) {
   check_arguments("reference_edge", order, quadrature_degree);
   return cached(order, quadrature_degree, build_edge);

@@ -24,6 +24,8 @@ def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("table", help="mode table (HDF5) written by cavity-modes")
     ap.add_argument("--mode", type=int, default=None, help="/modes row whose field to draw (default 0)")
+    ap.add_argument("--log", action="store_true",
+                    help="draw log10 of the energy density (shows thin Ekman and shear layers of viscous modes)")
     ap.add_argument("-o", "--output", required=True, help="PNG to write")
     args = ap.parse_args()
     try:
@@ -41,6 +43,7 @@ def main() -> int:
             if f.attrs.get("format", b"") not in (b"cavity-mode-table", "cavity-mode-table"):
                 raise ValueError("not a mode table (root attribute format != cavity-mode-table)")
             lam, E = f["modes/lambda"][:], f["modes/E"][:]
+            decay = f["modes/decay"][:] if "modes/decay" in f else None
             converged = f["modes/converged"][:] if "modes/converged" in f else None
             shape = f.attrs["shape"]
             shape = shape.decode() if isinstance(shape, bytes) else str(shape)
@@ -86,12 +89,17 @@ def main() -> int:
     if field:
         i, r, z, cells, e = field
         ax = axes[0][1]
+        label = "(|v_r|² + |v_φ|² + |v_z|²) r   (2π ∫∫ · dr dz = 1)"
+        if args.log:
+            e = np.log10(np.maximum(e, e.max() * 1e-6))
+            label = "log10 " + label
         im = ax.tripcolor(r, z, cells, e, shading="gouraud", cmap="viridis")
-        fig.colorbar(im, ax=ax, label="(|v_r|² + |v_φ|² + |v_z|²) r   (2π ∫∫ · dr dz = 1)")
+        fig.colorbar(im, ax=ax, label=label)
         ax.set_aspect("equal")
         ax.set_xlabel("r")
         ax.set_ylabel("z")
-        ax.set_title(f"mode {i}: λ = {lam[i]:.6g}, κ = {2 / lam[i]:.6g}, E = {E[i]:.4g}")
+        damped = f" + {decay[i]:.4g}i (damped)" if decay is not None else ""
+        ax.set_title(f"mode {i}: λ = {lam[i]:.6g}{damped}, E = {E[i]:.4g}")
     fig.tight_layout()
     tmp = args.output + f".tmp-{os.getpid()}.png"
     try:

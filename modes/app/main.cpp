@@ -162,9 +162,7 @@ void choose_method(const CLI::App& cmd, const std::string& choice, bool fields, 
 
 // The viscous mesh from the user's --order, --mesh-size, --wall-size; the ideal targets keep the method's own
 // defaults (the request's mesh is reset) and skip their own convergence check.
-rc::modes::ViscousTableSettings viscous_request(const CLI::App& cmd, const ViscousOptions& v, bool fields,
-                                                TableRequest& req) {
-  if (fields) throw std::runtime_error("--fields is not available with --ekman yet (docs/viscous.md, \"Limits\")");
+rc::modes::ViscousTableSettings viscous_request(const ViscousOptions& v, TableRequest& req) {
   rc::modes::ViscousTableSettings s;
   s.ekman = v.ekman;
   s.mesh = req.mesh;
@@ -305,7 +303,7 @@ int run(int argc, char** argv) {
   if (!response && req.check_convergence) rc::modes::validate_convergence_tolerance(req.convergence_tolerance);
   const bool is_viscous = table_command->count("--ekman") > 0;
   rc::modes::ViscousTableSettings viscous_settings;
-  if (is_viscous) viscous_settings = viscous_request(*table_command, viscous, fields, req);
+  if (is_viscous) viscous_settings = viscous_request(viscous, req);
   else if (table_command->count("--wall-size") > 0) throw std::runtime_error("--wall-size applies with --ekman only");
   choose_method(*table_command, method, fields, req);
 
@@ -342,8 +340,10 @@ int run(int argc, char** argv) {
   rc::ModeFields mode_fields;
   const bool root = rc::modes::is_root_rank();
   const auto report = [root](const std::string& line) { if (root) std::cerr << line << "\n"; };
-  auto table = rc::modes::compute_mode_table(req, report, fields ? &mode_fields : nullptr);
-  if (is_viscous) table = rc::modes::compute_viscous_table(req.shape, viscous_settings, table, report);
+  // With --ekman the fields are the damped modes' (the ideal targets need none).
+  auto table = rc::modes::compute_mode_table(req, report, fields && !is_viscous ? &mode_fields : nullptr);
+  if (is_viscous)
+    table = rc::modes::compute_viscous_table(req.shape, viscous_settings, table, report, fields ? &mode_fields : nullptr);
   if (!root) return 0;  // under mpirun: rank 0 writes the table
   rc::modes::record_provenance(table, req.shape, command_line);
   rc::write_mode_table(table, output, fields ? &mode_fields : nullptr);

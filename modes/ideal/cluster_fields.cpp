@@ -14,8 +14,10 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-// The mesh as /fields stores it: points (r, 0, z), straight sub-triangles, FE triangles.
-void fill_mesh(const geometry::MeridianMesh& mesh, const geometry::TriangleNodes& ref, ModeFields& f) {
+}  // namespace
+
+void fill_fields_mesh(const geometry::MeridianMesh& mesh, ModeFields& f) {
+  const geometry::TriangleNodes ref = geometry::triangle_nodes(mesh.order);
   for (const auto& x : mesh.nodes) f.points.insert(f.points.end(), {x[0], 0.0, x[1]});
   f.order = mesh.order;
   f.elements = mesh.triangles;
@@ -24,6 +26,8 @@ void fill_mesh(const geometry::MeridianMesh& mesh, const geometry::TriangleNodes
     for (const auto& s : ref.sub_triangles)
       for (int a : s) f.cells.push_back(mesh.triangles[e * npe + a]);
 }
+
+namespace {
 
 // p, p_r, p_z at the mesh nodes from a dof vector. The FE gradient jumps across elements; a node's value
 // is the mean over the elements that share it.
@@ -212,7 +216,7 @@ ModeFields cluster_fields(const FESpace& space, const PoincareForms& forms, cons
   const auto& mesh = space.mesh();
   const geometry::TriangleNodes ref = geometry::triangle_nodes(mesh.order);
   ModeFields f;
-  fill_mesh(mesh, ref, f);
+  fill_fields_mesh(mesh, f);
   const NodalGradient gradient(space, ref);
   QepSettings qep = settings.qep;
   qep.keep_eigenvectors = true;

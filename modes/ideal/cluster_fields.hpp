@@ -29,6 +29,10 @@ struct FieldSettings {
   QepSettings qep;
 };
 
+// The mesh part of /fields: points (r, 0, z) of every node, straight sub-triangles through all Lagrange nodes (what
+// XDMF shows), the FE triangles. Shared with the viscous fields.
+void fill_fields_mesh(const geometry::MeridianMesh& mesh, ModeFields& fields);
+
 // The mesh (points, sub-triangles, FE triangles) and one field per /modes row of `table`, which must have
 // been computed on `space`. `progress` (may be empty) is told after each row. Throws std::runtime_error if
 // a row's slice holds no eigenpair.

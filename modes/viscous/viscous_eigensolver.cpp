@@ -81,18 +81,53 @@ void factorise(ShiftInvert& op, std::complex<double> target, MPI_Comm comm) {
   petsc_check(MatCreateVecs(op.forms->M, op.work.out(), nullptr), "MatCreateVecs");
 }
 
-// x = a + ib on the real slots (the complex problem's unknowns). E_c = π (fᵀx)² / xᵀ𝓜x.
-std::complex<double> coupling_residue(const ViscousForms& forms, Vec xr, Vec xi) {
+// x = a + ib on the real slots (the complex problem's unknowns): fᵀx and xᵀ𝓜x (unconjugated); E_c = π (fᵀx)² / xᵀ𝓜x.
+struct CouplingForms {
+  std::complex<double> fx, xMx;
+  double xbarMx = 0;  // x̄ᵀ𝓜x = ∫∫ |V|² r dr dz
+  std::complex<double> residue() const { return std::numbers::pi * fx * fx / xMx; }
+};
+
+CouplingForms coupling_forms(const ViscousForms& forms, Vec xr, Vec xi) {
   PVec a, b, Ma, Mb;
   for (PVec* v : {&a, &b, &Ma, &Mb}) petsc_check(VecDuplicate(xr, v->out()), "VecDuplicate");
   petsc_check(VecPointwiseMult(a, xr, forms.real_slots), "VecPointwiseMult");
   petsc_check(VecPointwiseMult(b, xi, forms.real_slots), "VecPointwiseMult");
   petsc_check(MatMult(forms.M, a, Ma), "MatMult");
   petsc_check(MatMult(forms.M, b, Mb), "MatMult");
-  const std::complex<double> fx(dot(forms.coupling, a), dot(forms.coupling, b));
-  const std::complex<double> xMx(dot(a, Ma) - dot(b, Mb), 2 * dot(a, Mb));
-  if (std::abs(xMx) == 0) throw std::runtime_error("viscous mode with zero kinetic-energy form");
-  return std::numbers::pi * fx * fx / xMx;
+  CouplingForms c;
+  c.fx = {dot(forms.coupling, a), dot(forms.coupling, b)};
+  c.xMx = {dot(a, Ma) - dot(b, Mb), 2 * dot(a, Mb)};
+  c.xbarMx = dot(a, Ma) + dot(b, Mb);
+  if (std::abs(c.xMx) == 0) throw std::runtime_error("viscous mode with zero kinetic-energy form");
+  return c;
+}
+
+// The complex eigenvector x_j = Xr[2j] + i Xi[2j] on rank 0 (empty elsewhere), scaled as the table normalises
+// its mode: xᵀ𝓜x = 1, and the sign that makes a = √(π/2) fᵀx the table's a = sqrt(E_c / 2) (Re a ≥ 0).
+std::vector<std::complex<double>> normalised_vector(Vec xr, Vec xi, const CouplingForms& c, double& conjugate_norm) {
+  std::complex<double> scale = 1.0 / std::sqrt(c.xMx);
+  if ((std::sqrt(std::numbers::pi / 2) * c.fx * scale).real() < 0) scale = -scale;
+  conjugate_norm = c.xbarMx * std::norm(scale);
+  std::vector<std::complex<double>> x;
+  for (Vec v : {xr, xi}) {
+    VecScatter gather;
+    Vec all;
+    petsc_check(VecScatterCreateToZero(v, &gather, &all), "VecScatterCreateToZero");
+    petsc_check(VecScatterBegin(gather, v, all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
+    petsc_check(VecScatterEnd(gather, v, all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
+    PetscInt n = 0;
+    petsc_check(VecGetLocalSize(all, &n), "VecGetLocalSize");
+    const PetscScalar* data = nullptr;
+    petsc_check(VecGetArrayRead(all, &data), "VecGetArrayRead");
+    if (x.empty()) x.assign(static_cast<std::size_t>(n / 2), 0.0);
+    for (PetscInt j = 0; 2 * j < n; ++j)
+      x[j] += (v == xr ? std::complex<double>(data[2 * j], 0) : std::complex<double>(0, data[2 * j])) * scale;
+    petsc_check(VecRestoreArrayRead(all, &data), "VecRestoreArrayRead");
+    VecDestroy(&all);
+    VecScatterDestroy(&gather);
+  }
+  return x;  // size 0 on the ranks other than 0 (their gathered vector is empty)
 }
 
 // The block eigenvector X = P + iQ of (Â, M̂) for λ: ‖ÂX − λM̂X‖ / (|λ| ‖X‖) in real arithmetic.
@@ -186,7 +221,9 @@ std::vector<ViscousMode> viscous_modes_near(const ViscousForms& forms, std::comp
     ViscousMode m;
     m.lambda = target + 1.0 / theta;
     if (!(m.lambda.imag() > 0)) continue;  // not a damped mode of the wanted problem (none exists with Ek > 0)
-    m.residue = coupling_residue(forms, Xr, imag_part);
+    const CouplingForms c = coupling_forms(forms, Xr, imag_part);
+    m.residue = c.residue();
+    if (settings.keep_vector) m.vector = normalised_vector(Xr, imag_part, c, m.conjugate_norm);
     m.residual = block_residual(forms, Xr, imag_part, m.lambda);
     modes.push_back(m);
   }

@@ -21,12 +21,17 @@ struct ViscousMode {
   std::complex<double> residue;   // E_c = π (fᵀx)² / xᵀ𝓜x (bilinear, unconjugated): the coupling whose Ek → 0
                                   // limit is the ideal E (viscous_forms.hpp)
   double residual = 0;            // ‖A x − λ 𝓜 x‖ / (|λ| ‖x‖), computed from the matrices
+  // With ViscousSolveSettings::keep_vector, on rank 0: the mode x (velocity u+, u−, u_z, then Q = iP, numbered as
+  // the TaylorHoodSpace), normalised as the table (xᵀ𝓜x = 1, a = √(π/2) fᵀx with Re a ≥ 0). Empty otherwise.
+  std::vector<std::complex<double>> vector;
+  double conjugate_norm = 0;  // x̄ᵀ𝓜x = ∫∫ |V|² r dr dz of that normalised x (set with keep_vector)
 };
 
 struct ViscousSolveSettings {
   int pairs = 2;             // damped modes wanted near the target
   double tolerance = 1e-10;  // SLEPc's relative tolerance
   int max_iterations = 500;
+  bool keep_vector = false;  // keep each mode's eigenvector (for --fields)
 };
 
 // The damped modes closest to the complex target, sorted by distance from it. Throws std::runtime_error when

@@ -4,6 +4,7 @@
 #include "progress.hpp"
 #include "poincare_forms.hpp"
 #include "taylor_hood_space.hpp"
+#include "viscous_fields.hpp"
 
 #include <fmt/format.h>
 
@@ -11,6 +12,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <stdexcept>
 
 namespace rc::modes {
@@ -31,6 +33,7 @@ double smallest_dimension(const geometry::ShapeSpec& shape) {
 struct Solved {
   std::vector<ViscousMode> rows;  // one per target
   long unknowns = 0;
+  ModeFields fields;              // with keep_vector, on rank 0: the mesh and one field per row (viscous_fields.hpp)
 };
 
 // The imaginary part of the shift: a guess of the damped mode's decay. Boundary-layer theory gives
@@ -45,6 +48,8 @@ void drop_repeats(Solved& solved, std::vector<double>& targets, std::vector<doub
                   const std::function<void(const std::string&)>& report) {
   Solved kept;
   kept.unknowns = solved.unknowns;
+  kept.fields = solved.fields;
+  kept.fields.modes.clear();
   std::vector<double> kept_targets, kept_energies;
   for (std::size_t i = 0; i < solved.rows.size(); ++i) {
     const auto& m = solved.rows[i];
@@ -58,6 +63,7 @@ void drop_repeats(Solved& solved, std::vector<double>& targets, std::vector<doub
       continue;
     }
     kept.rows.push_back(m);
+    if (i < solved.fields.modes.size()) kept.fields.modes.push_back(std::move(solved.fields.modes[i]));
     kept_targets.push_back(targets[i]);
     kept_energies.push_back(energies[i]);
   }
@@ -104,8 +110,13 @@ Solved solve_targets(const geometry::ShapeSpec& shape, geometry::MeshOptions& me
   const ViscousForms forms = assemble_viscous_forms(space, centroid_z, s.ekman, PETSC_COMM_WORLD);
   Solved out;
   out.unknowns = 2L * forms.complex_size;
+  const bool fields = s.solve.keep_vector && is_root_rank();
+  if (fields) out.fields = viscous_fields_mesh(space);
+  out.fields.damped = true;
   for (std::size_t i = 0; i < targets.size(); ++i) {
     out.rows.push_back(continue_mode(forms, targets[i], energies[i], s.ekman, s.solve));
+    if (fields) out.fields.modes.push_back(viscous_mode_field(space, out.rows.back()));
+    out.rows.back().vector = {};  // the field holds what is needed
     progress(i + 1, targets.size());
   }
   return out;
@@ -144,8 +155,11 @@ geometry::MeshOptions viscous_mesh_defaults(const geometry::ShapeSpec& shape, do
   return mesh;
 }
 
-ModeTable compute_viscous_table(const geometry::ShapeSpec& shape, const ViscousTableSettings& s,
-                                const ModeTable& ideal, const std::function<void(const std::string&)>& report) {
+ModeTable compute_viscous_table(const geometry::ShapeSpec& shape, const ViscousTableSettings& settings,
+                                const ModeTable& ideal, const std::function<void(const std::string&)>& report,
+                                ModeFields* fields) {
+  ViscousTableSettings s = settings;
+  s.solve.keep_vector = fields != nullptr;
   const auto start = std::chrono::steady_clock::now();
   const auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   geometry::MeshOptions mesh = viscous_mesh_defaults(shape, s.ekman, s.mesh);
@@ -203,7 +217,9 @@ ModeTable compute_viscous_table(const geometry::ShapeSpec& shape, const ViscousT
     geometry::MeshOptions coarse = mesh;
     coarse.size *= 2;
     coarse.wall_size *= 2;
-    const Solved ref = solve_targets(shape, coarse, ideal.centroid_z, s, targets, energies,
+    ViscousTableSettings check = s;
+    check.solve.keep_vector = false;
+    const Solved ref = solve_targets(shape, coarse, ideal.centroid_z, check, targets, energies,
                                     progress("convergence check"));
     t.convergence_reference = fmt::format("order {} with the interior and wall sizes doubled (h = {:.3g}, wall {:.3g})",
                                           coarse.order, coarse.size, coarse.wall_size);
@@ -214,6 +230,19 @@ ModeTable compute_viscous_table(const geometry::ShapeSpec& shape, const ViscousT
       t.dlambda.push_back(dl);
       t.dE.push_back(dE);
       t.converged.push_back(dl <= s.convergence_tolerance && dE <= s.convergence_tolerance ? 1 : 0);
+    }
+  }
+  if (fields && is_root_rank()) {
+    // The rows' order after sort_by_energy (a stable sort by E descending), for the fields.
+    std::vector<std::size_t> order(fine.rows.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t i, std::size_t j) { return fine.rows[i].residue.real() > fine.rows[j].residue.real(); });
+    *fields = fine.fields;
+    fields->modes.clear();
+    for (std::size_t k = 0; k < order.size(); ++k) {
+      fields->modes.push_back(fine.fields.modes[order[k]]);
+      fields->modes.back().row = k;
     }
   }
   t.sort_by_energy();

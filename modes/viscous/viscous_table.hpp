@@ -5,6 +5,7 @@
 #pragma once
 
 #include "meridian_mesh.hpp"
+#include "mode_fields.hpp"
 #include "mode_table.hpp"
 #include "viscous_eigensolver.hpp"
 
@@ -31,7 +32,10 @@ geometry::MeshOptions viscous_mesh_defaults(const geometry::ShapeSpec& shape, do
 
 // The viscous table. `ideal` supplies the targets (its rows, heaviest first) and the root attributes that do not
 // depend on viscosity (volume, A_f, C_f, J_zh, sum_rule). Throws std::runtime_error on solver failure.
+// With `fields` (cavity-modes --ekman --fields), also each damped mode's fields at the mesh nodes, on rank 0
+// (viscous_fields.hpp).
 ModeTable compute_viscous_table(const geometry::ShapeSpec& shape, const ViscousTableSettings& settings,
-                                const ModeTable& ideal, const std::function<void(const std::string&)>& report);
+                                const ModeTable& ideal, const std::function<void(const std::string&)>& report,
+                                ModeFields* fields = nullptr);
 
 }  // namespace rc::modes

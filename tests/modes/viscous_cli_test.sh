@@ -18,7 +18,14 @@ expect_error "NaN Ekman number" "outside" "$BIN" sphere --radius 1 --ekman nan -
 expect_error "Ekman number too small for this machine" "outside" "$BIN" cylinder --radius 1 --height 2 --ekman 1e-9 -o out.h5
 expect_error "wall mesh too coarse for the Ekman layer" "does not resolve the Ekman layer" "$BIN" sphere --radius 1 --ekman 1e-4 --wall-size 0.1 -o out.h5
 expect_error "wall size without --ekman" "applies with --ekman only" "$BIN" sphere --radius 1 --wall-size 0.01 -o out.h5
-expect_error "--fields with --ekman" "not available with --ekman" "$BIN" sphere --radius 1 --ekman 1e-2 --fields -o out.h5
+# --fields with --ekman: the damped modes' complex fields, checked against the table (check_viscous_fields.py).
+if "$BIN" sphere --radius 1 --ekman 1e-3 --modes 1 --no-convergence-check --fields \
+     -o vfields.h5 > vfields.txt 2>&1 && [ -f vfields.xdmf ] && grep -q "mode0 V_imag" vfields.xdmf &&
+   /usr/bin/python3 "$(dirname "$0")/check_viscous_fields.py" vfields.h5; then
+  ok "viscous --fields"
+else
+  bad "viscous --fields: $(tail -2 vfields.txt)"
+fi
 expect_error "order 1 with --ekman" "order >= 2" "$BIN" sphere --radius 1 --ekman 1e-2 --order 1 -o out.h5
 expect_error "viscous solver failure" "did not converge" "$BIN" sphere --radius 1 --ekman 1e-2 "${small[@]}" -o out.h5 \
   -viscous_eps_max_it 1 -viscous_eps_tol 1e-30
