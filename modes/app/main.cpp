@@ -361,7 +361,8 @@ int main(int argc, char** argv) {
   try {
     return run(argc, argv);
   } catch (const std::exception& e) {
-    std::cerr << "cavity-modes: error: " << e.what() << "\n";
+    // Under mpirun every rank fails alike: one line, from rank 0.
+    if (rc::modes::is_root_rank()) std::cerr << "cavity-modes: error: " << e.what() << "\n";
     return 1;
   }
 }

@@ -63,7 +63,13 @@ namespace rc::modes {
 bool is_root_rank() {
   PetscBool initialised = PETSC_FALSE;
   PetscInitialized(&initialised);
-  if (!initialised) return true;
+  if (!initialised) {
+    // Before PetscInitialize or after PetscFinalize (a command-line error, an error caught in main): the rank the
+    // launcher gave this process, so that under mpirun one process prints the error line, not each.
+    for (const char* name : {"OMPI_COMM_WORLD_RANK", "PMIX_RANK", "PMI_RANK"})
+      if (const char* value = std::getenv(name)) return std::string(value) == "0";
+    return true;
+  }
   PetscMPIInt rank = 0;
   MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
   return rank == 0;

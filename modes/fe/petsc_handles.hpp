@@ -40,7 +40,8 @@ using PVec = PetscHandle<Vec, VecDestroy>;
 using PKSP = PetscHandle<KSP, KSPDestroy>;
 using PPEP = PetscHandle<PEP, PEPDestroy>;
 
-// True on rank 0 of PETSC_COMM_WORLD (and when PETSc is not initialised): the rank that prints and writes.
+// True on rank 0 of PETSC_COMM_WORLD: the rank that prints and writes. When PETSc is not initialised, the rank an
+// MPI launcher gave the process (OMPI_COMM_WORLD_RANK, PMIX_RANK, PMI_RANK) is 0, or there is none.
 bool is_root_rank();
 
 // Initialises SLEPc (and PETSc, MPI) for the lifetime of the object, passing command-line options

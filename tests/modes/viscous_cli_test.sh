@@ -92,6 +92,13 @@ for name, re, im in (("lambda + i decay", "lambda", "decay"), ("E + i E_imag", "
     print("%s: -n 1 %.15g%+.15gi, -n 2 %.15g%+.15gi, relative difference %.1e" % (name, x.real, x.imag, y.real, y.imag, d))
     assert d < 1e-10, name
 '; then ok "mpirun -n 1 and -n 2 give the same table"; else bad "mpirun: $(tail -3 mpi2.txt)"; fi
+  # A failure under mpirun: one error line (from rank 0), not one per rank.
+  mpirun -n 2 "$BIN" sphere --radius 1 --ekman 1e-4 --wall-size 0.1 -o mpierr.h5 > mpierr.txt 2>&1
+  if [ "$(grep -c '^cavity-modes: error:' mpierr.txt)" -eq 1 ] && [ ! -e mpierr.h5 ]; then
+    ok "mpirun -n 2 failure prints one error line"
+  else
+    bad "mpirun failure: $(grep -c '^cavity-modes: error:' mpierr.txt) error lines"
+  fi
 else
   ok "mpirun not installed: distributed check skipped"
 fi
