@@ -144,6 +144,12 @@ std::string spectrum_json(const Spectrum& sp) {
   j["newton_failed"] = sp.newton_failed;
   j["outside_fit"] = sp.outside_fit;
   j["unconverged_owners"] = sp.unconverged_owners;
+  if (sp.certificate_roots >= 0) {
+    j["certified_real"] = sp.certified_real;
+    j["certificate_roots"] = sp.certificate_roots;
+    j["roots_at_zero"] = sp.roots_at_zero;
+    j["certificate_disagrees"] = sp.certificate_disagrees();
+  }
   if (sp.companion_checked) {
     j["companion_moved"] = sp.companion_moved;
     j["companion_worst"] = sp.companion_worst;
@@ -200,6 +206,18 @@ void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp) {
     os << sp.unconverged_owners << " roots (marked *) belong to clusters their tables flag as not converged: their "
        << "frequencies are not reliable (docs/cones.md); the body roots are compared with a finer table in "
        << "docs/rom.md, \"Viscous tanks\"\n";
+  if (sp.certificate_roots >= 0) {
+    os << "certificate (sign changes of det Phi along the real axis): " << sp.certified_real << " of "
+       << sp.certificate_roots << " roots proven real"
+       << (sp.roots_at_zero ? " (" + std::to_string(sp.roots_at_zero) + " more at sigma = 0, not counted)" : "")
+       << (sp.certified_real == sp.certificate_roots ? ": all real, whatever the tolerance" : "") << "\n";
+    if (sp.certificate_disagrees())
+      os << "certificate and tolerance DISAGREE: the verdict by tolerance is '" << (sp.stable ? "stable" : "unstable")
+         << "', the sign count " << (sp.certified_real == sp.certificate_roots ? "proves every root real"
+                                                                                : "does not prove every root real")
+         << " (roots too close to tell apart, or a complex pair within the tolerance of the real axis: "
+         << "docs/rom.md, \"Spectrum\")\n";
+  }
   if (sp.companion_checked)
     os << "companion tables: " << sp.companion_moved << " roots (marked ~) move by more than " << kCompanionTolerance
        << " (relative) when the tables are replaced by their coarser companions; the largest move "

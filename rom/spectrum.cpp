@@ -1,6 +1,7 @@
 #include "spectrum.hpp"
 
 #include "characteristic.hpp"
+#include "real_root_certificate.hpp"
 #include "root_newton.hpp"
 
 #include <Eigen/Eigenvalues>
@@ -127,6 +128,12 @@ Spectrum compute_spectrum(const ChainModel& m) {
   sp.growth = v.growth;
   sp.nonreal = v.nonreal;
   sp.stable = v.stable;
+  const RealRootCertificate c = certify_real_roots(m, sp);
+  if (c.applies) {
+    sp.certified_real = c.proven;
+    sp.certificate_roots = c.roots;
+    sp.roots_at_zero = c.at_zero;
+  }
   return sp;
 }
 

@@ -41,6 +41,13 @@ struct Spectrum {
   // Roots where some tank's response-fit table is extrapolated: Re (sigma + omega_k)/omega_k outside its window.
   int outside_fit = 0;
   int unconverged_owners = 0;  // roots owned by a kept cluster that its table flags as not converged
+  // The Sturm-type certificate of an undamped chain (real_root_certificate.hpp): real roots proven by sign changes,
+  // out of certificate_roots (the roots away from σ = 0). Not applied (certificate_roots = -1) with dissipation.
+  int certified_real = 0, certificate_roots = -1, roots_at_zero = 0;
+  bool certificate_disagrees() const {
+    if (certificate_roots < 0) return false;
+    return stable != (certified_real == certificate_roots);
+  }
   bool companion_checked = false;  // the roots were recomputed with the companion tables
   int companion_moved = 0;         // roots that moved past kCompanionTolerance
   double companion_worst = 0;      // the largest relative move

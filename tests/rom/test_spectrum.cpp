@@ -173,3 +173,39 @@ TEST(Spectrum, CompanionTableMarksTheRootsThatMove) {
   }
   EXPECT_THROW(with_companions(with(sphere_file(1))), SceneError);
 }
+
+// The Sturm-type certificate (rom/real_root_certificate.hpp) on the Lagrange top next to its threshold
+// C w = 2 sqrt(A a g): 2e-15 above it the two roots are real, 7.9e-7 apart, and the sign count proves both; 2e-15
+// below it they are a complex pair with |Im sigma| = 4.0e-7, inside the tolerance 6.3e-7 that calls them real, and
+// the count proves none: certificate and tolerance disagree, and the spectrum says so.
+TEST(Spectrum, CertificateProvesRealRootsAndCatchesTheTolerance) {
+  const double A = 0.05, C = 0.03, ag = 0.2 * 9.81, threshold = 2 * std::sqrt(A * ag) / C;
+  for (const double delta : {-2e-15, 2e-15}) {
+    Body b; b.mass = 2; b.A = A; b.C = C; b.com = 0.1; b.spin = threshold * (1 - delta);
+    const Spectrum sp = compute_spectrum(model_of(scene_text({b}, {}, 9.81)));
+    std::printf("  spin %.17g (1 - %g of the threshold): roots %.10g%+.3gi, %.10g%+.3gi; tolerance %.3g; "
+                "certificate %d of %d; verdict %s\n", b.spin, delta, sp.roots[0].sigma.real(), sp.roots[0].sigma.imag(),
+                sp.roots[1].sigma.real(), sp.roots[1].sigma.imag(), sp.tolerance, sp.certified_real,
+                sp.certificate_roots, sp.stable ? "stable" : "unstable");
+    EXPECT_TRUE(sp.stable);  // by the tolerance, both times
+    EXPECT_EQ(sp.certificate_roots, 2);
+    if (delta < 0) {
+      EXPECT_EQ(sp.certified_real, 2);
+      EXPECT_FALSE(sp.certificate_disagrees());
+    } else {
+      EXPECT_EQ(sp.certified_real, 0);
+      EXPECT_TRUE(sp.certificate_disagrees());
+    }
+  }
+  // Two tops on an elastic joint with oblate cavities, and the unstable Greenhill spheroid.
+  Body b1, b2;
+  b1.mass = 2; b1.A = 0.05; b1.C = 0.08; b1.com = 0.05; b1.next = 0.15; b1.spin = 200;
+  b1.table = spheroid_file(1, 0.6); b1.scale = 0.04; b1.center = 0.05;
+  b2 = b1; b2.spin = 150; b2.scale = 0.03;
+  const Spectrum two = compute_spectrum(model_of(scene_text({b1, b2}, {{5.0, 0.0}}, 9.81)));
+  std::printf("  two tops: %d of %d roots proven real (%d at sigma = 0); verdict %s\n", two.certified_real,
+              two.certificate_roots, two.roots_at_zero, two.stable ? "stable" : "unstable");
+  EXPECT_TRUE(two.stable);
+  EXPECT_EQ(two.certified_real, two.certificate_roots);
+  EXPECT_EQ(two.certificate_roots + two.roots_at_zero, static_cast<int>(two.roots.size()));
+}
