@@ -17,6 +17,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <unistd.h>
@@ -110,6 +112,57 @@ CavityResponse compute_cavity_response(const ResponseRequest& req) {
   return req.separable ? separable_response(req) : mesh_response(req);
 }
 
+namespace {
+
+constexpr int kMaxRefinements = 6;
+constexpr std::size_t kMaxSamplesFactor = 4;
+
+struct WindowFit {
+  RationalFit fit;
+  double error = 0;                 // max |fit − R| over the held-out samples / max |R| on the window
+  std::vector<std::size_t> erring;  // window samples (held out) where the fit errs by more than the allowed error
+};
+
+// AAA on the even window samples and the tail; judged on the odd window samples.
+WindowFit fit_window(const std::vector<double>& s, const std::vector<std::complex<double>>& R,
+                     const std::vector<double>& tail, const std::vector<std::complex<double>>& tail_R,
+                     double max_error) {
+  std::vector<double> z;
+  std::vector<std::complex<double>> f;
+  for (std::size_t k = 0; k < s.size(); k += 2) {
+    z.push_back(s[k]);
+    f.push_back(R[k]);
+  }
+  z.insert(z.end(), tail.begin(), tail.end());
+  f.insert(f.end(), tail_R.begin(), tail_R.end());
+  WindowFit w{fit_response(z, f, 1e-10), 0.0, {}};
+  double scale = 0;
+  for (const auto& r : R) scale = std::max(scale, std::abs(r));
+  for (std::size_t k = 1; k < s.size(); k += 2) {
+    const double e = std::abs(w.fit(s[k]) - R[k]) / scale;
+    w.error = std::max(w.error, e);
+    if (!(e <= max_error)) w.erring.push_back(k);
+  }
+  return w;
+}
+
+// Adds samples (s, R) to the sorted window, keeping it sorted.
+void merge_samples(std::vector<double>& s, std::vector<std::complex<double>>& R, const std::vector<double>& more_s,
+                   const std::vector<std::complex<double>>& more_R) {
+  std::vector<std::pair<double, std::complex<double>>> all;
+  for (std::size_t k = 0; k < s.size(); ++k) all.emplace_back(s[k], R[k]);
+  for (std::size_t k = 0; k < more_s.size(); ++k) all.emplace_back(more_s[k], more_R[k]);
+  std::sort(all.begin(), all.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  s.clear();
+  R.clear();
+  for (const auto& [x, r] : all) {
+    s.push_back(x);
+    R.push_back(r);
+  }
+}
+
+}  // namespace
+
 ModeTable response_fit_table(const ResponseRequest& req, double max_error) {
   const auto start = std::chrono::steady_clock::now();
   if (!(req.ekman > 0)) throw std::runtime_error("a response-fit table (-o FILE.h5) needs --ekman");
@@ -133,27 +186,42 @@ ModeTable response_fit_table(const ResponseRequest& req, double max_error) {
   }
   for (const double t : tail) all.sigmas.emplace_back(t, 0.0);
   const CavityResponse R = viscous_cavity_response(all);
+  std::vector<double> window_s;
+  std::vector<std::complex<double>> window_R(R.R.begin(), R.R.begin() + static_cast<long>(n)), tail_R(R.R.begin() + static_cast<long>(n), R.R.end());
+  for (const auto& sigma : req.sigmas) window_s.push_back(sigma.real());
 
-  // Fitted on the even window samples and the tail, judged on the odd window samples: the error is that of the
-  // fit between its data.
-  std::vector<double> z, z_held;
-  std::vector<std::complex<double>> f, f_held;
-  for (std::size_t k = 0; k < n; ++k) {
-    (k % 2 ? z_held : z).push_back(req.sigmas[k].real());
-    (k % 2 ? f_held : f).push_back(R.R[k]);
+  // Fitted on every other window sample and the tail, judged on the rest: the error is that of the fit between its
+  // data. Where it is too large, samples are added halfway to the neighbours of each point that erred, and the fit
+  // is made again (at most kMaxRefinements times, up to kMaxSamplesFactor times the samples given): R is resolved
+  // where it varies fast (the peaks of weakly damped modes) without sampling the whole window that finely.
+  WindowFit w = fit_window(window_s, window_R, tail, tail_R, max_error);
+  int refinements = 0;
+  const std::size_t cap = std::max<std::size_t>(kMaxSamplesFactor * n, 400);
+  while (!(w.error <= max_error) && refinements < kMaxRefinements && window_s.size() < cap && !w.erring.empty()) {
+    std::vector<double> added;
+    for (const std::size_t k : w.erring) {
+      if (k > 0) added.push_back(0.5 * (window_s[k - 1] + window_s[k]));
+      if (k + 1 < window_s.size()) added.push_back(0.5 * (window_s[k] + window_s[k + 1]));
+    }
+    std::sort(added.begin(), added.end());
+    added.erase(std::unique(added.begin(), added.end()), added.end());
+    if (window_s.size() + added.size() > cap) added.resize(cap - window_s.size());
+    ResponseRequest more = req;
+    more.sigmas.assign(added.begin(), added.end());
+    const CavityResponse extra = viscous_cavity_response(more);
+    merge_samples(window_s, window_R, added, extra.R);
+    ++refinements;
+    w = fit_window(window_s, window_R, tail, tail_R, max_error);
+    if (is_root_rank())
+      std::cerr << fmt::format("response fit: refinement {}: {} samples on the window, error between them {:.2g}\n",
+                               refinements, window_s.size(), w.error);
   }
-  for (std::size_t k = 0; k < tail.size(); ++k) {
-    z.push_back(tail[k]);
-    f.push_back(R.R[n + k]);
-  }
-  const RationalFit fit = fit_response(z, f, 1e-10);
-  double err = 0, scale = 0;
-  for (std::size_t k = 0; k < n; ++k) scale = std::max(scale, std::abs(R.R[k]));
-  for (std::size_t k = 0; k < z_held.size(); ++k) err = std::max(err, std::abs(fit(z_held[k]) - f_held[k]));
-  err /= scale;
+  const RationalFit& fit = w.fit;
+  const double err = w.error;
   if (!(err <= max_error))
     throw std::runtime_error(fmt::format("the rational fit of R(s) on [{:g}, {:g}] errs by {:.2g} between its samples "
-                                         "(allowed {:.2g}): give more frequencies N", lo, hi, err, max_error));
+                                         "after {} refinements ({} samples; allowed {:.2g}): give more frequencies N or "
+                                         "a larger --max-fit-error", lo, hi, err, refinements, window_s.size(), max_error));
 
   // The frozen-fluid integrals and J_zh: the ideal problem on the shape's default mesh.
   rc::geometry::MeshOptions ideal_mesh;
@@ -180,16 +248,17 @@ ModeTable response_fit_table(const ResponseRequest& req, double max_error) {
     t.a.push_back(a.real());
     t.a_imag.push_back(a.imag());
     t.N2.push_back(1.0);
-    t.residual.push_back(0.0);
+    t.residual.push_back(std::max(err, std::numeric_limits<double>::epsilon()));  // the fit's error stands for it
     sum += r;
   }
   t.coverage = t.sum_rule > 0 ? sum.real() / t.sum_rule : 1.0;
   t.normalisation = "pseudo-modes of a rational fit: lambda + i decay a pole of R(s), E + i E_imag its residue, "
                     "a + i a_imag = sqrt((E + i E_imag)/2), N2 = 1 (docs/viscous.md, \"Response fit\")";
   t.solver = fmt::format("AAA rational fit of R(s) (degree {}, {} poles kept, {} dropped) on every other of {} real "
-                         "samples in [{:g}, {:g}] and {} beyond it up to |s| = {:.3g}, max error between the window's samples {:.2g}; "
+                         "samples in [{:g}, {:g}] ({} given, {} refinements where the fit erred) and {} beyond it up to |s| = {:.3g}, max error between the window's samples {:.2g}; "
                          "sum of residues {:.9g}{:+.9g}i, s R(s) at s = {:.3g}: {:.9g}, A_f - J_zh = {:.9g}; R by {}",
-                         fit.aaa_degree, fit.poles.size(), fit.dropped_poles, n, lo, hi, tail.size(), std::abs(tail.back()),
+                         fit.aaa_degree, fit.poles.size(), fit.dropped_poles, window_s.size(), lo, hi, n, refinements,
+                         tail.size(), std::abs(tail.back()),
                          err, sum.real(), sum.imag(), tail.back(), (tail.back() * R.R.back()).real(), t.sum_rule,
                          R.method);
   t.tolerance = 1e-10;

@@ -59,6 +59,13 @@ expect_error "response-fit table with too few samples" "N >= 9" "$BIN" response 
 expect_error "response-fit table off the real axis" "increasing real frequencies" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:9 --sigma-imag 0.1 -o out.h5
 expect_error "--max-fit-error on a CSV response" "belongs to" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:9 --max-fit-error 1e-3 -o out.csv
 expect_error "response fit that misses its tolerance" "give more frequencies" "$BIN" response sphere --radius 1 --ekman 1e-2 "${small_response[@]}" --sigma -2:3:9 --max-fit-error 1e-14 -o out.h5
+# Too few samples: the fit errs between them, samples are added where it does, and the table is made.
+if "$BIN" response sphere --radius 1 --ekman 1e-2 "${small_response[@]}" --sigma -1.5:2:11 -o refit.h5 > refit.txt 2> refit.err &&
+   grep -q "^response fit: refinement 1: 19 samples" refit.err && grep -q "(11 given, 1 refinements where the fit erred)" refit.txt; then
+  ok "response fit refines its samples where it errs ($(grep -o 'error between them [0-9.e+-]*' refit.err | tail -1))"
+else
+  bad "response fit refinement: $(tail -1 refit.err)"
+fi
 expect_error "response without --sigma" "needs --sigma" "$BIN" response sphere --radius 1 --ekman 1e-2 -o out.h5
 expect_error "--sigma on a table command" "belong to 'cavity-modes response" "$BIN" sphere --radius 1 --ekman 1e-2 --sigma 0:1:3 -o out.h5
 expect_error "malformed --sigma" "is not FROM:TO:N" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 1:0.5:3 -o out.h5
