@@ -4,6 +4,7 @@
 #include "discretisation.hpp"
 #include "ideal_response.hpp"
 #include "petsc_handles.hpp"
+#include "progress.hpp"
 #include "rational_fit.hpp"
 #include "table_assembly.hpp"
 #include "separable_table.hpp"
@@ -196,6 +197,7 @@ ModeTable response_fit_table(const ResponseRequest& req, double max_error) {
   // where it varies fast (the peaks of weakly damped modes) without sampling the whole window that finely.
   WindowFit w = fit_window(window_s, window_R, tail, tail_R, max_error);
   int refinements = 0;
+  Progress lines([](const std::string& line) { if (is_root_rank()) std::cerr << line << "\n"; });  // runs over 1 s
   const std::size_t cap = std::max<std::size_t>(kMaxSamplesFactor * n, 400);
   while (!(w.error <= max_error) && refinements < kMaxRefinements && window_s.size() < cap && !w.erring.empty()) {
     std::vector<double> added;
@@ -212,9 +214,8 @@ ModeTable response_fit_table(const ResponseRequest& req, double max_error) {
     merge_samples(window_s, window_R, added, extra.R);
     ++refinements;
     w = fit_window(window_s, window_R, tail, tail_R, max_error);
-    if (is_root_rank())
-      std::cerr << fmt::format("response fit: refinement {}: {} samples on the window, error between them {:.2g}\n",
-                               refinements, window_s.size(), w.error);
+    lines.step(fmt::format("response fit: refinement {}: {} samples on the window, error between them {:.2g}",
+                           refinements, window_s.size(), w.error));
   }
   const RationalFit& fit = w.fit;
   const double err = w.error;
