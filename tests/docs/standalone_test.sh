@@ -19,7 +19,7 @@ check_pattern() {  # description, extended regex
   if [ -n "$hits" ]; then bad "$1:"$'\n'"$hits"; else echo "ok: no $1"; fi
 }
 check_pattern "citation of the contract outside the repository" 'SPEC(\.md| §| section [0-9])'
-check_pattern "citation of a paper by its file number" 'seed 00[0-9]|seeds/'
+check_pattern "citation of a paper by its file number" '[Ss]eed 00[0-9]|[Ss]eeds/'
 check_pattern "path outside the repository" '\.\./shared|\.\./\.\./shared'
 check_pattern "issue number" '[Ii]ssue #?[0-9]+'
 

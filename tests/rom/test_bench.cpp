@@ -177,7 +177,7 @@ TEST(Bench, GaussConvergesAtOrderFourAndRk45FollowsItsTolerance) {
 TEST(Bench, StaticCorrectionIsExactAtZeroSpinForAnyKeptCount) {
   const rc::ModeTable t = many_mode_table(12, 0.9);
   write_table(t, test_dir() / "zhukovsky_12_modes.h5");
-  // Seed 002's hanging pendulums (stable at w = 0), two of them with the table's cavity.
+  // Batyr (2010)'s hanging pendulums (stable at w = 0), two of them with the table's cavity.
   Body b1; b1.mass = 2; b1.A = 0.3; b1.C = 0.01; b1.com = -0.2; b1.next = -0.4;
   Body b2; b2.mass = 1.5; b2.A = 0.2; b2.C = 0.01; b2.com = -0.15; b2.next = -0.35;
   Body b3; b3.mass = 1; b3.A = 0.1; b3.C = 0.01; b3.com = -0.1;

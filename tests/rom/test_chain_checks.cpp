@@ -47,7 +47,7 @@ TEST(ChainChecks, DecouplingIntoEquations23And24) {
 
 // Free chain: the matrix derived in docs/free-chain.md against Kononov (30) (n = 3) and (32) (n = 2),
 // whose A_k are about the centres of mass and whose c_1 is C_1 -> O_2.
-TEST(ChainChecks, FreeChainMatrixMatchesSeed30And32) {
+TEST(ChainChecks, FreeChainMatrixMatchesKononov30And32) {
   Body b1; b1.mass = 3; b1.A = 0.2; b1.com = 0.11; b1.next = 0.32;
   Body b2; b2.mass = 1.7; b2.A = 0.07; b2.com = 0.09; b2.next = 0.27;
   Body b3; b3.mass = 0.9; b3.A = 0.03; b3.com = 0.05;
@@ -103,14 +103,14 @@ TEST(ChainChecks, IdenticalFreeBodiesFactorAs33And34) {
   }
 }
 
-// Seed 000 (27)-(28): n identical Lagrange gyroscopes (c_k = c, s_k = 2c, m_k = m, central inertia A^c), a free
+// Kononov (1999) (27)-(28): n identical Lagrange gyroscopes (c_k = c, s_k = 2c, m_k = m, central inertia A^c), a free
 // chain with elastic joints, for general n. Kononov's coefficients, built here from its formulas:
 //   A'_k = A^c + mu m c [(2n - 2k + 1)(2k - 1) - n],  a_k = (2n - 2k + 1) m c,  mu = c/n,
 //   mu_ij = mu (2i - 1) a_j  (i < j; Kononov prints a_i, but its equations (27) carry mu a_k (2i - 1) for i < k),
 // against the model's inertia matrix; then the roots of sigma^2 M' u + sigma C w u - K_el u = 0 (the quadratic
 // eigenproblem of (27) without fluid, K_el the joints' Laplacian with kappa_k^2), by its companion matrix, against
 // chain-rom's spectrum, and det (28) at each root.
-TEST(ChainChecks, IdenticalGyroscopesSeed27And28GeneralN) {
+TEST(ChainChecks, IdenticalGyroscopesKononov27And28GeneralN) {
   const double m = 1.3, c = 0.07, Ac = 0.011, C = 0.017, w = 120;
   for (int n : {4, 7, 10}) {
     Body b; b.mass = m; b.A = Ac + m * c * c; b.C = C; b.com = c; b.next = 2 * c; b.spin = w;

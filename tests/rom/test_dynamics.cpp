@@ -1,4 +1,4 @@
-// Seed 002 (three pendulums with fluid, joint friction, w = 0) and the energy: its derivation,
+// Batyr (2010) (three pendulums with fluid, joint friction, w = 0) and the energy: its derivation,
 // conservation under exact propagation and decay with friction.
 #include "energy.hpp"
 #include "propagation.hpp"
@@ -13,7 +13,7 @@ using namespace rc::rom::test;
 using cd = std::complex<double>;
 
 namespace {
-// Seed 002: three hanging pendulums (centres of mass and joints below O_k: com, next_joint < 0),
+// Batyr (2010): three hanging pendulums (centres of mass and joints below O_k: com, next_joint < 0),
 // cavities with ideal fluid, friction alpha_k in the joints, no spin.
 std::vector<Body> batyr_bodies(bool with_fluid) {
   Body b1; b1.mass = 2; b1.A = 0.3; b1.C = 0.01; b1.com = -0.2; b1.next = -0.4;
@@ -91,7 +91,7 @@ TEST(Batyr, TiltRootsDecayRespectTheoremSixAndProperty3) {
   EXPECT_EQ(osc, 0);
 }
 
-// Seed 002 Theorem 2 (Zhukovsky): at w = 0 the fluid acts as a rigid body with the Zhukovsky inertia.
+// Batyr (2010) Theorem 2 (Zhukovsky): at w = 0 the fluid acts as a rigid body with the Zhukovsky inertia.
 TEST(Batyr, ZhukovskyEquivalenceAtZeroSpin) {
   const std::vector<Joint> joints = {{1.0, 0.02}, {0.5, 0.01}};
   std::vector<Body> fluid = batyr_bodies(true), rigid = batyr_bodies(false);
