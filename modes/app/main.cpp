@@ -190,6 +190,16 @@ void print_table(const rc::ModeTable& table) {
 
 int run(int argc, char** argv) {
   const std::string command_line = rc::modes::quoted_command_line(std::vector<std::string>(argv, argv + argc));
+  // CLI11 takes an empty value ("--coverage ''", "--mesh-size=") as no value at all: the option would silently keep
+  // its default. Found by the fuzz test; refused here for every option.
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a.empty() || (a.rfind("--", 0) == 0 && a.back() == '='))
+      throw std::runtime_error("an empty value" +
+                               (!a.empty() ? " for " + a.substr(0, a.size() - 1)
+                                           : i > 1 ? " after " + std::string(argv[i - 1]) : std::string()) +
+                               ": give a value or leave the option out");
+  }
   auto args = rc::modes::split_arguments(argc, argv);
   // `cavity-modes response SHAPE ...`: the shape's command line, answered with R(sigma) instead of a table.
   const bool response = args.ours.size() > 1 && args.ours[1] == "response";

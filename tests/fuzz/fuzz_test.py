@@ -68,6 +68,9 @@ output_step = 0.001
 method = "exact"
 """
 
+# The same chain with body 1's tank viscous (Ek = nu/(spin scale^2) = 3.2e-3/(200 * 0.04^2) = 1e-2, the table's).
+VISCOUS_SCENE = SCENE.replace('table = "sphere.h5"', 'table = "viscous.h5"\nviscosity = 3.2e-3')
+
 ODD_NUMBERS = ["0", "-1", "1e308", "-1e308", "1e-308", "nan", "inf", "-inf", "1e20", "3", "0.5", "-0.0",
                "2147483648", "\"text\"", "[]", "true"]
 
@@ -239,18 +242,21 @@ def main():
                        cwd=work, check=True, capture_output=True)
         subprocess.run([a.modes, "cylinder", "--radius", "1", "--height", "2", "--modes", "5", "-o", "cylinder.h5"],
                        cwd=work, check=True, capture_output=True)
-        open(os.path.join(work, "scene.toml"), "w").write(SCENE)
-        subprocess.run([a.rom, "spectrum", "scene.toml"], cwd=work, check=True, capture_output=True)
+        subprocess.run([a.modes, "sphere", "--radius", "1", "--ekman", "1e-2", "--order", "3", "--mesh-size", "0.5",
+                        "--modes", "1", "-o", "viscous.h5"], cwd=work, check=True, capture_output=True)
+        for name, text in (("scene.toml", SCENE), ("viscous_scene.toml", VISCOUS_SCENE)):
+            open(os.path.join(work, name), "w").write(text)
+            subprocess.run([a.rom, "spectrum", name], cwd=work, check=True, capture_output=True)
         makers = ["table bytes", "table edit", "scene", "options"]
         for case in range(a.cases):
             what = makers[case % len(makers)]
             counts[what] = counts.get(what, 0) + 1
             try:
                 if what in ("table bytes", "table edit"):
-                    src = rng.choice(["sphere.h5", "cylinder.h5"])
+                    src = rng.choice(["sphere.h5", "cylinder.h5", "viscous.h5"])
                     (corrupt_bytes if what == "table bytes" else edit_table)(rng, os.path.join(work, src),
                                                                              os.path.join(work, "bad.h5"))
-                    scene = SCENE.replace('"%s"' % src, '"bad.h5"')
+                    scene = (VISCOUS_SCENE if src == "viscous.h5" else SCENE).replace('"%s"' % src, '"bad.h5"')
                     open(os.path.join(work, "bad_scene.toml"), "w").write(scene)
                     cmds = [([a.modes, "info", "bad.h5", "--json"], []),
                             ([a.rom, "spectrum", "bad_scene.toml", "--json"], [])]
@@ -258,10 +264,11 @@ def main():
                         cmds.append(([a.modes, "compare", "bad.h5", src], []))
                     inputs = ["bad.h5", "bad_scene.toml", src]
                 elif what == "scene":
-                    open(os.path.join(work, "bad_scene.toml"), "w").write(mutate_scene(rng, SCENE))
+                    base = VISCOUS_SCENE if rng.random() < 0.3 else SCENE
+                    open(os.path.join(work, "bad_scene.toml"), "w").write(mutate_scene(rng, base))
                     cmds = [([a.rom, "spectrum", "bad_scene.toml"], []),
                             ([a.rom, "run", "bad_scene.toml", "-o", "traj.h5"], ["traj.h5"])]
-                    inputs = ["bad_scene.toml", "sphere.h5", "cylinder.h5"]
+                    inputs = ["bad_scene.toml", "sphere.h5", "cylinder.h5", "viscous.h5"]
                 else:
                     cmds = [([a.modes] + random_option_case(rng) + ["-o", "opt.h5"], ["opt.h5"])]
                     inputs = ["sphere.h5"]

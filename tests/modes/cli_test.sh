@@ -45,6 +45,8 @@ else
 fi
 expect_error "radial size for a sphere" "sphere does not take --radial-size" "$BIN" sphere --radius 1 --radial-size 0.1 -o out.h5
 expect_error "table option on a response" "response sphere does not take --modes" "$BIN" response sphere --radius 1 --modes 2 --sigma 0.5+0.1i -o out.csv
+expect_error "empty option value" "an empty value after --coverage" "$BIN" sphere --radius 1 --coverage "" -o out.h5
+expect_error "empty option value (=)" "an empty value for --mesh-size" "$BIN" sphere --radius 1 --mesh-size= -o out.h5
 expect_error "misspelt option" "does not take --mesh-sise" "$BIN" cone --radius 1 --height 1 --mesh-sise 0.1 -o out.h5
 expect_error "separable with --fields" "--fields needs --method mesh" "$BIN" cylinder --radius 1 --height 2 --method separable --fields -o out.h5
 expect_error "separable order out of range" "order 13 is outside 1..12" "$BIN" cylinder --radius 1 --height 2 --order 13 -o out.h5

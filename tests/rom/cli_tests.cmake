@@ -24,6 +24,8 @@ rom_cli(run_h5 ARGS run;two_tops.toml;-o;out_two_tops.h5 EXPECT_EXIT 0 MATCH "la
 rom_cli(run_csv ARGS run;top_spheroid.toml;-o;out_top.csv EXPECT_EXIT 0 MATCH "wrote out_top.csv")
 rom_cli(bad_negative_mass ARGS spectrum;bad_negative_mass.toml EXPECT_EXIT 1 MATCH "^chain-rom: error: [^\n]*body\\[1\\]\\.mass: must be >= 0[^\n]*\n?$")
 rom_cli(bad_unknown_key ARGS spectrum;bad_unknown_key.toml EXPECT_EXIT 1 MATCH "body\\[1\\]\\.colour: unknown key")
+rom_cli(empty_value ARGS sweep;top_spheroid.toml;--param;body[1].spin;--from=;--to;300;--steps;3;-o;empty.csv EXPECT_EXIT 2
+        MATCH "an empty value for --from: give a value" NO_FILE empty.csv)
 rom_cli(bad_table ARGS spectrum;bad_not_a_table.toml EXPECT_EXIT 1 MATCH "body\\[1\\]\\.cavity\\.table: .*not an HDF5 file")
 rom_cli(bad_modes ARGS spectrum;bad_modes.toml EXPECT_EXIT 1 MATCH "body\\[1\\]\\.cavity\\.modes: 3 requested")
 rom_cli(bad_joints ARGS spectrum;bad_joints.toml EXPECT_EXIT 1 MATCH "joint: the chain has 2 bodies and needs 1")
