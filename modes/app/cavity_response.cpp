@@ -56,25 +56,18 @@ CavityResponse mesh_response(const ResponseRequest& req) {
   return out;
 }
 
-CavityResponse viscous_cavity_response(const ResponseRequest& req) {
-  long unknowns = 0;
-  CavityResponse out;
-  // A line at most every 5 s on stderr (rank 0), with the time left at the pace so far.
-  const auto start = std::chrono::steady_clock::now();
-  auto last = start;
+// R at req.sigmas from forms assembled once (assemble_cavity_forms), with progress lines on stderr (rank 0).
+CavityResponse viscous_cavity_response(const ResponseRequest& req, const ViscousForms& forms) {
+  Progress lines([](const std::string& line) { if (is_root_rank()) std::cerr << line << "\n"; });
   const auto report = [&](std::size_t done, std::size_t total) {
-    const auto now = std::chrono::steady_clock::now();
-    if (done == total || std::chrono::duration<double>(now - last).count() < 5 || !is_root_rank()) return;
-    last = now;
-    const double t = std::chrono::duration<double>(now - start).count();
-    std::fprintf(stderr, "cavity-modes response: %zu/%zu frequencies, %.0f s, about %.0f s left\n", done, total, t,
-                 t * static_cast<double>(total - done) / static_cast<double>(done));
+    lines.step(fmt::format("cavity-modes response: {}/{} frequencies", done, total), done, total);
   };
-  out.R = cavity_response(req.shape, req.mesh, req.ekman, req.sigmas, &unknowns, report);
-  out.unknowns = unknowns;
+  CavityResponse out;
+  out.R = viscous_response(forms, req.sigmas, report);
+  out.unknowns = 2L * forms.complex_size;
   out.method = fmt::format("viscous fluid, Ekman number {:g}, forced solves on Taylor-Hood P{}/P{} ({} real unknowns); "
                            "R = sum_l E_l/(sigma - lambda_l) + const",
-                           req.ekman, req.mesh.order, req.mesh.order - 1, unknowns);
+                           req.ekman, req.mesh.order, req.mesh.order - 1, out.unknowns);
   return out;
 }
 
@@ -109,7 +102,7 @@ CavityResponse compute_cavity_response(const ResponseRequest& req) {
   if (req.sigmas.empty()) throw std::runtime_error("no frequency sigma given");
   for (const auto s : req.sigmas)
     if (!std::isfinite(s.real()) || !std::isfinite(s.imag())) throw std::runtime_error("every sigma must be finite");
-  if (req.ekman > 0) return viscous_cavity_response(req);
+  if (req.ekman > 0) return viscous_cavity_response(req, assemble_cavity_forms(req.shape, req.mesh, req.ekman));
   return req.separable ? separable_response(req) : mesh_response(req);
 }
 
@@ -186,7 +179,8 @@ ModeTable response_fit_table(const ResponseRequest& req, double max_error) {
     if (-t < lo) tail.push_back(-t);
   }
   for (const double t : tail) all.sigmas.emplace_back(t, 0.0);
-  const CavityResponse R = viscous_cavity_response(all);
+  const ViscousForms forms = assemble_cavity_forms(req.shape, req.mesh, req.ekman);  // once, for every refinement
+  const CavityResponse R = viscous_cavity_response(all, forms);
   std::vector<double> window_s;
   std::vector<std::complex<double>> window_R(R.R.begin(), R.R.begin() + static_cast<long>(n)), tail_R(R.R.begin() + static_cast<long>(n), R.R.end());
   for (const auto& sigma : req.sigmas) window_s.push_back(sigma.real());
@@ -210,7 +204,7 @@ ModeTable response_fit_table(const ResponseRequest& req, double max_error) {
     if (window_s.size() + added.size() > cap) added.resize(cap - window_s.size());
     ResponseRequest more = req;
     more.sigmas.assign(added.begin(), added.end());
-    const CavityResponse extra = viscous_cavity_response(more);
+    const CavityResponse extra = viscous_cavity_response(more, forms);
     merge_samples(window_s, window_R, added, extra.R);
     ++refinements;
     w = fit_window(window_s, window_R, tail, tail_R, max_error);

@@ -109,12 +109,16 @@ std::vector<std::complex<double>> viscous_response(const ViscousForms& forms,
   return out;
 }
 
+ViscousForms assemble_cavity_forms(const geometry::ShapeSpec& shape, const geometry::MeshOptions& mesh, double ekman) {
+  const TaylorHoodSpace space(mesh_on_root([&] { return geometry::mesh_meridian(shape, mesh); }, PETSC_COMM_WORLD));
+  const double centroid_z = integrate_fluid(space.geometry()).centroid_z;
+  return assemble_viscous_forms(space, centroid_z, ekman, PETSC_COMM_WORLD);
+}
+
 std::vector<std::complex<double>> cavity_response(const geometry::ShapeSpec& shape, geometry::MeshOptions mesh,
                                                   double ekman, const std::vector<std::complex<double>>& sigmas,
                                                   long* unknowns, const ResponseProgress& progress) {
-  const TaylorHoodSpace space(mesh_on_root([&] { return geometry::mesh_meridian(shape, mesh); }, PETSC_COMM_WORLD));
-  const double centroid_z = integrate_fluid(space.geometry()).centroid_z;
-  const ViscousForms forms = assemble_viscous_forms(space, centroid_z, ekman, PETSC_COMM_WORLD);
+  const ViscousForms forms = assemble_cavity_forms(shape, mesh, ekman);
   if (unknowns) *unknowns = 2L * forms.complex_size;
   return viscous_response(forms, sigmas, progress);
 }

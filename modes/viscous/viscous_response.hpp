@@ -23,8 +23,12 @@ std::vector<std::complex<double>> viscous_response(const ViscousForms& forms,
                                                    const std::vector<std::complex<double>>& sigmas,
                                                    const ResponseProgress& progress = {});
 
-// The same for a cavity: meshes it (viscous_mesh_defaults must have resolved `mesh`), assembles at `ekman` with
-// z measured from the fluid centroid, and solves at every σ. `unknowns` receives the real unknowns' count.
+// A cavity's forms: meshes it (viscous_mesh_defaults must have resolved `mesh`) and assembles at `ekman` with z
+// measured from the fluid centroid. Assemble once, then call viscous_response as often as needed (the response
+// fit asks for more σ where its fit errs).
+ViscousForms assemble_cavity_forms(const geometry::ShapeSpec& shape, const geometry::MeshOptions& mesh, double ekman);
+
+// assemble_cavity_forms, then viscous_response at every σ. `unknowns` receives the real unknowns' count.
 std::vector<std::complex<double>> cavity_response(const geometry::ShapeSpec& shape, geometry::MeshOptions mesh,
                                                   double ekman, const std::vector<std::complex<double>>& sigmas,
                                                   long* unknowns = nullptr, const ResponseProgress& progress = {});
