@@ -225,6 +225,18 @@ void ModeTable::check_identities() const {
   }
 }
 
+std::string cavity_difference(const ModeTable& a, const ModeTable& b) {
+  if (a.shape != b.shape) return "a " + a.shape + " and a " + b.shape;
+  if (a.dimensions.size() != b.dimensions.size()) return "their dimensions differ (names)";
+  for (const auto& [k, v] : a.dimensions) {
+    const auto it = b.dimensions.find(k);
+    if (it == b.dimensions.end() || std::abs(it->second - v) > 1e-12 * std::abs(v)) return "their dimension " + k + " differs";
+  }
+  if (!a.geometry_text.empty() && !b.geometry_text.empty() && a.geometry_text != b.geometry_text)
+    return "different section files (their stored texts differ; cavity-modes info FILE --geometry prints each)";
+  return {};
+}
+
 void ModeTable::sort_by_energy() {
   std::vector<std::size_t> idx(E.size());
   std::iota(idx.begin(), idx.end(), 0);

@@ -80,6 +80,11 @@ struct ModeTable {
   void sort_by_energy();
 };
 
+// Why two tables do not describe the same cavity: another shape, other dimensions (names, or values beyond 1e-12
+// relative), or, both texts stored, another section file; empty when they do. Whether one may be viscous and the
+// other ideal, or at another Ekman number, is the caller's question (cavity-modes compare; chain-rom companions).
+std::string cavity_difference(const ModeTable& a, const ModeTable& b);
+
 struct ModeFields;  // mode_fields.hpp
 
 // Writes to a temporary name beside `path` and renames it into place, so a failure never leaves a

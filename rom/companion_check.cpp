@@ -12,12 +12,8 @@ namespace {
 void check_same_cavity(const std::filesystem::path& table, const std::filesystem::path& companion,
                        const std::string& where) {
   const rc::ModeTable a = rc::read_mode_table(table), b = rc::read_mode_table(companion);
-  std::string why;
-  if (a.shape != b.shape) why = "shape " + b.shape + ", the table's is " + a.shape;
-  else if (a.dimensions != b.dimensions) why = "other dimensions";
-  else if (!a.geometry_text.empty() && !b.geometry_text.empty() && a.geometry_text != b.geometry_text)
-    why = "another section file (their stored texts differ)";
-  else if (a.ekman != b.ekman) why = "another Ekman number";
+  std::string why = rc::cavity_difference(a, b);
+  if (why.empty() && a.ekman != b.ekman) why = "another Ekman number";
   if (!why.empty())
     throw SceneError(where + ".companion: " + companion.string() + " describes another cavity than the table (" +
                      why + ")");

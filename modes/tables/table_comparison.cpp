@@ -9,17 +9,8 @@ namespace rc::modes {
 namespace {
 
 void check_same_cavity(const ModeTable& a, const ModeTable& b) {
-  if (a.shape != b.shape) throw std::runtime_error(fmt::format("the tables describe a {} and a {}", a.shape, b.shape));
-  if (a.dimensions.size() != b.dimensions.size())
-    throw std::runtime_error("the tables' dimensions differ (names)");
-  for (const auto& [k, v] : a.dimensions) {
-    const auto it = b.dimensions.find(k);
-    if (it == b.dimensions.end() || std::abs(it->second - v) > 1e-12 * std::abs(v))
-      throw std::runtime_error(fmt::format("the tables' dimension {} differs", k));
-  }
-  if (!a.geometry_text.empty() && !b.geometry_text.empty() && a.geometry_text != b.geometry_text)
-    throw std::runtime_error("the tables were made from different section files (their stored texts differ; "
-                             "cavity-modes info FILE --geometry prints each)");
+  const std::string why = cavity_difference(a, b);
+  if (!why.empty()) throw std::runtime_error("the tables describe different cavities: " + why);
   if (a.viscous() != b.viscous()) throw std::runtime_error("one table is viscous, the other ideal");
 }
 

@@ -159,7 +159,7 @@ variant("huge.h5", huge)
   expect_error "table with N2 < 0" "N2 > 0" timeout 10 "$BIN" info negN2.h5
   expect_error "table with a < 0" "a >= 0" timeout 10 "$BIN" info nega.h5
   expect_error "table claiming 2e9 entries" "more than the file holds" timeout 10 "$BIN" info huge.h5
-  [ -f capsule.h5 ] && expect_error "compare two cavities" "describe a section and a sphere" "$BIN" compare capsule.h5 base.h5
+  [ -f capsule.h5 ] && expect_error "compare two cavities" "describe different cavities: a section and a sphere" "$BIN" compare capsule.h5 base.h5
   # Bytes that are not UTF-8 in a string attribute print as \xNN escapes (text and JSON).
   /usr/bin/python3 -c '
 import h5py, numpy as np, shutil
