@@ -2,6 +2,7 @@
 // fluid-filled cavities (docs/physics.md §3-4). One-line error and exit code 1 on bad input.
 #include "bench.hpp"
 #include "chain_model.hpp"
+#include "empty_argument.hpp"
 #include "companion_check.hpp"
 #include "output.hpp"
 #include "propagation.hpp"
@@ -101,17 +102,9 @@ int main(int argc, char** argv) {
     for (auto& ch : msg) if (ch == '\n') ch = ' ';
     return "chain-rom: error: " + msg + " (--help for usage)\n";
   });
-  // CLI11 takes an empty value ("--from ''", "--to=") as no value: the option would silently keep its default
-  // (found by the fuzz test). Refused for every option, like a value that is not a number.
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a.empty() || (a.rfind("--", 0) == 0 && a.back() == '=')) {
-      const std::string where = !a.empty() ? " for " + a.substr(0, a.size() - 1)
-                                : i > 1 ? " after " + std::string(argv[i - 1]) : std::string();
-      std::fprintf(stderr, "chain-rom: error: an empty value%s: give a value or leave the option out\n",
-                   where.c_str());
-      return 2;
-    }
+  if (const std::string empty = rc::empty_argument_error(argc, argv); !empty.empty()) {
+    std::fprintf(stderr, "chain-rom: error: %s\n", empty.c_str());  // a command-line error: exit 2
+    return 2;
   }
   try {
     app.parse(argc, argv);

@@ -10,6 +10,7 @@
 #include "cavity_table.hpp"
 #include "convergence.hpp"
 #include "command_line.hpp"
+#include "empty_argument.hpp"
 #include "mode_fields.hpp"
 #include "mode_table_report.hpp"
 #include "petsc_handles.hpp"
@@ -190,15 +191,9 @@ void print_table(const rc::ModeTable& table) {
 
 int run(int argc, char** argv) {
   const std::string command_line = rc::modes::quoted_command_line(std::vector<std::string>(argv, argv + argc));
-  // CLI11 takes an empty value ("--coverage ''", "--mesh-size=") as no value at all: the option would silently keep
-  // its default. Found by the fuzz test; refused here for every option.
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a.empty() || (a.rfind("--", 0) == 0 && a.back() == '='))
-      throw std::runtime_error("an empty value" +
-                               (!a.empty() ? " for " + a.substr(0, a.size() - 1)
-                                           : i > 1 ? " after " + std::string(argv[i - 1]) : std::string()) +
-                               ": give a value or leave the option out");
+  if (const std::string empty = rc::empty_argument_error(argc, argv); !empty.empty()) {
+    if (rc::modes::is_root_rank()) std::cerr << "cavity-modes: error: " << empty << "\n";
+    return 2;  // a command-line error, like CLI11's
   }
   auto args = rc::modes::split_arguments(argc, argv);
   // `cavity-modes response SHAPE ...`: the shape's command line, answered with R(sigma) instead of a table.
