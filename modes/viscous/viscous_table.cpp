@@ -48,7 +48,8 @@ void drop_repeats(Solved& solved, std::vector<double>& targets, std::vector<doub
                   const std::function<void(const std::string&)>& report) {
   Solved kept;
   kept.unknowns = solved.unknowns;
-  kept.fields = solved.fields;
+  std::vector<ModeFields::Mode> fields = std::move(solved.fields.modes);
+  kept.fields = std::move(solved.fields);  // the mesh part, not copied
   kept.fields.modes.clear();
   std::vector<double> kept_targets, kept_energies;
   for (std::size_t i = 0; i < solved.rows.size(); ++i) {
@@ -63,7 +64,7 @@ void drop_repeats(Solved& solved, std::vector<double>& targets, std::vector<doub
       continue;
     }
     kept.rows.push_back(m);
-    if (i < solved.fields.modes.size()) kept.fields.modes.push_back(std::move(solved.fields.modes[i]));
+    if (i < fields.size()) kept.fields.modes.push_back(std::move(fields[i]));
     kept_targets.push_back(targets[i]);
     kept_energies.push_back(energies[i]);
   }
@@ -238,10 +239,11 @@ ModeTable compute_viscous_table(const geometry::ShapeSpec& shape, const ViscousT
     std::iota(order.begin(), order.end(), 0);
     std::stable_sort(order.begin(), order.end(),
                      [&](std::size_t i, std::size_t j) { return fine.rows[i].residue.real() > fine.rows[j].residue.real(); });
-    *fields = fine.fields;
+    std::vector<ModeFields::Mode> modes = std::move(fine.fields.modes);
+    *fields = std::move(fine.fields);
     fields->modes.clear();
     for (std::size_t k = 0; k < order.size(); ++k) {
-      fields->modes.push_back(fine.fields.modes[order[k]]);
+      fields->modes.push_back(std::move(modes[order[k]]));
       fields->modes.back().row = k;
     }
   }
