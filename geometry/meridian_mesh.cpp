@@ -118,6 +118,7 @@ void grade_towards_wall(const MeshOptions& options, double size, const std::stri
   gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
 }
 
+// `grading`: grade towards the wall with gmsh fields (none when the CAD model already holds the wall layers).
 void generate(int order, double size, const std::string& where, double radial_size = 0,
               const MeshOptions* grading = nullptr) {
   if (model_extent() / size > kMaxCellsPerExtent || (radial_size > 0 && model_extent() / radial_size > kMaxCellsPerExtent))
@@ -230,9 +231,9 @@ GmshMesh mesh_builtin(const ShapeSpec& shape, const MeshOptions& options) {
   return detail::with_gmsh(where, [&](detail::GmshSession& session) {
     const double size = options.size > 0 ? options.size : kDefaultSizeFraction * detail::smallest_dimension(shape);
     gmsh::model::add("meridian");
-    detail::build_shape(shape, size, options.radial_size);
+    const bool layered = detail::build_shape(shape, size, options.radial_size, &options);
     session.throw_if_error(where);
-    generate(options.order, size, where, options.radial_size, &options);
+    generate(options.order, size, where, options.radial_size, layered ? nullptr : &options);
     session.throw_if_error(where);
     GmshMesh m = read_mesh(where);
     m.size = size;

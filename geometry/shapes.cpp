@@ -40,10 +40,10 @@ std::string number(double v) {
 
 double dim(const ShapeSpec& shape, const std::string& name) { return shape.dims.at(name); }
 
-// Physical groups as the solver expects them: one fluid surface, wall curves, axis curves.
-void add_groups(int surface, const std::vector<int>& wall, const std::vector<int>& axis) {
+// Physical groups as the solver expects them: the fluid surfaces, wall curves, axis curves.
+void add_groups(const std::vector<int>& fluid, const std::vector<int>& wall, const std::vector<int>& axis) {
   geo::synchronize();
-  gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, {surface}), "fluid");
+  gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, fluid), "fluid");
   gmsh::model::setPhysicalName(1, gmsh::model::addPhysicalGroup(1, wall), "wall");
   gmsh::model::setPhysicalName(1, gmsh::model::addPhysicalGroup(1, axis), "axis");
 }
@@ -67,7 +67,7 @@ void build_ellipse(double a, double c, double h) {
     upper = geo::addEllipseArc(equator, centre, major, north);
   }
   const int axis = geo::addLine(north, south);
-  add_groups(surface({lower, upper, axis}), {lower, upper}, {axis});
+  add_groups({surface({lower, upper, axis})}, {lower, upper}, {axis});
 }
 
 void build_cylinder(double radius, double height, double h, double radial_size) {
@@ -86,14 +86,63 @@ void build_cylinder(double radius, double height, double h, double radial_size) 
     for (int c : {side, axis}) geo::mesh::setTransfiniteCurve(c, nz + 1);
     geo::mesh::setTransfiniteSurface(fluid, "Alternate");
   }
-  add_groups(fluid, {bottom, side, top}, {axis});
+  add_groups({fluid}, {bottom, side, top}, {axis});
 }
 
 void build_cone(double radius, double height, double h) {
   const int apex = geo::addPoint(0, 0, 0, h), rim = geo::addPoint(radius, height, 0, h),
             centre = geo::addPoint(0, height, 0, h);
   const int slant = geo::addLine(apex, rim), lid = geo::addLine(rim, centre), axis = geo::addLine(centre, apex);
-  add_groups(surface({slant, lid, axis}), {slant, lid}, {axis});
+  add_groups({surface({slant, lid, axis})}, {slant, lid}, {axis});
+}
+
+// Nodes across a wall layer of thickness t whose cells start at `first` and grow by `ratio`: the smallest count
+// whose geometric cells reach t (gmsh then scales the progression to t exactly, so the first cell is <= first).
+int layer_nodes(double t, double first, double ratio) {
+  return 2 + static_cast<int>(std::ceil(std::log1p(t * (ratio - 1) / first) / std::log(ratio) - 1 - 1e-9));
+}
+
+// The cone with its Ekman layers built in (docs/geometry.md, "Wall-refined meshes"): a strip of thickness t along
+// the slant and one along the lid, each a structured (transfinite) grid whose cells grow geometrically from the
+// wall, and an unstructured interior triangle. gmsh's BoundaryLayer field crashed or inverted where the slant meets
+// the axis at the apex; here the slant strip simply ends on the axis: its last column of cells joins the apex to
+// the point of the axis at distance t from the slant, z_a = t L / R (L the slant's length).
+//
+//   centre (0,H) ---- lid ---- rim (R,H)         strips: slant (apex, rim, inner corner, inner apex)
+//   (0,H-t) ---- inner lid ---- inner corner              lid   (rim, centre, (0,H-t), inner corner)
+//   |  interior  /                               corner diagonal rim -> inner corner, shared by both
+//   (0,z_a) ---/ inner slant                      interior: the triangle (0,z_a), inner corner, (0,H-t)
+//   apex (0,0)
+void build_layered_cone(double R, double H, double h, const MeshOptions& o) {
+  const double L = std::hypot(R, H), t = o.wall_layer;
+  const double r_inner = (R * (H - t) - t * L) / H, z_a = t * L / R;
+  if (!(r_inner > 2 * t && z_a < H - 2 * t))
+    throw std::runtime_error("cone: wall layers " + number(t) + " thick do not fit in the cone (radius " + number(R) +
+                             ", height " + number(H) + ")");
+  const int apex = geo::addPoint(0, 0, 0, h), rim = geo::addPoint(R, H, 0, h), centre = geo::addPoint(0, H, 0, h),
+            inner_centre = geo::addPoint(0, H - t, 0, h), inner_corner = geo::addPoint(r_inner, H - t, 0, h),
+            inner_apex = geo::addPoint(0, z_a, 0, h);
+  const int slant = geo::addLine(apex, rim), lid = geo::addLine(rim, centre);
+  const int diagonal = geo::addLine(rim, inner_corner);         // from the wall inwards
+  const int axis_lid = geo::addLine(centre, inner_centre);      // from the wall inwards
+  const int axis_apex = geo::addLine(apex, inner_apex);         // from the wall inwards
+  const int inner_slant = geo::addLine(inner_corner, inner_apex), inner_lid = geo::addLine(inner_centre, inner_corner);
+  const int axis_interior = geo::addLine(inner_centre, inner_apex);
+  const int slant_strip = surface({slant, diagonal, inner_slant, -axis_apex});
+  const int lid_strip = surface({lid, axis_lid, inner_lid, -diagonal});
+  const int interior = surface({-inner_slant, -inner_lid, axis_interior});
+  // Across the layers: geometric cells from the wall (first o.wall_size, ratio 1 + o.wall_growth).
+  const double ratio = 1 + o.wall_growth;
+  const int across = layer_nodes(t, o.wall_size, ratio);
+  for (int c : {diagonal, axis_lid, axis_apex}) geo::mesh::setTransfiniteCurve(c, across, "Progression", ratio);
+  // Along the walls: the interior size h.
+  const int along_slant = 1 + std::max(2, static_cast<int>(std::ceil(L / h - 1e-9)));
+  const int along_lid = 1 + std::max(2, static_cast<int>(std::ceil(R / h - 1e-9)));
+  for (int c : {slant, inner_slant}) geo::mesh::setTransfiniteCurve(c, along_slant);
+  for (int c : {lid, inner_lid}) geo::mesh::setTransfiniteCurve(c, along_lid);
+  geo::mesh::setTransfiniteSurface(slant_strip, "Alternate", {apex, rim, inner_corner, inner_apex});
+  geo::mesh::setTransfiniteSurface(lid_strip, "Alternate", {rim, centre, inner_centre, inner_corner});
+  add_groups({slant_strip, lid_strip, interior}, {slant, lid}, {axis_apex, axis_interior, axis_lid});
 }
 
 }  // namespace
@@ -123,7 +172,7 @@ double smallest_dimension(const ShapeSpec& shape) {
   return std::min(dim(shape, "radius"), dim(shape, "height"));
 }
 
-void build_shape(const ShapeSpec& shape, double size, double radial_size) {
+bool build_shape(const ShapeSpec& shape, double size, double radial_size, const MeshOptions* layers) {
   if (radial_size > 0 && shape.kind != "cylinder")
     throw std::runtime_error(shape.kind + ": a radial mesh size (structured mesh) is only available for the cylinder");
   if (shape.kind == "sphere") {
@@ -134,10 +183,15 @@ void build_shape(const ShapeSpec& shape, double size, double radial_size) {
   } else if (shape.kind == "cylinder") {
     build_cylinder(dim(shape, "radius"), dim(shape, "height"), size, radial_size);
   } else if (shape.kind == "cone") {
+    if (layers && layers->wall_size > 0 && layers->wall_layer > layers->wall_size) {
+      build_layered_cone(dim(shape, "radius"), dim(shape, "height"), size, *layers);
+      return true;
+    }
     build_cone(dim(shape, "radius"), dim(shape, "height"), size);
   } else {
     throw std::logic_error("build_shape: not a built-in shape: " + shape.kind);
   }
+  return false;
 }
 
 }  // namespace rc::geometry::detail

@@ -17,6 +17,9 @@ double smallest_dimension(const ShapeSpec& shape);
 // groups "fluid", "wall" and "axis", every point carrying `size` as its mesh size. radial_size > 0
 // (cylinder only) makes the mesh structured: ⌈radius / radial_size⌉ × ⌈height / size⌉ rectangles, each
 // cut into two triangles.
-void build_shape(const ShapeSpec& shape, double size, double radial_size = 0);
+// With `layers` (wall_size > 0 and wall_layer > 0), a shape that builds its wall layers into the CAD model (the
+// cone: structured strips along the slant and the lid, see build_layered_cone in shapes.cpp) does so and
+// returns true; the others return false and the caller grades the mesh with gmsh fields instead.
+bool build_shape(const ShapeSpec& shape, double size, double radial_size = 0, const MeshOptions* layers = nullptr);
 
 }  // namespace rc::geometry::detail

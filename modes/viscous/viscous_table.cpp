@@ -142,10 +142,10 @@ geometry::MeshOptions viscous_mesh_defaults(const geometry::ShapeSpec& shape, do
   if (mesh.wall_size == 0) mesh.wall_size = layer;
   if (mesh.size > 0) mesh.wall_size = std::min(mesh.wall_size, mesh.size);
   // Layers at most half as thick as the interior elements (gmsh's layers invert otherwise); beyond them the
-  // interior elements carry the rest of a thick Ekman layer. Only where the wall meets the axis at a right
-  // angle (sphere, spheroid, cylinder): on a cone gmsh 4.8's layers crashed (SIGSEGV) or inverted at the apex,
-  // so cones and user sections get the isotropic grading.
-  const bool layers = shape.kind == "sphere" || shape.kind == "spheroid" || shape.kind == "cylinder";
+  // interior elements carry the rest of a thick Ekman layer. gmsh's BoundaryLayer field where the wall meets the
+  // axis at a right angle (sphere, spheroid, cylinder); the cone builds its layers into the CAD model (gmsh 4.8's
+  // field crashed or inverted at its apex; geometry/shapes.cpp); user sections get the isotropic grading.
+  const bool layers = shape.kind != "section";
   const double interior = mesh.size > 0 ? mesh.size : 0.125 * d;
   mesh.wall_layer = layers ? std::min(kLayersThickness * layer, interior / 2) : 0;
   if (mesh.wall_layer <= mesh.wall_size) mesh.wall_layer = 0;

@@ -150,6 +150,52 @@ TEST(MeridianMesh, StructuredCylinderHasTheRequestedCells) {
   EXPECT_NEAR(rmin, 0.1 / 4, 1e-12);
 }
 
+// The cone with its wall layers built in (geometry/shapes.cpp, build_layered_cone): exact volume, the same
+// invariants, and cells across the layer that start at the wall size and grow by the ratio asked for, on the
+// slant, on the lid and at the apex (where the slant strip ends on the axis).
+TEST(MeridianMesh, LayeredConeHasGeometricCellsAtTheWall) {
+  const ShapeSpec cone{"cone", {{"radius", 1.0}, {"height", 1.5}}, {}};
+  for (int order : {2, 6}) {
+    MeshOptions o{order, 0.125};
+    o.wall_size = 0.002;
+    o.wall_growth = 0.25;
+    o.wall_layer = 0.05;
+    const MeridianMesh m = mesh_meridian(cone, o);
+    check_invariants(m, "layered cone P" + std::to_string(order));
+    const auto in = integrate(m);
+    EXPECT_NEAR(in.volume, M_PI * 1.5 / 3, 1e-11);  // straight sides: exact up to rounding
+    // Distances of the vertices from the lid (z = 1.5) and from the slant (r = z / 1.5), away from the rim where the
+    // two strips meet, sorted: the layer nodes first.
+    const double L = std::hypot(1.0, 1.5);
+    std::set<double> from_lid, from_slant;
+    for (std::size_t t = 0; t < m.num_triangles(); ++t)
+      for (int i = 0; i < 3; ++i) {
+        const auto& p = m.nodes[m.triangles[t * m.nodes_per_element + i]];
+        if (p[0] < 0.5) from_lid.insert(std::round((1.5 - p[1]) * 1e9) / 1e9);  // away from the rim
+        if (p[1] > 0.5 && p[1] < 1.0) from_slant.insert(std::round((p[1] - 1.5 * p[0]) / L * 1e9) / 1e9);
+      }
+    for (const auto* d : {&from_lid, &from_slant}) {
+      const std::vector<double> v(d->begin(), d->end());
+      ASSERT_GE(v.size(), 4u);
+      EXPECT_NEAR(v[0], 0, 1e-9);
+      EXPECT_LE(v[1], 0.002 + 1e-9) << "first layer thicker than the wall size";
+      EXPECT_GE(v[1], 0.002 / 1.25) << "first layer much thinner than asked";
+      EXPECT_NEAR((v[2] - v[1]) / v[1], 1.25, 1e-6) << "layers do not grow by the ratio";
+    }
+    // The apex is a mesh vertex on the axis, and so is the point where the slant strip ends on it (z = t L / R).
+    bool apex = false, strip_end = false;
+    for (int a : m.axis_nodes) {
+      apex = apex || std::hypot(m.nodes[a][0], m.nodes[a][1]) < 1e-12;
+      strip_end = strip_end || std::abs(m.nodes[a][1] - 0.05 * L) < 1e-12;
+    }
+    EXPECT_TRUE(apex && strip_end);
+  }
+  MeshOptions thick{2, 0.125};
+  thick.wall_size = 0.01;
+  thick.wall_layer = 0.6;  // the strips would overlap
+  EXPECT_THROW(mesh_meridian(cone, thick), std::runtime_error);
+}
+
 TEST(MeridianMesh, InvariantsHoldForAllShapesAndOrders) {
   for (const auto& s : shapes())
     for (int order = 1; order <= 6; ++order) check_invariants(mesh(s.spec, order), s.name + std::to_string(order));

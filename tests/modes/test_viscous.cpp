@@ -269,3 +269,32 @@ TEST(ViscousSpheroid, OblateCouplingModeApproachesTheBoundaryLayerLimit) {
   }
   EXPECT_LE(previous_gap, 0.08);
 }
+
+// The cone's wall layers built into the mesh (geometry/shapes.cpp) against the isotropic wall grading (the same
+// P6 elements graded from Ek^{1/2} at the wall, which the cone used before and which docs/viscous.md's cone figures
+// were measured on): the same response at three frequencies, with far fewer unknowns (docs/viscous.md, "Meshes").
+TEST(ViscousCone, WallLayersGiveTheIsotropicGradingsResponse) {
+  const rc::geometry::ShapeSpec cone{"cone", {{"radius", 1.0}, {"height", 1.0}}, {}};
+  const double ek = 1e-3;
+  const std::vector<cd> sigma = {1.0, -0.7, {1.2, 0.05}};
+  rc::geometry::MeshOptions defaults;
+  defaults.order = 0;
+  const auto layered = viscous_mesh_defaults(cone, ek, defaults);
+  ASSERT_GT(layered.wall_layer, 0) << "the cone should get wall layers by default";
+  auto isotropic = layered;
+  isotropic.wall_layer = 0;
+  long n_layered = 0, n_isotropic = 0;
+  const auto R_layered = cavity_response(cone, layered, ek, sigma, &n_layered);
+  const auto R_isotropic = cavity_response(cone, isotropic, ek, sigma, &n_isotropic);
+  double worst = 0;
+  for (std::size_t i = 0; i < sigma.size(); ++i) {
+    const double d = std::abs(R_layered[i] - R_isotropic[i]) / std::abs(R_isotropic[i]);
+    std::printf("sigma %+.2f%+.2fi: R layered %.12f%+.12fi, isotropic %.12f%+.12fi, relative %.1e\n", sigma[i].real(),
+                sigma[i].imag(), R_layered[i].real(), R_layered[i].imag(), R_isotropic[i].real(),
+                R_isotropic[i].imag(), d);
+    worst = std::max(worst, d);
+  }
+  std::printf("real unknowns: layered %ld, isotropic %ld\n", n_layered, n_isotropic);
+  EXPECT_LE(worst, 2e-8);  // measured 3.5e-9 (the isotropic meshes 0.25 -> 0.125 differ by 2.1e-9)
+  EXPECT_LE(2 * n_layered, n_isotropic) << "the layers should need far fewer unknowns";
+}
