@@ -135,7 +135,29 @@ const rc::ModeTable& TableCache::get(const std::filesystem::path& file) {
   return it->second;
 }
 
+namespace {
+
+// What only the nonlinear model has: the linear system (26) needs axisymmetric bodies and constant spins.
+void require_linear_scene(const Scene& scene) {
+  for (std::size_t k = 0; k < scene.size(); ++k) {
+    const BodySpec& b = scene.bodies[k];
+    if (b.B && *b.B != b.A)
+      fail(scene, "body[" + std::to_string(k + 1) + "].B", "differs from A: the linearised chain (26) needs "
+           "axisymmetric bodies; only [run] model = \"nonlinear\" takes B != A");
+  }
+  for (std::size_t k = 0; k < scene.joints.size(); ++k)
+    if (scene.joints[k].axial_friction > 0)
+      fail(scene, "joint[" + std::to_string(k + 1) + "].axial_friction", "changes the spins, which the linearised "
+           "chain (26) holds constant; only [run] model = \"nonlinear\" takes it");
+  if (scene.support_axial_friction > 0)
+    fail(scene, "support.axial_friction", "changes the spins, which the linearised chain (26) holds constant; only "
+         "[run] model = \"nonlinear\" takes it");
+}
+
+}  // namespace
+
 ChainModel build_model(const Scene& scene, TableCache* tables) {
+  require_linear_scene(scene);
   ChainModel cm;
   const int n = static_cast<int>(scene.size());
   cm.n = n;

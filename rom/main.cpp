@@ -4,6 +4,7 @@
 #include "chain_model.hpp"
 #include "empty_argument.hpp"
 #include "companion_check.hpp"
+#include "nonlinear_run.hpp"
 #include "output.hpp"
 #include "propagation.hpp"
 #include "scene.hpp"
@@ -45,6 +46,24 @@ int run_program(const std::vector<std::string>& args, bool quiet = false) {
   int status = 0;
   if (waitpid(pid, &status, 0) < 0) return -1;
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
+}
+
+// `run` with [run] model = "nonlinear" (docs/rom.md, "Nonlinear chain").
+int run_nonlinear(const rc::rom::Scene& scene, const std::string& out_file) {
+  const rc::rom::NonlinearChain chain = rc::rom::nonlinear_chain(scene);
+  const rc::rom::NonlinearHistory h =
+      rc::rom::integrate_nonlinear(chain, rc::rom::nonlinear_initial_state(scene), scene.run);
+  rc::rom::write_nonlinear_history(h, chain.size(), out_file);
+  std::cout << "wrote " << out_file << ": " << h.base.t.size() << " samples, model nonlinear (RKMK4, tolerance "
+            << scene.run.tolerance << ", " << h.base.integrator_steps << " steps, " << h.rejected_steps
+            << " rejected), " << h.base.wall_seconds << " s\n";
+  const bool damped = std::any_of(chain.joints.begin(), chain.joints.end(),
+                                  [](const rc::rom::ChainJoint& j) { return j.friction > 0 || j.axial_friction > 0; });
+  std::cout << "energy: H(0) = " << h.base.H.front() << ", H(end) = " << h.base.H.back() << ", "
+            << (damped ? "largest relative increase per sample " : "largest relative drift ") << h.base.max_energy_drift
+            << "; angular momentum " << (chain.free_chain ? "(vector)" : "(about the vertical through O_1)")
+            << ": largest relative drift " << h.max_momentum_drift << "\n";
+  return 0;
 }
 
 // The Python that draws sweep maps: Debian's (python3-matplotlib), or $CHAIN_ROM_PYTHON.
@@ -210,6 +229,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     const rc::rom::Scene scene = rc::rom::parse_scene(scene_file);
+    if (!spec->parsed() && scene.run.present && scene.run.nonlinear()) return run_nonlinear(scene, out_file);
     const rc::rom::ChainModel model = rc::rom::build_model(scene);
     if (spec->parsed()) {
       rc::rom::Spectrum sp = rc::rom::compute_spectrum(model);

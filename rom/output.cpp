@@ -113,22 +113,87 @@ void write_h5(const ChainModel& m, const History& h, const fs::path& tmp) {
   if (!m.viscous) write_dataset(file.id, "energy", h.H, N, 0);
 }
 
-}  // namespace
-
-void write_history(const ChainModel& m, const History& h, const fs::path& out) {
+// Writes through `write` to a temporary name beside `out`, then renames it into place (never a partial file).
+template <class Writer>
+void write_atomically(const fs::path& out, Writer write) {
   if (out.has_parent_path() && !fs::is_directory(out.parent_path()))
     throw std::runtime_error(out.string() + ": the output folder does not exist");
   fs::path tmp = out;
   tmp += ".tmp-" + std::to_string(::getpid());
   try {
-    if (lower_ext(out) == ".csv") write_csv(m, h, tmp);
-    else write_h5(m, h, tmp);
+    write(tmp);
     fs::rename(tmp, out);
   } catch (...) {
     std::error_code ec;
     fs::remove(tmp, ec);
     throw;
   }
+}
+
+void write_nonlinear_csv(const NonlinearHistory& nh, int n, const fs::path& tmp) {
+  const History& h = nh.base;
+  std::ofstream os(tmp);
+  if (!os) throw std::runtime_error(tmp.string() + ": cannot create");
+  os << std::setprecision(17) << "t";
+  for (int k = 1; k <= n; ++k) os << ",u" << k << "_re,u" << k << "_im";
+  for (int k = 1; k <= n; ++k) os << ",spin" << k;
+  for (int k = 1; k <= n; ++k) os << ",q" << k << "_w,q" << k << "_x,q" << k << "_y,q" << k << "_z";
+  os << ",energy\n";
+  for (std::size_t j = 0; j < h.t.size(); ++j) {
+    os << h.t[j];
+    for (int k = 0; k < n; ++k) os << ',' << h.u(j, k).real() << ',' << h.u(j, k).imag();
+    for (int k = 0; k < n; ++k) os << ',' << nh.spins[j * n + k];
+    for (int c = 0; c < 4 * n; ++c) os << ',' << nh.quaternions[j * 4 * n + c];
+    os << ',' << h.H[j] << '\n';
+  }
+  os.close();
+  if (!os) throw std::runtime_error(tmp.string() + ": write failed");
+}
+
+void write_nonlinear_h5(const NonlinearHistory& nh, int n, const fs::path& tmp) {
+  const History& h = nh.base;
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  H5 file{H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose};
+  if (file.id < 0) throw std::runtime_error(tmp.string() + ": cannot create");
+  const hsize_t N = h.t.size();
+  write_attr(file.id, "format", "chain-rom-history");
+  write_attr(file.id, "model", "nonlinear");
+  write_attr(file.id, "method", h.method_used);
+  write_attr(file.id, "convention",
+             "u_k = n_x - i n_y of body k's axis n_k = R_k e3 (= beta_k - i alpha_k, Krylov angles, to third order); "
+             "quaternion (w, x, y, z) of R_k, body -> space; spin = Omega_k . n_k; energy, angular_momentum about "
+             "O_1's start: docs/rom.md, \"Nonlinear chain\"");
+  write_attr(file.id, "max_energy_drift", h.max_energy_drift);
+  write_attr(file.id, "max_momentum_drift", nh.max_momentum_drift);
+  write_attr(file.id, "steps", double(h.integrator_steps));
+  write_attr(file.id, "rejected_steps", double(nh.rejected_steps));
+  write_attr(file.id, "wall_seconds", h.wall_seconds);
+  write_dataset(file.id, "t", h.t, N, 0);
+  std::vector<double> re(N * n), im(N * n);
+  for (hsize_t j = 0; j < N; ++j)
+    for (int k = 0; k < n; ++k) { re[j * n + k] = h.u(j, k).real(); im[j * n + k] = h.u(j, k).imag(); }
+  write_dataset(file.id, "u_re", re, N, n);
+  write_dataset(file.id, "u_im", im, N, n);
+  write_dataset(file.id, "quaternion", nh.quaternions, N, 4 * n);
+  write_dataset(file.id, "spin", nh.spins, N, n);
+  write_dataset(file.id, "angular_momentum", nh.momentum, N, 3);
+  write_dataset(file.id, "energy", h.H, N, 0);
+}
+
+}  // namespace
+
+void write_history(const ChainModel& m, const History& h, const fs::path& out) {
+  write_atomically(out, [&](const fs::path& tmp) {
+    if (lower_ext(out) == ".csv") write_csv(m, h, tmp);
+    else write_h5(m, h, tmp);
+  });
+}
+
+void write_nonlinear_history(const NonlinearHistory& h, int n, const fs::path& out) {
+  write_atomically(out, [&](const fs::path& tmp) {
+    if (lower_ext(out) == ".csv") write_nonlinear_csv(h, n, tmp);
+    else write_nonlinear_h5(h, n, tmp);
+  });
 }
 
 std::string spectrum_json(const Spectrum& sp) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "chain_model.hpp"
+#include "nonlinear_run.hpp"
 #include "propagation.hpp"
 #include "spectrum.hpp"
 
@@ -15,6 +16,9 @@ namespace rc::rom {
 
 // HDF5 unless the name ends in .csv. Layout in docs/rom.md ("output").
 void write_history(const ChainModel& m, const History& h, const std::filesystem::path& out);
+// The nonlinear model's history of n bodies: the same layout plus quaternion (4n per sample), spin (n) and
+// angular_momentum (3); attribute model = "nonlinear". docs/rom.md, "Nonlinear chain".
+void write_nonlinear_history(const NonlinearHistory& h, int n, const std::filesystem::path& out);
 
 // docs/physics.md §4: {"roots": [[re, im], ...], "stable": bool, "margin": float, "det_residual": float}
 std::string spectrum_json(const Spectrum& sp);

@@ -3,7 +3,6 @@
 #include <cmath>
 
 namespace rc::rom {
-namespace {
 
 // The attitude rotated in the body frame by the rotation vector θ: q ⊗ exp(θ/2).
 Eigen::Quaterniond rotated(const Eigen::Quaterniond& q, const Eigen::Vector3d& theta) {
@@ -17,8 +16,6 @@ Eigen::Quaterniond rotated(const Eigen::Quaterniond& q, const Eigen::Vector3d& t
 Eigen::Vector3d dexpinv(const Eigen::Vector3d& theta, const Eigen::Vector3d& omega) {
   return omega + 0.5 * theta.cross(omega) + theta.cross(theta.cross(omega)) / 12.0;
 }
-
-}  // namespace
 
 Eigen::Vector3d angular_acceleration(const RigidBody& b, const RigidState& s) {
   const Eigen::Vector3d I_omega = b.inertia.cwiseProduct(s.omega);

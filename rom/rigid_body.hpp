@@ -41,4 +41,10 @@ Eigen::Vector3d angular_momentum(const RigidBody& body, const RigidState& state)
 // One RKMK4 step of length h.
 RigidState rkmk4_step(const RigidBody& body, const RigidState& state, double h);
 
+// The two pieces of RKMK4 on the rotation group that the chain's integrator shares (nonlinear_chain.cpp):
+// the attitude turned in the body frame by the rotation vector θ, q ⊗ exp(θ/2), renormalised;
+Eigen::Quaterniond rotated(const Eigen::Quaterniond& q, const Eigen::Vector3d& theta);
+// and dexp⁻¹ to the order RKMK4 needs for that (right) form: θ̇ = ω + ½ θ × ω + (1/12) θ × (θ × ω).
+Eigen::Vector3d dexpinv(const Eigen::Vector3d& theta, const Eigen::Vector3d& omega);
+
 }  // namespace rc::rom

@@ -163,10 +163,11 @@ Scene parse_scene_text(const std::string& text, const std::filesystem::path& bas
   for (std::size_t k = 0; k < n; ++k) {
     const toml::table& bt = *(*barr)[k].as_table();
     std::string w = "body[" + std::to_string(k + 1) + "]";
-    check_keys(c, bt, w, {"mass", "A", "C", "com", "next_joint", "spin", "cavity"});
+    check_keys(c, bt, w, {"mass", "A", "B", "C", "com", "next_joint", "spin", "cavity"});
     BodySpec b;
     b.mass = *get_number(c, bt, "mass", w + ".mass", Sign::nonneg, true);
     b.A = *get_number(c, bt, "A", w + ".A", Sign::nonneg, true);
+    b.B = get_number(c, bt, "B", w + ".B", Sign::nonneg, false);
     b.C = *get_number(c, bt, "C", w + ".C", Sign::nonneg, true);
     b.com = *get_number(c, bt, "com", w + ".com", Sign::any, true);
     auto nj = get_number(c, bt, "next_joint", w + ".next_joint", Sign::any, k + 1 < n);
@@ -183,10 +184,11 @@ Scene parse_scene_text(const std::string& text, const std::filesystem::path& bas
     for (std::size_t k = 0; k < jarr->size(); ++k) {
       const toml::table& jt = *(*jarr)[k].as_table();
       std::string w = "joint[" + std::to_string(k + 1) + "]";
-      check_keys(c, jt, w, {"stiffness", "friction"});
+      check_keys(c, jt, w, {"stiffness", "friction", "axial_friction"});
       JointSpec j;
       j.stiffness = get_number(c, jt, "stiffness", w + ".stiffness", Sign::nonneg, false).value_or(0.0);
       j.friction = get_number(c, jt, "friction", w + ".friction", Sign::nonneg, false).value_or(0.0);
+      j.axial_friction = get_number(c, jt, "axial_friction", w + ".axial_friction", Sign::nonneg, false).value_or(0.0);
       s.joints.push_back(j);
     }
   }
@@ -196,11 +198,15 @@ Scene parse_scene_text(const std::string& text, const std::filesystem::path& bas
                         std::to_string(s.joints.size()));
 
   if (const toml::table* sup = sub_table(c, root, "support", "support")) {
-    check_keys(c, *sup, "support", {"friction"});
+    check_keys(c, *sup, "support", {"friction", "axial_friction"});
     s.support_friction =
         get_number(c, *sup, "friction", "support.friction", Sign::nonneg, false).value_or(0.0);
+    s.support_axial_friction =
+        get_number(c, *sup, "axial_friction", "support.axial_friction", Sign::nonneg, false).value_or(0.0);
     if (s.free_chain && s.support_friction != 0)
       c.fail("support.friction", "a free chain has no support (must be 0 or absent)");
+    if (s.free_chain && s.support_axial_friction != 0)
+      c.fail("support.axial_friction", "a free chain has no support (must be 0 or absent)");
   }
 
   s.tilt.assign(n, 0.0);
@@ -212,7 +218,15 @@ Scene parse_scene_text(const std::string& text, const std::filesystem::path& bas
   }
 
   if (const toml::table* run = sub_table(c, root, "run", "run")) {
-    check_keys(c, *run, "run", {"t_end", "output_step", "method", "tolerance"});
+    check_keys(c, *run, "run", {"t_end", "output_step", "method", "tolerance", "model"});
+    if (const toml::node* m = run->get("model")) {
+      if (!m->is_string()) c.fail("run.model", "must be \"linear\" or \"nonlinear\"");
+      s.run.model = m->as_string()->get();
+      if (s.run.model != "linear" && s.run.model != "nonlinear")
+        c.fail("run.model", "must be \"linear\" or \"nonlinear\" (got \"" + s.run.model + "\")");
+      if (s.run.nonlinear() && run->get("method"))
+        c.fail("run.method", "applies to the linear model only (the nonlinear one has its own integrator)");
+    }
     s.run.present = true;
     s.run.t_end = *get_number(c, *run, "t_end", "run.t_end", Sign::pos, true);
     s.run.output_step = *get_number(c, *run, "output_step", "run.output_step", Sign::pos, true);

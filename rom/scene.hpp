@@ -34,6 +34,7 @@ struct CavitySpec {
 struct BodySpec {
   double mass = 0;        // shell mass
   double A = 0;           // shell transverse inertia about O_k
+  std::optional<double> B;  // the second transverse moment about O_k (nonlinear model only; default A)
   double C = 0;           // shell axial inertia
   double com = 0;         // O_k -> shell centre of mass
   double next_joint = 0;  // s_k
@@ -44,6 +45,7 @@ struct BodySpec {
 struct JointSpec {
   double stiffness = 0;  // kappa_k^2
   double friction = 0;   // alpha_{k+1}
+  double axial_friction = 0;  // on the relative spin of bodies k, k+1 (nonlinear model only)
 };
 
 struct RunSpec {
@@ -52,6 +54,8 @@ struct RunSpec {
   double output_step = 0;
   std::string method = "exact";  // exact | gauss | rk45
   double tolerance = 1e-10;
+  std::string model = "linear";  // linear (system (26)) | nonlinear (rom/nonlinear_chain.hpp)
+  bool nonlinear() const { return model == "nonlinear"; }
 };
 
 struct Scene {
@@ -61,6 +65,7 @@ struct Scene {
   std::vector<BodySpec> bodies;
   std::vector<JointSpec> joints;  // n - 1
   double support_friction = 0;    // alpha_1
+  double support_axial_friction = 0;  // on body 1's spin (nonlinear model only)
   std::vector<std::complex<double>> tilt, rate;  // u_k(0), du_k/dt(0); zeros when absent
   RunSpec run;
   std::size_t size() const { return bodies.size(); }

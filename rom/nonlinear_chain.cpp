@@ -1,0 +1,207 @@
+#include "nonlinear_chain.hpp"
+
+#include "rigid_body.hpp"
+
+#include <stdexcept>
+
+namespace rc::rom {
+namespace {
+
+using Eigen::Matrix3d;
+using Eigen::Vector3d;
+
+Matrix3d skew(const Vector3d& v) {
+  Matrix3d m;
+  m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+  return m;
+}
+
+// Kinematics of one configuration, in space: axes, centres of mass and next joints relative to O_k, Ω, J.
+struct Frames {
+  std::vector<Matrix3d> R, J;
+  std::vector<Vector3d> n, rho, S, Omega;
+};
+
+Frames frames(const NonlinearChain& c, const ChainState& s) {
+  Frames f;
+  for (int k = 0; k < c.size(); ++k) {
+    const ChainBody& b = c.bodies[k];
+    const Matrix3d R = s.q[k].toRotationMatrix();
+    f.R.push_back(R);
+    f.J.push_back(R * Vector3d(b.A, b.B, b.C).asDiagonal() * R.transpose());
+    f.n.push_back(R.col(2));
+    f.rho.push_back(b.com * R.col(2));
+    f.S.push_back(b.next_joint * R.col(2));
+    f.Omega.push_back(R * s.omega[k]);
+  }
+  return f;
+}
+
+// Joint torques on every body (space frame): elastic bending, friction on the swing rates and on the spins.
+// Each joint acts on its two bodies with opposite moments (the support takes the first one's reaction).
+std::vector<Vector3d> joint_torques(const NonlinearChain& c, const Frames& f) {
+  const int n = c.size();
+  std::vector<Vector3d> tau(n, Vector3d::Zero());
+  for (int k = 0; k < n; ++k) {
+    const ChainJoint& j = c.joints[k];
+    const Vector3d n_prev = k > 0 ? f.n[k - 1] : Vector3d::UnitZ();
+    const Vector3d w = f.n[k].cross(f.Omega[k]).cross(f.n[k]);  // n × ṅ = the transverse part of Ω
+    const Vector3d w_prev = k > 0 ? Vector3d(f.n[k - 1].cross(f.Omega[k - 1]).cross(f.n[k - 1])) : Vector3d::Zero();
+    const double spin = f.Omega[k].dot(f.n[k]), spin_prev = k > 0 ? f.Omega[k - 1].dot(f.n[k - 1]) : 0.0;
+    Vector3d t = j.stiffness * f.n[k].cross(n_prev)  // V = κ² (1 − n_{k−1}·n_k): turns n_k towards n_{k−1}
+                 - j.friction * (w - w_prev);
+    if (j.axial_friction > 0) t -= j.axial_friction * (spin - spin_prev) * (f.n[k] + n_prev).normalized();
+    tau[k] += t;
+    if (k > 0) tau[k - 1] -= t;
+  }
+  return tau;
+}
+
+}  // namespace
+
+std::vector<Vector3d> chain_axes(const ChainState& s) {
+  std::vector<Vector3d> n;
+  for (const auto& q : s.q) n.push_back(q * Vector3d::UnitZ());
+  return n;
+}
+
+ChainRates chain_rates(const NonlinearChain& c, const ChainState& s) {
+  const int n = c.size(), dim = 3 * n + (c.free_chain ? 3 : 0);
+  const Frames f = frames(c, s);
+  const Vector3d g(0, 0, -c.gravity);
+  std::vector<double> mu(n + 1, 0.0);  // mu[k] = Σ_{j>k} m_j
+  for (int k = n - 1; k >= 0; --k) mu[k] = mu[k + 1] + c.bodies[k].mass;
+  // Centripetal parts: b[k] = Σ_{i<k} Ω_i × (Ω_i × S_i) of r̈_k, d[k] = b[k] + Ω_k × (Ω_k × ρ_k) of ẍ_k.
+  std::vector<Vector3d> b(n, Vector3d::Zero()), d(n);
+  for (int k = 1; k < n; ++k) b[k] = b[k - 1] + f.Omega[k - 1].cross(f.Omega[k - 1].cross(f.S[k - 1]));
+  for (int k = 0; k < n; ++k) d[k] = b[k] + f.Omega[k].cross(f.Omega[k].cross(f.rho[k]));
+  const std::vector<Vector3d> tau = joint_torques(c, f);
+
+  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(dim, dim);
+  Eigen::VectorXd rhs(dim);
+  for (int k = 0; k < n; ++k) {
+    const double m = c.bodies[k].mass, above = mu[k + 1];
+    const Vector3d lever = m * f.rho[k] + above * f.S[k];  // m_k ρ_k + Σ_{j>k} m_j S_k
+    for (int i = 0; i < n; ++i) {
+      Matrix3d block;
+      if (i < k) block = -skew(lever) * skew(f.S[i]);
+      else if (i == k) block = f.J[k] - above * skew(f.S[k]) * skew(f.S[k]);
+      else block = -skew(f.S[k]) * skew(mu[i + 1] * f.S[i] + c.bodies[i].mass * f.rho[i]);
+      M.block<3, 3>(3 * k, 3 * i) = block;
+    }
+    Vector3d r = lever.cross(g) + tau[k] - f.Omega[k].cross(f.J[k] * f.Omega[k]) - m * f.rho[k].cross(b[k]);
+    for (int j = k + 1; j < n; ++j) r -= c.bodies[j].mass * f.S[k].cross(d[j]);
+    rhs.segment<3>(3 * k) = r;
+    if (c.free_chain) {
+      M.block<3, 3>(3 * k, 3 * n) = skew(lever);
+      M.block<3, 3>(3 * n, 3 * k) = -skew(lever);
+    }
+  }
+  if (c.free_chain) {
+    M.block<3, 3>(3 * n, 3 * n) = mu[0] * Matrix3d::Identity();
+    Vector3d r = mu[0] * g;
+    for (int j = 0; j < n; ++j) r -= c.bodies[j].mass * d[j];
+    rhs.segment<3>(3 * n) = r;
+  }
+  const Eigen::LDLT<Eigen::MatrixXd> ldlt(M);
+  if (ldlt.info() != Eigen::Success || !ldlt.isPositive() || ldlt.vectorD().minCoeff() <= 0)
+    throw std::runtime_error("nonlinear chain: the mass matrix is singular (a body without inertia?)");
+  const Eigen::VectorXd x = ldlt.solve(rhs);
+  ChainRates out;
+  for (int k = 0; k < n; ++k) out.omega_dot.push_back(f.R[k].transpose() * x.segment<3>(3 * k));
+  if (c.free_chain) out.a1 = x.segment<3>(3 * n);
+  return out;
+}
+
+// Positions and velocities of every centre of mass, from O_1 up the chain.
+namespace {
+void centres(const NonlinearChain& c, const ChainState& s, const Frames& f, std::vector<Vector3d>& x,
+             std::vector<Vector3d>& v) {
+  Vector3d r = s.r1, rdot = s.v1;
+  for (int k = 0; k < c.size(); ++k) {
+    x.push_back(r + f.rho[k]);
+    v.push_back(rdot + f.Omega[k].cross(f.rho[k]));
+    r += f.S[k];
+    rdot += f.Omega[k].cross(f.S[k]);
+  }
+}
+}  // namespace
+
+double chain_energy(const NonlinearChain& c, const ChainState& s) {
+  const Frames f = frames(c, s);
+  std::vector<Vector3d> x, v;
+  centres(c, s, f, x, v);
+  double E = 0;
+  for (int k = 0; k < c.size(); ++k) {
+    const double m = c.bodies[k].mass;
+    // About O_k: J_k holds m_k ρ_k²; the kinetic energy is ½ m |v_O|² + m v_O·(Ω × ρ) + ½ Ωᵀ J Ω.
+    const Vector3d vO = v[k] - f.Omega[k].cross(f.rho[k]);
+    E += 0.5 * m * vO.squaredNorm() + m * vO.dot(f.Omega[k].cross(f.rho[k])) + 0.5 * f.Omega[k].dot(f.J[k] * f.Omega[k]);
+    E += m * c.gravity * x[k].z();
+    const Vector3d n_prev = k > 0 ? f.n[k - 1] : Vector3d::UnitZ();
+    E += c.joints[k].stiffness * (1 - f.n[k].dot(n_prev));
+  }
+  return E;
+}
+
+Vector3d chain_angular_momentum(const NonlinearChain& c, const ChainState& s) {
+  const Frames f = frames(c, s);
+  std::vector<Vector3d> x, v;
+  centres(c, s, f, x, v);
+  Vector3d L = Vector3d::Zero();
+  for (int k = 0; k < c.size(); ++k) {
+    const double m = c.bodies[k].mass;
+    // J about the centre of mass = J about O_k − m (ρ² I − ρ ρᵀ).
+    const Matrix3d Jc = f.J[k] + m * skew(f.rho[k]) * skew(f.rho[k]);
+    L += Jc * f.Omega[k] + m * x[k].cross(v[k]);
+  }
+  return L;
+}
+
+ChainState chain_step(const NonlinearChain& c, const ChainState& s, double h) {
+  const int n = c.size();
+  using Vs = std::vector<Vector3d>;
+  // One stage at rotation vectors θ and angular velocities ω: returns θ̇ (dexp⁻¹) and the rates.
+  struct Stage {
+    Vs dtheta, domega;
+    Vector3d dr, dv;
+  };
+  const auto stage = [&](const Vs& theta, const Vs& omega, const Vector3d& r1, const Vector3d& v1) {
+    ChainState x;
+    x.r1 = r1;
+    x.v1 = v1;
+    x.omega = omega;
+    Stage st;
+    for (int k = 0; k < n; ++k) {
+      x.q.push_back(rotated(s.q[k], theta[k]));
+      st.dtheta.push_back(dexpinv(theta[k], omega[k]));
+    }
+    const ChainRates r = chain_rates(c, x);
+    st.domega = r.omega_dot;
+    st.dr = v1;
+    st.dv = r.a1;
+    return st;
+  };
+  const auto add = [&](const Vs& a, const Vs& b, double w) {
+    Vs out(a);
+    for (int k = 0; k < n; ++k) out[k] += w * b[k];
+    return out;
+  };
+  const Vs zero(n, Vector3d::Zero());
+  const Stage k1 = stage(zero, s.omega, s.r1, s.v1);
+  const Stage k2 = stage(add(zero, k1.dtheta, h / 2), add(s.omega, k1.domega, h / 2), s.r1 + h / 2 * k1.dr,
+                         s.v1 + h / 2 * k1.dv);
+  const Stage k3 = stage(add(zero, k2.dtheta, h / 2), add(s.omega, k2.domega, h / 2), s.r1 + h / 2 * k2.dr,
+                         s.v1 + h / 2 * k2.dv);
+  const Stage k4 = stage(add(zero, k3.dtheta, h), add(s.omega, k3.domega, h), s.r1 + h * k3.dr, s.v1 + h * k3.dv);
+  ChainState next;
+  for (int k = 0; k < n; ++k) {
+    next.q.push_back(rotated(s.q[k], h / 6 * (k1.dtheta[k] + 2 * k2.dtheta[k] + 2 * k3.dtheta[k] + k4.dtheta[k])));
+    next.omega.push_back(s.omega[k] + h / 6 * (k1.domega[k] + 2 * k2.domega[k] + 2 * k3.domega[k] + k4.domega[k]));
+  }
+  next.r1 = s.r1 + h / 6 * (k1.dr + 2 * k2.dr + 2 * k3.dr + k4.dr);
+  next.v1 = s.v1 + h / 6 * (k1.dv + 2 * k2.dv + 2 * k3.dv + k4.dv);
+  return next;
+}
+
+}  // namespace rc::rom

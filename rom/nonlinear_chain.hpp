@@ -1,0 +1,70 @@
+// The nonlinear chain of rigid bodies (Kononov (1999) (1)-(5), without fluid): n bodies joined by spherical
+// joints, body k turning about its joint O_k, O_1 fixed (fixed chain) or free (free chain); gravity, elastic
+// joints, joint friction about the swing and about the axis; every body's spin is a state and may change.
+// docs/rom.md, "Nonlinear chain", derives what follows and says what is kept.
+//
+// Newton–Euler for body k about its joint O_k (space frame), with the reaction at O_{k+1} eliminated through the
+// bodies above it, F_{k+1} = Σ_{j>k} m_j (ẍ_j − g):
+//   J_k Ω̇_k + Ω_k × J_k Ω_k + m_k ρ_k × r̈_k + S_k × Σ_{j>k} m_j (ẍ_j − g) = m_k ρ_k × g + τ_k,
+//   r̈_k = r̈_1 + Σ_{i<k} (Ω̇_i × S_i + Ω_i × (Ω_i × S_i)),   ẍ_j = r̈_j + Ω̇_j × ρ_j + Ω_j × (Ω_j × ρ_j),
+// with J_k = R_k diag(A_k, B_k, C_k) R_kᵀ about O_k, ρ_k = R_k (0, 0, c_k) the centre of mass, S_k = R_k (0, 0, s_k)
+// the next joint and τ_k the joint torques. r̈_1 = 0 for the fixed chain; for the free chain r̈_1 is a further
+// unknown with the total force Σ_j m_j (ẍ_j − g) = 0. Linear in the Ω̇ (and r̈_1): a symmetric positive definite
+// system of 3n (3n + 3) equations, solved at every stage. Its small-angle limit is (26)'s M_ki (a_k s_i, A'_k).
+#pragma once
+
+#include <Eigen/Dense>
+#include <Eigen/Geometry>
+
+#include <vector>
+
+namespace rc::rom {
+
+struct ChainBody {
+  double mass = 0;               // with the frozen fluid (kg)
+  double A = 0, B = 0, C = 0;    // principal moments about O_k (kg m²), body axes e1, e2 and the symmetry axis e3
+  double com = 0;                // O_k → centre of mass along e3 (m)
+  double next_joint = 0;         // O_k → O_{k+1} along e3 (m)
+};
+
+struct ChainJoint {              // joint k: O_k, between body k − 1 (the support for k = 1) and body k
+  double stiffness = 0;          // κ²: bending moment κ² n_k × n_{k−1} on body k, V = κ²(1 − n_{k−1}·n_k); 0 at the support
+  double friction = 0;           // α: moment −α (w_k − w_{k−1}) on the swing rates w = n × ṅ (N m s)
+  double axial_friction = 0;     // moment −α_ax (s_k − s_{k−1}) along the joint's mean axis, s = Ω·n the spins
+};
+
+struct NonlinearChain {
+  bool free_chain = false;
+  double gravity = 0;                 // along −e3 of space (m/s²)
+  std::vector<ChainBody> bodies;
+  std::vector<ChainJoint> joints;     // n: joints[0] is the support (stiffness 0), joints[k] links bodies k−1 and k
+  int size() const { return static_cast<int>(bodies.size()); }
+};
+
+struct ChainState {
+  std::vector<Eigen::Quaterniond> q;  // attitude of each body: body → space
+  std::vector<Eigen::Vector3d> omega; // angular velocity of each body in its own frame (rad/s)
+  Eigen::Vector3d r1 = Eigen::Vector3d::Zero(), v1 = Eigen::Vector3d::Zero();  // O_1 and its velocity (free chain)
+};
+
+struct ChainRates {
+  std::vector<Eigen::Vector3d> omega_dot;  // body frames
+  Eigen::Vector3d a1 = Eigen::Vector3d::Zero();
+};
+
+// The accelerations of the equations above. Throws std::runtime_error if the mass matrix is singular (a body
+// without inertia).
+ChainRates chain_rates(const NonlinearChain& chain, const ChainState& state);
+
+// Kinetic + gravitational + elastic energy (J), and the total angular momentum (kg m²/s) about the space origin
+// (where O_1 starts; for the fixed chain O_1 itself).
+double chain_energy(const NonlinearChain& chain, const ChainState& state);
+Eigen::Vector3d chain_angular_momentum(const NonlinearChain& chain, const ChainState& state);
+
+// Symmetry axis n_k = R_k e3 of every body in space.
+std::vector<Eigen::Vector3d> chain_axes(const ChainState& state);
+
+// One RKMK4 step (rigid_body.hpp's Lie-group Runge–Kutta, one rotation vector per body; O_1 by classical RK4).
+ChainState chain_step(const NonlinearChain& chain, const ChainState& state, double h);
+
+}  // namespace rc::rom

@@ -1,0 +1,163 @@
+#include "nonlinear_run.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <stdexcept>
+#include <string>
+
+namespace rc::rom {
+namespace {
+
+using Eigen::Vector3d;
+
+[[noreturn]] void fail(const Scene& s, const std::string& key, const std::string& cause) {
+  throw SceneError(s.file.string() + ": " + key + ": " + cause);
+}
+
+// The local error of a step: the attitudes' angle (rad) and the rates relative to max(1 rad/s, the largest |ω|).
+double step_error(const ChainState& a, const ChainState& b) {
+  double rate_scale = 1;
+  for (const auto& w : b.omega) rate_scale = std::max(rate_scale, w.norm());
+  double err = 0;
+  for (std::size_t k = 0; k < a.q.size(); ++k) {
+    err = std::max(err, a.q[k].angularDistance(b.q[k]));
+    err = std::max(err, (a.omega[k] - b.omega[k]).norm() / rate_scale);
+  }
+  return err;
+}
+
+bool finite(const ChainState& s) {
+  for (std::size_t k = 0; k < s.q.size(); ++k)
+    if (!s.q[k].coeffs().allFinite() || !s.omega[k].allFinite()) return false;
+  return s.r1.allFinite() && s.v1.allFinite();
+}
+
+// Kinetic energy + |gravitational| + elastic at the start: the size the energy drift is measured against.
+double energy_scale(const NonlinearChain& c, const ChainState& s) {
+  NonlinearChain no_potential = c;
+  no_potential.gravity = 0;
+  for (auto& j : no_potential.joints) j.stiffness = 0;
+  const double kinetic = chain_energy(no_potential, s);
+  return kinetic + std::abs(chain_energy(c, s) - kinetic);
+}
+
+}  // namespace
+
+NonlinearChain nonlinear_chain(const Scene& scene) {
+  NonlinearChain c;
+  c.free_chain = scene.free_chain;
+  c.gravity = scene.free_chain ? 0.0 : scene.gravity;  // uniform gravity does not turn a free chain (docs/scene-format.md)
+  const std::size_t n = scene.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const BodySpec& b = scene.bodies[k];
+    if (b.cavity)
+      fail(scene, "body[" + std::to_string(k + 1) + "].cavity", "the nonlinear model takes no fluid yet (docs/rom.md, "
+           "\"Nonlinear chain\"); use [run] model = \"linear\", or leave the cavity out");
+    c.bodies.push_back({b.mass, b.A, b.B.value_or(b.A), b.C, b.com, k + 1 < n ? b.next_joint : 0.0});
+  }
+  c.joints.push_back({0.0, scene.support_friction, scene.support_axial_friction});
+  for (const JointSpec& j : scene.joints) c.joints.push_back({j.stiffness, j.friction, j.axial_friction});
+  return c;
+}
+
+ChainState nonlinear_initial_state(const Scene& scene) {
+  ChainState s;
+  for (std::size_t k = 0; k < scene.size(); ++k) {
+    const double beta = scene.tilt[k].real(), alpha = -scene.tilt[k].imag();
+    const double beta_dot = scene.rate[k].real(), alpha_dot = -scene.rate[k].imag();
+    const Eigen::AngleAxisd first(-alpha, Vector3d::UnitX());
+    const Eigen::Quaterniond q = Eigen::Quaterniond(first) * Eigen::Quaterniond(Eigen::AngleAxisd(beta, Vector3d::UnitY()));
+    const Vector3d n = q * Vector3d::UnitZ();
+    const Vector3d transverse = -alpha_dot * Vector3d::UnitX() + beta_dot * (first * Vector3d::UnitY());
+    // The spin is the axial component of Ω: add along n what makes Ω·n = ω_k0.
+    const Vector3d Omega = transverse + (scene.bodies[k].spin - transverse.dot(n)) * n;
+    s.q.push_back(q);
+    s.omega.push_back(q.conjugate() * Omega);
+  }
+  return s;
+}
+
+Eigen::VectorXcd nonlinear_tilts(const ChainState& state) {
+  Eigen::VectorXcd u(state.q.size());
+  for (std::size_t k = 0; k < state.q.size(); ++k) {
+    const Vector3d n = state.q[k] * Vector3d::UnitZ();
+    u[k] = {n.x(), -n.y()};
+  }
+  return u;
+}
+
+NonlinearHistory integrate_nonlinear(const NonlinearChain& chain, const ChainState& initial, const RunSpec& run) {
+  const auto wall0 = std::chrono::steady_clock::now();
+  const std::clock_t cpu0 = std::clock();
+  const int n = chain.size();
+  const long samples = std::lround(run.t_end / run.output_step) + 1;
+  NonlinearHistory out;
+  History& h = out.base;
+  h.method_used = "nonlinear-rkmk4";
+  h.u.resize(samples, n);
+  h.z.resize(samples, 0);
+  const double H0 = chain_energy(chain, initial), H_scale = energy_scale(chain, initial);
+  const Vector3d L0 = chain_angular_momentum(chain, initial);
+  const bool damped = std::any_of(chain.joints.begin(), chain.joints.end(),
+                                  [](const ChainJoint& j) { return j.friction > 0 || j.axial_friction > 0; });
+  double previous_H = H0;
+  const auto record = [&](long j, double t, const ChainState& s) {
+    h.t.push_back(t);
+    h.u.row(j) = nonlinear_tilts(s).transpose();
+    const double H = chain_energy(chain, s);
+    h.H.push_back(H);
+    h.H_scale.push_back(H_scale);
+    h.max_energy_drift = std::max(h.max_energy_drift, damped ? (H - previous_H) / H_scale : std::abs(H - H0) / H_scale);
+    previous_H = H;
+    const Vector3d L = chain_angular_momentum(chain, s);
+    // Conserved: the whole vector for the free chain, its vertical component about O_1 for the fixed one.
+    const double change = chain.free_chain ? (L - L0).norm() : std::abs(L.z() - L0.z());
+    if (L0.norm() > 0) out.max_momentum_drift = std::max(out.max_momentum_drift, change / L0.norm());
+    for (int k = 0; k < n; ++k) {
+      const auto& q = s.q[k];
+      out.quaternions.insert(out.quaternions.end(), {q.w(), q.x(), q.y(), q.z()});
+      out.spins.push_back((q * s.omega[k]).dot(q * Vector3d::UnitZ()));
+    }
+    out.momentum.insert(out.momentum.end(), {L.x(), L.y(), L.z()});
+  };
+
+  ChainState s = initial;
+  record(0, 0.0, s);
+  double rate = 1;
+  for (const auto& w : s.omega) rate = std::max(rate, w.norm());
+  double step = std::min(run.output_step, 0.05 / rate);
+  double t = 0;
+  for (long j = 1; j < samples; ++j) {
+    const double t_out = std::min(run.t_end, j * run.output_step);
+    while (t < t_out) {
+      const double hh = std::min(step, t_out - t);
+      const ChainState one = chain_step(chain, s, hh);
+      const ChainState two = chain_step(chain, chain_step(chain, s, hh / 2), hh / 2);
+      const double err = step_error(one, two);
+      if (++h.integrator_steps > kMaxIntegratorSteps)
+        throw std::runtime_error("nonlinear run: more than " + std::to_string(long(kMaxIntegratorSteps)) +
+                                 " steps for run.tolerance " + std::to_string(run.tolerance) +
+                                 "; raise the tolerance or shorten t_end");
+      if (!std::isfinite(err)) throw std::runtime_error("nonlinear run: the state is not finite at t = " + std::to_string(t));
+      const double factor = err > 0 ? 0.9 * std::pow(run.tolerance / err, 0.2) : 4.0;
+      if (err <= run.tolerance) {
+        s = two;
+        t += hh;
+        if (hh == step) step *= std::clamp(factor, 0.2, 4.0);  // a step cut short by the output grid says nothing
+      } else {
+        ++out.rejected_steps;
+        step = hh * std::clamp(factor, 0.1, 0.9);
+      }
+    }
+    t = t_out;
+    if (!finite(s)) throw std::runtime_error("nonlinear run: the state is not finite at t = " + std::to_string(t));
+    record(j, t, s);
+  }
+  h.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  h.cpu_seconds = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
+  return out;
+}
+
+}  // namespace rc::rom

@@ -1,0 +1,40 @@
+// `chain-rom run` with `[run] model = "nonlinear"` (docs/rom.md, "Nonlinear chain"): the scene's chain as
+// nonlinear_chain.hpp's rigid bodies, its initial state from the scene's Krylov angles, rates and spins, and the
+// RKMK4 integration with step-doubling error control, sampled at run.output_step.
+#pragma once
+
+#include "nonlinear_chain.hpp"
+#include "propagation.hpp"
+#include "scene.hpp"
+
+namespace rc::rom {
+
+// The chain of a scene: masses, moments (B defaults to A), joints. Cavities are refused (SceneError naming the key):
+// the fluid modes do not enter the nonlinear model yet.
+NonlinearChain nonlinear_chain(const Scene& scene);
+
+// Body k released with u_k = β_k − iα_k (Krylov angles): attitude R_x(−α_k) R_y(β_k), so that its axis is
+// n_k = (sin β, sin α cos β, cos α cos β) and u_k = n_x − i n_y to third order. That sign of α is the one of
+// Kononov's linearised equations (25): with it a spin ω_k0 about +n_k gives their gyroscopic terms
+// A′β̈ + Cω0 α̇ and A′α̈ − Cω0 β̇ (checked by the small-amplitude test). The rate u̇_k = β̇ − iα̇ gives the transverse
+// angular velocity −α̇ e_x + β̇ R_x(−α) e_y, and the spin ω_k0 is the axial component Ω_k·n_k.
+ChainState nonlinear_initial_state(const Scene& scene);
+
+// The tilt of every body as the linear model defines it, u_k = n_x − i n_y of its axis.
+Eigen::VectorXcd nonlinear_tilts(const ChainState& state);
+
+struct NonlinearHistory {
+  History base;                      // t, u (tilts), H (energy), drift, timing; z empty
+  std::vector<double> quaternions;   // per sample: (w, x, y, z) of every body, body → space
+  std::vector<double> spins;         // per sample: Ω_k·n_k of every body (rad/s)
+  std::vector<double> momentum;      // per sample: total angular momentum about O_1's start (3 components)
+  double max_momentum_drift = 0;     // max |L − L(0)| / |L(0)| (free chain), max |L_z − L_z(0)| / |L(0)| (fixed)
+  long rejected_steps = 0;
+};
+
+// Integrates to run.t_end. Error control: each step is taken once with h and twice with h/2; the difference (the
+// attitudes' angle in rad, the rates relative to max(1 rad/s, the largest |ω|)) must stay under run.tolerance, and
+// the two half steps are kept. Throws std::runtime_error past kMaxIntegratorSteps steps or on a non-finite state.
+NonlinearHistory integrate_nonlinear(const NonlinearChain& chain, const ChainState& initial, const RunSpec& run);
+
+}  // namespace rc::rom
