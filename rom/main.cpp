@@ -52,7 +52,7 @@ int run_program(const std::vector<std::string>& args, bool quiet = false) {
 int run_nonlinear(const rc::rom::Scene& scene, const std::string& out_file) {
   const rc::rom::NonlinearChain chain = rc::rom::nonlinear_chain(scene);
   const rc::rom::NonlinearHistory h =
-      rc::rom::integrate_nonlinear(chain, rc::rom::nonlinear_initial_state(scene), scene.run);
+      rc::rom::integrate_nonlinear(chain, rc::rom::nonlinear_initial_state(scene, chain), scene.run);
   rc::rom::write_nonlinear_history(h, chain.size(), out_file);
   std::cout << "wrote " << out_file << ": " << h.base.t.size() << " samples, model nonlinear (RKMK4, tolerance "
             << scene.run.tolerance << ", " << h.base.integrator_steps << " steps, " << h.rejected_steps

@@ -62,7 +62,7 @@ NonlinearChain nonlinear_chain(const Scene& scene) {
   return c;
 }
 
-ChainState nonlinear_initial_state(const Scene& scene) {
+ChainState nonlinear_initial_state(const Scene& scene, const NonlinearChain& chain) {
   ChainState s;
   for (std::size_t k = 0; k < scene.size(); ++k) {
     const double beta = scene.tilt[k].real(), alpha = -scene.tilt[k].imag();
@@ -75,6 +75,20 @@ ChainState nonlinear_initial_state(const Scene& scene) {
     const Vector3d Omega = transverse + (scene.bodies[k].spin - transverse.dot(n)) * n;
     s.q.push_back(q);
     s.omega.push_back(q.conjugate() * Omega);
+  }
+  if (chain.free_chain) {
+    // The whole chain's centre of mass at rest (as the linear free chain takes it, docs/free-chain.md): O_1 moves
+    // against the bodies' swing.
+    Vector3d momentum = Vector3d::Zero(), joint_velocity = Vector3d::Zero();
+    double mass = 0;
+    for (int k = 0; k < chain.size(); ++k) {
+      const ChainBody& b = chain.bodies[k];
+      const Vector3d n = s.q[k] * Vector3d::UnitZ(), Omega = s.q[k] * s.omega[k];
+      momentum += b.mass * (joint_velocity + Omega.cross(b.com * n));
+      mass += b.mass;
+      joint_velocity += Omega.cross(b.next_joint * n);
+    }
+    if (mass > 0) s.v1 = -momentum / mass;
   }
   return s;
 }

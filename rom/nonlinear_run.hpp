@@ -17,8 +17,9 @@ NonlinearChain nonlinear_chain(const Scene& scene);
 // n_k = (sin β, sin α cos β, cos α cos β) and u_k = n_x − i n_y to third order. That sign of α is the one of
 // Kononov's linearised equations (25): with it a spin ω_k0 about +n_k gives their gyroscopic terms
 // A′β̈ + Cω0 α̇ and A′α̈ − Cω0 β̇ (checked by the small-amplitude test). The rate u̇_k = β̇ − iα̇ gives the transverse
-// angular velocity −α̇ e_x + β̇ R_x(−α) e_y, and the spin ω_k0 is the axial component Ω_k·n_k.
-ChainState nonlinear_initial_state(const Scene& scene);
+// angular velocity −α̇ e_x + β̇ R_x(−α) e_y, and the spin ω_k0 is the axial component Ω_k·n_k. A free chain starts
+// with its centre of mass at rest.
+ChainState nonlinear_initial_state(const Scene& scene, const NonlinearChain& chain);
 
 // The tilt of every body as the linear model defines it, u_k = n_x − i n_y of its axis.
 Eigen::VectorXcd nonlinear_tilts(const ChainState& state);
