@@ -144,6 +144,9 @@ void require_linear_scene(const Scene& scene) {
     if (b.B && *b.B != b.A)
       fail(scene, "body[" + std::to_string(k + 1) + "].B", "differs from A: the linearised chain (26) needs "
            "axisymmetric bodies; only [run] model = \"nonlinear\" takes B != A");
+    if (b.moment)
+      fail(scene, "body[" + std::to_string(k + 1) + "].moment", "the linearised chain (26) has no external moments; "
+           "only [run] model = \"nonlinear\" takes them");
   }
   for (std::size_t k = 0; k < scene.joints.size(); ++k)
     if (scene.joints[k].axial_friction > 0)

@@ -57,6 +57,15 @@ std::vector<Vector3d> joint_torques(const NonlinearChain& c, const Frames& f) {
   return tau;
 }
 
+// The external moments at time t (space frame).
+void add_external_moments(const NonlinearChain& c, const Frames& f, double t, std::vector<Vector3d>& tau) {
+  constexpr double two_pi = 6.283185307179586;
+  for (int k = 0; k < c.size(); ++k) {
+    const ChainBody& b = c.bodies[k];
+    tau[k] += b.axial_moment * f.n[k] + b.space_moment + std::sin(two_pi * b.frequency * t) * b.harmonic_moment;
+  }
+}
+
 }  // namespace
 
 std::vector<Vector3d> chain_axes(const ChainState& s) {
@@ -75,7 +84,8 @@ ChainRates chain_rates(const NonlinearChain& c, const ChainState& s) {
   std::vector<Vector3d> b(n, Vector3d::Zero()), d(n);
   for (int k = 1; k < n; ++k) b[k] = b[k - 1] + f.Omega[k - 1].cross(f.Omega[k - 1].cross(f.S[k - 1]));
   for (int k = 0; k < n; ++k) d[k] = b[k] + f.Omega[k].cross(f.Omega[k].cross(f.rho[k]));
-  const std::vector<Vector3d> tau = joint_torques(c, f);
+  std::vector<Vector3d> tau = joint_torques(c, f);
+  add_external_moments(c, f, s.t, tau);
 
   Eigen::MatrixXd M = Eigen::MatrixXd::Zero(dim, dim);
   Eigen::VectorXd rhs(dim);
@@ -166,8 +176,9 @@ ChainState chain_step(const NonlinearChain& c, const ChainState& s, double h) {
     Vs dtheta, domega;
     Vector3d dr, dv;
   };
-  const auto stage = [&](const Vs& theta, const Vs& omega, const Vector3d& r1, const Vector3d& v1) {
+  const auto stage = [&](double t, const Vs& theta, const Vs& omega, const Vector3d& r1, const Vector3d& v1) {
     ChainState x;
+    x.t = t;
     x.r1 = r1;
     x.v1 = v1;
     x.omega = omega;
@@ -188,13 +199,14 @@ ChainState chain_step(const NonlinearChain& c, const ChainState& s, double h) {
     return out;
   };
   const Vs zero(n, Vector3d::Zero());
-  const Stage k1 = stage(zero, s.omega, s.r1, s.v1);
-  const Stage k2 = stage(add(zero, k1.dtheta, h / 2), add(s.omega, k1.domega, h / 2), s.r1 + h / 2 * k1.dr,
+  const Stage k1 = stage(s.t, zero, s.omega, s.r1, s.v1);
+  const Stage k2 = stage(s.t + h / 2, add(zero, k1.dtheta, h / 2), add(s.omega, k1.domega, h / 2), s.r1 + h / 2 * k1.dr,
                          s.v1 + h / 2 * k1.dv);
-  const Stage k3 = stage(add(zero, k2.dtheta, h / 2), add(s.omega, k2.domega, h / 2), s.r1 + h / 2 * k2.dr,
+  const Stage k3 = stage(s.t + h / 2, add(zero, k2.dtheta, h / 2), add(s.omega, k2.domega, h / 2), s.r1 + h / 2 * k2.dr,
                          s.v1 + h / 2 * k2.dv);
-  const Stage k4 = stage(add(zero, k3.dtheta, h), add(s.omega, k3.domega, h), s.r1 + h * k3.dr, s.v1 + h * k3.dv);
+  const Stage k4 = stage(s.t + h, add(zero, k3.dtheta, h), add(s.omega, k3.domega, h), s.r1 + h * k3.dr, s.v1 + h * k3.dv);
   ChainState next;
+  next.t = s.t + h;
   for (int k = 0; k < n; ++k) {
     next.q.push_back(rotated(s.q[k], h / 6 * (k1.dtheta[k] + 2 * k2.dtheta[k] + 2 * k3.dtheta[k] + k4.dtheta[k])));
     next.omega.push_back(s.omega[k] + h / 6 * (k1.domega[k] + 2 * k2.domega[k] + 2 * k3.domega[k] + k4.domega[k]));

@@ -8,7 +8,7 @@
 //   J_k Ω̇_k + Ω_k × J_k Ω_k + m_k ρ_k × r̈_k + S_k × Σ_{j>k} m_j (ẍ_j − g) = m_k ρ_k × g + τ_k,
 //   r̈_k = r̈_1 + Σ_{i<k} (Ω̇_i × S_i + Ω_i × (Ω_i × S_i)),   ẍ_j = r̈_j + Ω̇_j × ρ_j + Ω_j × (Ω_j × ρ_j),
 // with J_k = R_k diag(A_k, B_k, C_k) R_kᵀ about O_k, ρ_k = R_k (0, 0, c_k) the centre of mass, S_k = R_k (0, 0, s_k)
-// the next joint and τ_k the joint torques. r̈_1 = 0 for the fixed chain; for the free chain r̈_1 is a further
+// the next joint and τ_k the joint and external moments. r̈_1 = 0 for the fixed chain; for the free chain r̈_1 is a further
 // unknown with the total force Σ_j m_j (ẍ_j − g) = 0. Linear in the Ω̇ (and r̈_1): a symmetric positive definite
 // system of 3n (3n + 3) equations, solved at every stage. Its small-angle limit is (26)'s M_ki (a_k s_i, A'_k).
 #pragma once
@@ -25,6 +25,11 @@ struct ChainBody {
   double A = 0, B = 0, C = 0;    // principal moments about O_k (kg m²), body axes e1, e2 and the symmetry axis e3
   double com = 0;                // O_k → centre of mass along e3 (m)
   double next_joint = 0;         // O_k → O_{k+1} along e3 (m)
+  // External moment on the body (N m): `axial` about its own axis n_k, `space` fixed in space, and
+  // `harmonic` · sin(2π frequency t) in space (Kononov (1) with the moments M_k(t) of Batyr (1)-(3)).
+  double axial_moment = 0;
+  Eigen::Vector3d space_moment = Eigen::Vector3d::Zero(), harmonic_moment = Eigen::Vector3d::Zero();
+  double frequency = 0;          // Hz
 };
 
 struct ChainJoint {              // joint k: O_k, between body k − 1 (the support for k = 1) and body k
@@ -42,6 +47,7 @@ struct NonlinearChain {
 };
 
 struct ChainState {
+  double t = 0;                       // time (s): the external moments depend on it
   std::vector<Eigen::Quaterniond> q;  // attitude of each body: body → space
   std::vector<Eigen::Vector3d> omega; // angular velocity of each body in its own frame (rad/s)
   Eigen::Vector3d r1 = Eigen::Vector3d::Zero(), v1 = Eigen::Vector3d::Zero();  // O_1 and its velocity (free chain)

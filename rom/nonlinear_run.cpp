@@ -55,7 +55,14 @@ NonlinearChain nonlinear_chain(const Scene& scene) {
     if (b.cavity)
       fail(scene, "body[" + std::to_string(k + 1) + "].cavity", "the nonlinear model takes no fluid yet (docs/rom.md, "
            "\"Nonlinear chain\"); use [run] model = \"linear\", or leave the cavity out");
-    c.bodies.push_back({b.mass, b.A, b.B.value_or(b.A), b.C, b.com, k + 1 < n ? b.next_joint : 0.0});
+    ChainBody body{b.mass, b.A, b.B.value_or(b.A), b.C, b.com, k + 1 < n ? b.next_joint : 0.0};
+    if (b.moment) {
+      body.axial_moment = b.moment->axial;
+      body.space_moment = Vector3d(b.moment->space.data());
+      body.harmonic_moment = Vector3d(b.moment->harmonic.data());
+      body.frequency = b.moment->frequency;
+    }
+    c.bodies.push_back(body);
   }
   c.joints.push_back({0.0, scene.support_friction, scene.support_axial_friction});
   for (const JointSpec& j : scene.joints) c.joints.push_back({j.stiffness, j.friction, j.axial_friction});
@@ -166,6 +173,7 @@ NonlinearHistory integrate_nonlinear(const NonlinearChain& chain, const ChainSta
       }
     }
     t = t_out;
+    s.t = t_out;  // no rounding drift in the time the moments see
     if (!finite(s)) throw std::runtime_error("nonlinear run: the state is not finite at t = " + std::to_string(t));
     record(j, t, s);
   }

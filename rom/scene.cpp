@@ -3,6 +3,7 @@
 
 #include <toml++/toml.h>
 
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <set>
@@ -50,6 +51,23 @@ std::optional<double> get_number(const Ctx& c, const toml::table& t, const std::
   if (!std::isfinite(*v)) c.fail(where, "must be finite");
   if (sign == Sign::nonneg && *v < 0) c.fail(where, "must be >= 0 (got " + std::to_string(*v) + ")");
   if (sign == Sign::pos && *v <= 0) c.fail(where, "must be > 0 (got " + std::to_string(*v) + ")");
+  return v;
+}
+
+// A vector of three finite numbers, e.g. a moment [x, y, z].
+std::array<double, 3> get_vector3(const Ctx& c, const toml::table& t, const std::string& key, const std::string& where) {
+  std::array<double, 3> v{0, 0, 0};
+  const toml::node* node = t.get(key);
+  if (!node) return v;
+  const toml::array* arr = node->as_array();
+  if (!arr || arr->size() != 3) c.fail(where, "must be an array of three numbers [x, y, z]");
+  for (std::size_t j = 0; j < 3; ++j) {
+    const toml::node& e = (*arr)[j];
+    if (e.is_floating_point()) v[j] = e.as_floating_point()->get();
+    else if (e.is_integer()) v[j] = static_cast<double>(e.as_integer()->get());
+    else c.fail(where, "must hold numbers");
+    if (!std::isfinite(v[j])) c.fail(where, "must be finite");
+  }
   return v;
 }
 
@@ -163,7 +181,7 @@ Scene parse_scene_text(const std::string& text, const std::filesystem::path& bas
   for (std::size_t k = 0; k < n; ++k) {
     const toml::table& bt = *(*barr)[k].as_table();
     std::string w = "body[" + std::to_string(k + 1) + "]";
-    check_keys(c, bt, w, {"mass", "A", "B", "C", "com", "next_joint", "spin", "cavity"});
+    check_keys(c, bt, w, {"mass", "A", "B", "C", "com", "next_joint", "spin", "cavity", "moment"});
     BodySpec b;
     b.mass = *get_number(c, bt, "mass", w + ".mass", Sign::nonneg, true);
     b.A = *get_number(c, bt, "A", w + ".A", Sign::nonneg, true);
@@ -175,6 +193,17 @@ Scene parse_scene_text(const std::string& text, const std::filesystem::path& bas
     b.spin = get_number(c, bt, "spin", w + ".spin", Sign::any, false).value_or(0.0);
     if (const toml::table* ct = sub_table(c, bt, "cavity", w + ".cavity"))
       b.cavity = parse_cavity(c, *ct, w + ".cavity", base);
+    if (const toml::table* mt = sub_table(c, bt, "moment", w + ".moment")) {
+      const std::string wm = w + ".moment";
+      check_keys(c, *mt, wm, {"axial", "space", "harmonic", "frequency"});
+      MomentSpec m;
+      m.axial = get_number(c, *mt, "axial", wm + ".axial", Sign::any, false).value_or(0.0);
+      m.space = get_vector3(c, *mt, "space", wm + ".space");
+      m.harmonic = get_vector3(c, *mt, "harmonic", wm + ".harmonic");
+      m.frequency = get_number(c, *mt, "frequency", wm + ".frequency", Sign::nonneg, false).value_or(0.0);
+      if (mt->get("harmonic") && !mt->get("frequency")) c.fail(wm + ".frequency", "missing: a harmonic moment needs it (Hz)");
+      b.moment = m;
+    }
     s.bodies.push_back(b);
   }
 

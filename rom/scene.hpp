@@ -2,6 +2,7 @@
 // parse_scene() validates everything and throws SceneError with a one-line cause naming the key.
 #pragma once
 
+#include <array>
 #include <complex>
 #include <filesystem>
 #include <optional>
@@ -31,6 +32,14 @@ struct CavitySpec {
                                    // ekman = nu/(spin scale^2) (docs/rom.md, "Viscous tanks")
 };
 
+// An external moment on a body (N m; nonlinear model only): `axial` about the body's axis, `space` fixed in space,
+// `harmonic` · sin(2π frequency t) in space.
+struct MomentSpec {
+  double axial = 0;
+  std::array<double, 3> space{0, 0, 0}, harmonic{0, 0, 0};
+  double frequency = 0;  // Hz
+};
+
 struct BodySpec {
   double mass = 0;        // shell mass
   double A = 0;           // shell transverse inertia about O_k
@@ -40,6 +49,7 @@ struct BodySpec {
   double next_joint = 0;  // s_k
   double spin = 0;        // omega_k0, rad/s
   std::optional<CavitySpec> cavity;
+  std::optional<MomentSpec> moment;
 };
 
 struct JointSpec {
