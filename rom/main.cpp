@@ -4,6 +4,7 @@
 #include "chain_model.hpp"
 #include "empty_argument.hpp"
 #include "companion_check.hpp"
+#include "linear_validity.hpp"
 #include "nonlinear_run.hpp"
 #include "output.hpp"
 #include "propagation.hpp"
@@ -252,7 +253,20 @@ int main(int argc, char** argv) {
       } catch (const std::runtime_error&) {
         // No verdict (the eigen-solver failed): the propagation reports its own trouble.
       }
-      const rc::rom::History h = rc::rom::propagate(model, scene);
+      rc::rom::History h = rc::rom::propagate(model, scene);
+      // Is the amplitude small enough for the linear model? Measured against the nonlinear chain (fluid frozen).
+      const rc::rom::LinearValidity validity = rc::rom::linear_validity(scene, model);
+      if (validity.measured) {
+        h.nonlinear_difference = validity.difference;
+        h.amplitude_at_limit = validity.amplitude_at_limit;
+        if (validity.difference > rc::rom::kLinearValidityLimit)
+          std::fprintf(stderr, "chain-rom: warning: at this amplitude (%.3g rad) the tilts differ from the nonlinear chain's "
+                               "(fluid frozen) by %.2g %%: the linear model holds to 1 %% below about %.3g rad (docs/rom.md, "
+                               "\"Nonlinear chain\"); [run] model = \"nonlinear\" integrates the full motion\n",
+                       validity.amplitude, 100 * validity.difference, validity.amplitude_at_limit);
+      } else {
+        h.validity_note = validity.why_not;
+      }
       // A trajectory that left the double range (a scene of extreme magnitudes) is reported, never written.
       const bool energy_finite = model.viscous ||  // no energy with viscous tanks (output.cpp writes none)
                                  std::all_of(h.H.begin(), h.H.end(), [](double e) { return std::isfinite(e); });
@@ -262,6 +276,12 @@ int main(int argc, char** argv) {
       rc::rom::write_history(model, h, out_file);
       std::cout << "wrote " << out_file << ": " << h.t.size() << " samples, method " << h.method_used
                 << ", " << h.wall_seconds << " s (CPU " << h.cpu_seconds << " s)\n";
+      if (validity.measured)
+        std::cout << "validity: the nonlinear chain (fluid frozen) differs by " << validity.difference
+                  << " relative (1 % at about " << validity.amplitude_at_limit << " rad; checked in "
+                  << validity.seconds << " s)\n";
+      else
+        std::cout << "validity: not measured (" << validity.why_not << ")\n";
       if (model.viscous)
         std::cout << "energy: not computed with viscous tanks (docs/rom.md, \"Viscous tanks\")\n";
       else

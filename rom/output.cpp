@@ -90,6 +90,12 @@ void write_h5(const ChainModel& m, const History& h, const fs::path& tmp) {
   // is written for it rather than NaN.
   if (!m.viscous) write_attr(file.id, "max_energy_drift", h.max_energy_drift);
   write_attr(file.id, "wall_seconds", h.wall_seconds);
+  if (h.nonlinear_difference >= 0) {
+    write_attr(file.id, "nonlinear_difference", h.nonlinear_difference);
+    write_attr(file.id, "amplitude_at_1_percent", h.amplitude_at_limit);
+  } else if (!h.validity_note.empty()) {
+    write_attr(file.id, "nonlinear_difference_not_measured", h.validity_note);
+  }
   write_dataset(file.id, "t", h.t, N, 0);
   std::vector<double> re(N * n), im(N * n);
   for (hsize_t j = 0; j < N; ++j)

@@ -30,6 +30,10 @@ struct History {
   double cpu_seconds = 0;       // process CPU time of propagate (all threads)
   long integrator_steps = 0;    // gauss substeps / accepted+rejected rk45 steps; exact: matrix products
   double eigvec_condition = 0;  // exact: 2-norm condition number of the eigenvector matrix V
+  // The linear model's validity at this amplitude (linear_validity.hpp), filled by `chain-rom run`: the nonlinear
+  // frozen chain's relative tilt difference, and the amplitude at which it reaches 1 %; empty note = measured.
+  double nonlinear_difference = -1, amplitude_at_limit = -1;
+  std::string validity_note;
 };
 
 // Step-count guard of the integrators (docs/rom.md, "Limits"): gauss and rk45 refuse a run whose

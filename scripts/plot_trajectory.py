@@ -33,6 +33,9 @@ def main() -> int:
             t = f["t"][()]
             u = f["u_re"][()] + 1j * f["u_im"][()]
             energy = f["energy"][()] if "energy" in f else None
+            # The nonlinear model's history (docs/rom.md, "Nonlinear chain"): attitudes and spins as well.
+            quat = f["quaternion"][()] if "quaternion" in f else None
+            spin = f["spin"][()] if "spin" in f else None
             method = f.attrs.get("method", b"")
             method = method.decode() if isinstance(method, bytes) else str(method)
     except (OSError, KeyError, ValueError) as e:
@@ -40,30 +43,56 @@ def main() -> int:
         return 1
 
     n = u.shape[1]
-    beta_deg = np.degrees(u.real)
-    alpha_deg = np.degrees(-u.imag)
+    nonlinear = quat is not None and spin is not None
+    if nonlinear:
+        # Body axis n = R e3 from the quaternion (w, x, y, z), drawn in the equal-area (Lambert) projection seen from
+        # above, which keeps large angles honest: radius 2 sin(theta/2), theta the tilt from the vertical.
+        q = quat.reshape(len(t), n, 4)
+        w, x, y, z = q[..., 0], q[..., 1], q[..., 2], q[..., 3]
+        nx, ny, nz = 2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y)
+        theta = np.arccos(np.clip(nz, -1, 1))
+        scale = np.where(theta > 1e-12, 2 * np.sin(theta / 2) / np.maximum(np.hypot(nx, ny), 1e-300), 1.0)
+        px, py = np.degrees(nx * scale), np.degrees(ny * scale)
+        tilt_deg = np.degrees(theta)
+    else:
+        px, py = np.degrees(-u.imag), np.degrees(u.real)  # alpha_k, beta_k
+        tilt_deg = np.degrees(np.abs(u))
 
-    fig = plt.figure(figsize=(12, 5.5), constrained_layout=True)
-    gs = fig.add_gridspec(2, 2, width_ratios=[1.0, 1.4])
+    fig = plt.figure(figsize=(12, 7.5 if nonlinear else 5.5), constrained_layout=True)
+    rows = 3 if nonlinear else 2
+    gs = fig.add_gridspec(rows, 2, width_ratios=[1.0, 1.4])
     ax_path = fig.add_subplot(gs[:, 0])
     ax_tilt = fig.add_subplot(gs[0, 1])
-    ax_energy = fig.add_subplot(gs[1, 1], sharex=ax_tilt)
+    ax_spin = fig.add_subplot(gs[1, 1], sharex=ax_tilt) if nonlinear else None
+    ax_energy = fig.add_subplot(gs[rows - 1, 1], sharex=ax_tilt)
 
     colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
     for k in range(n):
         c = colors[k % len(colors)]
-        ax_path.plot(alpha_deg[:, k], beta_deg[:, k], lw=0.6, color=c, label=f"body {k + 1}")
-        ax_path.plot(alpha_deg[0, k], beta_deg[0, k], "o", color=c, ms=5)
-        ax_tilt.plot(t, np.degrees(np.abs(u[:, k])), lw=0.6, color=c, label=f"body {k + 1}")
+        ax_path.plot(px[:, k], py[:, k], lw=0.6, color=c, label=f"body {k + 1}")
+        ax_path.plot(px[0, k], py[0, k], "o", color=c, ms=5)
+        ax_tilt.plot(t, tilt_deg[:, k], lw=0.6, color=c, label=f"body {k + 1}")
+        if nonlinear:
+            ax_spin.plot(t, spin[:, k] - spin[0, k], lw=0.6, color=c, label=f"body {k + 1}")
     ax_path.plot([], [], "ko", ms=5, label="t = 0")
-    ax_path.set_xlabel(r"$\alpha_k$ (deg)")
-    ax_path.set_ylabel(r"$\beta_k$ (deg)")
-    ax_path.set_title(r"axis paths, $u_k = \beta_k - i\alpha_k$")
+    if nonlinear:
+        ax_path.set_xlabel(r"$n_x$, equal-area (deg at small tilt)")
+        ax_path.set_ylabel(r"$n_y$, equal-area (deg at small tilt)")
+        ax_path.set_title("body axes seen from above (Lambert projection)")
+        ax_tilt.set_ylabel("tilt from the vertical (deg)")
+        ax_spin.set_ylabel(r"spin $-$ spin(0) (rad/s)")
+        ax_spin.set_title(r"spins $\Omega_k\cdot n_k$")
+        ax_spin.grid(True, lw=0.3)
+        plt.setp(ax_spin.get_xticklabels(), visible=False)
+    else:
+        ax_path.set_xlabel(r"$\alpha_k$ (deg)")
+        ax_path.set_ylabel(r"$\beta_k$ (deg)")
+        ax_path.set_title(r"axis paths, $u_k = \beta_k - i\alpha_k$")
+        ax_tilt.set_ylabel(r"$|u_k|$ (deg)")
     ax_path.set_aspect("equal", adjustable="datalim")
     ax_path.grid(True, lw=0.3)
     ax_path.legend(loc="best", fontsize=8)
 
-    ax_tilt.set_ylabel(r"$|u_k|$ (deg)")
     ax_tilt.set_title("tilt magnitude")
     ax_tilt.grid(True, lw=0.3)
     ax_tilt.legend(loc="upper right", fontsize=8)
@@ -77,7 +106,7 @@ def main() -> int:
         ax_energy.text(0.5, 0.5, "energy not available", ha="center", va="center",
                        transform=ax_energy.transAxes)
     ax_energy.set_xlabel("t (s)")
-    ax_energy.set_title("quadratic integral drift")
+    ax_energy.set_title("energy change (friction, moments)" if nonlinear else "quadratic integral drift")
     ax_energy.grid(True, lw=0.3)
 
     title = args.title or os.path.basename(args.history)

@@ -90,3 +90,17 @@ rom_cli(bench_missing_scene ARGS bench;nope.toml;-o;out_bad_bench.csv EXPECT_EXI
 if(_no_mpl EQUAL 0)
   rom_cli(bench_png ARGS bench;two_tops.toml;-o;out_bench2.csv;--png;out_bench2.png EXPECT_EXIT 0 MATCH "wrote out_bench2.png")
 endif()
+
+# The nonlinear model (docs/rom.md, "Nonlinear chain"): a run at 17 degrees writes attitudes and spins; what only
+# it takes (B != A, moments) is refused by the linear commands, and what it does not take yet (a tank) by it.
+rom_cli(run_nonlinear ARGS run;nonlinear_chain.toml;-o;out_nonlinear.h5 EXPECT_EXIT 0
+        MATCH "wrote out_nonlinear.h5: 5001 samples, model nonlinear[^\n]*\nenergy: [^\n]*angular momentum")
+rom_cli(nonlinear_scene_linear_spectrum ARGS spectrum;nonlinear_chain.toml EXPECT_EXIT 1
+        MATCH "^chain-rom: error: [^\n]*body\\[1\\]\\.B: differs from A[^\n]*\n?$")
+rom_cli(bad_nonlinear_cavity ARGS run;bad_nonlinear_cavity.toml;-o;out_bad_nl.h5 EXPECT_EXIT 1
+        MATCH "body\\[1\\]\\.cavity: the nonlinear model takes no fluid yet" NO_FILE out_bad_nl.h5)
+# The linear run measures its own validity against the nonlinear chain (fluid frozen) and warns past 1 %.
+rom_cli(run_validity ARGS run;two_tops.toml;-o;out_validity.h5 EXPECT_EXIT 0
+        MATCH "validity: the nonlinear chain \\(fluid frozen\\) differs by")
+rom_cli(run_validity_warns ARGS run;large_tilt_run.toml;-o;out_large_tilt.h5 EXPECT_EXIT 0 MATCH "wrote out_large_tilt.h5"
+        MATCH_STDERR "^chain-rom: warning: at this amplitude \\(0\\.3 rad\\) the tilts differ from the nonlinear chain's \\(fluid frozen\\) by [0-9.]+ %")

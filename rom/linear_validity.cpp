@@ -1,0 +1,68 @@
+#include "linear_validity.hpp"
+
+#include "nonlinear_run.hpp"
+#include "propagation.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace rc::rom {
+namespace {
+
+// The scene with every cavity frozen into its body (the model's totals) and no fluid coordinates.
+Scene frozen_scene(const Scene& scene, const ChainModel& model) {
+  Scene s = scene;
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    const BodyModel& b = model.bodies[k];
+    BodySpec& spec = s.bodies[k];
+    spec.mass = b.m;
+    spec.A = b.A;
+    spec.B.reset();
+    spec.C = b.C;
+    spec.com = b.c;
+    spec.cavity.reset();
+  }
+  s.run.method = "exact";
+  return s;
+}
+
+}  // namespace
+
+LinearValidity linear_validity(const Scene& scene, const ChainModel& model) {
+  LinearValidity v;
+  const auto t0 = std::chrono::steady_clock::now();
+  double spin = 0;
+  for (const auto& b : scene.bodies) spin = std::max(spin, std::abs(b.spin));
+  for (std::size_t k = 0; k < scene.size(); ++k)
+    v.amplitude = std::max(v.amplitude, std::abs(scene.tilt[k]) + std::abs(scene.rate[k]) / std::max(1.0, spin));
+  if (v.amplitude == 0) {
+    v.why_not = "the scene starts at rest in the straight chain";
+    return v;
+  }
+  if (scene.run.t_end * spin / (2 * std::numbers::pi) > kValidityMaxTurns) {
+    v.why_not = "the run is longer than " + std::to_string(long(kValidityMaxTurns)) + " turns of the fastest body";
+    return v;
+  }
+  try {
+    const Scene frozen = frozen_scene(scene, model);
+    const History linear = propagate(build_model(frozen), frozen);
+    const NonlinearChain chain = nonlinear_chain(frozen);
+    const NonlinearHistory nonlinear = integrate_nonlinear(chain, nonlinear_initial_state(frozen, chain), frozen.run);
+    const double scale = linear.u.cwiseAbs().maxCoeff();
+    double diff = 0;
+    for (Eigen::Index j = 0; j < linear.u.rows(); ++j)
+      diff = std::max(diff, (linear.u.row(j) - nonlinear.base.u.row(j)).cwiseAbs().maxCoeff());
+    if (!(scale > 0) || !std::isfinite(diff)) throw std::runtime_error("no finite tilts to compare");
+    v.difference = diff / scale;
+    v.amplitude_at_limit = v.difference > 0 ? v.amplitude * std::sqrt(kLinearValidityLimit / v.difference) : INFINITY;
+    v.measured = true;
+  } catch (const std::exception& e) {
+    v.why_not = e.what();
+  }
+  v.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return v;
+}
+
+}  // namespace rc::rom

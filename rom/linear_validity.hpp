@@ -1,0 +1,31 @@
+// How far the linear model's amplitude is from its validity (issue "nonlinear chain"; docs/rom.md, "Nonlinear
+// chain"): the scene's chain with its fluid frozen (every cavity a rigid load, as in the bodies' totals), run once by
+// the linearised equations (26) propagated exactly and once by the nonlinear chain (nonlinear_chain.hpp) from the same
+// initial state; their largest tilt difference relative to the largest linear tilt measures the geometric
+// nonlinearity at this amplitude. The fluid's own equations are linear in both models, so the frozen chain carries
+// the nonlinearity the linear `run` leaves out. Since the difference grows like the amplitude squared (tested), the
+// amplitude at which it reaches 1 % is amplitude · (0.01 / difference)^{1/2}.
+#pragma once
+
+#include "chain_model.hpp"
+#include "scene.hpp"
+
+#include <string>
+
+namespace rc::rom {
+
+inline constexpr double kLinearValidityLimit = 0.01;     // relative tilt difference that triggers the warning
+inline constexpr double kValidityMaxTurns = 2e4;          // skip the check past t_end · max|spin| / 2π turns
+
+struct LinearValidity {
+  bool measured = false;
+  std::string why_not;          // when not measured
+  double difference = 0;        // max_t |u_nonlinear − u_linear| / max_t |u_linear|
+  double amplitude = 0;         // max_k |u_k(0)| + |u̇_k(0)| / max(1, |spin|) — the scene's initial amplitude (rad)
+  double amplitude_at_limit = 0;  // amplitude · (kLinearValidityLimit / difference)^{1/2}
+  double seconds = 0;
+};
+
+LinearValidity linear_validity(const Scene& scene, const ChainModel& model);
+
+}  // namespace rc::rom
