@@ -25,6 +25,7 @@ Scene frozen_scene(const Scene& scene, const ChainModel& model) {
     spec.cavity.reset();
   }
   s.run.method = "exact";
+  s.run.tolerance = kValidityTolerance;
   return s;
 }
 

@@ -154,6 +154,10 @@ NonlinearHistory integrate_nonlinear(const NonlinearChain& chain, const ChainSta
     const double t_out = std::min(run.t_end, j * run.output_step);
     while (t < t_out) {
       const double hh = std::min(step, t_out - t);
+      if (hh < 1e-13 * std::max(1.0, t_out))
+        throw std::runtime_error("nonlinear run: the step fell below 1e-13 s at t = " + std::to_string(t) +
+                                 ": run.tolerance " + std::to_string(run.tolerance) + " cannot be met in double "
+                                 "precision; raise it");
       const ChainState one = chain_step(chain, s, hh);
       const ChainState two = chain_step(chain, chain_step(chain, s, hh / 2), hh / 2);
       const double err = step_error(one, two);
