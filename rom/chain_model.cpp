@@ -96,6 +96,7 @@ void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
     m.body = k;
     m.table_index = l;
     m.E = rho * L5 * t.E[l];
+    m.lambda_table = t.lambda[l];
     m.lambda = b.omega * t.lambda[l];  // lambda_kl = 2 omega_k0 / kappa_kl (Kononov (21))
     m.nu = b.omega - m.lambda;
     // a ~ rho L^4, N^2 ~ rho L^3 (N^2 carries rho so that E = 2a^2/N^2 ~ rho L^5): a/N^2 ~ L.
@@ -159,8 +160,8 @@ void require_linear_scene(const Scene& scene) {
 
 }  // namespace
 
-ChainModel build_model(const Scene& scene, TableCache* tables) {
-  require_linear_scene(scene);
+ChainModel build_model(const Scene& scene, TableCache* tables, bool linear_keys_only) {
+  if (linear_keys_only) require_linear_scene(scene);
   ChainModel cm;
   const int n = static_cast<int>(scene.size());
   cm.n = n;

@@ -20,6 +20,7 @@ struct FluidMode {
   int table_index = 0;      // row in the mode table
   double E = 0;             // E_kl scaled by density*scale^5 (kg m^2)
   double lambda = 0;        // lambda_kl = omega_k0 * lambda_table (rad/s), Kononov (21)
+  double lambda_table = 0;  // the table's lambda (scale-free, omega0 = 1)
   double nu = 0;            // omega_k0 - lambda_kl
   double a_over_N2 = 0;     // a_kl / N_kl^2 (m), converts the scaled coordinate z back to S'
   // Viscous tables (docs/viscous.md section 1, docs/rom.md "Viscous tanks"): the mode is e^{i lambda_c t} with
@@ -88,7 +89,9 @@ class TableCache {
 
 // Builds the model; reads the mode tables (through `tables` when given, else from disk). Throws
 // SceneError naming the key on a bad table (not a table, m != 1, modes above the table's count,
-// coverage not reachable) or when the effective inertia matrix is not positive definite.
-ChainModel build_model(const Scene& scene, TableCache* tables = nullptr);
+// coverage not reachable) or when the effective inertia matrix is not positive definite, and (unless
+// linear_keys_only is false: the nonlinear model's totals and fluid, nonlinear_run.hpp) on the keys only the nonlinear
+// model takes (B != A, moments, axial friction).
+ChainModel build_model(const Scene& scene, TableCache* tables = nullptr, bool linear_keys_only = true);
 
 }  // namespace rc::rom

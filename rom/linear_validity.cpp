@@ -29,6 +29,13 @@ Scene frozen_scene(const Scene& scene, const ChainModel& model) {
   return s;
 }
 
+Scene with_tolerance(const Scene& scene) {
+  Scene s = scene;
+  s.run.method = "exact";
+  s.run.tolerance = kValidityTolerance;
+  return s;
+}
+
 }  // namespace
 
 LinearValidity linear_validity(const Scene& scene, const ChainModel& model) {
@@ -47,7 +54,8 @@ LinearValidity linear_validity(const Scene& scene, const ChainModel& model) {
     return v;
   }
   try {
-    const Scene frozen = frozen_scene(scene, model);
+    // Ideal tanks enter both models with their modes; viscous ones (not in the nonlinear model) are frozen.
+    const Scene frozen = model.viscous ? frozen_scene(scene, model) : with_tolerance(scene);
     const History linear = propagate(build_model(frozen), frozen);
     const NonlinearChain chain = nonlinear_chain(frozen);
     const NonlinearHistory nonlinear = integrate_nonlinear(chain, nonlinear_initial_state(frozen, chain), frozen.run);
@@ -58,6 +66,7 @@ LinearValidity linear_validity(const Scene& scene, const ChainModel& model) {
     if (!(scale > 0) || !std::isfinite(diff)) throw std::runtime_error("no finite tilts to compare");
     v.difference = diff / scale;
     v.amplitude_at_limit = v.difference > 0 ? v.amplitude * std::sqrt(kLinearValidityLimit / v.difference) : INFINITY;
+    v.fluid_frozen = model.viscous;
     v.measured = true;
   } catch (const std::exception& e) {
     v.why_not = e.what();

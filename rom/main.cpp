@@ -60,6 +60,10 @@ int run_nonlinear(const rc::rom::Scene& scene, const std::string& out_file) {
             << " rejected), " << h.base.wall_seconds << " s\n";
   const bool damped = std::any_of(chain.joints.begin(), chain.joints.end(),
                                   [](const rc::rom::ChainJoint& j) { return j.friction > 0 || j.axial_friction > 0; });
+  if (!h.integrals_valid) {
+    std::cout << "energy: not an integral with fluid tanks in the nonlinear model (docs/rom.md, \"Nonlinear chain\")\n";
+    return 0;
+  }
   std::cout << "energy: H(0) = " << h.base.H.front() << ", H(end) = " << h.base.H.back() << ", "
             << (damped ? "largest relative increase per sample " : "largest relative drift ") << h.base.max_energy_drift
             << "; angular momentum " << (chain.free_chain ? "(vector)" : "(about the vertical through O_1)")
@@ -261,9 +265,10 @@ int main(int argc, char** argv) {
         h.amplitude_at_limit = validity.amplitude_at_limit;
         if (validity.difference > rc::rom::kLinearValidityLimit)
           std::fprintf(stderr, "chain-rom: warning: at this amplitude (%.3g rad) the tilts differ from the nonlinear chain's "
-                               "(fluid frozen) by %.2g %%: the linear model holds to 1 %% below about %.3g rad (docs/rom.md, "
+                               "%sby %.2g %%: the linear model holds to 1 %% below about %.3g rad (docs/rom.md, "
                                "\"Nonlinear chain\"); [run] model = \"nonlinear\" integrates the full motion\n",
-                       validity.amplitude, 100 * validity.difference, validity.amplitude_at_limit);
+                       validity.amplitude, validity.fluid_frozen ? "(fluid frozen) " : "", 100 * validity.difference,
+                       validity.amplitude_at_limit);
       } else {
         h.validity_note = validity.why_not;
       }
@@ -277,7 +282,8 @@ int main(int argc, char** argv) {
       std::cout << "wrote " << out_file << ": " << h.t.size() << " samples, method " << h.method_used
                 << ", " << h.wall_seconds << " s (CPU " << h.cpu_seconds << " s)\n";
       if (validity.measured)
-        std::cout << "validity: the nonlinear chain (fluid frozen) differs by " << validity.difference
+        std::cout << "validity: the nonlinear chain" << (validity.fluid_frozen ? " (fluid frozen)" : "") << " differs by "
+                  << validity.difference
                   << " relative (1 % at about " << validity.amplitude_at_limit << " rad; checked in "
                   << validity.seconds << " s)\n";
       else

@@ -57,6 +57,15 @@ std::vector<Vector3d> joint_torques(const NonlinearChain& c, const Frames& f) {
   return tau;
 }
 
+// The fluid's moment on a body in its own frame, without the E_total Ṗ part (which the mass matrix carries):
+// M_p − i M_q = Σ_l E_l (r − λ_l) ζ_l, r the body's spin (nonlinear_chain.hpp, ChainFluidMode).
+Vector3d fluid_moment(const ChainBody& b, double spin, const std::complex<double>* zeta) {
+  std::complex<double> X = 0;
+  for (std::size_t l = 0; l < b.fluid.size(); ++l)
+    X += b.fluid[l].E * (spin - spin * b.fluid[l].lambda_table) * zeta[l];
+  return {X.real(), -X.imag(), 0.0};
+}
+
 // The external moments at time t (space frame).
 void add_external_moments(const NonlinearChain& c, const Frames& f, double t, std::vector<Vector3d>& tau) {
   constexpr double two_pi = 6.283185307179586;
@@ -67,6 +76,12 @@ void add_external_moments(const NonlinearChain& c, const Frames& f, double t, st
 }
 
 }  // namespace
+
+int NonlinearChain::fluid_modes() const {
+  int n = 0;
+  for (const auto& b : bodies) n += static_cast<int>(b.fluid.size());
+  return n;
+}
 
 std::vector<Vector3d> chain_axes(const ChainState& s) {
   std::vector<Vector3d> n;
@@ -86,6 +101,8 @@ ChainRates chain_rates(const NonlinearChain& c, const ChainState& s) {
   for (int k = 0; k < n; ++k) d[k] = b[k] + f.Omega[k].cross(f.Omega[k].cross(f.rho[k]));
   std::vector<Vector3d> tau = joint_torques(c, f);
   add_external_moments(c, f, s.t, tau);
+  std::vector<int> first_mode(n + 1, 0);  // body k's modes are zeta[first_mode[k] .. first_mode[k + 1])
+  for (int k = 0; k < n; ++k) first_mode[k + 1] = first_mode[k] + static_cast<int>(c.bodies[k].fluid.size());
 
   Eigen::MatrixXd M = Eigen::MatrixXd::Zero(dim, dim);
   Eigen::VectorXd rhs(dim);
@@ -95,11 +112,14 @@ ChainRates chain_rates(const NonlinearChain& c, const ChainState& s) {
     for (int i = 0; i < n; ++i) {
       Matrix3d block;
       if (i < k) block = -skew(lever) * skew(f.S[i]);
-      else if (i == k) block = f.J[k] - above * skew(f.S[k]) * skew(f.S[k]);
+      else if (i == k)
+        block = f.J[k] - above * skew(f.S[k]) * skew(f.S[k]) -
+                c.bodies[k].fluid_E_total * (Matrix3d::Identity() - f.n[k] * f.n[k].transpose());
       else block = -skew(f.S[k]) * skew(mu[i + 1] * f.S[i] + c.bodies[i].mass * f.rho[i]);
       M.block<3, 3>(3 * k, 3 * i) = block;
     }
-    Vector3d r = lever.cross(g) + tau[k] - f.Omega[k].cross(f.J[k] * f.Omega[k]) - m * f.rho[k].cross(b[k]);
+    Vector3d r = lever.cross(g) + tau[k] - f.Omega[k].cross(f.J[k] * f.Omega[k]) - m * f.rho[k].cross(b[k]) +
+                 f.R[k] * fluid_moment(c.bodies[k], s.omega[k].z(), s.zeta.data() + first_mode[k]);
     for (int j = k + 1; j < n; ++j) r -= c.bodies[j].mass * f.S[k].cross(d[j]);
     rhs.segment<3>(3 * k) = r;
     if (c.free_chain) {
@@ -120,6 +140,15 @@ ChainRates chain_rates(const NonlinearChain& c, const ChainState& s) {
   ChainRates out;
   for (int k = 0; k < n; ++k) out.omega_dot.push_back(f.R[k].transpose() * x.segment<3>(3 * k));
   if (c.free_chain) out.a1 = x.segment<3>(3 * n);
+  // ζ̇ = i λ ζ − i Ṗ, Ṗ = ṗ − i q̇ the body-frame transverse angular acceleration.
+  for (int k = 0; k < n; ++k) {
+    const std::complex<double> P_dot(out.omega_dot[k].x(), -out.omega_dot[k].y());
+    const double spin = s.omega[k].z();
+    for (int l = 0; l < static_cast<int>(c.bodies[k].fluid.size()); ++l) {
+      const double lambda = spin * c.bodies[k].fluid[l].lambda_table;
+      out.zeta_dot.push_back(std::complex<double>(0, lambda) * s.zeta[first_mode[k] + l] - std::complex<double>(0, 1) * P_dot);
+    }
+  }
   return out;
 }
 
@@ -171,48 +200,62 @@ Vector3d chain_angular_momentum(const NonlinearChain& c, const ChainState& s) {
 ChainState chain_step(const NonlinearChain& c, const ChainState& s, double h) {
   const int n = c.size();
   using Vs = std::vector<Vector3d>;
-  // One stage at rotation vectors θ and angular velocities ω: returns θ̇ (dexp⁻¹) and the rates.
-  struct Stage {
-    Vs dtheta, domega;
-    Vector3d dr, dv;
+  using Cs = std::vector<std::complex<double>>;
+  // The vector-space part of the state (ω, O_1, its velocity, the fluid), advanced by classical RK4; the attitudes
+  // by rotation vectors θ (RKMK4).
+  struct Flat {
+    Vs omega;
+    Vector3d r, v;
+    Cs zeta;
   };
-  const auto stage = [&](double t, const Vs& theta, const Vs& omega, const Vector3d& r1, const Vector3d& v1) {
+  struct Stage {
+    Vs dtheta;
+    Flat d;
+  };
+  const auto axpy = [&](const Flat& x, const Flat& dx, double w) {
+    Flat y = x;
+    for (int k = 0; k < n; ++k) y.omega[k] += w * dx.omega[k];
+    y.r += w * dx.r;
+    y.v += w * dx.v;
+    for (std::size_t l = 0; l < y.zeta.size(); ++l) y.zeta[l] += w * dx.zeta[l];
+    return y;
+  };
+  const auto stage = [&](double t, const Vs& theta, const Flat& y) {
     ChainState x;
     x.t = t;
-    x.r1 = r1;
-    x.v1 = v1;
-    x.omega = omega;
+    x.r1 = y.r;
+    x.v1 = y.v;
+    x.omega = y.omega;
+    x.zeta = y.zeta;
     Stage st;
     for (int k = 0; k < n; ++k) {
       x.q.push_back(rotated(s.q[k], theta[k]));
-      st.dtheta.push_back(dexpinv(theta[k], omega[k]));
+      st.dtheta.push_back(dexpinv(theta[k], y.omega[k]));
     }
-    const ChainRates r = chain_rates(c, x);
-    st.domega = r.omega_dot;
-    st.dr = v1;
-    st.dv = r.a1;
+    ChainRates r = chain_rates(c, x);
+    st.d = {std::move(r.omega_dot), y.v, r.a1, std::move(r.zeta_dot)};
     return st;
   };
-  const auto add = [&](const Vs& a, const Vs& b, double w) {
+  const auto turn = [&](const Vs& a, const Vs& b, double w) {
     Vs out(a);
     for (int k = 0; k < n; ++k) out[k] += w * b[k];
     return out;
   };
   const Vs zero(n, Vector3d::Zero());
-  const Stage k1 = stage(s.t, zero, s.omega, s.r1, s.v1);
-  const Stage k2 = stage(s.t + h / 2, add(zero, k1.dtheta, h / 2), add(s.omega, k1.domega, h / 2), s.r1 + h / 2 * k1.dr,
-                         s.v1 + h / 2 * k1.dv);
-  const Stage k3 = stage(s.t + h / 2, add(zero, k2.dtheta, h / 2), add(s.omega, k2.domega, h / 2), s.r1 + h / 2 * k2.dr,
-                         s.v1 + h / 2 * k2.dv);
-  const Stage k4 = stage(s.t + h, add(zero, k3.dtheta, h), add(s.omega, k3.domega, h), s.r1 + h * k3.dr, s.v1 + h * k3.dv);
+  const Flat y0{s.omega, s.r1, s.v1, s.zeta};
+  const Stage k1 = stage(s.t, zero, y0);
+  const Stage k2 = stage(s.t + h / 2, turn(zero, k1.dtheta, h / 2), axpy(y0, k1.d, h / 2));
+  const Stage k3 = stage(s.t + h / 2, turn(zero, k2.dtheta, h / 2), axpy(y0, k2.d, h / 2));
+  const Stage k4 = stage(s.t + h, turn(zero, k3.dtheta, h), axpy(y0, k3.d, h));
+  Flat y = axpy(axpy(axpy(axpy(y0, k1.d, h / 6), k2.d, h / 3), k3.d, h / 3), k4.d, h / 6);
   ChainState next;
   next.t = s.t + h;
-  for (int k = 0; k < n; ++k) {
+  for (int k = 0; k < n; ++k)
     next.q.push_back(rotated(s.q[k], h / 6 * (k1.dtheta[k] + 2 * k2.dtheta[k] + 2 * k3.dtheta[k] + k4.dtheta[k])));
-    next.omega.push_back(s.omega[k] + h / 6 * (k1.domega[k] + 2 * k2.domega[k] + 2 * k3.domega[k] + k4.domega[k]));
-  }
-  next.r1 = s.r1 + h / 6 * (k1.dr + 2 * k2.dr + 2 * k3.dr + k4.dr);
-  next.v1 = s.v1 + h / 6 * (k1.dv + 2 * k2.dv + 2 * k3.dv + k4.dv);
+  next.omega = std::move(y.omega);
+  next.r1 = y.r;
+  next.v1 = y.v;
+  next.zeta = std::move(y.zeta);
   return next;
 }
 

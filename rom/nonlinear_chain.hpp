@@ -16,9 +16,20 @@
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
 
+#include <complex>
 #include <vector>
 
 namespace rc::rom {
+
+// One fluid mode of a body's cavity, in the body frame (docs/rom.md, "Nonlinear chain", "Fluid"): the scaled
+// coordinate ζ obeys ζ̇ = i λ ζ − i Ṗ with λ = r λ_table (r the body's current spin, Ω·e3 in the body frame) and
+// P = p − i q its transverse angular velocity in the body frame; the fluid's moment on the body is
+// (M_p − i M_q) = E_total Ṗ + Σ_l E_l (r − λ_l) ζ_l. This is Kononov (26)'s fluid equation written in the body frame
+// (ζ = S′ e^{iω0 t} N²/a): linear in the fluid's relative motion, exact in the body's rotation.
+struct ChainFluidMode {
+  double E = 0;             // kg m²
+  double lambda_table = 0;  // λ/ω0 of the table
+};
 
 struct ChainBody {
   double mass = 0;               // with the frozen fluid (kg)
@@ -30,6 +41,9 @@ struct ChainBody {
   double axial_moment = 0;
   Eigen::Vector3d space_moment = Eigen::Vector3d::Zero(), harmonic_moment = Eigen::Vector3d::Zero();
   double frequency = 0;          // Hz
+  std::vector<ChainFluidMode> fluid;  // the kept modes of its cavity (ideal fluid)
+  double fluid_E_total = 0;      // Σ E of the kept modes + the static correction: the transverse inertia the fluid does
+                                 // not carry rigidly (A − E_total is the body's instantaneous inertia, as M_eff in (26))
 };
 
 struct ChainJoint {              // joint k: O_k, between body k − 1 (the support for k = 1) and body k
@@ -44,6 +58,7 @@ struct NonlinearChain {
   std::vector<ChainBody> bodies;
   std::vector<ChainJoint> joints;     // n: joints[0] is the support (stiffness 0), joints[k] links bodies k−1 and k
   int size() const { return static_cast<int>(bodies.size()); }
+  int fluid_modes() const;
 };
 
 struct ChainState {
@@ -51,11 +66,13 @@ struct ChainState {
   std::vector<Eigen::Quaterniond> q;  // attitude of each body: body → space
   std::vector<Eigen::Vector3d> omega; // angular velocity of each body in its own frame (rad/s)
   Eigen::Vector3d r1 = Eigen::Vector3d::Zero(), v1 = Eigen::Vector3d::Zero();  // O_1 and its velocity (free chain)
+  std::vector<std::complex<double>> zeta;  // fluid coordinates, body by body, mode by mode (rad/s)
 };
 
 struct ChainRates {
   std::vector<Eigen::Vector3d> omega_dot;  // body frames
   Eigen::Vector3d a1 = Eigen::Vector3d::Zero();
+  std::vector<std::complex<double>> zeta_dot;
 };
 
 // The accelerations of the equations above. Throws std::runtime_error if the mass matrix is singular (a body

@@ -1,5 +1,6 @@
 #include "nonlinear_run.hpp"
 
+#include "chain_model.hpp"
 #include "rigid_body.hpp"
 
 #include <algorithm>
@@ -27,6 +28,7 @@ double step_error(const ChainState& a, const ChainState& b) {
     err = std::max(err, a.q[k].angularDistance(b.q[k]));
     err = std::max(err, (a.omega[k] - b.omega[k]).norm() / rate_scale);
   }
+  for (std::size_t l = 0; l < a.zeta.size(); ++l) err = std::max(err, std::abs(a.zeta[l] - b.zeta[l]) / rate_scale);
   return err;
 }
 
@@ -41,12 +43,15 @@ ChainState extrapolated(const ChainState& one, const ChainState& two) {
   }
   x.r1 += (two.r1 - one.r1) / 15;
   x.v1 += (two.v1 - one.v1) / 15;
+  for (std::size_t l = 0; l < two.zeta.size(); ++l) x.zeta[l] += (two.zeta[l] - one.zeta[l]) / 15.0;
   return x;
 }
 
 bool finite(const ChainState& s) {
   for (std::size_t k = 0; k < s.q.size(); ++k)
     if (!s.q[k].coeffs().allFinite() || !s.omega[k].allFinite()) return false;
+  for (const auto& z : s.zeta)
+    if (!std::isfinite(z.real()) || !std::isfinite(z.imag())) return false;
   return s.r1.allFinite() && s.v1.allFinite();
 }
 
@@ -65,19 +70,37 @@ NonlinearChain nonlinear_chain(const Scene& scene) {
   NonlinearChain c;
   c.free_chain = scene.free_chain;
   c.gravity = scene.free_chain ? 0.0 : scene.gravity;  // uniform gravity does not turn a free chain (docs/scene-format.md)
+  // Totals with the frozen fluid and the kept modes, as the linear model has them (chain_model.hpp).
+  const ChainModel model = build_model(scene, nullptr, false);
+  if (model.viscous)
+    for (std::size_t k = 0; k < scene.size(); ++k)
+      if (model.bodies[k].ekman > 0)
+        fail(scene, "body[" + std::to_string(k + 1) + "].cavity", "a viscous table: the nonlinear model takes ideal-fluid "
+             "tables only (docs/rom.md, \"Nonlinear chain\"); use [run] model = \"linear\"");
   const std::size_t n = scene.size();
   for (std::size_t k = 0; k < n; ++k) {
     const BodySpec& b = scene.bodies[k];
-    if (b.cavity)
-      fail(scene, "body[" + std::to_string(k + 1) + "].cavity", "the nonlinear model takes no fluid yet (docs/rom.md, "
-           "\"Nonlinear chain\"); use [run] model = \"linear\", or leave the cavity out");
-    ChainBody body{b.mass, b.A, b.B.value_or(b.A), b.C, b.com, k + 1 < n ? b.next_joint : 0.0};
+    const BodyModel& t = model.bodies[k];
+    // The cavity is axisymmetric: its frozen fluid adds the same to both transverse moments.
+    ChainBody body;
+    body.mass = t.m;
+    body.A = t.A;
+    body.B = b.B.value_or(b.A) + (t.A - b.A);
+    body.C = t.C;
+    body.com = t.c;
+    body.next_joint = k + 1 < n ? b.next_joint : 0.0;
     if (b.moment) {
       body.axial_moment = b.moment->axial;
       body.space_moment = Vector3d(b.moment->space.data());
       body.harmonic_moment = Vector3d(b.moment->harmonic.data());
       body.frequency = b.moment->frequency;
     }
+    for (const FluidMode& m : model.modes)
+      if (m.body == static_cast<int>(k)) body.fluid.push_back({m.E, m.lambda_table});
+    // The static correction, the left-out modes' λ → 0 limit: in the body frame a mode of λ = 0 (frequency-independent
+    // inertia in space, as in (26)'s M_eff; as E_total Ṗ alone in the body frame it would add a gyroscopic term).
+    if (t.E_rem > 0) body.fluid.push_back({t.E_rem, 0.0});
+    body.fluid_E_total = t.E_kept + t.E_rem;
     c.bodies.push_back(body);
   }
   c.joints.push_back({0.0, scene.support_friction, scene.support_axial_friction});
@@ -99,6 +122,7 @@ ChainState nonlinear_initial_state(const Scene& scene, const NonlinearChain& cha
     s.q.push_back(q);
     s.omega.push_back(q.conjugate() * Omega);
   }
+  s.zeta.assign(chain.fluid_modes(), 0.0);  // the fluid at rest relative to its body, as in the linear model
   if (chain.free_chain) {
     // The whole chain's centre of mass at rest (as the linear free chain takes it, docs/free-chain.md): O_1 moves
     // against the bodies' swing.
@@ -158,7 +182,10 @@ NonlinearHistory integrate_nonlinear(const NonlinearChain& chain, const ChainSta
       out.spins.push_back((q * s.omega[k]).dot(q * Vector3d::UnitZ()));
     }
     out.momentum.insert(out.momentum.end(), {L.x(), L.y(), L.z()});
+    out.zeta.insert(out.zeta.end(), s.zeta.begin(), s.zeta.end());
   };
+  out.fluid_modes = chain.fluid_modes();
+  out.integrals_valid = out.fluid_modes == 0;
 
   ChainState s = initial;
   record(0, 0.0, s);

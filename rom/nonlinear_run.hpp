@@ -29,6 +29,11 @@ struct NonlinearHistory {
   std::vector<double> quaternions;   // per sample: (w, x, y, z) of every body, body → space
   std::vector<double> spins;         // per sample: Ω_k·n_k of every body (rad/s)
   std::vector<double> momentum;      // per sample: total angular momentum about O_1's start (3 components)
+  std::vector<std::complex<double>> zeta;  // per sample: the fluid coordinates (rad/s), body by body
+  int fluid_modes = 0;
+  // With fluid the chain has no energy integral of the bodies alone (the fluid's relative motion carries energy
+  // the modal model does not write as one): energy and momentum drifts are then not reported.
+  bool integrals_valid = true;
   double max_momentum_drift = 0;     // max |L − L(0)| / |L(0)| (free chain), max |L_z − L_z(0)| / |L(0)| (fixed)
   long rejected_steps = 0;
 };

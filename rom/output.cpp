@@ -144,13 +144,17 @@ void write_nonlinear_csv(const NonlinearHistory& nh, int n, const fs::path& tmp)
   for (int k = 1; k <= n; ++k) os << ",u" << k << "_re,u" << k << "_im";
   for (int k = 1; k <= n; ++k) os << ",spin" << k;
   for (int k = 1; k <= n; ++k) os << ",q" << k << "_w,q" << k << "_x,q" << k << "_y,q" << k << "_z";
-  os << ",energy\n";
+  const int nm = nh.fluid_modes;
+  for (int l = 1; l <= nm; ++l) os << ",zeta" << l << "_re,zeta" << l << "_im";
+  os << (nh.integrals_valid ? ",energy\n" : "\n");
   for (std::size_t j = 0; j < h.t.size(); ++j) {
     os << h.t[j];
     for (int k = 0; k < n; ++k) os << ',' << h.u(j, k).real() << ',' << h.u(j, k).imag();
     for (int k = 0; k < n; ++k) os << ',' << nh.spins[j * n + k];
     for (int c = 0; c < 4 * n; ++c) os << ',' << nh.quaternions[j * 4 * n + c];
-    os << ',' << h.H[j] << '\n';
+    for (int l = 0; l < nm; ++l) os << ',' << nh.zeta[j * nm + l].real() << ',' << nh.zeta[j * nm + l].imag();
+    if (nh.integrals_valid) os << ',' << h.H[j];
+    os << '\n';
   }
   os.close();
   if (!os) throw std::runtime_error(tmp.string() + ": write failed");
@@ -168,9 +172,11 @@ void write_nonlinear_h5(const NonlinearHistory& nh, int n, const fs::path& tmp) 
   write_attr(file.id, "convention",
              "u_k = n_x - i n_y of body k's axis n_k = R_k e3 (= beta_k - i alpha_k, Krylov angles, to third order); "
              "quaternion (w, x, y, z) of R_k, body -> space; spin = Omega_k . n_k; energy, angular_momentum about "
-             "O_1's start: docs/rom.md, \"Nonlinear chain\"");
-  write_attr(file.id, "max_energy_drift", h.max_energy_drift);
-  write_attr(file.id, "max_momentum_drift", nh.max_momentum_drift);
+             "O_1's start; zeta: the fluid coordinates in each body's frame: docs/rom.md, \"Nonlinear chain\"");
+  if (nh.integrals_valid) {
+    write_attr(file.id, "max_energy_drift", h.max_energy_drift);
+    write_attr(file.id, "max_momentum_drift", nh.max_momentum_drift);
+  }
   write_attr(file.id, "steps", double(h.integrator_steps));
   write_attr(file.id, "rejected_steps", double(nh.rejected_steps));
   write_attr(file.id, "wall_seconds", h.wall_seconds);
@@ -183,7 +189,12 @@ void write_nonlinear_h5(const NonlinearHistory& nh, int n, const fs::path& tmp) 
   write_dataset(file.id, "quaternion", nh.quaternions, N, 4 * n);
   write_dataset(file.id, "spin", nh.spins, N, n);
   write_dataset(file.id, "angular_momentum", nh.momentum, N, 3);
-  write_dataset(file.id, "energy", h.H, N, 0);
+  if (nh.integrals_valid) write_dataset(file.id, "energy", h.H, N, 0);
+  const hsize_t nm = nh.fluid_modes;
+  std::vector<double> zr(N * nm), zi(N * nm);
+  for (hsize_t j = 0; j < N * nm; ++j) { zr[j] = nh.zeta[j].real(); zi[j] = nh.zeta[j].imag(); }
+  write_dataset(file.id, "zeta_re", zr, N, nm);
+  write_dataset(file.id, "zeta_im", zi, N, nm);
 }
 
 }  // namespace
