@@ -1,6 +1,7 @@
-// The nonlinear chain of rigid bodies (Kononov (1999) (1)-(5), without fluid): n bodies joined by spherical
-// joints, body k turning about its joint O_k, O_1 fixed (fixed chain) or free (free chain); gravity, elastic
-// joints, joint friction about the swing and about the axis; every body's spin is a state and may change.
+// The nonlinear chain (Kononov (1999) (1)-(5), the fluid by its modes in each body's frame): n bodies joined by
+// spherical joints, body k turning about its joint O_k, O_1 fixed (fixed chain) or free (free chain); gravity,
+// elastic joints, joint friction about the swing and about the axis, external moments, ideal-fluid tanks; every
+// body's spin is a state and may change.
 // docs/rom.md, "Nonlinear chain", derives what follows and says what is kept.
 //
 // Newton–Euler for body k about its joint O_k (space frame), with the reaction at O_{k+1} eliminated through the

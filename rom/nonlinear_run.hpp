@@ -9,8 +9,8 @@
 
 namespace rc::rom {
 
-// The chain of a scene: masses, moments (B defaults to A), joints. Cavities are refused (SceneError naming the key):
-// the fluid modes do not enter the nonlinear model yet.
+// The chain of a scene: totals with the frozen fluid, moments (B defaults to A), joints, and each ideal tank's kept
+// modes (plus its static correction as a mode of λ = 0). A viscous table is refused (SceneError naming the key).
 NonlinearChain nonlinear_chain(const Scene& scene);
 
 // Body k released with u_k = β_k − iα_k (Krylov angles): attitude R_x(−α_k) R_y(β_k), so that its axis is

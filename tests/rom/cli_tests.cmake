@@ -92,13 +92,15 @@ if(_no_mpl EQUAL 0)
 endif()
 
 # The nonlinear model (docs/rom.md, "Nonlinear chain"): a run at 17 degrees writes attitudes and spins; what only
-# it takes (B != A, moments) is refused by the linear commands, and what it does not take yet (a tank) by it.
+# it takes (B != A, moments) is refused by the linear commands; a tank rides along; a bad moment is refused.
 rom_cli(run_nonlinear ARGS run;nonlinear_chain.toml;-o;out_nonlinear.h5 EXPECT_EXIT 0
         MATCH "wrote out_nonlinear.h5: 5001 samples, model nonlinear[^\n]*\nenergy: [^\n]*angular momentum")
 rom_cli(nonlinear_scene_linear_spectrum ARGS spectrum;nonlinear_chain.toml EXPECT_EXIT 1
         MATCH "^chain-rom: error: [^\n]*body\\[1\\]\\.B: differs from A[^\n]*\n?$")
-rom_cli(bad_nonlinear_cavity ARGS run;bad_nonlinear_cavity.toml;-o;out_bad_nl.h5 EXPECT_EXIT 1
-        MATCH "body\\[1\\]\\.cavity: the nonlinear model takes no fluid yet" NO_FILE out_bad_nl.h5)
+rom_cli(run_nonlinear_tank ARGS run;nonlinear_tank.toml;-o;out_nl_tank.h5 EXPECT_EXIT 0
+        MATCH "wrote out_nl_tank.h5: 101 samples, model nonlinear[^\n]*\nenergy: not an integral with fluid tanks")
+rom_cli(bad_moment ARGS run;bad_moment.toml;-o;out_bad_moment.h5 EXPECT_EXIT 1
+        MATCH "^chain-rom: error: [^\n]*body\\[1\\]\\.moment\\.frequency: missing: a harmonic moment needs it" NO_FILE out_bad_moment.h5)
 # The linear run measures its own validity against the nonlinear chain (with its tanks) and warns past 1 %.
 rom_cli(run_validity ARGS run;two_tops.toml;-o;out_validity.h5 EXPECT_EXIT 0
         MATCH "validity: the nonlinear chain differs by")
