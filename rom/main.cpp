@@ -55,7 +55,7 @@ int run_nonlinear(const rc::rom::Scene& scene, const std::string& out_file) {
   const rc::rom::NonlinearHistory h =
       rc::rom::integrate_nonlinear(chain, rc::rom::nonlinear_initial_state(scene, chain), scene.run);
   rc::rom::write_nonlinear_history(h, chain.size(), out_file);
-  std::cout << "wrote " << out_file << ": " << h.base.t.size() << " samples, model nonlinear (RKMK4, tolerance "
+  std::cout << "wrote " << out_file << ": " << h.base.t.size() << " samples, model nonlinear (Lie-group Dormand-Prince 5(4), tolerance "
             << scene.run.tolerance << ", " << h.base.integrator_steps << " steps, " << h.rejected_steps
             << " rejected), " << h.base.wall_seconds << " s\n";
   const bool damped = std::any_of(chain.joints.begin(), chain.joints.end(),

@@ -259,4 +259,97 @@ ChainState chain_step(const NonlinearChain& c, const ChainState& s, double h) {
   return next;
 }
 
+namespace {
+
+// dexp⁻¹ to fourth order in θ for RKMK of order 5: ω + ½ θ × ω + (1/12) θ × (θ × ω) − (1/720) θ × (θ × (θ × (θ × ω)))
+// (the Bernoulli numbers B2 = 1/6, B4 = −1/30 over k!; the sign of the odd term as in rigid_body.cpp's dexpinv).
+Vector3d dexpinv5(const Vector3d& theta, const Vector3d& omega) {
+  const Vector3d t1 = theta.cross(omega), t2 = theta.cross(t1), t4 = theta.cross(theta.cross(t2));
+  return omega + 0.5 * t1 + t2 / 12.0 - t4 / 720.0;
+}
+
+// Dormand–Prince 5(4) tableau.
+constexpr double kC[7] = {0, 1.0 / 5, 3.0 / 10, 4.0 / 5, 8.0 / 9, 1, 1};
+constexpr double kA[7][6] = {{0, 0, 0, 0, 0, 0},
+                             {1.0 / 5, 0, 0, 0, 0, 0},
+                             {3.0 / 40, 9.0 / 40, 0, 0, 0, 0},
+                             {44.0 / 45, -56.0 / 15, 32.0 / 9, 0, 0, 0},
+                             {19372.0 / 6561, -25360.0 / 2187, 64448.0 / 6561, -212.0 / 729, 0, 0},
+                             {9017.0 / 3168, -355.0 / 33, 46732.0 / 5247, 49.0 / 176, -5103.0 / 18656, 0},
+                             {35.0 / 384, 0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84}};
+constexpr double kB4[7] = {5179.0 / 57600, 0, 7571.0 / 16695, 393.0 / 640, -92097.0 / 339200, 187.0 / 2100, 1.0 / 40};
+
+}  // namespace
+
+ChainStepDP chain_step_dp(const NonlinearChain& c, const ChainState& s, const ChainRates& rates0, double h) {
+  const int n = c.size();
+  const std::size_t nz = s.zeta.size();
+  // Stage derivatives: θ̇ (dexp⁻¹), ω̇, ζ̇, ṙ_1, v̇_1.
+  struct K {
+    std::vector<Vector3d> dtheta, domega;
+    std::vector<std::complex<double>> dzeta;
+    Vector3d dr, dv;
+  };
+  std::vector<K> k(7);
+  ChainState x = s;
+  ChainRates r = rates0;
+  for (int i = 0; i < 7; ++i) {
+    if (i > 0) {
+      x.t = s.t + kC[i] * h;
+      x.r1 = s.r1;
+      x.v1 = s.v1;
+      for (int j = 0; j < i; ++j) {
+        x.r1 += h * kA[i][j] * k[j].dr;
+        x.v1 += h * kA[i][j] * k[j].dv;
+      }
+      for (int b = 0; b < n; ++b) {
+        Vector3d theta = Vector3d::Zero(), omega = s.omega[b];
+        for (int j = 0; j < i; ++j) {
+          theta += h * kA[i][j] * k[j].dtheta[b];
+          omega += h * kA[i][j] * k[j].domega[b];
+        }
+        x.q[b] = rotated(s.q[b], theta);
+        x.omega[b] = omega;
+      }
+      for (std::size_t l = 0; l < nz; ++l) {
+        std::complex<double> z = s.zeta[l];
+        for (int j = 0; j < i; ++j) z += h * kA[i][j] * k[j].dzeta[l];
+        x.zeta[l] = z;
+      }
+      r = chain_rates(c, x);
+    }
+    // θ of this stage, for dexp⁻¹.
+    K& ki = k[i];
+    for (int b = 0; b < n; ++b) {
+      Vector3d theta = Vector3d::Zero();
+      for (int j = 0; j < i; ++j) theta += h * kA[i][j] * k[j].dtheta[b];
+      ki.dtheta.push_back(dexpinv5(theta, x.omega[b]));
+    }
+    ki.domega = r.omega_dot;
+    ki.dzeta = r.zeta_dot;
+    ki.dr = x.v1;
+    ki.dv = r.a1;
+  }
+  ChainStepDP out;
+  out.next = x;  // stage 7 is the order-5 solution (its row of A is b)
+  out.next.t = s.t + h;
+  out.next_rates = r;
+  for (int b = 0; b < n; ++b) {
+    Vector3d dtheta = Vector3d::Zero(), domega = Vector3d::Zero();
+    for (int j = 0; j < 7; ++j) {
+      const double e = (j < 6 ? kA[6][j] : 0.0) - kB4[j];
+      dtheta += h * e * k[j].dtheta[b];
+      domega += h * e * k[j].domega[b];
+    }
+    out.attitude_error = std::max(out.attitude_error, dtheta.norm());
+    out.rate_error = std::max(out.rate_error, domega.norm());
+  }
+  for (std::size_t l = 0; l < nz; ++l) {
+    std::complex<double> dz = 0;
+    for (int j = 0; j < 7; ++j) dz += h * ((j < 6 ? kA[6][j] : 0.0) - kB4[j]) * k[j].dzeta[l];
+    out.rate_error = std::max(out.rate_error, std::abs(dz));
+  }
+  return out;
+}
+
 }  // namespace rc::rom

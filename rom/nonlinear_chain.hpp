@@ -91,4 +91,16 @@ std::vector<Eigen::Vector3d> chain_axes(const ChainState& state);
 // One RKMK4 step (rigid_body.hpp's Lie-group Runge–Kutta, one rotation vector per body; O_1 by classical RK4).
 ChainState chain_step(const NonlinearChain& chain, const ChainState& state, double h);
 
+// One step of the Munthe-Kaas Lie-group form of Dormand–Prince 5(4) (dexp⁻¹ to fourth order in θ): the order-5
+// state, the local error estimate (order 5 minus its embedded order 4) and the rates at the new state, which are
+// the next step's first stage (first same as last). `rates` are the rates at `state` (from the previous step, or
+// chain_rates).
+struct ChainStepDP {
+  ChainState next;
+  ChainRates next_rates;
+  double attitude_error = 0;             // largest |θ₅ − θ₄| over the bodies (rad)
+  double rate_error = 0;                 // largest |ω₅ − ω₄|, |ζ₅ − ζ₄| (rad/s)
+};
+ChainStepDP chain_step_dp(const NonlinearChain& chain, const ChainState& state, const ChainRates& rates, double h);
+
 }  // namespace rc::rom

@@ -1,6 +1,6 @@
 // `chain-rom run` with `[run] model = "nonlinear"` (docs/rom.md, "Nonlinear chain"): the scene's chain as
-// nonlinear_chain.hpp's rigid bodies, its initial state from the scene's Krylov angles, rates and spins, and the
-// RKMK4 integration with step-doubling error control, sampled at run.output_step.
+// nonlinear_chain.hpp's bodies and tanks, its initial state from the scene's Krylov angles, rates and spins, and the
+// Lie-group Dormand–Prince integration with error control, sampled at run.output_step.
 #pragma once
 
 #include "nonlinear_chain.hpp"
@@ -38,9 +38,10 @@ struct NonlinearHistory {
   long rejected_steps = 0;
 };
 
-// Integrates to run.t_end. Error control: each step is taken once with h and twice with h/2; the difference (the
-// attitudes' angle in rad, the rates relative to max(1 rad/s, the largest |ω|)) must stay under run.tolerance, and
-// the two half steps are kept. Throws std::runtime_error past kMaxIntegratorSteps steps or on a non-finite state.
+// Integrates to run.t_end by the Lie-group Dormand–Prince 5(4) (nonlinear_chain.hpp, chain_step_dp) with error
+// control: the local error estimate (the attitudes in rad, the rates and fluid coordinates relative to max(1 rad/s, the
+// largest |ω|)) must stay under run.tolerance. Throws std::runtime_error past kMaxIntegratorSteps steps, on a step
+// below 1e-13 s, or on a non-finite state.
 NonlinearHistory integrate_nonlinear(const NonlinearChain& chain, const ChainState& initial, const RunSpec& run);
 
 }  // namespace rc::rom
