@@ -24,6 +24,8 @@ struct Frames {
 
 Frames frames(const NonlinearChain& c, const ChainState& s) {
   Frames f;
+  for (auto* v : {&f.R, &f.J}) v->reserve(c.size());
+  for (auto* v : {&f.n, &f.rho, &f.S, &f.Omega}) v->reserve(c.size());
   for (int k = 0; k < c.size(); ++k) {
     const ChainBody& b = c.bodies[k];
     const Matrix3d R = s.q[k].toRotationMatrix();
@@ -104,8 +106,11 @@ ChainRates chain_rates(const NonlinearChain& c, const ChainState& s) {
   std::vector<int> first_mode(n + 1, 0);  // body k's modes are zeta[first_mode[k] .. first_mode[k + 1])
   for (int k = 0; k < n; ++k) first_mode[k + 1] = first_mode[k] + static_cast<int>(c.bodies[k].fluid.size());
 
-  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(dim, dim);
-  Eigen::VectorXd rhs(dim);
+  // Reused between calls (one set per thread): the stages of a run call this hundreds of thousands of times.
+  thread_local Eigen::MatrixXd M;
+  thread_local Eigen::VectorXd rhs;
+  M.setZero(dim, dim);
+  rhs.resize(dim);
   for (int k = 0; k < n; ++k) {
     const double m = c.bodies[k].mass, above = mu[k + 1];
     const Vector3d lever = m * f.rho[k] + above * f.S[k];  // m_k ρ_k + Σ_{j>k} m_j S_k
@@ -133,10 +138,13 @@ ChainRates chain_rates(const NonlinearChain& c, const ChainState& s) {
     for (int j = 0; j < n; ++j) r -= c.bodies[j].mass * d[j];
     rhs.segment<3>(3 * n) = r;
   }
-  const Eigen::LDLT<Eigen::MatrixXd> ldlt(M);
-  if (ldlt.info() != Eigen::Success || !ldlt.isPositive() || ldlt.vectorD().minCoeff() <= 0)
-    throw std::runtime_error("nonlinear chain: the mass matrix is singular (a body without inertia?)");
-  const Eigen::VectorXd x = ldlt.solve(rhs);
+  // Symmetric positive definite for any attitude (a kinetic energy): Cholesky, which also says when it is not.
+  thread_local Eigen::LLT<Eigen::MatrixXd> llt;
+  llt.compute(M);
+  if (llt.info() != Eigen::Success)
+    throw std::runtime_error("nonlinear chain: the mass matrix is not positive definite (a body without inertia?)");
+  llt.solveInPlace(rhs);
+  const Eigen::VectorXd& x = rhs;
   ChainRates out;
   for (int k = 0; k < n; ++k) out.omega_dot.push_back(f.R[k].transpose() * x.segment<3>(3 * k));
   if (c.free_chain) out.a1 = x.segment<3>(3 * n);
@@ -344,11 +352,13 @@ ChainStepDP chain_step_dp(const NonlinearChain& c, const ChainState& s, const Ch
     out.attitude_error = std::max(out.attitude_error, dtheta.norm());
     out.rate_error = std::max(out.rate_error, domega.norm());
   }
+  double zeta_error2 = 0;
   for (std::size_t l = 0; l < nz; ++l) {
     std::complex<double> dz = 0;
     for (int j = 0; j < 7; ++j) dz += h * ((j < 6 ? kA[6][j] : 0.0) - kB4[j]) * k[j].dzeta[l];
-    out.rate_error = std::max(out.rate_error, std::abs(dz));
+    zeta_error2 = std::max(zeta_error2, std::norm(dz));
   }
+  out.rate_error = std::max(out.rate_error, std::sqrt(zeta_error2));
   return out;
 }
 
