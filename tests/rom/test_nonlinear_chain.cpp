@@ -268,3 +268,116 @@ TEST(NonlinearChain, DespunTopTopplesWhenItsSpinCrossesTheLinearThreshold) {
   EXPECT_NEAR(lag, predicted, 0.005) << "the tilt grew at a spin the linear theory does not predict";
   EXPECT_NEAR(h.spins.back(), spin0 - despin * 60, 1e-6);  // the axial moment alone changes the spin
 }
+
+namespace {
+
+// Jacobi's sn, cn, dn of argument u and parameter m = k² by the arithmetic-geometric mean (Abramowitz and Stegun
+// 16.4): an independent closed form for the free body below.
+void jacobi(double u, double m, double& sn, double& cn, double& dn) {
+  std::vector<double> a{1.0}, c{std::sqrt(m)};
+  double b = std::sqrt(1 - m);
+  while (std::abs(c.back()) > 1e-16) {
+    const double an = 0.5 * (a.back() + b), cn_ = 0.5 * (a.back() - b);
+    b = std::sqrt(a.back() * b);
+    a.push_back(an);
+    c.push_back(cn_);
+  }
+  const std::size_t N = a.size() - 1;
+  std::vector<double> phi(N + 1);
+  phi[N] = std::ldexp(a[N] * u, static_cast<int>(N));
+  for (std::size_t n = N; n > 0; --n) phi[n - 1] = 0.5 * (phi[n] + std::asin(c[n] / a[n] * std::sin(phi[n])));
+  sn = std::sin(phi[0]);
+  cn = std::cos(phi[0]);
+  dn = N > 0 ? cn / std::cos(phi[1] - phi[0]) : 1.0;
+}
+
+}  // namespace
+
+// The free asymmetric body (a chain of one body turning about its centre of mass, no gravity) against Euler's
+// equations solved by Jacobi's elliptic functions (Landau and Lifshitz, Mechanics, §37): for A < B < C and
+// L² > 2EB, ω1 = ω1m cn τ, ω2 = ω2m sn τ, ω3 = ω3m dn τ, τ = t ((C − B)(L² − 2EA)/(ABC))^{1/2}.
+TEST(NonlinearChain, FreeAsymmetricBodyFollowsJacobisEllipticFunctions) {
+  NonlinearChain chain;
+  ChainBody body;
+  body.mass = 1.0;
+  body.A = 1.0;
+  body.B = 2.0;
+  body.C = 3.0;
+  chain.bodies = {body};
+  chain.joints = {{0, 0, 0}};
+  ChainState s;
+  s.q = {Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Vector3d(1, 2, 0).normalized()))};
+  s.omega = {Vector3d(0.6, 0.0, 1.0)};  // ω2 = 0 at t = 0: the phase of the closed form below
+  const double A = 1, B = 2, C = 3, w1 = 0.6, w3 = 1.0;
+  const double E2 = A * w1 * w1 + C * w3 * w3, L2 = A * A * w1 * w1 + C * C * w3 * w3;  // 2E and L²
+  ASSERT_GT(L2, E2 * B);
+  const double w1m = std::sqrt((E2 * C - L2) / (A * (C - A))), w2m = std::sqrt((E2 * C - L2) / (B * (C - B)));
+  const double w3m = std::sqrt((L2 - E2 * A) / (C * (C - A)));
+  const double rate = std::sqrt((C - B) * (L2 - E2 * A) / (A * B * C));
+  const double m = (B - A) * (E2 * C - L2) / ((C - B) * (L2 - E2 * A));
+  ChainRates r = chain_rates(chain, s);
+  double worst = 0;
+  const double h = 2e-3;
+  for (int i = 1; i <= 10000; ++i) {  // 20 s, several periods of the nutation
+    const ChainStepDP dp = chain_step_dp(chain, s, r, h);
+    s = dp.next;
+    r = dp.next_rates;
+    double sn, cn, dn;
+    jacobi(rate * i * h, m, sn, cn, dn);
+    worst = std::max(worst, (s.omega[0] - Vector3d(w1m * cn, w2m * sn, w3m * dn)).norm());
+  }
+  std::printf("free body A, B, C = 1, 2, 3 (k^2 = %.4f): |omega - Jacobi| <= %.2e over 20 s (h = %g)\n", m, worst, h);
+  EXPECT_LE(worst, 1e-9);
+}
+
+// The heavy symmetric top's nutation period from its closed form: cos θ = u moves between the roots u1 < u2 of
+// u̇² = f(u) = (2mgl/A)(u − u1)(u − u2)(u − u3), so the period is 2 ∫ du / f^{1/2}, which u = u1 + (u2 − u1)(1 − cos φ)/2
+// makes smooth: T = 2 ∫_0^π dφ / ((2mgl/A)(u3 − u))^{1/2}. Measured through `run`'s integration of the chain of one
+// body: the mean time between downward crossings of the middle of the band, over 20 periods.
+TEST(NonlinearChain, LagrangeTopHasItsNutationPeriod) {
+  const Scene scene = parse_scene_text(
+      "[system]\nkind = \"fixed\"\ngravity = 9.81\n[[body]]\nmass = 2.0\nA = 0.05\nC = 0.03\ncom = 0.1\nspin = 40.0\n"
+      "[initial]\ntilt = [[1.0, 0.0]]\n[run]\nt_end = 8.0\noutput_step = 1e-4\nmodel = \"nonlinear\"\ntolerance = 1e-12\n",
+      ".", "lagrange");
+  const NonlinearChain chain = nonlinear_chain(scene);
+  const ChainState s0 = nonlinear_initial_state(scene, chain);
+  const double A = 0.05, mgl = 2 * 9.81 * 0.1, L3 = 0.03 * 40;
+  const double Lz = chain_angular_momentum(chain, s0).z();
+  const double Ep = chain_energy(chain, s0) - L3 * L3 / (2 * 0.03);
+  // The cubic's roots: u1 < u2 in (−1, 1) by bisection on a scan, u3 > 1 from the sum of the roots,
+  // u1 + u2 + u3 = (E' + L3²/(2A)) / (m g l) (the ratio of f's u² and u³ coefficients).
+  const auto f = [&](double u) { return 2 * (Ep - mgl * u) * (1 - u * u) / A - std::pow((Lz - L3 * u) / A, 2); };
+  std::vector<double> roots;
+  for (int i = 0; i < 20000; ++i) {
+    double a = -1 + 2.0 * i / 20000, b = -1 + 2.0 * (i + 1) / 20000;
+    if (f(a) * f(b) > 0) continue;
+    for (int it = 0; it < 200; ++it) (f(a) * f(0.5 * (a + b)) <= 0 ? b : a) = 0.5 * (a + b);
+    roots.push_back(0.5 * (a + b));
+  }
+  ASSERT_EQ(roots.size(), 2u);
+  const double u1 = roots[0], u2 = roots[1], u3 = (Ep + L3 * L3 / (2 * A)) / mgl - u1 - u2;
+  ASSERT_GT(u3, 1.0);
+  ASSERT_NEAR(f(u3) / std::abs(f(0.5 * (u1 + u2))), 0, 1e-6);
+  double T = 0;
+  const int N = 2000;  // midpoint rule on a smooth periodic-even integrand: spectrally accurate
+  for (int i = 0; i < N; ++i) {
+    const double phi = M_PI * (i + 0.5) / N, u = u1 + (u2 - u1) * (1 - std::cos(phi)) / 2;
+    T += 2 * (M_PI / N) / std::sqrt(2 * mgl / A * (u3 - u));
+  }
+  const NonlinearHistory h = integrate_nonlinear(chain, s0, scene.run);
+  const double mid = 0.5 * (u1 + u2);
+  std::vector<double> crossings;
+  double previous = 0;
+  for (std::size_t j = 0; j < h.base.t.size(); ++j) {
+    const double* q = &h.quaternions[4 * j];
+    const double u = 1 - 2 * (q[1] * q[1] + q[2] * q[2]);  // (R e3)_z
+    if (j > 0 && previous > mid && u <= mid)
+      crossings.push_back(h.base.t[j - 1] + (previous - mid) / (previous - u) * (h.base.t[j] - h.base.t[j - 1]));
+    previous = u;
+  }
+  ASSERT_GE(crossings.size(), 21u);
+  const double measured = (crossings[20] - crossings[0]) / 20;
+  std::printf("Lagrange top: nutation between cos(theta) = %.9f and %.9f, period %.10f s (closed form), %.10f s "
+              "(integrated): %.1e relative\n", u1, u2, T, measured, std::abs(measured - T) / T);
+  EXPECT_NEAR(measured, T, 1e-9 * T);  // measured 3.4e-12
+}
