@@ -256,4 +256,14 @@ ChainModel build_model(const Scene& scene, TableCache* tables, bool linear_keys_
   return cm;
 }
 
+Eigen::VectorXcd initial_fluid(const Scene& scene, int n_modes) {
+  if (scene.fluid.empty()) return Eigen::VectorXcd::Zero(n_modes);
+  if (static_cast<int>(scene.fluid.size()) != n_modes)
+    fail(scene, "initial.fluid", "has " + std::to_string(scene.fluid.size()) + " entries, the scene keeps " +
+                                     std::to_string(n_modes) + " fluid modes (one [re, im] per kept mode, body by body)");
+  Eigen::VectorXcd z(n_modes);
+  for (int l = 0; l < n_modes; ++l) z[l] = scene.fluid[l];
+  return z;
+}
+
 }  // namespace rc::rom

@@ -72,6 +72,10 @@ struct ChainModel {
   bool dissipative() const { return has_friction() || viscous; }
 };
 
+// The scene's initial fluid coordinates z_kl(0) (initial.fluid), one per kept mode of the model, body by body; zeros
+// when absent. Throws SceneError naming initial.fluid when the count differs from the kept modes'.
+Eigen::VectorXcd initial_fluid(const Scene& scene, int n_modes);
+
 // Relative tolerance between the scene's Ek = nu/(|omega_k0| L^2) and a viscous table's ekman.
 inline constexpr double kEkmanTolerance = 0.01;
 

@@ -42,7 +42,8 @@ struct ChainBody {
   double axial_moment = 0;
   Eigen::Vector3d space_moment = Eigen::Vector3d::Zero(), harmonic_moment = Eigen::Vector3d::Zero();
   double frequency = 0;          // Hz
-  std::vector<ChainFluidMode> fluid;  // the kept modes of its cavity (ideal fluid)
+  std::vector<ChainFluidMode> fluid;  // the kept modes of its cavity (ideal fluid), then the static correction's
+  int kept_modes = 0;                 // how many of `fluid` are the table's kept modes
   double fluid_E_total = 0;      // Σ E of the kept modes + the static correction: the transverse inertia the fluid does
                                  // not carry rigidly (A − E_total is the body's instantaneous inertia, as M_eff in (26))
 };

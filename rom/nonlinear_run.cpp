@@ -19,6 +19,12 @@ using Eigen::Vector3d;
   throw SceneError(s.file.string() + ": " + key + ": " + cause);
 }
 
+int kept_modes(const NonlinearChain& chain) {
+  int n = 0;
+  for (const auto& b : chain.bodies) n += b.kept_modes;
+  return n;
+}
+
 bool finite(const ChainState& s) {
   for (std::size_t k = 0; k < s.q.size(); ++k)
     if (!s.q[k].coeffs().allFinite() || !s.omega[k].allFinite()) return false;
@@ -71,6 +77,7 @@ NonlinearChain nonlinear_chain(const Scene& scene) {
       if (m.body == static_cast<int>(k)) body.fluid.push_back({m.E, m.lambda_table});
     // The static correction, the left-out modes' λ → 0 limit: in the body frame a mode of λ = 0 (frequency-independent
     // inertia in space, as in (26)'s M_eff; as E_total Ṗ alone in the body frame it would add a gyroscopic term).
+    body.kept_modes = static_cast<int>(body.fluid.size());
     if (t.E_rem > 0) body.fluid.push_back({t.E_rem, 0.0});
     body.fluid_E_total = t.E_kept + t.E_rem;
     c.bodies.push_back(body);
@@ -94,7 +101,11 @@ ChainState nonlinear_initial_state(const Scene& scene, const NonlinearChain& cha
     s.q.push_back(q);
     s.omega.push_back(q.conjugate() * Omega);
   }
-  s.zeta.assign(chain.fluid_modes(), 0.0);  // the fluid at rest relative to its body, as in the linear model
+  // The fluid: the scene's z_kl(0) for the kept modes (ζ = z at t = 0), the static correction's mode at rest.
+  const Eigen::VectorXcd z0 = initial_fluid(scene, kept_modes(chain));
+  for (int k = 0, l = 0; k < chain.size(); ++k)
+    for (std::size_t j = 0; j < chain.bodies[k].fluid.size(); ++j)
+      s.zeta.push_back(static_cast<int>(j) < chain.bodies[k].kept_modes ? z0[l++] : 0.0);
   if (chain.free_chain) {
     // The whole chain's centre of mass at rest (as the linear free chain takes it, docs/free-chain.md): O_1 moves
     // against the bodies' swing.

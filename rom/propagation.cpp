@@ -103,7 +103,8 @@ History propagate(const ChainModel& m, const Scene& scene) {
     u0[k] = scene.tilt[k];
     v0[k] = scene.rate[k];
   }
-  const Eigen::VectorXcd y0 = f.to_state(m, u0, v0, z0);  // fluid initially at rest relative to its body
+  z0 = initial_fluid(scene, nm);  // at rest relative to its body unless the scene says otherwise
+  const Eigen::VectorXcd y0 = f.to_state(m, u0, v0, z0);
   const double h = scene.run.output_step;
   const long steps = static_cast<long>(std::floor(scene.run.t_end / h + 1e-9));
   if (steps > 50000000L) throw std::runtime_error("run.output_step: more than 5e7 output steps");

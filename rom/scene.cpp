@@ -241,9 +241,15 @@ Scene parse_scene_text(const std::string& text, const std::filesystem::path& bas
   s.tilt.assign(n, 0.0);
   s.rate.assign(n, 0.0);
   if (const toml::table* ini = sub_table(c, root, "initial", "initial")) {
-    check_keys(c, *ini, "initial", {"tilt", "rate"});
+    check_keys(c, *ini, "initial", {"tilt", "rate", "fluid"});
     s.tilt = get_complex_array(c, *ini, "tilt", "initial.tilt", n);
     s.rate = get_complex_array(c, *ini, "rate", "initial.rate", n);
+    // The fluid's initial state, one pair per kept mode (its count is known once the tables are read: checked there).
+    if (const toml::node* fl = ini->get("fluid")) {
+      const toml::array* arr = fl->as_array();
+      if (!arr) c.fail("initial.fluid", "must be an array of [re, im] pairs, one per kept fluid mode");
+      s.fluid = get_complex_array(c, *ini, "fluid", "initial.fluid", arr->size());
+    }
   }
 
   if (const toml::table* run = sub_table(c, root, "run", "run")) {

@@ -77,6 +77,7 @@ struct Scene {
   double support_friction = 0;    // alpha_1
   double support_axial_friction = 0;  // on body 1's spin (nonlinear model only)
   std::vector<std::complex<double>> tilt, rate;  // u_k(0), du_k/dt(0); zeros when absent
+  std::vector<std::complex<double>> fluid;        // z_kl(0) of the kept modes, body by body (empty: at rest)
   RunSpec run;
   std::size_t size() const { return bodies.size(); }
 };

@@ -162,6 +162,7 @@ TEST(NonlinearChain, SmallAmplitudeWithFluidIsTheLinearChain) {
   std::vector<double> rel;
   for (double eps : {0.02, 0.01, 0.005}) {
     const std::string t = std::to_string(eps), r1 = std::to_string(25 * eps), r2 = std::to_string(15 * eps);
+    const std::string f1 = std::to_string(1500 * eps), f2 = std::to_string(-1000 * eps);  // fluid coordinates, rad/s
     const std::string text =
         "[system]\nkind = \"fixed\"\ngravity = 9.81\n"
         "[[body]]\nmass = 3.0\nA = 0.066\nC = 0.02\ncom = 0.12\nnext_joint = 0.3\nspin = 300.0\n"
@@ -173,9 +174,18 @@ TEST(NonlinearChain, SmallAmplitudeWithFluidIsTheLinearChain) {
         "[[joint]]\nstiffness = 200.0\n[[joint]]\nstiffness = 100.0\n"
         "[initial]\ntilt = [[" + t + ", 0.0], [0.0, " + t + "], [" + t + ", " + t + "]]\n"
         "rate = [[0.0, " + r1 + "], [" + r2 + ", 0.0], [0.0, 0.0]]\n"
+        "fluid = [[" + f1 + ", " + f2 + "], [0.0, " + f1 + "], [" + f2 + ", 0.0], [" + f1 + ", " + f1 + "]]\n"
         "[run]\nt_end = 1.0\noutput_step = 0.01\n";
     const Scene scene = parse_scene_text(text, test::test_dir(), "fluid");
     const History linear = propagate(build_model(scene), scene);
+    if (eps == 0.005) {  // the initial fluid state must matter at this amplitude, or the test would not see it
+      Scene at_rest = scene;
+      at_rest.fluid.clear();
+      const History rest = propagate(build_model(at_rest), at_rest);
+      const double effect = (linear.u - rest.u).cwiseAbs().maxCoeff() / eps;
+      std::printf("initial fluid state moves the tilts by %.3e of the amplitude\n", effect);
+      EXPECT_GT(effect, 0.1);  // measured 0.26, against the models' 0.0175 difference
+    }
     RunSpec nl = scene.run;
     nl.model = "nonlinear";
     nl.tolerance = 1e-13;
@@ -380,4 +390,27 @@ TEST(NonlinearChain, LagrangeTopHasItsNutationPeriod) {
   std::printf("Lagrange top: nutation between cos(theta) = %.9f and %.9f, period %.10f s (closed form), %.10f s "
               "(integrated): %.1e relative\n", u1, u2, T, measured, std::abs(measured - T) / T);
   EXPECT_NEAR(measured, T, 1e-9 * T);  // measured 3.4e-12
+}
+
+// initial.fluid needs one pair per kept mode: a wrong count is refused by both models, naming the key.
+TEST(NonlinearChain, InitialFluidStateMustMatchTheKeptModes) {
+  const std::string text = "[system]\nkind = \"fixed\"\ngravity = 9.81\n[[body]]\nmass = 2.0\nA = 0.05\nC = 0.08\n"
+                           "com = 0.05\nspin = 200.0\n[body.cavity]\ntable = \"" + test::spheroid_file(1, 0.5) +
+                           "\"\ndensity = 1000.0\nscale = 0.04\ncenter = 0.05\n"
+                           "[initial]\ntilt = [[0.01, 0.0]]\nfluid = [[1.0, 0.0], [0.5, 0.0]]\n"
+                           "[run]\nt_end = 0.1\noutput_step = 0.01\n";
+  const Scene scene = parse_scene_text(text, test::test_dir(), "fluid-count");
+  const auto refuses = [](auto&& f) {
+    try {
+      f();
+    } catch (const SceneError& e) {
+      return std::string(e.what()).find("initial.fluid: has 2 entries, the scene keeps 1 fluid modes") != std::string::npos;
+    }
+    return false;
+  };
+  EXPECT_TRUE(refuses([&] { propagate(build_model(scene), scene); }));
+  EXPECT_TRUE(refuses([&] {
+    const NonlinearChain chain = nonlinear_chain(scene);
+    nonlinear_initial_state(scene, chain);
+  }));
 }
