@@ -11,24 +11,6 @@
 namespace rc::rom {
 namespace {
 
-// The scene with every cavity frozen into its body (the model's totals) and no fluid coordinates.
-Scene frozen_scene(const Scene& scene, const ChainModel& model) {
-  Scene s = scene;
-  for (std::size_t k = 0; k < s.size(); ++k) {
-    const BodyModel& b = model.bodies[k];
-    BodySpec& spec = s.bodies[k];
-    spec.mass = b.m;
-    spec.A = b.A;
-    spec.B.reset();
-    spec.C = b.C;
-    spec.com = b.c;
-    spec.cavity.reset();
-  }
-  s.run.method = "exact";
-  s.run.tolerance = kValidityTolerance;
-  return s;
-}
-
 Scene with_tolerance(const Scene& scene) {
   Scene s = scene;
   s.run.method = "exact";
@@ -54,11 +36,11 @@ LinearValidity linear_validity(const Scene& scene, const ChainModel& model) {
     return v;
   }
   try {
-    // Ideal tanks enter both models with their modes; viscous ones (not in the nonlinear model) are frozen.
-    const Scene frozen = model.viscous ? frozen_scene(scene, model) : with_tolerance(scene);
-    const History linear = propagate(build_model(frozen), frozen);
-    const NonlinearChain chain = nonlinear_chain(frozen);
-    const NonlinearHistory nonlinear = integrate_nonlinear(chain, nonlinear_initial_state(frozen, chain), frozen.run);
+    // Every tank, ideal or viscous, enters both models with its kept modes.
+    const Scene checked = with_tolerance(scene);
+    const History linear = propagate(model, checked);
+    const NonlinearChain chain = nonlinear_chain(checked);
+    const NonlinearHistory nonlinear = integrate_nonlinear(chain, nonlinear_initial_state(checked, chain), checked.run);
     const double scale = linear.u.cwiseAbs().maxCoeff();
     double diff = 0;
     for (Eigen::Index j = 0; j < linear.u.rows(); ++j)
@@ -66,7 +48,6 @@ LinearValidity linear_validity(const Scene& scene, const ChainModel& model) {
     if (!(scale > 0) || !std::isfinite(diff)) throw std::runtime_error("no finite tilts to compare");
     v.difference = diff / scale;
     v.amplitude_at_limit = v.difference > 0 ? v.amplitude * std::sqrt(kLinearValidityLimit / v.difference) : INFINITY;
-    v.fluid_frozen = model.viscous;
     v.measured = true;
   } catch (const std::exception& e) {
     v.why_not = e.what();

@@ -1,10 +1,8 @@
 // How far the linear model's amplitude is from its validity (docs/rom.md, "Nonlinear chain"): the scene run once by
 // the linearised equations (26) propagated exactly and once by the nonlinear chain (nonlinear_chain.hpp) from the same
 // initial state; their largest tilt difference relative to the largest linear tilt measures the nonlinearity at this
-// amplitude. Ideal tanks enter both with their modes; viscous tanks, which the nonlinear model does not take, are
-// frozen into their bodies in both (the fluid's equations are linear in both models, so the frozen chain still
-// carries the geometric nonlinearity). Since the difference grows like the amplitude squared (tested), the amplitude
-// at which it reaches 1 % is amplitude · (0.01 / difference)^{1/2}.
+// amplitude. Every tank, ideal or viscous, enters both with its kept modes. Since the difference grows like the
+// amplitude squared (tested), the amplitude at which it reaches 1 % is amplitude · (0.01 / difference)^{1/2}.
 #pragma once
 
 #include "chain_model.hpp"
@@ -20,7 +18,6 @@ inline constexpr double kValidityTolerance = 1e-10;       // local error of the 
 
 struct LinearValidity {
   bool measured = false;
-  bool fluid_frozen = false;    // viscous tanks: frozen in both models
   std::string why_not;          // when not measured
   double difference = 0;        // max_t |u_nonlinear − u_linear| / max_t |u_linear|
   double amplitude = 0;         // max_k |u_k(0)| + |u̇_k(0)| / max(1, |spin|) — the scene's initial amplitude (rad)

@@ -58,6 +58,11 @@ int run_nonlinear(const rc::rom::Scene& scene, const std::string& out_file) {
   std::cout << "wrote " << out_file << ": " << h.base.t.size() << " samples, model nonlinear (Lie-group Dormand-Prince 5(4), tolerance "
             << scene.run.tolerance << ", " << h.base.integrator_steps << " steps, " << h.rejected_steps
             << " rejected), " << h.base.wall_seconds << " s\n";
+  if (h.viscous_spin_change > rc::rom::kEkmanTolerance)
+    std::fprintf(stderr, "chain-rom: warning: a body with a viscous tank changed its spin by %.3g %%: its table holds "
+                         "for the scene's spin (Ek to %.3g %%), and the modes were scaled as if Ek stayed (docs/rom.md, "
+                         "\"Nonlinear chain\", \"Viscous tanks\")\n",
+                 100 * h.viscous_spin_change, 100 * rc::rom::kEkmanTolerance);
   const bool damped = std::any_of(chain.joints.begin(), chain.joints.end(),
                                   [](const rc::rom::ChainJoint& j) { return j.friction > 0 || j.axial_friction > 0; });
   if (!h.integrals_valid) {
@@ -258,16 +263,16 @@ int main(int argc, char** argv) {
         // No verdict (the eigen-solver failed): the propagation reports its own trouble.
       }
       rc::rom::History h = rc::rom::propagate(model, scene);
-      // Is the amplitude small enough for the linear model? Measured against the nonlinear chain (fluid frozen).
+      // Is the amplitude small enough for the linear model? Measured against the nonlinear chain.
       const rc::rom::LinearValidity validity = rc::rom::linear_validity(scene, model);
       if (validity.measured) {
         h.nonlinear_difference = validity.difference;
         h.amplitude_at_limit = validity.amplitude_at_limit;
         if (validity.difference > rc::rom::kLinearValidityLimit)
           std::fprintf(stderr, "chain-rom: warning: at this amplitude (%.3g rad) the tilts differ from the nonlinear chain's "
-                               "%sby %.2g %%: the linear model holds to 1 %% below about %.3g rad (docs/rom.md, "
+                               "by %.2g %%: the linear model holds to 1 %% below about %.3g rad (docs/rom.md, "
                                "\"Nonlinear chain\"); [run] model = \"nonlinear\" integrates the full motion\n",
-                       validity.amplitude, validity.fluid_frozen ? "(fluid frozen) " : "", 100 * validity.difference,
+                       validity.amplitude, 100 * validity.difference,
                        validity.amplitude_at_limit);
       } else {
         h.validity_note = validity.why_not;
@@ -282,7 +287,7 @@ int main(int argc, char** argv) {
       std::cout << "wrote " << out_file << ": " << h.t.size() << " samples, method " << h.method_used
                 << ", " << h.wall_seconds << " s (CPU " << h.cpu_seconds << " s)\n";
       if (validity.measured)
-        std::cout << "validity: the nonlinear chain" << (validity.fluid_frozen ? " (fluid frozen)" : "") << " differs by "
+        std::cout << "validity: the nonlinear chain differs by "
                   << validity.difference
                   << " relative (1 % at about " << validity.amplitude_at_limit << " rad; checked in "
                   << validity.seconds << " s)\n";

@@ -2,6 +2,7 @@
 
 #include "rigid_body.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace rc::rom {
@@ -64,8 +65,15 @@ std::vector<Vector3d> joint_torques(const NonlinearChain& c, const Frames& f) {
 Vector3d fluid_moment(const ChainBody& b, double spin, const std::complex<double>* zeta) {
   std::complex<double> X = 0;
   for (std::size_t l = 0; l < b.fluid.size(); ++l)
-    X += b.fluid[l].E * (spin - spin * b.fluid[l].lambda_table) * zeta[l];
+    X += mode_E(b.fluid[l].E, spin) * (spin - mode_lambda(b.fluid[l], spin)) * zeta[l];
   return {X.real(), -X.imag(), 0.0};
+}
+
+// The E_total Ṗ part of the fluid's moment, as a matrix on Ω̇ in space: M_p − i M_q = E Ṗ with E = E_r + i E_i is
+// E_r (ṗ, q̇) + E_i (q̇, −ṗ) in the body frame, i.e. E_r (I − n nᵀ) Ω̇ + E_i Ω̇ × n in space.
+Matrix3d fluid_inertia(const ChainBody& b, double spin, const Vector3d& n) {
+  const std::complex<double> E = mode_E(b.fluid_E_total, spin);
+  return E.real() * (Matrix3d::Identity() - n * n.transpose()) - E.imag() * skew(n);
 }
 
 // The external moments at time t (space frame).
@@ -118,8 +126,7 @@ ChainRates chain_rates(const NonlinearChain& c, const ChainState& s) {
       Matrix3d block;
       if (i < k) block = -skew(lever) * skew(f.S[i]);
       else if (i == k)
-        block = f.J[k] - above * skew(f.S[k]) * skew(f.S[k]) -
-                c.bodies[k].fluid_E_total * (Matrix3d::Identity() - f.n[k] * f.n[k].transpose());
+        block = f.J[k] - above * skew(f.S[k]) * skew(f.S[k]) - fluid_inertia(c.bodies[k], s.omega[k].z(), f.n[k]);
       else block = -skew(f.S[k]) * skew(mu[i + 1] * f.S[i] + c.bodies[i].mass * f.rho[i]);
       M.block<3, 3>(3 * k, 3 * i) = block;
     }
@@ -138,12 +145,23 @@ ChainRates chain_rates(const NonlinearChain& c, const ChainState& s) {
     for (int j = 0; j < n; ++j) r -= c.bodies[j].mass * d[j];
     rhs.segment<3>(3 * n) = r;
   }
-  // Symmetric positive definite for any attitude (a kinetic energy): Cholesky, which also says when it is not.
-  thread_local Eigen::LLT<Eigen::MatrixXd> llt;
-  llt.compute(M);
-  if (llt.info() != Eigen::Success)
-    throw std::runtime_error("nonlinear chain: the mass matrix is not positive definite (a body without inertia?)");
-  llt.solveInPlace(rhs);
+  // Symmetric positive definite for any attitude (a kinetic energy): Cholesky, which also says when it is not. A
+  // viscous tank without its static correction adds a skew part (fluid_inertia): then LU.
+  bool symmetric = true;
+  for (const auto& b : c.bodies) symmetric = symmetric && b.fluid_E_total.imag() == 0;
+  if (symmetric) {
+    thread_local Eigen::LLT<Eigen::MatrixXd> llt;
+    llt.compute(M);
+    if (llt.info() != Eigen::Success)
+      throw std::runtime_error("nonlinear chain: the mass matrix is not positive definite (a body without inertia?)");
+    llt.solveInPlace(rhs);
+  } else {
+    thread_local Eigen::PartialPivLU<Eigen::MatrixXd> lu;
+    lu.compute(M);
+    if (!(std::abs(lu.determinant()) > 0))
+      throw std::runtime_error("nonlinear chain: the mass matrix is singular (a body without inertia?)");
+    rhs = lu.solve(rhs);
+  }
   const Eigen::VectorXd& x = rhs;
   ChainRates out;
   for (int k = 0; k < n; ++k) out.omega_dot.push_back(f.R[k].transpose() * x.segment<3>(3 * k));
@@ -153,8 +171,8 @@ ChainRates chain_rates(const NonlinearChain& c, const ChainState& s) {
     const std::complex<double> P_dot(out.omega_dot[k].x(), -out.omega_dot[k].y());
     const double spin = s.omega[k].z();
     for (int l = 0; l < static_cast<int>(c.bodies[k].fluid.size()); ++l) {
-      const double lambda = spin * c.bodies[k].fluid[l].lambda_table;
-      out.zeta_dot.push_back(std::complex<double>(0, lambda) * s.zeta[first_mode[k] + l] - std::complex<double>(0, 1) * P_dot);
+      const std::complex<double> lambda = mode_lambda(c.bodies[k].fluid[l], spin);
+      out.zeta_dot.push_back(std::complex<double>(0, 1) * (lambda * s.zeta[first_mode[k] + l] - P_dot));
     }
   }
   return out;

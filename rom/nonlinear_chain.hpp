@@ -1,7 +1,7 @@
 // The nonlinear chain (Kononov (1999) (1)-(5), the fluid by its modes in each body's frame): n bodies joined by
 // spherical joints, body k turning about its joint O_k, O_1 fixed (fixed chain) or free (free chain); gravity,
-// elastic joints, joint friction about the swing and about the axis, external moments, ideal-fluid tanks; every
-// body's spin is a state and may change.
+// elastic joints, joint friction about the swing and about the axis, external moments, ideal and viscous fluid tanks
+// (by their modes); every body's spin is a state and may change.
 // docs/rom.md, "Nonlinear chain", derives what follows and says what is kept.
 //
 // Newton–Euler for body k about its joint O_k (space frame), with the reaction at O_{k+1} eliminated through the
@@ -27,10 +27,23 @@ namespace rc::rom {
 // P = p − i q its transverse angular velocity in the body frame; the fluid's moment on the body is
 // (M_p − i M_q) = E_total Ṗ + Σ_l E_l (r − λ_l) ζ_l. This is Kononov (26)'s fluid equation written in the body frame
 // (ζ = S′ e^{iω0 t} N²/a): linear in the fluid's relative motion, exact in the body's rotation.
+// A viscous table's mode (docs/rom.md, "Viscous tanks") is the same with λ_table = λ + i decay and the complex
+// residue E + i E_imag, both as the table gives them for a positive spin; a negative spin mirrors the flow and
+// conjugates them (mode_lambda, mode_E). The table's Ekman number is kept as the spin changes (docs/rom.md,
+// "Nonlinear chain", "Viscous tanks").
 struct ChainFluidMode {
-  double E = 0;             // kg m²
-  double lambda_table = 0;  // λ/ω0 of the table
+  std::complex<double> E = 0;             // kg m²
+  std::complex<double> lambda_table = 0;  // λ/ω0 (+ i decay/ω0) of the table
 };
+
+// λ_l at spin r: r λ_table + i |r| decay_table.
+inline std::complex<double> mode_lambda(const ChainFluidMode& m, double spin) {
+  return {spin * m.lambda_table.real(), std::abs(spin) * m.lambda_table.imag()};
+}
+// E_l at spin r: E + i sign(r) E_imag.
+inline std::complex<double> mode_E(std::complex<double> E, double spin) {
+  return spin < 0 ? std::conj(E) : E;
+}
 
 struct ChainBody {
   double mass = 0;               // with the frozen fluid (kg)
@@ -42,10 +55,13 @@ struct ChainBody {
   double axial_moment = 0;
   Eigen::Vector3d space_moment = Eigen::Vector3d::Zero(), harmonic_moment = Eigen::Vector3d::Zero();
   double frequency = 0;          // Hz
-  std::vector<ChainFluidMode> fluid;  // the kept modes of its cavity (ideal fluid), then the static correction's
+  std::vector<ChainFluidMode> fluid;  // the kept modes of its cavity, then the static correction's
   int kept_modes = 0;                 // how many of `fluid` are the table's kept modes
-  double fluid_E_total = 0;      // Σ E of the kept modes + the static correction: the transverse inertia the fluid does
-                                 // not carry rigidly (A − E_total is the body's instantaneous inertia, as M_eff in (26))
+  // Σ E of the kept modes + the static correction: the transverse inertia the fluid does not carry rigidly
+  // (A − E_total is the body's instantaneous inertia, as M_eff in (26)); complex for a viscous table without its
+  // static correction (for a positive spin, as ChainFluidMode's E).
+  std::complex<double> fluid_E_total = 0;
+  double table_spin = 0;         // a viscous tank: the spin at which the scene's viscosity gives the table's Ek; else 0
 };
 
 struct ChainJoint {              // joint k: O_k, between body k − 1 (the support for k = 1) and body k

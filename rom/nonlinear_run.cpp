@@ -15,10 +15,6 @@ namespace {
 
 using Eigen::Vector3d;
 
-[[noreturn]] void fail(const Scene& s, const std::string& key, const std::string& cause) {
-  throw SceneError(s.file.string() + ": " + key + ": " + cause);
-}
-
 int kept_modes(const NonlinearChain& chain) {
   int n = 0;
   for (const auto& b : chain.bodies) n += b.kept_modes;
@@ -50,11 +46,6 @@ NonlinearChain nonlinear_chain(const Scene& scene) {
   c.gravity = scene.free_chain ? 0.0 : scene.gravity;  // uniform gravity does not turn a free chain (docs/scene-format.md)
   // Totals with the frozen fluid and the kept modes, as the linear model has them (chain_model.hpp).
   const ChainModel model = build_model(scene, nullptr, false);
-  if (model.viscous)
-    for (std::size_t k = 0; k < scene.size(); ++k)
-      if (model.bodies[k].ekman > 0)
-        fail(scene, "body[" + std::to_string(k + 1) + "].cavity", "a viscous table: the nonlinear model takes ideal-fluid "
-             "tables only (docs/rom.md, \"Nonlinear chain\"); use [run] model = \"linear\"");
   const std::size_t n = scene.size();
   for (std::size_t k = 0; k < n; ++k) {
     const BodySpec& b = scene.bodies[k];
@@ -73,13 +64,20 @@ NonlinearChain nonlinear_chain(const Scene& scene) {
       body.harmonic_moment = Vector3d(b.moment->harmonic.data());
       body.frequency = b.moment->frequency;
     }
+    // The chain takes a viscous table's values for a positive spin (ChainFluidMode); the linear model's are for the
+    // scene's spin, conjugated when it is negative.
+    const auto as_positive_spin = [&](std::complex<double> E) { return b.spin < 0 ? std::conj(E) : E; };
     for (const FluidMode& m : model.modes)
-      if (m.body == static_cast<int>(k)) body.fluid.push_back({m.E, m.lambda_table});
+      if (m.body == static_cast<int>(k)) {
+        const double decay_table = m.decay > 0 ? m.decay / std::abs(b.spin) : 0.0;
+        body.fluid.push_back({as_positive_spin(m.E_c()), {m.lambda_table, decay_table}});
+      }
     // The static correction, the left-out modes' λ → 0 limit: in the body frame a mode of λ = 0 (frequency-independent
     // inertia in space, as in (26)'s M_eff; as E_total Ṗ alone in the body frame it would add a gyroscopic term).
     body.kept_modes = static_cast<int>(body.fluid.size());
-    if (t.E_rem > 0) body.fluid.push_back({t.E_rem, 0.0});
-    body.fluid_E_total = t.E_kept + t.E_rem;
+    if (t.E_rem > 0) body.fluid.push_back({as_positive_spin({t.E_rem, t.E_rem_imag}), 0.0});
+    body.fluid_E_total = as_positive_spin({t.E_kept + t.E_rem, t.E_kept_imag + t.E_rem_imag});
+    if (t.ekman > 0) body.table_spin = b.spin;
     c.bodies.push_back(body);
   }
   c.joints.push_back({0.0, scene.support_friction, scene.support_axial_friction});
@@ -101,11 +99,15 @@ ChainState nonlinear_initial_state(const Scene& scene, const NonlinearChain& cha
     s.q.push_back(q);
     s.omega.push_back(q.conjugate() * Omega);
   }
-  // The fluid: the scene's z_kl(0) for the kept modes (ζ = z at t = 0), the static correction's mode at rest.
+  // The fluid: the scene's z_kl(0) for the kept modes (ζ = z at t = 0). The static correction's mode starts where it
+  // stays, ζ = −i P (P = p − i q, the body's transverse angular velocity in its frame): then its moment is
+  // E_rem (Ṗ − i r P), the frequency-independent inertia E_rem of (26)'s M_eff (z = −u̇, w = 0 in (26)'s terms).
   const Eigen::VectorXcd z0 = initial_fluid(scene, kept_modes(chain));
-  for (int k = 0, l = 0; k < chain.size(); ++k)
+  for (int k = 0, l = 0; k < chain.size(); ++k) {
+    const std::complex<double> P(s.omega[k].x(), -s.omega[k].y());
     for (std::size_t j = 0; j < chain.bodies[k].fluid.size(); ++j)
-      s.zeta.push_back(static_cast<int>(j) < chain.bodies[k].kept_modes ? z0[l++] : 0.0);
+      s.zeta.push_back(static_cast<int>(j) < chain.bodies[k].kept_modes ? z0[l++] : std::complex<double>(0, -1) * P);
+  }
   if (chain.free_chain) {
     // The whole chain's centre of mass at rest (as the linear free chain takes it, docs/free-chain.md): O_1 moves
     // against the bodies' swing.
@@ -164,11 +166,16 @@ NonlinearHistory integrate_nonlinear(const NonlinearChain& chain, const ChainSta
       out.quaternions.insert(out.quaternions.end(), {q.w(), q.x(), q.y(), q.z()});
       out.spins.push_back((q * s.omega[k]).dot(q * Vector3d::UnitZ()));
     }
+    for (int k = 0; k < n; ++k)
+      if (chain.bodies[k].table_spin != 0)
+        out.viscous_spin_change = std::max(out.viscous_spin_change,
+                                           std::abs(s.omega[k].z() / chain.bodies[k].table_spin - 1));
     out.momentum.insert(out.momentum.end(), {L.x(), L.y(), L.z()});
     out.zeta.insert(out.zeta.end(), s.zeta.begin(), s.zeta.end());
   };
   out.fluid_modes = chain.fluid_modes();
   out.integrals_valid = out.fluid_modes == 0;
+  out.viscous_tanks = std::any_of(chain.bodies.begin(), chain.bodies.end(), [](const ChainBody& b) { return b.table_spin != 0; });
 
   ChainState s = initial;
   record(0, 0.0, s);

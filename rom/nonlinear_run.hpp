@@ -9,8 +9,8 @@
 
 namespace rc::rom {
 
-// The chain of a scene: totals with the frozen fluid, moments (B defaults to A), joints, and each ideal tank's kept
-// modes (plus its static correction as a mode of λ = 0). A viscous table is refused (SceneError naming the key).
+// The chain of a scene: totals with the frozen fluid, moments (B defaults to A), joints, and each tank's kept modes,
+// ideal or viscous (plus its static correction as a mode of λ = 0).
 NonlinearChain nonlinear_chain(const Scene& scene);
 
 // Body k released with u_k = β_k − iα_k (Krylov angles): attitude R_x(−α_k) R_y(β_k), so that its axis is
@@ -36,6 +36,10 @@ struct NonlinearHistory {
   bool integrals_valid = true;
   double max_momentum_drift = 0;     // max |L − L(0)| / |L(0)| (free chain), max |L_z − L_z(0)| / |L(0)| (fixed)
   long rejected_steps = 0;
+  // Largest |r − r_table| / |r_table| of a body with a viscous tank: its table holds for the Ek of the scene's spin,
+  // and the modes are scaled with the spin as if Ek stayed (docs/rom.md, "Nonlinear chain", "Viscous tanks").
+  double viscous_spin_change = 0;
+  bool viscous_tanks = false;
 };
 
 // Integrates to run.t_end by the Lie-group Dormand–Prince 5(4) (nonlinear_chain.hpp, chain_step_dp) with error

@@ -179,6 +179,7 @@ void write_nonlinear_h5(const NonlinearHistory& nh, int n, const fs::path& tmp) 
   }
   write_attr(file.id, "steps", double(h.integrator_steps));
   write_attr(file.id, "rejected_steps", double(nh.rejected_steps));
+  if (nh.viscous_tanks) write_attr(file.id, "viscous_spin_change", nh.viscous_spin_change);
   write_attr(file.id, "wall_seconds", h.wall_seconds);
   write_dataset(file.id, "t", h.t, N, 0);
   std::vector<double> re(N * n), im(N * n);

@@ -31,7 +31,7 @@ struct History {
   long integrator_steps = 0;    // gauss substeps / accepted+rejected rk45 steps; exact: matrix products
   double eigvec_condition = 0;  // exact: 2-norm condition number of the eigenvector matrix V
   // The linear model's validity at this amplitude (linear_validity.hpp), filled by `chain-rom run`: the nonlinear
-  // frozen chain's relative tilt difference, and the amplitude at which it reaches 1 %; empty note = measured.
+  // chain's relative tilt difference, and the amplitude at which it reaches 1 %; empty note = measured.
   double nonlinear_difference = -1, amplitude_at_limit = -1;
   std::string validity_note;
 };

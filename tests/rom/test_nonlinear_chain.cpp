@@ -173,7 +173,7 @@ TEST(NonlinearChain, SmallAmplitudeWithFluidIsTheLinearChain) {
         "static_correction = true\n"
         "[[joint]]\nstiffness = 200.0\n[[joint]]\nstiffness = 100.0\n"
         "[initial]\ntilt = [[" + t + ", 0.0], [0.0, " + t + "], [" + t + ", " + t + "]]\n"
-        "rate = [[0.0, " + r1 + "], [" + r2 + ", 0.0], [0.0, 0.0]]\n"
+        "rate = [[0.0, " + r1 + "], [" + r2 + ", 0.0], [" + r2 + ", " + r1 + "]]\n"
         "fluid = [[" + f1 + ", " + f2 + "], [0.0, " + f1 + "], [" + f2 + ", 0.0], [" + f1 + ", " + f1 + "]]\n"
         "[run]\nt_end = 1.0\noutput_step = 0.01\n";
     const Scene scene = parse_scene_text(text, test::test_dir(), "fluid");
@@ -184,7 +184,7 @@ TEST(NonlinearChain, SmallAmplitudeWithFluidIsTheLinearChain) {
       const History rest = propagate(build_model(at_rest), at_rest);
       const double effect = (linear.u - rest.u).cwiseAbs().maxCoeff() / eps;
       std::printf("initial fluid state moves the tilts by %.3e of the amplitude\n", effect);
-      EXPECT_GT(effect, 0.1);  // measured 0.26, against the models' 0.0175 difference
+      EXPECT_GT(effect, 0.1);  // measured 0.26, against the models' 0.0219 difference
     }
     RunSpec nl = scene.run;
     nl.model = "nonlinear";
@@ -203,7 +203,7 @@ TEST(NonlinearChain, SmallAmplitudeWithFluidIsTheLinearChain) {
   std::printf("slopes %.3f, %.3f (expected 2)\n", slope1, slope2);
   EXPECT_NEAR(slope1, 2, 0.15);
   EXPECT_NEAR(slope2, 2, 0.15);
-  EXPECT_LE(rel[2], 3e-2);  // measured 1.67e-2 at 0.005 rad
+  EXPECT_LE(rel[2], 3e-2);  // measured 2.19e-2 at 0.005 rad (body 3, with the static correction, starts with a rate)
 }
 
 TEST(NonlinearChain, LinearModelRefusesWhatOnlyTheNonlinearOneTakes) {
