@@ -293,12 +293,18 @@ int main(int argc, char** argv) {
                   << validity.seconds << " s)\n";
       else
         std::cout << "validity: not measured (" << validity.why_not << ")\n";
-      if (model.viscous)
-        std::cout << "energy: not computed with viscous tanks (docs/rom.md, \"Viscous tanks\")\n";
-      else
+      if (model.viscous) {
+        const rc::rom::EnergyBudget& b = h.budget;
+        std::cout << "energy: no integral with viscous tanks; the chain with its fluid frozen: H_b(0) = "
+                  << b.frozen_energy.front() << ", H_b(end) = " << b.frozen_energy.back() << " J, work taken by the "
+                  << "fluid " << b.fluid_work.back() << " J, friction " << b.friction_work
+                  << " J; dH_b/dt = -(friction + fluid power) to " << b.balance_residual
+                  << " on the samples (docs/rom.md, \"Energy budget\")\n";
+      } else {
         std::cout << "energy: H(0) = " << h.H.front() << ", H(end) = " << h.H.back() << ", "
                   << (model.has_friction() ? "largest relative increase per step " : "largest relative drift ")
                   << h.max_energy_drift << "\n";
+      }
     }
   } catch (const std::exception& e) {
     std::string msg = e.what();

@@ -32,12 +32,18 @@ void write_csv(const ChainModel& m, const History& h, const fs::path& tmp) {
     const std::string nm = std::to_string(m.modes[l].body + 1) + "_" + std::to_string(l + 1);
     os << ",z" << nm << "_re,z" << nm << "_im";
   }
-  os << ",energy\n";
+  // With viscous tanks no energy integral, but the frozen chain's budget (energy_budget.hpp).
+  const bool budget = !h.budget.empty();
+  os << (budget ? ",frozen_energy,fluid_power,friction_power,fluid_work\n" : ",energy\n");
   for (std::size_t j = 0; j < h.t.size(); ++j) {
     os << h.t[j];
     for (int k = 0; k < m.n; ++k) os << ',' << h.u(j, k).real() << ',' << h.u(j, k).imag();
     for (int l = 0; l < m.n_modes(); ++l) os << ',' << h.z(j, l).real() << ',' << h.z(j, l).imag();
-    os << ',' << h.H[j] << '\n';
+    if (budget)
+      os << ',' << h.budget.frozen_energy[j] << ',' << h.budget.fluid_power[j] << ',' << h.budget.friction_power[j]
+         << ',' << h.budget.fluid_work[j] << '\n';
+    else
+      os << ',' << h.H[j] << '\n';
   }
   os.close();
   if (!os) throw std::runtime_error(tmp.string() + ": write failed");
@@ -117,6 +123,13 @@ void write_h5(const ChainModel& m, const History& h, const fs::path& tmp) {
   write_dataset(file.id, "mode_E", E, nm, 0);
   write_dataset(file.id, "mode_lambda", lam, nm, 0);
   if (!m.viscous) write_dataset(file.id, "energy", h.H, N, 0);
+  if (!h.budget.empty()) {  // energy_budget.hpp
+    write_dataset(file.id, "frozen_energy", h.budget.frozen_energy, N, 0);
+    write_dataset(file.id, "fluid_power", h.budget.fluid_power, N, 0);
+    write_dataset(file.id, "friction_power", h.budget.friction_power, N, 0);
+    write_dataset(file.id, "fluid_work", h.budget.fluid_work, N, 0);
+    write_attr(file.id, "energy_balance_residual", h.budget.balance_residual);
+  }
 }
 
 // Writes through `write` to a temporary name beside `out`, then renames it into place (never a partial file).

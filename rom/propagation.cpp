@@ -128,7 +128,11 @@ History propagate(const ChainModel& m, const Scene& scene) {
   hist.H.resize(steps + 1);
   hist.H_scale.resize(steps + 1);
   const EnergyMeter meter(m);
+  const BudgetMeter budget_meter(m, f);
+  std::vector<BudgetSample> budget;
+  if (m.viscous) budget.resize(steps + 1);
   auto store = [&](long j, const Eigen::VectorXcd& y) {
+    if (m.viscous) budget[j] = budget_meter(y);
     Eigen::VectorXcd u, v, w;
     f.from_state(m, y, u, v, w);
     hist.t[j] = j * h;
@@ -152,6 +156,8 @@ History propagate(const ChainModel& m, const Scene& scene) {
         hist.z(j, l) = cd(re(2 * n + l, i) - re(v, i), im(2 * n + l, i) - im(v, i));
       }
     }
+    if (m.viscous)
+      for (long i = 0; i < cols; ++i) budget[j0 + i] = budget_meter(re.col(i).cast<cd>() + cd(0, 1) * im.col(i).cast<cd>());
     meter.block(re.topRows(n) * is, im.topRows(n) * is, re.middleRows(n, n), im.middleRows(n, n),
                 re.bottomRows(nm), im.bottomRows(nm), &hist.H[j0], &hist.H_scale[j0]);
   };
@@ -217,7 +223,10 @@ History propagate(const ChainModel& m, const Scene& scene) {
   if (!done) throw std::runtime_error("run.method: unknown method " + method);
 
   const double H0 = hist.H[0], S0 = std::max(hist.H_scale[0], 1e-300);
-  if (m.viscous) hist.max_energy_drift = std::numeric_limits<double>::quiet_NaN();  // no H (energy.cpp)
+  if (m.viscous) {
+    hist.max_energy_drift = std::numeric_limits<double>::quiet_NaN();  // no H (energy.cpp)
+    hist.budget = energy_budget(budget, h);
+  }
   else for (long j = 1; j <= steps; ++j) {
     if (m.has_friction()) hist.max_energy_drift = std::max(hist.max_energy_drift, (hist.H[j] - hist.H[j - 1]) / S0);
     else hist.max_energy_drift = std::max(hist.max_energy_drift, std::abs(hist.H[j] - H0) / S0);

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "chain_model.hpp"
+#include "energy_budget.hpp"
 #include "scene.hpp"
 
 #include <string>
@@ -24,6 +25,7 @@ struct History {
   Rows z;                   // steps x n_modes: scaled fluid coordinates, S'_kl = (a/N^2)_kl z_kl
   std::vector<double> H;    // energy (energy.hpp)
   std::vector<double> H_scale;
+  EnergyBudget budget;      // with viscous tanks (which leave no energy integral H): the frozen chain's budget
   std::string method_used;  // what actually ran
   double max_energy_drift = 0;  // max |H - H0| / scale(0) (undamped) or max increase (damped)
   double wall_seconds = 0;

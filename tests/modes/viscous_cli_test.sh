@@ -152,10 +152,12 @@ import json
 j = json.load(open("spec.json"))
 assert j["stable"] and j["growth"] < 0 and j["root_agreement"] < 1e-8 and j["newton_failed"] == 0, j
 print("viscous top: slowest decay %.4f 1/s, Newton on det Phi agrees to %.1e" % (-j["growth"], j["root_agreement"]))
-' && grep -q "not computed with viscous tanks" run.txt && [ -s out.h5 ] && /usr/bin/python3 -c '
+' && grep -q "energy: no integral with viscous tanks; the chain with its fluid frozen" run.txt && [ -s out.h5 ] && /usr/bin/python3 -c '
 import h5py, numpy as np
 with h5py.File("out.h5") as f:
     assert "energy" not in f and "max_energy_drift" not in f.attrs, "energy written for a viscous run"
+    assert f.attrs["energy_balance_residual"] < 1e-4, f.attrs["energy_balance_residual"]
+    assert all(k in f for k in ("frozen_energy", "fluid_power", "friction_power", "fluid_work")), list(f)
     assert all(np.all(np.isfinite(f[k][()])) for k in ("u_re", "u_im", "z_re", "z_im")), "non-finite history"
 '; then
   ok "chain-rom spectrum and run with the viscous table"
