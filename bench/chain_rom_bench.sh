@@ -4,15 +4,15 @@
 #
 #   bash bench/chain_rom_bench.sh [--repeat N]
 #
-#  1. mode tables: out/tables/*.h5 from the "# recipe:" lines of data/scenes/default.toml, made with
+#  1. mode tables: out/tables/*.h5 from the "# recipe:" lines of data/scenes/default_ideal.toml, made with
 #     build/modes/cavity-modes if missing (as scripts/run-default.sh does; ~70 s on 2 cores);
-#  2. chain-rom bench data/scenes/default.toml: work-precision (exact / gauss / rk45 against the long
+#  2. chain-rom bench data/scenes/default_ideal.toml: work-precision (exact / gauss / rk45 against the long
 #     double reference) and roots against kept modes -> bench/results/chain_rom_<date>.csv and .png;
 #  3. speed, N runs each (default 3), /usr/bin/time around the process:
 #     a. chain-rom run bench/scenes/three_bodies_20_modes.toml (3 bodies x 20 modes, 1e5 output steps,
 #        exact): the propagation's own wall and CPU time as printed, plus the whole process (HDF5 write of
 #        ~100 MB included) — target < 0.2 s;
-#     b. chain-rom sweep, 100 x 100 map of data/scenes/default.toml (body[1].spin x joint[1].stiffness)
+#     b. chain-rom sweep, 100 x 100 map of data/scenes/default_ideal.toml (body[1].spin x joint[1].stiffness)
 #        — target < 10 s;
 #     with the 1-minute load average before each run (the machine may be shared);
 #  4. bench/results/chain_rom_<date>_speed.md: machine, date, commit, load and every timing.
@@ -22,7 +22,7 @@ REPEAT=3
 if [ "${1:-}" = "--repeat" ]; then REPEAT="${2:?--repeat N}"; fi
 ROM="$ROOT/build/rom/chain-rom"
 MODES="$ROOT/build/modes/cavity-modes"
-SCENE="$ROOT/data/scenes/default.toml"
+SCENE="$ROOT/data/scenes/default_ideal.toml"
 SPEED_SCENE="$ROOT/bench/scenes/three_bodies_20_modes.toml"
 RES="$ROOT/bench/results"
 DATE=$(date +%F)
@@ -57,7 +57,7 @@ MD="$RES/chain_rom_${DATE}_speed.md"
   echo "- commit: $(git -C "$ROOT" rev-parse --short HEAD)$(git -C "$ROOT" diff --quiet -- rom || echo ' (rom/ modified)')"
   echo "- AVX2/FMA: $(grep -m1 -o -w avx2 /proc/cpuinfo || echo no) (exact propagation's product kernel)"
   echo
-  echo "## Work-precision and roots against kept modes (chain-rom bench data/scenes/default.toml)"
+  echo "## Work-precision and roots against kept modes (chain-rom bench data/scenes/default_ideal.toml)"
   echo
   echo '```'
   cat "$TMP/bench.txt"

@@ -33,6 +33,8 @@ def main() -> int:
             t = f["t"][()]
             u = f["u_re"][()] + 1j * f["u_im"][()]
             energy = f["energy"][()] if "energy" in f else None
+            # With viscous tanks: the frozen chain's energy budget (docs/rom.md, "Energy budget").
+            budget = {k: f[k][()] for k in ("frozen_energy", "fluid_work") if k in f}
             # The nonlinear model's history (docs/rom.md, "Nonlinear chain"): attitudes and spins as well.
             quat = f["quaternion"][()] if "quaternion" in f else None
             spin = f["spin"][()] if "spin" in f else None
@@ -102,11 +104,22 @@ def main() -> int:
         ax_energy.plot(t, (energy - energy[0]) / abs(energy[0]), lw=0.6, color="k")
         ax_energy.set_ylabel(r"$(H - H_0)/|H_0|$")
         ax_energy.ticklabel_format(axis="y", style="sci", scilimits=(-3, 3))
+        title_energy = "energy change (friction, moments)" if nonlinear else "quadratic integral drift"
+    elif len(budget) == 2:
+        hb = budget["frozen_energy"]
+        ax_energy.plot(t, hb - hb[0], lw=0.8, color="k", label=r"$H_b - H_b(0)$ (fluid frozen)")
+        ax_energy.plot(t, -budget["fluid_work"], lw=0.8, ls="--", color="tab:blue",
+                       label=r"$-W$: work given by the fluid")
+        ax_energy.set_ylabel("J")
+        ax_energy.ticklabel_format(axis="y", style="sci", scilimits=(-3, 3))
+        ax_energy.legend(loc="best", fontsize=8)
+        title_energy = "energy budget with viscous tanks"
     else:
         ax_energy.text(0.5, 0.5, "energy not available", ha="center", va="center",
                        transform=ax_energy.transAxes)
+        title_energy = "quadratic integral drift"
     ax_energy.set_xlabel("t (s)")
-    ax_energy.set_title("energy change (friction, moments)" if nonlinear else "quadratic integral drift")
+    ax_energy.set_title(title_energy)
     ax_energy.grid(True, lw=0.3)
 
     title = args.title or os.path.basename(args.history)
