@@ -8,6 +8,7 @@
 #include <cmath>
 #include <ctime>
 #include <stdexcept>
+#include <sstream>
 #include <string>
 
 namespace rc::rom {
@@ -89,6 +90,15 @@ ChainState nonlinear_initial_state(const Scene& scene, const NonlinearChain& cha
   ChainState s;
   for (std::size_t k = 0; k < scene.size(); ++k) {
     const double beta = scene.tilt[k].real(), alpha = -scene.tilt[k].imag();
+    // Every axis has Krylov angles β ∈ [−π/2, π/2], α ∈ [−π, π]; outside, the tilt names an attitude the angles
+    // inside already name (and 1e300 rad names none a user means).
+    constexpr double pi = 3.141592653589793;
+    if (std::abs(beta) > pi / 2 || std::abs(alpha) > pi) {
+      std::ostringstream os;
+      os << "initial.tilt[" << k + 1 << "]: Krylov angles beta = Re u = " << beta << ", alpha = -Im u = " << alpha
+         << " rad lie outside [-pi/2, pi/2] x [-pi, pi], where every axis has its angles; give them there";
+      throw SceneError(scene.file.string() + ": " + os.str());
+    }
     const double beta_dot = scene.rate[k].real(), alpha_dot = -scene.rate[k].imag();
     const Eigen::AngleAxisd first(-alpha, Vector3d::UnitX());
     const Eigen::Quaterniond q = Eigen::Quaterniond(first) * Eigen::Quaterniond(Eigen::AngleAxisd(beta, Vector3d::UnitY()));
