@@ -96,7 +96,7 @@ step "6/6 growth-rate map -> out/default-map.png (joint[1].stiffness 0..400 x jo
 "$ROM" sweep "$SCENE" --param 'joint[1].stiffness' --from 0 --to 400 --steps 40 \
   --param2 'joint[2].stiffness' --from2 0 --to2 400 --steps2 40 -o "$OUT/default-map.csv" || fail "chain-rom sweep"
 "$PY" "$ROOT/scripts/plot_sweep.py" "$OUT/default-map.csv" -o "$OUT/default-map.png" \
-  --title "default scene (water): growth rate over the joints' stiffnesses" || fail "scripts/plot_sweep.py"
+  --title "default scene (water): growth rate over the joints' stiffnesses" --growth || fail "scripts/plot_sweep.py"
 
 verdict=$(grep -m1 '^stable:' "$OUT/default-spectrum.txt" || true)
 step "done in $((SECONDS - START)) s: $verdict"
