@@ -68,6 +68,16 @@ void write_dataset(hid_t file, const std::string& name, const std::vector<double
   if (!data.empty()) check(H5Dwrite(ds.id, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), name);
 }
 
+// Rows of complex values (one row per output time) as the real datasets NAME_re and NAME_im.
+void write_complex_rows(hid_t file, const std::string& name, const History::Rows& rows) {
+  const hsize_t N = rows.rows(), c = rows.cols();
+  std::vector<double> re(N * c), im(N * c);
+  for (hsize_t j = 0; j < N; ++j)
+    for (hsize_t k = 0; k < c; ++k) { re[j * c + k] = rows(j, k).real(); im[j * c + k] = rows(j, k).imag(); }
+  write_dataset(file, name + "_re", re, N, c);
+  write_dataset(file, name + "_im", im, N, c);
+}
+
 void write_attr(hid_t obj, const std::string& name, const std::string& value) {
   H5 type{H5Tcopy(H5T_C_S1), H5Tclose};
   check(H5Tset_size(type.id, std::max<std::size_t>(1, value.size())), "string type");
@@ -86,7 +96,7 @@ void write_h5(const ChainModel& m, const History& h, const fs::path& tmp) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   H5 file{H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose};
   if (file.id < 0) throw std::runtime_error(tmp.string() + ": cannot create");
-  const hsize_t N = h.t.size(), n = m.n, nm = m.n_modes();
+  const hsize_t N = h.t.size(), nm = m.n_modes();
   write_attr(file.id, "format", "chain-rom-history");
   write_attr(file.id, "method", h.method_used);
   write_attr(file.id, "convention",
@@ -103,17 +113,8 @@ void write_h5(const ChainModel& m, const History& h, const fs::path& tmp) {
     write_attr(file.id, "nonlinear_difference_not_measured", h.validity_note);
   }
   write_dataset(file.id, "t", h.t, N, 0);
-  std::vector<double> re(N * n), im(N * n);
-  for (hsize_t j = 0; j < N; ++j)
-    for (hsize_t k = 0; k < n; ++k) { re[j * n + k] = h.u(j, k).real(); im[j * n + k] = h.u(j, k).imag(); }
-  write_dataset(file.id, "u_re", re, N, n);
-  write_dataset(file.id, "u_im", im, N, n);
-  re.assign(N * nm, 0);
-  im.assign(N * nm, 0);
-  for (hsize_t j = 0; j < N; ++j)
-    for (hsize_t l = 0; l < nm; ++l) { re[j * nm + l] = h.z(j, l).real(); im[j * nm + l] = h.z(j, l).imag(); }
-  write_dataset(file.id, "z_re", re, N, nm);
-  write_dataset(file.id, "z_im", im, N, nm);
+  write_complex_rows(file.id, "u", h.u);
+  write_complex_rows(file.id, "z", h.z);
   std::vector<double> body(nm), aN(nm), E(nm), lam(nm);
   for (hsize_t l = 0; l < nm; ++l) {
     body[l] = m.modes[l].body + 1; aN[l] = m.modes[l].a_over_N2; E[l] = m.modes[l].E; lam[l] = m.modes[l].lambda;
@@ -195,11 +196,7 @@ void write_nonlinear_h5(const NonlinearHistory& nh, int n, const fs::path& tmp) 
   if (nh.viscous_tanks) write_attr(file.id, "viscous_spin_change", nh.viscous_spin_change);
   write_attr(file.id, "wall_seconds", h.wall_seconds);
   write_dataset(file.id, "t", h.t, N, 0);
-  std::vector<double> re(N * n), im(N * n);
-  for (hsize_t j = 0; j < N; ++j)
-    for (int k = 0; k < n; ++k) { re[j * n + k] = h.u(j, k).real(); im[j * n + k] = h.u(j, k).imag(); }
-  write_dataset(file.id, "u_re", re, N, n);
-  write_dataset(file.id, "u_im", im, N, n);
+  write_complex_rows(file.id, "u", h.u);
   write_dataset(file.id, "quaternion", nh.quaternions, N, 4 * n);
   write_dataset(file.id, "spin", nh.spins, N, n);
   write_dataset(file.id, "angular_momentum", nh.momentum, N, 3);

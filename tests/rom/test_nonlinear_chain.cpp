@@ -36,21 +36,27 @@ std::string chain_text(const std::string& kind, double gravity, double tilt, con
          "rate = [[0.0, " + std::to_string(25 * tilt) + "], [" + std::to_string(15 * tilt) + ", 0.0], [0.0, 0.0]]\n" + run;
 }
 
+// One body about a fixed point O_1, no joint stiffness or friction, no gravity (set it after).
+NonlinearChain one_body(double mass, double A, double B, double C, double com) {
+  NonlinearChain chain;
+  ChainBody body;
+  body.mass = mass;
+  body.A = A;
+  body.B = B;
+  body.C = C;
+  body.com = com;
+  chain.bodies = {body};
+  chain.joints = {{0, 0, 0}};
+  return chain;
+}
+
 }  // namespace
 
 // One body of the chain is the rigid body about a fixed point: the chain's space-frame Newton–Euler with J about
 // O_1 and Euler's body-frame equations give the same RKMK4 trajectory (A ≠ B, heavy, tilted by 0.8 rad).
 TEST(NonlinearChain, OneBodyIsTheRigidBody) {
-  NonlinearChain chain;
+  NonlinearChain chain = one_body(2.0, 0.05, 0.06, 0.02, 0.15);
   chain.gravity = 9.81;
-  ChainBody top;
-  top.mass = 2.0;
-  top.A = 0.05;
-  top.B = 0.06;
-  top.C = 0.02;
-  top.com = 0.15;
-  chain.bodies = {top};
-  chain.joints = {{0, 0, 0}};
   RigidBody body;
   body.inertia = {0.05, 0.06, 0.02};
   body.com = {0, 0, 0.15};
@@ -307,14 +313,7 @@ void jacobi(double u, double m, double& sn, double& cn, double& dn) {
 // equations solved by Jacobi's elliptic functions (Landau and Lifshitz, Mechanics, §37): for A < B < C and
 // L² > 2EB, ω1 = ω1m cn τ, ω2 = ω2m sn τ, ω3 = ω3m dn τ, τ = t ((C − B)(L² − 2EA)/(ABC))^{1/2}.
 TEST(NonlinearChain, FreeAsymmetricBodyFollowsJacobisEllipticFunctions) {
-  NonlinearChain chain;
-  ChainBody body;
-  body.mass = 1.0;
-  body.A = 1.0;
-  body.B = 2.0;
-  body.C = 3.0;
-  chain.bodies = {body};
-  chain.joints = {{0, 0, 0}};
+  const NonlinearChain chain = one_body(1.0, 1.0, 2.0, 3.0, 0.0);
   ChainState s;
   s.q = {Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Vector3d(1, 2, 0).normalized()))};
   s.omega = {Vector3d(0.6, 0.0, 1.0)};  // ω2 = 0 at t = 0: the phase of the closed form below
