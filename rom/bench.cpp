@@ -1,6 +1,7 @@
 #include "bench.hpp"
 
 #include "chain_model.hpp"
+#include "complex_eigen.hpp"
 #include "energy.hpp"
 #include "exact_propagation.hpp"
 #include "first_order_system.hpp"
@@ -217,10 +218,9 @@ void work_precision(const ChainModel& m, const Scene& scene, const BenchOptions&
 
 std::vector<cd> roots_of(const ChainModel& m) {
   const FirstOrderSystem f = build_first_order(m);
-  Eigen::ComplexEigenSolver<Eigen::MatrixXcd> es(f.B, false);
-  if (es.info() != Eigen::Success) throw std::runtime_error("bench: eigen-solver did not converge");
+  const ComplexEigen es = complex_eigen(f.B, false);  // as `spectrum` finds them (complex_eigen.hpp)
   std::vector<cd> r;
-  for (Eigen::Index i = 0; i < es.eigenvalues().size(); ++i) r.push_back(cd(0, -1) * es.eigenvalues()[i]);
+  for (Eigen::Index i = 0; i < es.values.size(); ++i) r.push_back(cd(0, -1) * es.values[i]);
   return r;
 }
 

@@ -1,6 +1,7 @@
 #include "spectrum.hpp"
 
 #include "characteristic.hpp"
+#include "complex_eigen.hpp"
 #include "real_root_certificate.hpp"
 #include "root_newton.hpp"
 
@@ -69,17 +70,16 @@ Verdict compute_verdict(const ChainModel& m) {
 Spectrum compute_spectrum(const ChainModel& m) {
   using cd = std::complex<double>;
   const FirstOrderSystem f = build_first_order(m);
-  Eigen::ComplexEigenSolver<Eigen::MatrixXcd> es(f.B, true);
-  if (es.info() != Eigen::Success) throw std::runtime_error("eigen-solver did not converge");
+  const ComplexEigen es = complex_eigen(f.B, true);
   const int n = m.n, D = f.dim();
   Spectrum sp;
-  const Verdict v = verdict_of(m, cd(0, -1) * es.eigenvalues());
+  const Verdict v = verdict_of(m, cd(0, -1) * es.values);
   const double radius = v.tolerance / kRealTolerance;
   sp.tolerance = v.tolerance;
   for (int j = 0; j < D; ++j) {
     Root r;
-    r.sigma = cd(0, -1) * es.eigenvalues()[j];  // y ~ e^{mu t} = e^{i sigma t}
-    const Eigen::VectorXcd y = es.eigenvectors().col(j);
+    r.sigma = cd(0, -1) * es.values[j];  // y ~ e^{mu t} = e^{i sigma t}
+    const Eigen::VectorXcd y = es.vectors.col(j);
     // Owner: the largest share of the eigenvector's kinetic measure.
     double best = -1;
     for (int k = 0; k < n; ++k) {

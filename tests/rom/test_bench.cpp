@@ -236,7 +236,7 @@ TEST(Bench, RootsAgainstKeptModesRows) {
       EXPECT_GT(x.error, 1e-5) << x.value << " modes";
     }
     if (x.value == 12 && x.static_correction == 1) {
-      EXPECT_EQ(x.error, 0);  // the reference itself
+      EXPECT_LT(x.error, 1e-12);  // the reference itself, its eigenvalues found without eigenvectors (rounding)
     }
     EXPECT_NEAR(x.coverage, 0.9 * (1 - std::pow(0.7, x.value)) / (1 - std::pow(0.7, 12)), 1e-12);
   }

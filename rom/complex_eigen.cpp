@@ -1,0 +1,50 @@
+#include "complex_eigen.hpp"
+
+#include <Eigen/Eigenvalues>
+
+#include <complex>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#ifdef RC_HAVE_LAPACK
+extern "C" void zgeev_(const char* jobvl, const char* jobvr, const int* n, std::complex<double>* a, const int* lda,
+                       std::complex<double>* w, std::complex<double>* vl, const int* ldvl, std::complex<double>* vr,
+                       const int* ldvr, std::complex<double>* work, const int* lwork, double* rwork, int* info,
+                       std::size_t jobvl_len, std::size_t jobvr_len);
+#endif
+
+namespace rc::rom {
+
+ComplexEigen complex_eigen(const Eigen::MatrixXcd& A, bool vectors) {
+  ComplexEigen out;
+  const int n = static_cast<int>(A.rows());
+  if (n == 0) return out;
+#ifdef RC_HAVE_LAPACK
+  Eigen::MatrixXcd a = A;  // zgeev overwrites its input
+  out.values.resize(n);
+  if (vectors) out.vectors.resize(n, n);
+  std::vector<double> rwork(2 * static_cast<std::size_t>(n));
+  std::complex<double> query, dummy;
+  const int one = 1, ldvr = vectors ? n : 1;
+  int lwork = -1, info = 0;
+  const char* jobvr = vectors ? "V" : "N";
+  std::complex<double>* vr = vectors ? out.vectors.data() : &dummy;
+  zgeev_("N", jobvr, &n, a.data(), &n, out.values.data(), &dummy, &one, vr, &ldvr, &query, &lwork, rwork.data(),
+         &info, 1, 1);
+  lwork = std::max(1, static_cast<int>(query.real()));
+  std::vector<std::complex<double>> work(static_cast<std::size_t>(lwork));
+  zgeev_("N", jobvr, &n, a.data(), &n, out.values.data(), &dummy, &one, vr, &ldvr, work.data(), &lwork,
+         rwork.data(), &info, 1, 1);
+  if (info != 0)
+    throw std::runtime_error("eigen-solver (LAPACK zgeev) did not converge (info " + std::to_string(info) + ")");
+#else
+  Eigen::ComplexEigenSolver<Eigen::MatrixXcd> es(A, vectors);
+  if (es.info() != Eigen::Success) throw std::runtime_error("eigen-solver did not converge");
+  out.values = es.eigenvalues();
+  if (vectors) out.vectors = es.eigenvectors();
+#endif
+  return out;
+}
+
+}  // namespace rc::rom

@@ -1,0 +1,20 @@
+// Eigenvalues and right eigenvectors of a dense complex matrix (the first-order system of `chain-rom spectrum`):
+// LAPACK's zgeev when the build found LAPACK (Debian's liblapack, OpenBLAS's where installed: multishift QR with
+// aggressive early deflation, 3-4 times faster than Eigen's ComplexEigenSolver at the 260 unknowns of a chain with
+// three response-fit tables; docs/benchmarks.md), else Eigen's. Not for concurrent use from several threads (a
+// single-threaded OpenBLAS need not be thread-safe): the sweep's threads keep Eigen (spectrum.hpp, compute_verdict).
+#pragma once
+
+#include <Eigen/Dense>
+
+namespace rc::rom {
+
+struct ComplexEigen {
+  Eigen::VectorXcd values;
+  Eigen::MatrixXcd vectors;  // unit 2-norm columns; empty unless asked for
+};
+
+// Throws std::runtime_error when the QR iteration does not converge.
+ComplexEigen complex_eigen(const Eigen::MatrixXcd& A, bool vectors);
+
+}  // namespace rc::rom
