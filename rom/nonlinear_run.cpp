@@ -76,7 +76,9 @@ NonlinearChain nonlinear_chain(const Scene& scene) {
     // The static correction, the left-out modes' λ → 0 limit: in the body frame a mode of λ = 0 (frequency-independent
     // inertia in space, as in (26)'s M_eff; as E_total Ṗ alone in the body frame it would add a gyroscopic term).
     body.kept_modes = static_cast<int>(body.fluid.size());
-    if (t.E_rem > 0) body.fluid.push_back({as_positive_spin({t.E_rem, t.E_rem_imag}), 0.0});
+    // (A viscous table's remainder may be purely imaginary: its residues cover the sum rule, and the correction then
+    // only cancels their imaginary part; it is still a mode, or E_total Ṗ alone would add a gyroscopic term.)
+    if (t.E_rem > 0 || t.E_rem_imag != 0) body.fluid.push_back({as_positive_spin({t.E_rem, t.E_rem_imag}), 0.0});
     body.fluid_E_total = as_positive_spin({t.E_kept + t.E_rem, t.E_kept_imag + t.E_rem_imag});
     if (t.ekman > 0) body.table_spin = b.spin;
     c.bodies.push_back(body);
