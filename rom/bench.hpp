@@ -29,7 +29,7 @@ struct BenchRow {
   long steps = -1;             // work: integrator steps (gauss, rk45)
   int body = 0;                // roots: 1-based body whose kept modes vary
   int static_correction = -1;  // roots: 0 or 1
-  double spin_factor = nan;    // roots: every spin times this (1: the scene; 0: Zhukovsky's case)
+  double spin_factor = nan;    // roots: every spin times this (1: the scene; 0: Zhukovsky's case, ideal tables only)
   double coverage = nan;       // roots: sum of the kept E over A_f - J_zh of that body
   double wall_seconds = nan;   // best of the repetitions
   double cpu_seconds = nan;    // process CPU time per repetition

@@ -10,6 +10,7 @@
 //    inertia (C < A) nutates ever wider, one spinning about its axis of most inertia (C > A) settles,
 //  * the nonlinear chain (rom/nonlinear_chain.hpp) with the same viscous tank: at small amplitude it is (26), the
 //    difference falling as the amplitude squared.
+#include "bench.hpp"
 #include "chain_model.hpp"
 #include "closed_form_tables.hpp"
 #include "nonlinear_run.hpp"
@@ -171,6 +172,20 @@ TEST(ViscousChain, EnergyBudgetBalancesAndFollowsTheEnergySink) {
     EXPECT_NEAR(order, 2, 0.3);
     EXPECT_LT(residual[1], 2e-5);
   }
+}
+
+// `chain-rom bench` with a viscous tank: the work-precision part runs, and the roots part leaves out Zhukovsky's case
+// (every spin 0), for which a viscous table holds no Ekman number (it threw there before).
+TEST(ViscousChain, BenchRunsWithoutTheZeroSpinCase) {
+  const Scene scene = body_scene("1e-3", 0.004, true, "[run]\nt_end = 0.2\noutput_step = 0.001\n");
+  const BenchResult r = run_bench(scene);
+  int work_precision = 0;
+  for (const BenchRow& x : r.rows) {
+    if (x.part != "roots") ++work_precision;
+    EXPECT_NE(x.spin_factor, 0.0);
+  }
+  std::printf("  %zu bench rows, %d of them work-precision\n", r.rows.size(), work_precision);
+  EXPECT_GT(work_precision, 0);
 }
 
 // The nonlinear chain with a viscous tank (nonlinear_chain.hpp: the damped modes in the body frame, λ and E complex)
