@@ -290,8 +290,13 @@ void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp) {
   if (!m.dissipative())
     os << "margin (largest |Im sigma|): " << sp.margin << " rad/s\n";
   else
-    os << "largest growth rate (-Im sigma): " << sp.growth << " 1/s" << (sp.growth > sp.tolerance ? " (growing)" : "")
-       << "\n";
+  {
+    os << "largest growth rate (-Im sigma): " << sp.growth << " 1/s";
+    // The time a growing motion takes to multiply by e (or the slowest decay's, when every root decays).
+    if (sp.growth > sp.tolerance) os << " (growing: e-folds in " << 1 / sp.growth << " s)";
+    else if (sp.growth < 0) os << " (the slowest decay: e-folds in " << -1 / sp.growth << " s)";
+    os << "\n";
+  }
   os << "Newton on det Phi = 0 from every root: worst shift " << sp.root_agreement << " of the spectral radius";
   if (sp.newton_failed) os << ", " << sp.newton_failed << " roots where Newton did not converge";
   os << "\n";
