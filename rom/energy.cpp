@@ -21,10 +21,13 @@ Eigen::VectorXd fluid_weights(const ChainModel& m) {
   return c;
 }
 
-EnergyMeter::EnergyMeter(const ChainModel& m) : M_eff_(m.M_eff), K_(m.K), c_(fluid_weights(m)) {
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> ks(m.K);
-  K_abs_ = ks.eigenvectors() * ks.eigenvalues().cwiseAbs().asDiagonal() * ks.eigenvectors().transpose();
+Eigen::MatrixXd symmetric_abs(const Eigen::MatrixXd& S) {
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(S);
+  return es.eigenvectors() * es.eigenvalues().cwiseAbs().asDiagonal() * es.eigenvectors().transpose();
 }
+
+EnergyMeter::EnergyMeter(const ChainModel& m)
+    : M_eff_(m.M_eff), K_(m.K), K_abs_(symmetric_abs(m.K)), c_(fluid_weights(m)) {}
 
 Energy EnergyMeter::operator()(const Eigen::VectorXcd& u, const Eigen::VectorXcd& v,
                                const Eigen::VectorXcd& w) const {

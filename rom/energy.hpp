@@ -42,6 +42,9 @@ Energy energy(const ChainModel& m, const Eigen::VectorXcd& u, const Eigen::Vecto
               const Eigen::VectorXcd& w);
 // dH/dt = -u'^H D u' (friction power, Batyr (11)).
 double dissipation(const ChainModel& m, const Eigen::VectorXcd& v);
+// |S| of a real symmetric matrix (eigenvalues by their moduli): the positive form the size of an indefinite
+// potential uK u is measured with.
+Eigen::MatrixXd symmetric_abs(const Eigen::MatrixXd& S);
 // Weights c_kl of the fluid term.
 Eigen::VectorXd fluid_weights(const ChainModel& m);
 

@@ -1,15 +1,14 @@
 #include "energy_budget.hpp"
 
+#include "energy.hpp"
+
 #include <algorithm>
 #include <cmath>
 
 namespace rc::rom {
 
 BudgetMeter::BudgetMeter(const ChainModel& m, const FirstOrderSystem& f)
-    : m_(m), f_(f), accel_(f.B.middleRows(f.n, f.n)) {
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> ks(m.K);
-  K_abs_ = ks.eigenvectors() * ks.eigenvalues().cwiseAbs().asDiagonal() * ks.eigenvectors().transpose();
-}
+    : m_(m), f_(f), accel_(f.B.middleRows(f.n, f.n)), K_abs_(symmetric_abs(m.K)) {}
 
 BudgetSample BudgetMeter::operator()(const Eigen::VectorXcd& y) const {
   Eigen::VectorXcd u, v, w;

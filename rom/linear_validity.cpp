@@ -20,7 +20,7 @@ Scene with_tolerance(const Scene& scene) {
 
 }  // namespace
 
-LinearValidity linear_validity(const Scene& scene, const ChainModel& model) {
+LinearValidity linear_validity(const Scene& scene, const ChainModel& model, const History* exact_linear) {
   LinearValidity v;
   const auto t0 = std::chrono::steady_clock::now();
   double spin = 0;
@@ -38,7 +38,9 @@ LinearValidity linear_validity(const Scene& scene, const ChainModel& model) {
   try {
     // Every tank, ideal or viscous, enters both models with its kept modes.
     const Scene checked = with_tolerance(scene);
-    const History linear = propagate(model, checked);
+    History own;
+    if (!exact_linear) own = propagate(model, checked);
+    const History& linear = exact_linear ? *exact_linear : own;
     const NonlinearChain chain = nonlinear_chain(checked);
     const NonlinearHistory nonlinear = integrate_nonlinear(chain, nonlinear_initial_state(checked, chain), checked.run);
     const double scale = linear.u.cwiseAbs().maxCoeff();

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "chain_model.hpp"
+#include "propagation.hpp"
 #include "scene.hpp"
 
 #include <string>
@@ -25,6 +26,8 @@ struct LinearValidity {
   double seconds = 0;
 };
 
-LinearValidity linear_validity(const Scene& scene, const ChainModel& model);
+// `exact_linear`: the run's own history when it was propagated exactly (method "exact"), which is then not propagated
+// again.
+LinearValidity linear_validity(const Scene& scene, const ChainModel& model, const History* exact_linear = nullptr);
 
 }  // namespace rc::rom

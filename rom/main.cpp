@@ -264,7 +264,8 @@ int main(int argc, char** argv) {
       }
       rc::rom::History h = rc::rom::propagate(model, scene);
       // Is the amplitude small enough for the linear model? Measured against the nonlinear chain.
-      const rc::rom::LinearValidity validity = rc::rom::linear_validity(scene, model);
+      const bool exact = h.method_used.rfind("exact", 0) == 0;  // then the check reuses this history
+      const rc::rom::LinearValidity validity = rc::rom::linear_validity(scene, model, exact ? &h : nullptr);
       if (validity.measured) {
         h.nonlinear_difference = validity.difference;
         h.amplitude_at_limit = validity.amplitude_at_limit;

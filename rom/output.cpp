@@ -68,14 +68,16 @@ void write_dataset(hid_t file, const std::string& name, const std::vector<double
   if (!data.empty()) check(H5Dwrite(ds.id, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), name);
 }
 
-// Rows of complex values (one row per output time) as the real datasets NAME_re and NAME_im.
-void write_complex_rows(hid_t file, const std::string& name, const History::Rows& rows) {
-  const hsize_t N = rows.rows(), c = rows.cols();
+// N rows of c complex values, stored row after row (one row per output time), as the real datasets NAME_re and
+// NAME_im.
+void write_complex_rows(hid_t file, const std::string& name, const std::complex<double>* data, hsize_t N, hsize_t c) {
   std::vector<double> re(N * c), im(N * c);
-  for (hsize_t j = 0; j < N; ++j)
-    for (hsize_t k = 0; k < c; ++k) { re[j * c + k] = rows(j, k).real(); im[j * c + k] = rows(j, k).imag(); }
+  for (hsize_t j = 0; j < N * c; ++j) { re[j] = data[j].real(); im[j] = data[j].imag(); }
   write_dataset(file, name + "_re", re, N, c);
   write_dataset(file, name + "_im", im, N, c);
+}
+void write_complex_rows(hid_t file, const std::string& name, const History::Rows& rows) {
+  write_complex_rows(file, name, rows.data(), rows.rows(), rows.cols());
 }
 
 void write_attr(hid_t obj, const std::string& name, const std::string& value) {
@@ -201,11 +203,7 @@ void write_nonlinear_h5(const NonlinearHistory& nh, int n, const fs::path& tmp) 
   write_dataset(file.id, "spin", nh.spins, N, n);
   write_dataset(file.id, "angular_momentum", nh.momentum, N, 3);
   if (nh.integrals_valid) write_dataset(file.id, "energy", h.H, N, 0);
-  const hsize_t nm = nh.fluid_modes;
-  std::vector<double> zr(N * nm), zi(N * nm);
-  for (hsize_t j = 0; j < N * nm; ++j) { zr[j] = nh.zeta[j].real(); zi[j] = nh.zeta[j].imag(); }
-  write_dataset(file.id, "zeta_re", zr, N, nm);
-  write_dataset(file.id, "zeta_im", zi, N, nm);
+  write_complex_rows(file.id, "zeta", nh.zeta.data(), N, static_cast<hsize_t>(nh.fluid_modes));
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <ctime>
 #include <cstdio>
 #include <stdexcept>
@@ -128,11 +129,15 @@ History propagate(const ChainModel& m, const Scene& scene) {
   hist.H.resize(steps + 1);
   hist.H_scale.resize(steps + 1);
   const EnergyMeter meter(m);
-  const BudgetMeter budget_meter(m, f);
+  // With viscous tanks (no energy integral) the frozen chain's budget instead (energy_budget.hpp).
+  std::optional<BudgetMeter> budget_meter;
   std::vector<BudgetSample> budget;
-  if (m.viscous) budget.resize(steps + 1);
+  if (m.viscous) {
+    budget_meter.emplace(m, f);
+    budget.resize(steps + 1);
+  }
   auto store = [&](long j, const Eigen::VectorXcd& y) {
-    if (m.viscous) budget[j] = budget_meter(y);
+    if (budget_meter) budget[j] = (*budget_meter)(y);
     Eigen::VectorXcd u, v, w;
     f.from_state(m, y, u, v, w);
     hist.t[j] = j * h;
@@ -156,8 +161,8 @@ History propagate(const ChainModel& m, const Scene& scene) {
         hist.z(j, l) = cd(re(2 * n + l, i) - re(v, i), im(2 * n + l, i) - im(v, i));
       }
     }
-    if (m.viscous)
-      for (long i = 0; i < cols; ++i) budget[j0 + i] = budget_meter(re.col(i).cast<cd>() + cd(0, 1) * im.col(i).cast<cd>());
+    if (budget_meter)
+      for (long i = 0; i < cols; ++i) budget[j0 + i] = (*budget_meter)(re.col(i).cast<cd>() + cd(0, 1) * im.col(i).cast<cd>());
     meter.block(re.topRows(n) * is, im.topRows(n) * is, re.middleRows(n, n), im.middleRows(n, n),
                 re.bottomRows(nm), im.bottomRows(nm), &hist.H[j0], &hist.H_scale[j0]);
   };

@@ -54,6 +54,16 @@ std::optional<double> get_number(const Ctx& c, const toml::table& t, const std::
   return v;
 }
 
+// One element of a TOML array as a finite number (integers taken as numbers).
+double finite_number(const Ctx& c, const toml::node& e, const std::string& where) {
+  double x = 0;
+  if (e.is_floating_point()) x = e.as_floating_point()->get();
+  else if (e.is_integer()) x = static_cast<double>(e.as_integer()->get());
+  else c.fail(where, "must hold numbers");
+  if (!std::isfinite(x)) c.fail(where, "must be finite");
+  return x;
+}
+
 // A vector of three finite numbers, e.g. a moment [x, y, z].
 std::array<double, 3> get_vector3(const Ctx& c, const toml::table& t, const std::string& key, const std::string& where) {
   std::array<double, 3> v{0, 0, 0};
@@ -61,13 +71,7 @@ std::array<double, 3> get_vector3(const Ctx& c, const toml::table& t, const std:
   if (!node) return v;
   const toml::array* arr = node->as_array();
   if (!arr || arr->size() != 3) c.fail(where, "must be an array of three numbers [x, y, z]");
-  for (std::size_t j = 0; j < 3; ++j) {
-    const toml::node& e = (*arr)[j];
-    if (e.is_floating_point()) v[j] = e.as_floating_point()->get();
-    else if (e.is_integer()) v[j] = static_cast<double>(e.as_integer()->get());
-    else c.fail(where, "must hold numbers");
-    if (!std::isfinite(v[j])) c.fail(where, "must be finite");
-  }
+  for (std::size_t j = 0; j < 3; ++j) v[j] = finite_number(c, (*arr)[j], where);
   return v;
 }
 
@@ -86,17 +90,7 @@ std::vector<std::complex<double>> get_complex_array(const Ctx& c, const toml::ta
     const toml::array* p = (*arr)[k].as_array();
     std::string w = where + "[" + std::to_string(k + 1) + "]";
     if (!p || p->size() != 2) c.fail(w, "must be a pair [re, im]");
-    double re = 0, im = 0;
-    for (int j = 0; j < 2; ++j) {
-      const toml::node& e = (*p)[j];
-      double x;
-      if (e.is_floating_point()) x = e.as_floating_point()->get();
-      else if (e.is_integer()) x = static_cast<double>(e.as_integer()->get());
-      else c.fail(w, "must hold numbers");
-      if (!std::isfinite(x)) c.fail(w, "must be finite");
-      (j == 0 ? re : im) = x;
-    }
-    out[k] = {re, im};
+    out[k] = {finite_number(c, (*p)[0], w), finite_number(c, (*p)[1], w)};
   }
   return out;
 }
