@@ -49,6 +49,24 @@ template Eigen::MatrixXcd first_order_matrix<double>(const ChainModel&, double);
 template Eigen::Matrix<std::complex<long double>, Eigen::Dynamic, Eigen::Dynamic> first_order_matrix<long double>(
     const ChainModel&, long double);
 
+std::complex<double> first_order_trace(const ChainModel& m) {
+  using C = std::complex<double>;
+  const C I(0, 1);
+  const int n = m.n;
+  // The same blocks as first_order_matrix: the (u-dot, u-dot) block -M_eff^{-1}(i Gamma + D) and the fluid diagonal
+  // -i nu; the s u block has a zero diagonal.
+  Eigen::MatrixXcd Mc = m.M_eff.cast<C>();
+  for (int k = 0; k < n; ++k) Mc(k, k) += I * m.M_eff_imag[k];
+  Eigen::MatrixXcd Cdamp = m.D.cast<C>();
+  for (int k = 0; k < n; ++k) Cdamp(k, k) += I * m.G[k];
+  C trace = 0;
+  for (const auto& md : m.modes) {
+    Cdamp(md.body, md.body) -= I * md.E_c() * md.lambda_c();
+    trace -= I * md.nu_c();
+  }
+  return trace - Mc.partialPivLu().solve(Cdamp).trace();
+}
+
 FirstOrderSystem build_first_order(const ChainModel& m) {
   FirstOrderSystem f;
   f.n = m.n;

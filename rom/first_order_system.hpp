@@ -34,6 +34,10 @@ FirstOrderSystem build_first_order(const ChainModel& m);
 // The matrix B of build_first_order assembled in the arithmetic of Real (double or long double) for
 // the balancing scale s, from the model's (double) M_eff, K, D, G, E, lambda, nu: what the
 // extended-precision reference of `chain-rom bench` propagates (reference_propagation.hpp).
+// The trace of B without building it (root_tracking.hpp checks its roots' sum against it):
+//   tr B = -tr(M_eff^{-1} (i Gamma + D)) - i sum_l nu_kl.
+std::complex<double> first_order_trace(const ChainModel& m);
+
 template <class Real>
 Eigen::Matrix<std::complex<Real>, Eigen::Dynamic, Eigen::Dynamic> first_order_matrix(const ChainModel& m, Real s);
 

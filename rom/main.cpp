@@ -116,6 +116,9 @@ int main(int argc, char** argv) {
   sweep->add_option("-o,--output", out_file, "CSV: <key>[,<key2>],stable,margin,nonreal, one row per point")->required();
   sweep->add_option("--png", png_file, "also draw the map (scripts/plot_sweep.py with /usr/bin/python3 + matplotlib)");
   sweep->add_option("--threads", threads, "worker threads (default: all cores)");
+  bool no_track = false;
+  sweep->add_flag("--no-track", no_track, "every point's roots by the eigen-solver (default: tracked from the "
+                                          "neighbouring point's, checked, the eigen-solver where the check fails)");
 
   auto* bench = app.add_subcommand(
       "bench", "error against run time: the state at run.t_end by exact, gauss (step sweep) and rk45 (tolerance "
@@ -177,13 +180,16 @@ int main(int argc, char** argv) {
       const SweepResult r = run_sweep(scene, tables, a1, a2, threads, [](long d, long total, double el) {
         std::fprintf(stderr, "chain-rom sweep: %ld/%ld points, %.1f s, about %.0f s left\n", d, total, el,
                      el * static_cast<double>(total - d) / static_cast<double>(d));
-      });
+      }, !no_track);
       write_sweep_csv(r, a1, a2, out);
       int stable = 0;
       for (const auto& p : r.points) stable += (p.ok && p.verdict.stable) ? 1 : 0;
       std::printf("wrote %s: %zu points (%d stable, %d unstable, %d failed), %.3g s on %d thread%s\n",
                   out_file.c_str(), r.points.size(), stable, static_cast<int>(r.points.size()) - stable - r.failed,
                   r.failed, r.wall_seconds, r.threads, r.threads == 1 ? "" : "s");
+      std::printf("roots: %ld points tracked from their neighbours, %ld by the eigen-solver%s%s\n", r.tracked,
+                  static_cast<long>(r.points.size()) - r.tracked - r.failed,
+                  r.first_fallback.empty() ? "" : "; first fallback: ", r.first_fallback.c_str());
       std::fflush(stdout);
       if (r.failed > 0)
         for (const auto& p : r.points)

@@ -11,10 +11,9 @@
 #include <limits>
 
 namespace rc::rom {
-namespace {
 
 // Verdict from the roots sigma (their largest modulus is the spectral radius of B).
-Verdict verdict_of(const ChainModel& m, const Eigen::VectorXcd& sigma) {
+Verdict verdict_from_roots(const ChainModel& m, const Eigen::VectorXcd& sigma) {
   Verdict v;
   double radius = 0;
   for (Eigen::Index j = 0; j < sigma.size(); ++j) radius = std::max(radius, std::abs(sigma[j]));
@@ -45,9 +44,7 @@ Verdict verdict_of(const ChainModel& m, const Eigen::VectorXcd& sigma) {
   return v;
 }
 
-}  // namespace
-
-Verdict compute_verdict(const ChainModel& m) {
+Eigen::VectorXcd verdict_roots(const ChainModel& m) {
   using cd = std::complex<double>;
   const FirstOrderSystem f = build_first_order(m);
   if (!m.dissipative()) {
@@ -60,12 +57,14 @@ Verdict compute_verdict(const ChainModel& m) {
     A.leftCols(n) *= cd(0, 1);
     Eigen::EigenSolver<Eigen::MatrixXd> es(A.real(), false);
     if (es.info() != Eigen::Success) throw std::runtime_error("eigen-solver did not converge");
-    return verdict_of(m, es.eigenvalues());
+    return es.eigenvalues();
   }
   Eigen::ComplexEigenSolver<Eigen::MatrixXcd> es(f.B, false);
   if (es.info() != Eigen::Success) throw std::runtime_error("eigen-solver did not converge");
-  return verdict_of(m, cd(0, -1) * es.eigenvalues());
+  return cd(0, -1) * es.eigenvalues();
 }
+
+Verdict compute_verdict(const ChainModel& m) { return verdict_from_roots(m, verdict_roots(m)); }
 
 Spectrum compute_spectrum(const ChainModel& m) {
   using cd = std::complex<double>;
@@ -73,7 +72,7 @@ Spectrum compute_spectrum(const ChainModel& m) {
   const ComplexEigen es = complex_eigen(f.B, true);
   const int n = m.n, D = f.dim();
   Spectrum sp;
-  const Verdict v = verdict_of(m, cd(0, -1) * es.values);
+  const Verdict v = verdict_from_roots(m, cd(0, -1) * es.values);
   const double radius = v.tolerance / kRealTolerance;
   sp.tolerance = v.tolerance;
   for (int j = 0; j < D; ++j) {

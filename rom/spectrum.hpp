@@ -67,5 +67,11 @@ inline constexpr double kRealTolerance = 1e-7;
 
 Spectrum compute_spectrum(const ChainModel& m);
 Verdict compute_verdict(const ChainModel& m);
+// What compute_verdict does in two steps, for callers that find the roots another way (root_tracking.hpp): the
+// roots by the eigen-solver (no eigenvectors), and the verdict of a complete set of roots.
+Eigen::VectorXcd verdict_roots(const ChainModel& m);
+Verdict verdict_from_roots(const ChainModel& m, const Eigen::VectorXcd& sigma);
+// The size of the oscillating roots the verdict's tolerance is relative to (tolerance = kRealTolerance * radius).
+inline double verdict_radius(const Verdict& v) { return v.tolerance / kRealTolerance; }
 
 }  // namespace rc::rom

@@ -1,5 +1,7 @@
 #include "sweep.hpp"
 
+#include "root_tracking.hpp"
+
 #include <atomic>
 #include <cctype>
 #include <chrono>
@@ -224,8 +226,79 @@ void check_param_value(const ParamKey& k, double v, const std::string& option) {
   }
 }
 
+namespace {
+
+// Where a line of points gets its first roots from: the eigen-solver, or a point evaluated before.
+struct Line {
+  std::vector<long> points;  // indices into SweepResult::points, in walking order
+  long start_from = -1;      // a point evaluated before whose roots start the line; -1: the eigen-solver
+};
+
+// The roots the next point on a line is tracked from: the last point's, and the one before for a linear
+// prediction (empty once the order of the roots changed, i.e. after the eigen-solver).
+struct LineState {
+  Eigen::VectorXcd last, before;
+  double radius = 0;
+};
+
+// The lines of the sweep (run_sweep's comment): `first` is walked alone before the others, in parallel.
+void plan_lines(long n1, long n2, int threads, bool track, Line& first, std::vector<Line>& rest) {
+  const long total = n1 * n2;
+  if (!track) {
+    for (long p = 0; p < total; ++p) rest.push_back(Line{{p}, -1});
+    return;
+  }
+  if (n2 > 1) {
+    for (long i = 0; i < n1; ++i) first.points.push_back(i * n2);
+    for (long i = 0; i < n1; ++i) {
+      Line row{{}, i * n2};
+      for (long j = 1; j < n2; ++j) row.points.push_back(i * n2 + j);
+      rest.push_back(std::move(row));
+    }
+    return;
+  }
+  const long stretch = (total + threads - 1) / threads;
+  for (long p0 = 0; p0 < total; p0 += stretch) {
+    Line l;
+    for (long p = p0; p < std::min(total, p0 + stretch); ++p) l.points.push_back(p);
+    rest.push_back(std::move(l));
+  }
+}
+
+// One point: the model, its roots (tracked from the line's state when it has one, else the eigen-solver) and its
+// verdict. Updates the line's state; a failure to build or solve is recorded in the point.
+void evaluate_point(const Scene& s, TableCache& tables, bool track, SweepPoint& pt, LineState& st,
+                    std::string& fallback_why) {
+  try {
+    const ChainModel m = build_model(s, &tables);
+    Eigen::VectorXcd roots;
+    if (track && st.last.size() > 0) {
+      const Eigen::VectorXcd start =
+          st.before.size() == st.last.size() ? Eigen::VectorXcd(2.0 * st.last - st.before) : st.last;
+      TrackedRoots t = track_roots(m, start, st.radius);
+      if (t.ok) {
+        roots = std::move(t.sigma);
+        pt.tracked = true;
+      } else if (fallback_why.empty()) {
+        fallback_why = t.why;
+      }
+    }
+    if (!pt.tracked) roots = verdict_roots(m);
+    pt.verdict = verdict_from_roots(m, roots);
+    pt.ok = true;
+    st.before = pt.tracked ? std::move(st.last) : Eigen::VectorXcd();
+    st.last = std::move(roots);
+    st.radius = verdict_radius(pt.verdict);
+  } catch (const std::exception& e) {
+    pt.error = e.what();
+    st = LineState{};
+  }
+}
+
+}  // namespace
+
 SweepResult run_sweep(const Scene& base, TableCache& tables, const SweepAxis& a1,
-                      const std::optional<SweepAxis>& a2, int threads, const SweepProgress& progress) {
+                      const std::optional<SweepAxis>& a2, int threads, const SweepProgress& progress, bool track) {
   using clock = std::chrono::steady_clock;
   const auto t0 = clock::now();
   const int n2 = a2 ? a2->steps : 1;
@@ -235,13 +308,22 @@ SweepResult run_sweep(const Scene& base, TableCache& tables, const SweepAxis& a1
   if (threads <= 0) threads = std::max(1u, std::thread::hardware_concurrency());
   threads = static_cast<int>(std::min<long>(threads, total));
   r.threads = threads;
+  // A family of tables changes the poles themselves from point to point: nothing to track.
+  track = track && !a1.key.is_table() && !(a2 && a2->key.is_table());
+  Line first;
+  std::vector<Line> lines;
+  plan_lines(a1.steps, n2, threads, track, first, lines);
+  // The roots the first line's points ended with: the rows start from them once the first line is done.
+  std::vector<LineState> end_state(total);
   std::atomic<long> next{0}, done{0};
-  std::mutex progress_mutex;
+  std::mutex progress_mutex, fallback_mutex;
   std::atomic<double> last_report{0};
 
-  auto worker = [&]() {
+  auto walk = [&](const Line& line) {
     Scene s = base;  // private copy: only the swept values change
-    for (long p; (p = next.fetch_add(1)) < total;) {
+    LineState st = line.start_from >= 0 ? end_state[line.start_from] : LineState{};
+    std::string why;
+    for (const long p : line.points) {
       SweepPoint& pt = r.points[p];
       pt.v1 = a1.value(static_cast<int>(p / n2));
       set_param(s, a1.key, pt.v1);
@@ -249,12 +331,8 @@ SweepResult run_sweep(const Scene& base, TableCache& tables, const SweepAxis& a1
         pt.v2 = a2->value(static_cast<int>(p % n2));
         set_param(s, a2->key, pt.v2);
       }
-      try {
-        pt.verdict = compute_verdict(build_model(s, &tables));
-        pt.ok = true;
-      } catch (const std::exception& e) {
-        pt.error = e.what();
-      }
+      evaluate_point(s, tables, track, pt, st, why);
+      if (&line == &first) end_state[p] = st;
       const long d = ++done;
       if (progress) {
         const double el = std::chrono::duration<double>(clock::now() - t0).count();
@@ -267,6 +345,13 @@ SweepResult run_sweep(const Scene& base, TableCache& tables, const SweepAxis& a1
         }
       }
     }
+    if (!why.empty()) {
+      std::lock_guard<std::mutex> lock(fallback_mutex);
+      if (r.first_fallback.empty()) r.first_fallback = why;
+    }
+  };
+  auto worker = [&]() {
+    for (long l; (l = next.fetch_add(1)) < static_cast<long>(lines.size());) walk(lines[l]);
   };
   // Every table must be in the cache before threads share it (get() then only reads): the scene's
   // own, then every member of a swept family.
@@ -282,11 +367,15 @@ SweepResult run_sweep(const Scene& base, TableCache& tables, const SweepAxis& a1
       }
     }
   }
+  if (!first.points.empty()) walk(first);
   std::vector<std::thread> pool;
   for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
   worker();
   for (auto& th : pool) th.join();
-  for (const auto& pt : r.points) r.failed += pt.ok ? 0 : 1;
+  for (const auto& pt : r.points) {
+    r.failed += pt.ok ? 0 : 1;
+    r.tracked += pt.tracked ? 1 : 0;
+  }
   r.wall_seconds = std::chrono::duration<double>(clock::now() - t0).count();
   return r;
 }

@@ -55,6 +55,7 @@ struct SweepAxis {
 struct SweepPoint {
   double v1 = 0, v2 = 0;
   bool ok = false;    // false: the model could not be built or solved there (see error)
+  bool tracked = false;  // roots tracked from the neighbouring point (root_tracking.hpp), not by the eigen-solver
   Verdict verdict;
   std::string error;
 };
@@ -62,6 +63,8 @@ struct SweepPoint {
 struct SweepResult {
   std::vector<SweepPoint> points;  // axis-1 index outer, axis-2 index inner
   int failed = 0;
+  long tracked = 0;          // points whose roots were tracked; the others went to the eigen-solver
+  std::string first_fallback;  // why the first tracked point that fell back to the eigen-solver did so
   double wall_seconds = 0;
   int threads = 1;
 };
@@ -72,9 +75,13 @@ using SweepProgress = std::function<void(long, long, double)>;
 // Runs the sweep on `threads` threads (0: std::thread::hardware_concurrency()). The scene's own
 // tables and those of a table key's family are read into `tables` before the threads start; a
 // family table that cannot be read throws SweepError naming the key and the file, before any point.
+// With `track` (not for a family of tables) the points are walked in lines and each point's roots are tracked
+// from its neighbours' (root_tracking.hpp): a 2-D map walks its first column, then its rows in parallel; a 1-D
+// sweep is cut into one stretch per thread. A line starts with the eigen-solver, and any point whose tracked
+// roots are not accepted goes to it too. Without `track` every point goes to the eigen-solver.
 SweepResult run_sweep(const Scene& base, TableCache& tables, const SweepAxis& a1,
                       const std::optional<SweepAxis>& a2, int threads = 0,
-                      const SweepProgress& progress = {});
+                      const SweepProgress& progress = {}, bool track = true);
 
 // CSV: header `<KEY1>[,<KEY2>],stable,margin,nonreal`, one row per point; points where the model
 // could not be built have stable, margin and nonreal = nan. Temporary name, then rename.
