@@ -14,6 +14,7 @@
 #        ~100 MB included) — target < 0.2 s;
 #     b. chain-rom sweep, 100 x 100 map of data/scenes/default_ideal.toml (body[1].spin x joint[1].stiffness)
 #        — target < 10 s;
+#     c. the same for data/scenes/default.toml (water; joint stiffnesses) when its tables exist — target < 10 s;
 #     with the 1-minute load average before each run (the machine may be shared);
 #  4. bench/results/chain_rom_<date>_speed.md: machine, date, commit, load and every timing.
 set -euo pipefail
@@ -101,4 +102,30 @@ for i in $(seq "$REPEAT"); do
   echo "  run $i: load $l, $s, process $wall s"
   echo "| $i | $l | $s | $wall s | $(awk "BEGIN {print $user + $sys}") s |" >> "$MD"
 done
+
+# The water scene (data/scenes/default.toml: three response-fit tables, 260 roots a point) when its tables exist
+# (bash scripts/run-default.sh makes them): growth rate over the joints' stiffnesses, roots tracked point to point.
+WATER="$ROOT/data/scenes/default.toml"
+if sed -n 's/^# recipe: \([^:]*\):.*/\1/p' "$WATER" | while read -r t; do [ -f "$ROOT/out/tables/$t" ] || exit 1; done; then
+  {
+    echo
+    echo "## 100 x 100 growth-rate map of the water default scene (target < 10 s)"
+    echo
+    echo "| run | load before | sweep (as printed) | roots | process wall | process user+sys |"
+    echo "|---|---|---|---|---|---|"
+  } >> "$MD"
+  echo "[4/4] speed: 100 x 100 map, water"
+  for i in $(seq "$REPEAT"); do
+    l=$(load1)
+    /usr/bin/time -f "%e %U %S" -o "$TMP/time" "$ROM" sweep "$WATER" --param 'joint[1].stiffness' --from 0 --to 400 \
+      --steps 100 --param2 'joint[2].stiffness' --from2 0 --to2 400 --steps2 100 -o "$TMP/wmap.csv" > "$TMP/sweep.txt" 2>/dev/null
+    read -r wall user sys < "$TMP/time"
+    s=$(grep -o '[0-9.]* s on [0-9]* thread[s]*' "$TMP/sweep.txt")
+    roots=$(grep -o '[0-9]* points tracked' "$TMP/sweep.txt")
+    echo "  run $i: load $l, $s, $roots, process $wall s"
+    echo "| $i | $l | $s | $roots | $wall s | $(awk "BEGIN {print $user + $sys}") s |" >> "$MD"
+  done
+else
+  echo "[4/4] water map skipped: its tables are not in out/tables (bash scripts/run-default.sh makes them)"
+fi
 echo "wrote $RES/chain_rom_$DATE.csv, $RES/chain_rom_$DATE.png, $MD"

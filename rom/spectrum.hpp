@@ -1,6 +1,7 @@
 // Characteristic roots sigma (solutions e^{i sigma t}, Kononov) as eigenvalues of the first-order
-// system — never by polynomial root finding — with the stability verdict, the margin, the owner
-// of each root and the cross-check against det Phi(sigma) = 0 of (22)/(29).
+// system — never by polynomial root finding from scratch (maps track roots from a neighbouring point's eigen-roots,
+// root_tracking.hpp) — with the stability verdict, the margin, the owner of each root and the cross-check against
+// det Phi(sigma) = 0 of (22)/(29).
 #pragma once
 
 #include "chain_model.hpp"

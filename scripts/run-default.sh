@@ -9,7 +9,7 @@
 #      out/default-spectrum.txt), then on the ideal one (out/default-ideal-spectrum.txt) and the two verdicts,
 #   4. chain-rom run: time history out/default-trajectory.h5,
 #   5. plot it: out/default-trajectory.png (scripts/plot_trajectory.py, Debian's /usr/bin/python3),
-#   6. chain-rom sweep: map of the growth rate over the two joints' stiffnesses (40 x 40 points),
+#   6. chain-rom sweep: map of the growth rate over the two joints' stiffnesses (100 x 100 points),
 #      out/default-map.csv and out/default-map.png (scripts/plot_sweep.py). (A viscous table holds for one
 #      Ekman number, so with water the map cannot sweep a spin: docs/rom.md, "Viscous tanks".)
 # Exits non-zero on the first failure.
@@ -93,8 +93,8 @@ step "5/6 plot -> out/default-trajectory.png"
   --title "default scene (data/scenes/default.toml)" || fail "scripts/plot_trajectory.py"
 
 step "6/6 growth-rate map -> out/default-map.png (joint[1].stiffness 0..400 x joint[2].stiffness 0..400)"
-"$ROM" sweep "$SCENE" --param 'joint[1].stiffness' --from 0 --to 400 --steps 40 \
-  --param2 'joint[2].stiffness' --from2 0 --to2 400 --steps2 40 -o "$OUT/default-map.csv" || fail "chain-rom sweep"
+"$ROM" sweep "$SCENE" --param 'joint[1].stiffness' --from 0 --to 400 --steps 100 \
+  --param2 'joint[2].stiffness' --from2 0 --to2 400 --steps2 100 -o "$OUT/default-map.csv" || fail "chain-rom sweep"
 "$PY" "$ROOT/scripts/plot_sweep.py" "$OUT/default-map.csv" -o "$OUT/default-map.png" \
   --title "default scene (water): growth rate over the joints' stiffnesses" --growth || fail "scripts/plot_sweep.py"
 
