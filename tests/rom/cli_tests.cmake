@@ -42,6 +42,11 @@ rom_cli(sweep_1d ARGS ${_sw};--param;body[1].spin;--from;50;--to;300;--steps;6;-
         MATCH "wrote out_sweep1.csv: 6 points" LINES 7 LINES_FILE out_sweep1.csv)
 rom_cli(sweep_2d ARGS ${_sw};--param;body[1].spin;--from;50;--to;300;--steps;4;--param2;body[1].cavity.density;--from2;500;--to2;1500;--steps2;3;-o;out_sweep2.csv
         EXPECT_EXIT 0 MATCH "wrote out_sweep2.csv: 12 points" LINES 13 LINES_FILE out_sweep2.csv)
+# The 2-D map tracks its points' roots from their neighbours' (one eigen-solve to start); --no-track solves each.
+rom_cli(sweep_2d_tracked ARGS ${_sw};--param;body[1].spin;--from;50;--to;300;--steps;4;--param2;body[1].cavity.density;--from2;500;--to2;1500;--steps2;3;-o;out_sweep3.csv
+        EXPECT_EXIT 0 MATCH "roots: 11 points tracked from their neighbours, 1 by the eigen-solver" LINES 13 LINES_FILE out_sweep3.csv)
+rom_cli(sweep_2d_no_track ARGS ${_sw};--param;body[1].spin;--from;50;--to;300;--steps;4;--param2;body[1].cavity.density;--from2;500;--to2;1500;--steps2;3;--no-track;-o;out_sweep4.csv
+        EXPECT_EXIT 0 MATCH "roots: 0 points tracked from their neighbours, 12 by the eigen-solver" LINES 13 LINES_FILE out_sweep4.csv)
 rom_cli(sweep_bad_key ARGS ${_sw};--param;body[1].colour;--from;0;--to;1;--steps;3;-o;out_bad_sweep.csv EXPECT_EXIT 1
         MATCH "^chain-rom: error: --param body\\[1\\]\\.colour: unknown key" NO_FILE out_bad_sweep.csv)
 rom_cli(sweep_non_numeric ARGS ${_sw};--param;body[1].cavity.modes;--from;0;--to;1;--steps;3;-o;out_bad_sweep.csv EXPECT_EXIT 1
