@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 namespace {
 
 const char* kKeyList =
-    "system.gravity, support.friction, body[k].{mass,A,C,com,next_joint,spin}, "
+    "system.gravity, system.spin_factor (all spins times it), support.friction, body[k].{mass,A,C,com,next_joint,spin}, "
     "body[k].cavity.{density,scale,center,coverage}, joint[k].{stiffness,friction}, "
     "body[k].cavity.table=PATTERN (a family of tables)";
 
@@ -70,6 +70,7 @@ Range range_of(const ParamKey& k) {
     return Range::pos;  // density, scale
   }
   if (k.where == W::body && (k.field == "com" || k.field == "next_joint" || k.field == "spin")) return Range::any;
+  if (k.is_spin_factor()) return Range::any;
   return Range::nonneg;  // gravity, friction, mass, A, C, stiffness
 }
 
@@ -119,7 +120,11 @@ ParamKey parse_param_key(const std::string& key_text, const Scene& scene, const 
   if (std::regex_match(key, m, re_sys)) {
     k.where = W::system;
     k.field = m[1];
-    if (k.field != "gravity") not_numeric(k.field);
+    if (k.field == "spin_factor") {  // every body's spin times the value: the scene's own spins are kept in the key
+      for (const BodySpec& b : scene.bodies) k.base_spins.push_back(b.spin);
+    } else if (k.field != "gravity") {
+      not_numeric(k.field);
+    }
   } else if (std::regex_match(key, m, re_sup)) {
     k.where = W::support;
     k.field = m[1];
@@ -176,12 +181,15 @@ std::filesystem::path table_of(const ParamKey& k, double value) {
 
 void set_param(Scene& s, const ParamKey& k, double value) {
   if (k.is_table()) s.bodies[k.index].cavity->table = table_of(k, value);
+  else if (k.is_spin_factor())
+    for (std::size_t b = 0; b < s.bodies.size(); ++b) s.bodies[b].spin = k.base_spins[b] * value;
   else param_ref(s, k) = value;
 }
 
 double& param_ref(Scene& s, const ParamKey& k) {
   using W = ParamKey::Where;
   if (k.is_table()) throw SweepError(k.text + ": a table key has no numeric value in the scene");
+  if (k.is_spin_factor()) throw SweepError(k.text + ": a factor on every spin, not one value in the scene");
   switch (k.where) {
     case W::system: return s.gravity;
     case W::support: return s.support_friction;
@@ -301,6 +309,9 @@ SweepResult run_sweep(const Scene& base, TableCache& tables, const SweepAxis& a1
                       const std::optional<SweepAxis>& a2, int threads, const SweepProgress& progress, bool track) {
   using clock = std::chrono::steady_clock;
   const auto t0 = clock::now();
+  const auto body_spin = [](const ParamKey& k) { return k.where == ParamKey::Where::body && k.field == "spin"; };
+  if (a2 && ((a1.key.is_spin_factor() && body_spin(a2->key)) || (body_spin(a1.key) && a2->key.is_spin_factor())))
+    throw SweepError("--param2 " + a2->key.text + ": a body's spin and system.spin_factor cannot be swept together");
   const int n2 = a2 ? a2->steps : 1;
   const long total = static_cast<long>(a1.steps) * n2;
   SweepResult r;

@@ -23,14 +23,17 @@ struct SweepError : std::runtime_error {
 // A numeric scene value named by a key such as `body[2].spin`, `joint[1].stiffness`,
 // `body[3].cavity.density`, `system.gravity`, `support.friction` (1-based indices), or a cavity's
 // table out of a family of tables, `body[2].cavity.table=cone_h%.2f.h5`: the swept number is put into
-// the file name by the pattern's one printf conversion (docs/rom.md, "Stability maps").
+// the file name by the pattern's one printf conversion (docs/rom.md, "Stability maps"); or
+// `system.spin_factor`, a common factor on every body's spin (the scene's spins times the value).
 struct ParamKey {
   std::string text;   // as the user wrote it
   enum class Where { system, support, body, cavity, joint } where = Where::system;
   int index = 0;      // 0-based body or joint index
   std::string field;  // e.g. "spin", "density", "table"
   std::string table_pattern;  // field "table" only: file name with one %e/%f/%g conversion
+  std::vector<double> base_spins;  // system.spin_factor only: the scene's spins, which the factor multiplies
   bool is_table() const { return field == "table"; }
+  bool is_spin_factor() const { return where == Where::system && field == "spin_factor"; }
 };
 
 // Parses KEY and checks it against the scene (index in range, the body has a cavity, ...).

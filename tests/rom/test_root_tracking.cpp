@@ -190,4 +190,18 @@ TEST(RootTracking, TrackedMapIsTheEigenMap) {
   EXPECT_LT(worst, 1e-10);
 }
 
+// A viscous table holds one Ekman number: a spin-factor sweep of the viscous chain fails, with the Ekman mismatch
+// named, at every factor but 1 — the CSV gets nan there, never a number from the wrong Ekman number.
+TEST(RootTracking, SpinFactorOfAViscousChainFailsAwayFromItsEkman) {
+  const Scene s = chain_scene(0.0);
+  const SweepAxis ax{parse_param_key("system.spin_factor", s), 0.5, 1.5, 3};
+  TableCache tables;
+  const SweepResult r = run_sweep(s, tables, ax, std::nullopt, 1);
+  ASSERT_EQ(r.points.size(), 3u);
+  EXPECT_EQ(r.failed, 2);
+  EXPECT_TRUE(r.points[1].ok);
+  EXPECT_NE(r.points[0].error.find("was made for ekman"), std::string::npos) << r.points[0].error;
+  std::printf("  factor 0.5: %s\n", r.points[0].error.c_str());
+}
+
 }  // namespace rc::rom

@@ -154,6 +154,40 @@ TEST(Sweep, VerdictAgreesWithFullSpectrum) {
   }
 }
 
+// system.spin_factor multiplies every body's spin: each point's verdict, non-real count and margin are those of
+// `spectrum` on the scene with all spins scaled by hand; with a body's spin on the other axis it is refused.
+TEST(Sweep, SpinFactorScalesEverySpin) {
+  Body b1; b1.mass = 2; b1.A = 0.1; b1.C = 0.08; b1.com = 0.1; b1.next = 0.3; b1.spin = 50;
+  b1.table = spheroid_file(1.0, 1.6); b1.scale = 0.05; b1.center = 0.12;
+  Body b2; b2.mass = 1; b2.A = 0.03; b2.C = 0.02; b2.com = 0.06; b2.spin = 70;
+  b2.table = spheroid_file(1.0, 0.7); b2.scale = 0.04; b2.center = 0.05;
+  const Scene s = scene_of(scene_text({b1, b2}, {{3.0, 0.0}}, 9.81));
+  const SweepAxis ax = axis(s, "system.spin_factor", 0, 3, 61);
+  TableCache tables;
+  const SweepResult r = run_sweep(s, tables, ax, std::nullopt, 2);
+  int stable = 0;
+  double worst = 0;
+  for (const SweepPoint& p : r.points) {
+    ASSERT_TRUE(p.ok) << p.error;
+    Scene t = s;
+    t.bodies[0].spin = 50 * p.v1;
+    t.bodies[1].spin = 70 * p.v1;
+    const Spectrum sp = compute_spectrum(build_model(t));
+    EXPECT_EQ(p.verdict.stable, sp.stable) << "factor " << p.v1;
+    EXPECT_EQ(p.verdict.nonreal, sp.nonreal) << "factor " << p.v1;
+    worst = std::max(worst, std::abs(p.verdict.margin - sp.margin) / (1 + sp.margin));
+    stable += p.verdict.stable;
+  }
+  std::printf("  %d of 61 factors stable, %ld tracked; margins against spectrum on the scaled scene: %.1e\n", stable,
+              r.tracked, worst);
+  EXPECT_LT(worst, 1e-8);
+  EXPECT_GT(stable, 0);
+  EXPECT_LT(stable, 61);
+  const SweepAxis spin = axis(s, "body[2].spin", 10, 20, 2);
+  EXPECT_THROW(run_sweep(s, tables, ax, spin, 1), SweepError);
+  EXPECT_THROW(param_ref(const_cast<Scene&>(s), ax.key), SweepError);
+}
+
 // Tables are read once: after the first model is built the table file can disappear and the sweep
 // (over a cavity value, which changes the fluid's scaling) still runs from the cache.
 TEST(Sweep, ReadsEachTableOnce) {
