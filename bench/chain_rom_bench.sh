@@ -82,49 +82,40 @@ for i in $(seq "$REPEAT"); do
   echo "| $i | $l | $pw s | $pc s | $wall s | $(awk "BEGIN {print $user + $sys}") s |" >> "$MD"
   rm -f "$TMP/traj.h5"
 done
-{
-  echo
-  echo "$(sed -n 2p "$TMP/run.txt")"
-  echo
-  echo "## 100 x 100 stability map of the default scene (target < 10 s)"
-  echo
-  echo "| run | load before | sweep (as printed) | process wall | process user+sys |"
-  echo "|---|---|---|---|---|"
-} >> "$MD"
+echo >> "$MD"
+sed -n 2p "$TMP/run.txt" >> "$MD"
 
-echo "[4/4] speed: 100 x 100 map"
-for i in $(seq "$REPEAT"); do
-  l=$(load1)
-  /usr/bin/time -f "%e %U %S" -o "$TMP/time" "$ROM" sweep "$SCENE" --param 'body[1].spin' --from 100 --to 400 \
-    --steps 100 --param2 'joint[1].stiffness' --from2 0 --to2 400 --steps2 100 -o "$TMP/map.csv" > "$TMP/sweep.txt" 2>/dev/null
-  read -r wall user sys < "$TMP/time"
-  s=$(grep -o '[0-9.]* s on [0-9]* thread[s]*' "$TMP/sweep.txt")
-  echo "  run $i: load $l, $s, process $wall s"
-  echo "| $i | $l | $s | $wall s | $(awk "BEGIN {print $user + $sys}") s |" >> "$MD"
-done
-
-# The water scene (data/scenes/default.toml: three response-fit tables, 260 roots a point) when its tables exist
-# (bash scripts/run-default.sh makes them): growth rate over the joints' stiffnesses, roots tracked point to point.
-WATER="$ROOT/data/scenes/default.toml"
-if sed -n 's/^# recipe: \([^:]*\):.*/\1/p' "$WATER" | while read -r t; do [ -f "$ROOT/out/tables/$t" ] || exit 1; done; then
+# time_map TITLE SCENE SWEEP-ARGS...: REPEAT timed runs of a 100 x 100 sweep, a table of them in $MD.
+time_map() {
+  local title=$1 scene=$2
+  shift 2
   {
     echo
-    echo "## 100 x 100 growth-rate map of the water default scene (target < 10 s)"
+    echo "## 100 x 100 $title (target < 10 s)"
     echo
     echo "| run | load before | sweep (as printed) | roots | process wall | process user+sys |"
     echo "|---|---|---|---|---|---|"
   } >> "$MD"
-  echo "[4/4] speed: 100 x 100 map, water"
+  echo "[4/4] speed: 100 x 100 $title"
   for i in $(seq "$REPEAT"); do
     l=$(load1)
-    /usr/bin/time -f "%e %U %S" -o "$TMP/time" "$ROM" sweep "$WATER" --param 'joint[1].stiffness' --from 0 --to 400 \
-      --steps 100 --param2 'joint[2].stiffness' --from2 0 --to2 400 --steps2 100 -o "$TMP/wmap.csv" > "$TMP/sweep.txt" 2>/dev/null
+    /usr/bin/time -f "%e %U %S" -o "$TMP/time" "$ROM" sweep "$scene" "$@" -o "$TMP/map.csv" > "$TMP/sweep.txt" 2>/dev/null
     read -r wall user sys < "$TMP/time"
     s=$(grep -o '[0-9.]* s on [0-9]* thread[s]*' "$TMP/sweep.txt")
     roots=$(grep -o '[0-9]* points tracked' "$TMP/sweep.txt")
     echo "  run $i: load $l, $s, $roots, process $wall s"
     echo "| $i | $l | $s | $roots | $wall s | $(awk "BEGIN {print $user + $sys}") s |" >> "$MD"
   done
+}
+
+time_map "stability map of the ideal default scene" "$SCENE" --param 'body[1].spin' --from 100 --to 400 --steps 100 \
+  --param2 'joint[1].stiffness' --from2 0 --to2 400 --steps2 100
+# The water scene (data/scenes/default.toml: three response-fit tables, 260 roots a point) when its tables exist
+# (bash scripts/run-default.sh makes them): growth rate over the joints' stiffnesses, roots tracked point to point.
+WATER="$ROOT/data/scenes/default.toml"
+if sed -n 's/^# recipe: \([^:]*\):.*/\1/p' "$WATER" | while read -r t; do [ -f "$ROOT/out/tables/$t" ] || exit 1; done; then
+  time_map "growth-rate map of the water default scene" "$WATER" --param 'joint[1].stiffness' --from 0 --to 400 \
+    --steps 100 --param2 'joint[2].stiffness' --from2 0 --to2 400 --steps2 100
 else
   echo "[4/4] water map skipped: its tables are not in out/tables (bash scripts/run-default.sh makes them)"
 fi

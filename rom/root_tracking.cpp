@@ -100,24 +100,21 @@ CharacteristicLogDerivative::Result CharacteristicLogDerivative::eval(cd sigma, 
   return std::isfinite(value.real()) && std::isfinite(value.imag()) ? Result::value : Result::undefined;
 }
 
-TrackedRoots track_roots(const ChainModel& m, const Eigen::VectorXcd& start, double radius) {
-  TrackedRoots t;
-  t.sigma = start;
-  if (m.n > CharacteristicLogDerivative::kMaxBodies) {
-    t.why = "more than " + std::to_string(CharacteristicLogDerivative::kMaxBodies) + " bodies";
-    return t;
-  }
-  const CharacteristicLogDerivative logd(m);
-  const int N = static_cast<int>(start.size());
-  if (N != logd.degree()) {
-    t.why = "the number of roots changed";
-    return t;
-  }
-  Eigen::VectorXcd& z = t.sigma;
-  const double abs_tol = 1e-13 * radius;
-  auto tol = [&](cd s) { return std::max(abs_tol, 1e-14 * std::abs(s)); };
+namespace {
+
+// The tolerance of an approximation z: 1e-13 of the oscillating roots' radius, 1e-14 relative for larger roots.
+struct Tolerance {
+  double absolute;
+  double operator()(cd z) const { return std::max(absolute, 1e-14 * std::abs(z)); }
+};
+
+// Aberth sweeps until every approximation's Newton correction |f/f'| at its own point is below the tolerance.
+// Returns "" or why not.
+std::string aberth_sweeps(const CharacteristicLogDerivative& logd, Eigen::VectorXcd& z, const Tolerance& tol,
+                          double radius, int& sweeps) {
+  const int N = static_cast<int>(z.size());
   std::vector<char> done(N, 0);
-  for (t.sweeps = 1; t.sweeps <= kMaxSweeps; ++t.sweeps) {
+  for (sweeps = 1; sweeps <= kMaxSweeps; ++sweeps) {
     bool moving = false;
     for (int j = 0; j < N; ++j) {
       if (done[j]) continue;
@@ -142,25 +139,22 @@ TrackedRoots track_roots(const ChainModel& m, const Eigen::VectorXcd& start, dou
       cd repulsion = 0;
       for (int i = 0; i < N; ++i)
         if (i != j) repulsion += inverse(z[j] - z[i]);
-      const cd step = newton / (1.0 - newton * repulsion);
-      z[j] -= step;
-      if (!std::isfinite(z[j].real()) || !std::isfinite(z[j].imag())) {
-        t.why = "an approximation left the finite plane";
-        return t;
-      }
+      z[j] -= newton / (1.0 - newton * repulsion);
+      if (!std::isfinite(z[j].real()) || !std::isfinite(z[j].imag())) return "an approximation left the finite plane";
       moving = true;  // done only once f/f' itself is below the tolerance at the new point (the check below needs it)
     }
-    if (!moving) break;
+    if (!moving) return "";
   }
-  if (t.sweeps > kMaxSweeps) {
-    t.why = "not converged in " + std::to_string(kMaxSweeps) + " sweeps";
-    return t;
-  }
-  // Distinct: a disc of radius N |f/f'| about any point holds a zero of a polynomial of degree N (the Newton
-  // correction bound; e.g. Henrici, Applied and Computational Complex Analysis, vol. 1, 1974, §6.4). Every z_j was
-  // accepted with |f/f'| <= tol and then moved by that much, so a zero lies within (N + 1) tol of it; if the discs
-  // are pairwise disjoint, the N approximations sit on N distinct zeros, i.e. on all of them. Pairs are compared in
-  // the order of Re z, within reach only.
+  return "not converged in " + std::to_string(kMaxSweeps) + " sweeps";
+}
+
+// A disc of radius N |f/f'| about any point holds a zero of a polynomial of degree N (the Newton correction bound;
+// e.g. Henrici, Applied and Computational Complex Analysis, vol. 1, 1974, §6.4). Every z_j was accepted with
+// |f/f'| <= tol and then moved by that much, so a zero lies within (N + 1) tol of it; if the discs are pairwise
+// disjoint, the N approximations sit on N distinct zeros, i.e. on all of them. Pairs are compared in the order of
+// Re z, within reach only.
+bool on_distinct_zeros(const Eigen::VectorXcd& z, const Tolerance& tol) {
+  const int N = static_cast<int>(z.size());
   std::vector<double> apart(N);
   double reach = 0;
   for (int j = 0; j < N; ++j) reach = std::max(reach, apart[j] = 2.0 * (N + 1) * tol(z[j]));
@@ -171,20 +165,38 @@ TrackedRoots track_roots(const ChainModel& m, const Eigen::VectorXcd& start, dou
     for (int b = a + 1; b < N && z[order[b]].real() - z[order[a]].real() <= reach; ++b) {
       const int i = order[a], j = order[b];
       const double d = std::max(apart[i], apart[j]);
-      if (std::norm(z[i] - z[j]) <= d * d) {
-        t.why = "two approximations on one root";
-        return t;
-      }
+      if (std::norm(z[i] - z[j]) <= d * d) return false;
     }
-  // The sum of the roots is -i tr B (sigma = -i mu): f and the first-order system are one problem.
+  return true;
+}
+
+// The sum of the roots is -i tr B (sigma = -i mu): f and the first-order system are one problem.
+bool sum_is_the_trace(const ChainModel& m, const Eigen::VectorXcd& z, double radius) {
   double size = 0;
-  for (int j = 0; j < N; ++j) size += std::abs(z[j]);
-  const cd sum = z.sum(), expected = cd(0, -1) * first_order_trace(m);
-  if (std::abs(sum - expected) > 1e-10 * std::max(size, radius)) {
-    t.why = "the roots' sum is not -i tr B";
+  for (const cd x : z) size += std::abs(x);
+  return std::abs(z.sum() - cd(0, -1) * first_order_trace(m)) <= 1e-10 * std::max(size, radius);
+}
+
+}  // namespace
+
+TrackedRoots track_roots(const ChainModel& m, const Eigen::VectorXcd& start, double radius) {
+  TrackedRoots t;
+  t.sigma = start;
+  if (m.n > CharacteristicLogDerivative::kMaxBodies) {
+    t.why = "more than " + std::to_string(CharacteristicLogDerivative::kMaxBodies) + " bodies";
     return t;
   }
-  t.ok = true;
+  const CharacteristicLogDerivative logd(m);
+  if (start.size() != logd.degree()) {
+    t.why = "the number of roots changed";
+    return t;
+  }
+  const Tolerance tol{1e-13 * radius};
+  t.why = aberth_sweeps(logd, t.sigma, tol, radius, t.sweeps);
+  if (!t.why.empty()) return t;
+  if (!on_distinct_zeros(t.sigma, tol)) t.why = "two approximations on one root";
+  else if (!sum_is_the_trace(m, t.sigma, radius)) t.why = "the roots' sum is not -i tr B";
+  t.ok = t.why.empty();
   return t;
 }
 
