@@ -1,5 +1,7 @@
 #include "output.hpp"
 
+#include "fit_passivity.hpp"
+
 #include "companion_check.hpp"
 
 #include <hdf5.h>
@@ -264,8 +266,15 @@ void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp) {
     if (b.ekman > 0) os << ", viscous (Ek = " << b.ekman << ", kept Im sum E = " << b.E_kept_imag << ")";
     if (b.unconverged > 0)
       os << ", " << b.unconverged << " kept clusters not converged (their roots marked *: docs/cones.md)";
-    if (b.fit_hi > b.fit_lo)
+    if (b.fit_hi > b.fit_lo) {
       os << ", modes of a response fit on s in [" << b.fit_lo << ", " << b.fit_hi << "] (error " << b.fit_error << ")";
+      const FitPassivity p = fit_passivity(m, k);
+      if (p.passive())
+        os << ", passive on it (Im R >= " << p.min_im << " max|R|)";
+      else
+        os << ", NOT passive: Im R = " << p.min_im << " max|R| at s = " << p.at
+           << " (the fit can feed the chain energy: docs/rom.md, \"Viscous tanks\")";
+    }
     os << "\n";
   }
   os << "roots sigma (rad/s, solutions e^{i sigma t}):\n";
