@@ -270,9 +270,9 @@ void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp) {
       os << ", modes of a response fit on s in [" << b.fit_lo << ", " << b.fit_hi << "] (error " << b.fit_error << ")";
       const FitPassivity p = fit_passivity(m, k);
       if (p.passive())
-        os << ", passive on it (Im R >= " << p.min_im << " max|R|)";
+        os << ", passive on it (Im R >= " << p.scan.min_im << " max|R|)";
       else
-        os << ", NOT passive: Im R = " << p.min_im << " max|R| at s = " << p.at
+        os << ", NOT passive: Im R = " << p.scan.min_im << " max|R| at s = " << p.scan.at
            << " (the fit can feed the chain energy: docs/rom.md, \"Viscous tanks\")";
     }
     os << "\n";

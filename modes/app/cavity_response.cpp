@@ -2,6 +2,7 @@
 
 #include "cavity_table.hpp"
 #include "discretisation.hpp"
+#include "passivity_scan.hpp"
 #include "ideal_response.hpp"
 #include "petsc_handles.hpp"
 #include "progress.hpp"
@@ -249,12 +250,22 @@ ModeTable response_fit_table(const ResponseRequest& req, double max_error) {
   t.coverage = t.sum_rule > 0 ? sum.real() / t.sum_rule : 1.0;
   t.normalisation = "pseudo-modes of a rational fit: lambda + i decay a pole of R(s), E + i E_imag its residue, "
                     "a + i a_imag = sqrt((E + i E_imag)/2), N2 = 1 (docs/viscous.md, \"Response fit\")";
+  // The fluid is passive, Im R >= 0 on the real axis (common/passivity_scan.hpp); the fit only to its accuracy, and
+  // between samples it can dip where R has a narrow feature. Reported, not enforced.
+  const PassivityScan passivity = scan_passivity(fit.poles, fit.residues, lo, hi);
+  const std::string passive =
+      passivity.passive()
+          ? fmt::format("passive on the window (min Im R = {:.2g} max|R|)", passivity.min_im)
+          : fmt::format("NOT passive on the window: Im R = {:.2g} max|R| at s = {:.6g}", passivity.min_im, passivity.at);
+  if (!passivity.passive() && is_root_rank())
+    std::cerr << "cavity-modes: warning: the fit is " << passive
+              << " (R itself has Im R >= 0): more samples there (--sigma) or a smaller --max-fit-error\n";
   t.solver = fmt::format("AAA rational fit of R(s) (degree {}, {} poles kept, {} dropped) on every other of {} real "
                          "samples in [{:g}, {:g}] ({} given, {} refinements where the fit erred) and {} beyond it up to |s| = {:.3g}, max error between the window's samples {:.2g}; "
-                         "sum of residues {:.9g}{:+.9g}i, s R(s) at s = {:.3g}: {:.9g}, A_f - J_zh = {:.9g}; R by {}",
+                         "{}; sum of residues {:.9g}{:+.9g}i, s R(s) at s = {:.3g}: {:.9g}, A_f - J_zh = {:.9g}; R by {}",
                          fit.aaa_degree, fit.poles.size(), fit.dropped_poles, window_s.size(), lo, hi, n, refinements,
                          tail.size(), std::abs(tail.back()),
-                         err, sum.real(), sum.imag(), tail.back(), (tail.back() * R.R.back()).real(), t.sum_rule,
+                         err, passive, sum.real(), sum.imag(), tail.back(), (tail.back() * R.R.back()).real(), t.sum_rule,
                          R.method);
   t.tolerance = 1e-10;
   t.sort_by_energy();

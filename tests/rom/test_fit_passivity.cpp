@@ -49,7 +49,7 @@ TEST(FitPassivity, RealResidueIsPassiveAndATwistedOneIsNot) {
   for (const double spin : {100.0, -100.0}) {
     const FitPassivity real = fit_passivity(one_pole_fit(pole, 0.3, spin), 0);
     ASSERT_TRUE(real.checked);
-    EXPECT_TRUE(real.passive()) << real.min_im;
+    EXPECT_TRUE(real.passive()) << real.scan.min_im;
     const cd twisted(0.3, -1.0);
     const FitPassivity p = fit_passivity(one_pole_fit(pole, twisted, spin), 0);
     // The closed form on a dense grid: min Im R / max |R| over [-1.5, 2].
@@ -61,10 +61,10 @@ TEST(FitPassivity, RealResidueIsPassiveAndATwistedOneIsNot) {
       if (R.imag() < lowest) lowest = R.imag(), at = s;
     }
     std::printf("  spin %+.0f: real residue min Im R = %.3e max|R|; twisted: %.6e at s = %.5f (closed form %.6e at "
-                "%.5f)\n", spin, real.min_im, p.min_im, p.at, lowest / largest, at);
+                "%.5f)\n", spin, real.scan.min_im, p.scan.min_im, p.scan.at, lowest / largest, at);
     EXPECT_FALSE(p.passive());
-    EXPECT_NEAR(p.min_im, lowest / largest, 1e-3 * std::abs(lowest / largest));
-    EXPECT_NEAR(p.at, at, 0.01);
+    EXPECT_NEAR(p.scan.min_im, lowest / largest, 1e-3 * std::abs(lowest / largest));
+    EXPECT_NEAR(p.scan.at, at, 0.01);
   }
 }
 
