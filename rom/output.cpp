@@ -1,7 +1,5 @@
 #include "output.hpp"
 
-#include "fit_passivity.hpp"
-
 #include "companion_check.hpp"
 
 #include <hdf5.h>
@@ -237,6 +235,7 @@ std::string spectrum_json(const Spectrum& sp) {
   j["newton_failed"] = sp.newton_failed;
   j["outside_fit"] = sp.outside_fit;
   j["unconverged_owners"] = sp.unconverged_owners;
+  j["fits_not_passive"] = sp.fits_not_passive;
   if (sp.certificate_roots >= 0) {
     j["certified_real"] = sp.certified_real;
     j["certificate_roots"] = sp.certificate_roots;
@@ -268,7 +267,7 @@ void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp) {
       os << ", " << b.unconverged << " kept clusters not converged (their roots marked *: docs/cones.md)";
     if (b.fit_hi > b.fit_lo) {
       os << ", modes of a response fit on s in [" << b.fit_lo << ", " << b.fit_hi << "] (error " << b.fit_error << ")";
-      const FitPassivity p = fit_passivity(m, k);
+      const FitPassivity& p = sp.passivity[k];
       if (p.passive())
         os << ", passive on it (Im R >= " << p.scan.min_im << " max|R|)";
       else

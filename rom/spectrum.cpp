@@ -127,6 +127,10 @@ Spectrum compute_spectrum(const ChainModel& m) {
   sp.growth = v.growth;
   sp.nonreal = v.nonreal;
   sp.stable = v.stable;
+  for (int k = 0; k < n; ++k) {
+    sp.passivity.push_back(fit_passivity(m, k));
+    if (!sp.passivity.back().passive()) ++sp.fits_not_passive;
+  }
   const RealRootCertificate c = certify_real_roots(m, sp);
   if (c.applies) {
     sp.certified_real = c.proven;

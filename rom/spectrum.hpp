@@ -6,6 +6,7 @@
 
 #include "chain_model.hpp"
 #include "first_order_system.hpp"
+#include "fit_passivity.hpp"
 
 #include <complex>
 #include <limits>
@@ -49,6 +50,10 @@ struct Spectrum {
     if (certificate_roots < 0) return false;
     return stable != (certified_real == certificate_roots);
   }
+  // Per body: the passivity of its response-fit tank on the fit's window (fit_passivity.hpp; checked = false for
+  // other tanks), and how many fits dip below Im R = 0.
+  std::vector<FitPassivity> passivity;
+  int fits_not_passive = 0;
   bool companion_checked = false;  // the roots were recomputed with the companion tables
   int companion_moved = 0;         // roots that moved past kCompanionTolerance
   double companion_worst = 0;      // the largest relative move
