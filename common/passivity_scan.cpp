@@ -19,7 +19,10 @@ PassivityScan scan_passivity(const std::vector<std::complex<double>>& poles,
   double largest = 0;
   for (const double s : grid) {
     cd R = 0;
-    for (std::size_t l = 0; l < poles.size(); ++l) R += residues[l] / (s - poles[l]);
+    for (std::size_t l = 0; l < poles.size(); ++l) {  // r / d as r conj(d) / |d|^2: std::complex's division guards
+      const cd d = s - poles[l];                       // against overflow are most of the scan's time
+      R += residues[l] * std::conj(d) / std::norm(d);
+    }
     largest = std::max(largest, std::abs(R));
     if (R.imag() < p.min_im) p.min_im = R.imag(), p.at = s;
   }
