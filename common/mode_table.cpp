@@ -157,6 +157,32 @@ std::vector<T> get_vector(hid_t loc, const std::string& name, hid_t mem_type, bo
   return v;
 }
 
+// /galerkin: four n × n matrices of a damped-mode table, Hermitian (Gram with a positive diagonal).
+void validate_galerkin(const ModeTable& t) {
+  const auto& g = t.galerkin;
+  if (g.empty() && g.gram_im.empty() && g.viscous_re.empty() && g.viscous_im.empty()) return;
+  if (!t.viscous() || t.response_fit())
+    throw std::runtime_error("/galerkin in a table that is not a damped-mode viscous table");
+  const std::size_t n = t.E.size();
+  for (const auto* v : {&g.gram_re, &g.gram_im, &g.viscous_re, &g.viscous_im}) {
+    if (v->size() != n * n)
+      throw std::runtime_error("/galerkin holds a matrix of " + std::to_string(v->size()) + " entries for " +
+                               std::to_string(n) + " rows (n x n expected)");
+    for (double x : *v)
+      if (!std::isfinite(x)) throw std::runtime_error("/galerkin holds a non-finite value");
+  }
+  double scale = 0;
+  for (std::size_t i = 0; i < n; ++i) scale = std::max(scale, g.gram_re[i * n + i]);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!(g.gram_re[i * n + i] > 0)) throw std::runtime_error("/galerkin/gram has a diagonal entry that is not positive");
+    for (std::size_t j = 0; j < n; ++j) {
+      const std::size_t ij = i * n + j, ji = j * n + i;
+      if (std::abs(g.gram_re[ij] - g.gram_re[ji]) + std::abs(g.gram_im[ij] + g.gram_im[ji]) > 1e-9 * scale)
+        throw std::runtime_error("/galerkin/gram is not Hermitian");
+    }
+  }
+}
+
 }  // namespace
 
 void ModeTable::validate() const {
@@ -193,6 +219,7 @@ void ModeTable::validate() const {
   const std::size_t nb = bands.E.size();
   if (bands.lo.size() != nb || bands.hi.size() != nb || bands.lambda_mean.size() != nb)
     throw std::runtime_error("/bands datasets differ in length");
+  validate_galerkin(*this);
   for (double x : {volume, A_f, C_f, J_zh, sum_rule, coverage})
     if (!std::isfinite(x)) throw std::runtime_error("a root attribute holds a non-finite value");
   if (!viscous())  // a viscous residue's real part is the ideal E only in the limit
@@ -249,6 +276,13 @@ void ModeTable::sort_by_energy() {
   permute(kappa); permute(lambda); permute(E); permute(a); permute(N2); permute(residual);
   permute(spread); permute(members); permute(dlambda); permute(dE); permute(converged);
   permute(decay); permute(E_imag); permute(a_imag);
+  const std::size_t n = idx.size();
+  for (auto* m : {&galerkin.gram_re, &galerkin.gram_im, &galerkin.viscous_re, &galerkin.viscous_im}) {
+    if (m->size() != n * n) continue;
+    const auto old = *m;
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < n; ++j) (*m)[i * n + j] = old[idx[i] * n + idx[j]];
+  }
 }
 
 std::filesystem::path xdmf_companion(const std::filesystem::path& table_path) {
@@ -325,6 +359,14 @@ void write_mode_table(const ModeTable& t, const std::filesystem::path& path, con
         put_vector(bands.get(), "hi", t.bands.hi, H5T_NATIVE_DOUBLE);
         put_vector(bands.get(), "E", t.bands.E, H5T_NATIVE_DOUBLE);
         put_vector(bands.get(), "lambda_mean", t.bands.lambda_mean, H5T_NATIVE_DOUBLE);
+      }
+      if (t.has_galerkin()) {
+        Hid gal(H5Gcreate2(root, "galerkin", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+        put_vector(gal.get(), "gram_re", t.galerkin.gram_re, H5T_NATIVE_DOUBLE);
+        put_vector(gal.get(), "gram_im", t.galerkin.gram_im, H5T_NATIVE_DOUBLE);
+        put_vector(gal.get(), "viscous_re", t.galerkin.viscous_re, H5T_NATIVE_DOUBLE);
+        put_vector(gal.get(), "viscous_im", t.galerkin.viscous_im, H5T_NATIVE_DOUBLE);
+        put_double(gal.get(), "dissipation_mismatch", t.galerkin.dissipation_mismatch);
       }
       if (!t.geometry_source.empty() || !t.command_line.empty()) {
         Hid prov(H5Gcreate2(root, "provenance", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
@@ -430,6 +472,15 @@ ModeTable read_mode_table(const std::filesystem::path& path) {
       t.bands.hi = get_vector<double>(bands.get(), "hi", H5T_NATIVE_DOUBLE, true);
       t.bands.E = get_vector<double>(bands.get(), "E", H5T_NATIVE_DOUBLE, true);
       t.bands.lambda_mean = get_vector<double>(bands.get(), "lambda_mean", H5T_NATIVE_DOUBLE, true);
+    }
+    if (H5Lexists(root, "galerkin", H5P_DEFAULT) > 0) {
+      Hid gal(H5Gopen2(root, "galerkin", H5P_DEFAULT), H5Gclose);
+      t.galerkin.gram_re = get_vector<double>(gal.get(), "gram_re", H5T_NATIVE_DOUBLE, true);
+      t.galerkin.gram_im = get_vector<double>(gal.get(), "gram_im", H5T_NATIVE_DOUBLE, true);
+      t.galerkin.viscous_re = get_vector<double>(gal.get(), "viscous_re", H5T_NATIVE_DOUBLE, true);
+      t.galerkin.viscous_im = get_vector<double>(gal.get(), "viscous_im", H5T_NATIVE_DOUBLE, true);
+      if (has_attr(gal.get(), "dissipation_mismatch"))
+        t.galerkin.dissipation_mismatch = get_double(gal.get(), "dissipation_mismatch");
     }
     if (H5Lexists(root, "provenance", H5P_DEFAULT) > 0) {
       Hid prov(H5Gopen2(root, "provenance", H5P_DEFAULT), H5Gclose);

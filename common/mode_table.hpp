@@ -61,6 +61,20 @@ struct ModeTable {
   std::vector<double> decay, E_imag, a_imag;
   bool viscous() const { return ekman > 0; }
 
+  // --- /galerkin (damped-mode tables, optional): the rows' modes as a Galerkin basis (docs/viscous.md, "Galerkin
+  // matrices"). With x_l the row's mode (xᵀ𝓜x = 1, unconjugated), G_lk = x̄_lᵀ 𝓜 x_k (the kinetic-energy Gram
+  // matrix, Hermitian positive definite) and V_lk = Ek x̄_lᵀ K x_k (the viscous dissipation form, Hermitian positive
+  // semi-definite), each n × n row-major by row order. The reduced fluid G ċ = i (GΛ) c + forcing keeps the energy
+  // ½ cᴴGc and dissipates cᴴVc exactly (rom: docs/rom.md, "Galerkin tanks").
+  struct Galerkin {
+    std::vector<double> gram_re, gram_im, viscous_re, viscous_im;
+    // max |V − (GΛ − ΛᴴG)/(2i)| / max |V|: V from the viscous matrix against V from the Gram matrix and the rows'
+    // λ + i·decay (they agree when the modes are exact eigenvectors); -1 when not measured
+    double dissipation_mismatch = -1;
+    bool empty() const { return gram_re.empty(); }
+  } galerkin;
+  bool has_galerkin() const { return !galerkin.empty(); }
+
   // --- /bands: the spectral weight in λ-bands covering (−2, 2) (optional) ---------------------
   struct Bands {
     std::vector<double> lo, hi;        // band edges
@@ -76,7 +90,7 @@ struct ModeTable {
   // κλ = 2, λ ≠ 0, N² > 0, E = 2a²/N² (complex for viscous tables), |λ| ≤ 2 for ideal tables, sum_rule = A_f − J_zh,
   // volume > 0, the convergence columns together. Throws std::runtime_error("table identity fails: ...").
   void check_identities() const;
-  // Sorts every /modes array by E descending.
+  // Sorts every /modes array (and the /galerkin matrices' rows and columns) by E descending.
   void sort_by_energy();
 };
 

@@ -1,5 +1,6 @@
 #include "chain_model.hpp"
 
+#include "galerkin_fluid.hpp"
 #include "mode_table.hpp"
 
 #include <cmath>
@@ -90,6 +91,26 @@ void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
       fail(scene, w + ".coverage", os.str());
     }
   }
+  const std::vector<int> rows(idx.begin(), idx.begin() + static_cast<std::ptrdiff_t>(keep));
+  GalerkinFluid gf;
+  if (cav.galerkin) {
+    try {
+      gf = galerkin_fluid(t, rows);
+    } catch (const std::exception& e) {
+      fail(scene, w + ".reduction", cav.table.filename().string() + ": " + e.what());
+    }
+  } else if (!t.viscous()) {
+    gf = galerkin_fluid(t, rows);  // orthogonal modes: diag(E), no dissipation
+  }
+  // Spin -omega conjugates the flow (below): the forms too. Energy ~ rho L^5, dissipation ~ rho L^5 |omega|.
+  const auto chain_units = [&](const Eigen::MatrixXcd& a, double factor) -> Eigen::MatrixXcd {
+    return rho * L5 * factor * (b.omega < 0 ? a.conjugate().eval() : a);
+  };
+  b.galerkin = cav.galerkin;
+  if (gf.energy.size() > 0) {
+    b.fluid_energy = chain_units(gf.energy, 1.0);
+    b.fluid_dissipation = chain_units(gf.dissipation, std::abs(b.omega));
+  }
   for (std::size_t j = 0; j < keep; ++j) {
     const int l = idx[j];
     FluidMode m;
@@ -108,6 +129,10 @@ void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
       // decay scales with |omega| and E_c -> conj(E_c) (docs/rom.md, "Viscous tanks"; derived, no test yet).
       m.decay = std::abs(b.omega) * t.decay[l];
       m.E_imag = (b.omega < 0 ? -1 : 1) * rho * L5 * t.E_imag[l];
+    }
+    if (cav.galerkin) {  // the Galerkin residue in place of the modal one (galerkin_fluid.hpp)
+      m.E = rho * L5 * gf.residue[static_cast<Eigen::Index>(j)].real();
+      m.E_imag = (b.omega < 0 ? -1 : 1) * rho * L5 * gf.residue[static_cast<Eigen::Index>(j)].imag();
     }
     b.E_kept += m.E;
     b.E_kept_imag += m.E_imag;

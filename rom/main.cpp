@@ -307,6 +307,14 @@ int main(int argc, char** argv) {
                   << "fluid " << b.fluid_work.back() << " J, friction " << b.friction_work
                   << " J; dH_b/dt = -(friction + fluid power) to " << b.balance_residual
                   << " on the samples (docs/rom.md, \"Energy budget\")\n";
+        const rc::rom::EnergyBalance& e = h.balance;
+        if (!e.empty())
+          std::cout << "energy: H(0) = " << e.energy.front() << ", H(end) = " << e.energy.back()
+                    << " J, dissipated " << e.dissipated.back() << " J (fluid " << e.fluid_dissipated
+                    << " J); dH/dt = -(joint power + fluid dissipation) to " << e.residual
+                    << " on the samples (docs/rom.md, \"Galerkin tanks\")\n";
+        else
+          std::cout << "energy: H not available: " << rc::rom::galerkin_energy_unavailable(model) << "\n";
       } else {
         std::cout << "energy: H(0) = " << h.H.front() << ", H(end) = " << h.H.back() << ", "
                   << (model.has_friction() ? "largest relative increase per step " : "largest relative drift ")

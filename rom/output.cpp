@@ -33,17 +33,22 @@ void write_csv(const ChainModel& m, const History& h, const fs::path& tmp) {
     os << ",z" << nm << "_re,z" << nm << "_im";
   }
   // With viscous tanks no energy integral, but the frozen chain's budget (energy_budget.hpp).
-  const bool budget = !h.budget.empty();
-  os << (budget ? ",frozen_energy,fluid_power,friction_power,fluid_work\n" : ",energy\n");
+  const bool budget = !h.budget.empty(), balance = !h.balance.empty();
+  os << (budget ? ",frozen_energy,fluid_power,friction_power,fluid_work" : ",energy")
+     << (balance ? ",energy,joint_power,fluid_dissipation,dissipated\n" : "\n");
   for (std::size_t j = 0; j < h.t.size(); ++j) {
     os << h.t[j];
     for (int k = 0; k < m.n; ++k) os << ',' << h.u(j, k).real() << ',' << h.u(j, k).imag();
     for (int l = 0; l < m.n_modes(); ++l) os << ',' << h.z(j, l).real() << ',' << h.z(j, l).imag();
     if (budget)
       os << ',' << h.budget.frozen_energy[j] << ',' << h.budget.fluid_power[j] << ',' << h.budget.friction_power[j]
-         << ',' << h.budget.fluid_work[j] << '\n';
+         << ',' << h.budget.fluid_work[j];
     else
-      os << ',' << h.H[j] << '\n';
+      os << ',' << h.H[j];
+    if (balance)  // galerkin_energy.hpp
+      os << ',' << h.balance.energy[j] << ',' << h.balance.joint_power[j] << ',' << h.balance.fluid_dissipation[j]
+         << ',' << h.balance.dissipated[j];
+    os << '\n';
   }
   os.close();
   if (!os) throw std::runtime_error(tmp.string() + ": write failed");
@@ -132,6 +137,13 @@ void write_h5(const ChainModel& m, const History& h, const fs::path& tmp) {
     write_dataset(file.id, "friction_power", h.budget.friction_power, N, 0);
     write_dataset(file.id, "fluid_work", h.budget.fluid_work, N, 0);
     write_attr(file.id, "energy_balance_residual", h.budget.balance_residual);
+  }
+  if (!h.balance.empty()) {  // galerkin_energy.hpp: the fluid holds an energy, H is written after all
+    write_dataset(file.id, "energy", h.balance.energy, N, 0);
+    write_dataset(file.id, "joint_power", h.balance.joint_power, N, 0);
+    write_dataset(file.id, "fluid_dissipation", h.balance.fluid_dissipation, N, 0);
+    write_dataset(file.id, "dissipated", h.balance.dissipated, N, 0);
+    write_attr(file.id, "energy_dissipation_residual", h.balance.residual);
   }
 }
 
@@ -263,6 +275,7 @@ void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp) {
          << ", kept sum E = " << b.E_kept << " (coverage " << b.coverage << ")"
          << (b.E_rem > 0 ? ", static correction " + std::to_string(b.E_rem) : std::string());
     if (b.ekman > 0) os << ", viscous (Ek = " << b.ekman << ", kept Im sum E = " << b.E_kept_imag << ")";
+    if (b.galerkin) os << ", Galerkin reduction (its E the Galerkin residues)";
     if (b.unconverged > 0)
       os << ", " << b.unconverged << " kept clusters not converged (their roots marked *: docs/cones.md)";
     if (b.fit_hi > b.fit_lo) {

@@ -136,8 +136,23 @@ History propagate(const ChainModel& m, const Scene& scene) {
     budget_meter.emplace(m, f);
     budget.resize(steps + 1);
   }
+  // With Galerkin tanks the fluid holds an energy: H and its balance with the dissipation (galerkin_energy.hpp).
+  std::optional<GalerkinEnergyMeter> balance_meter;
+  std::vector<EnergySample> balance;
+  if (m.viscous && galerkin_energy_unavailable(m).empty()) {
+    balance_meter.emplace(m);
+    balance.resize(steps + 1);
+  }
+  auto measure_balance = [&](long j, const Eigen::VectorXcd& y) {
+    Eigen::VectorXcd u, v, w;
+    f.from_state(m, y, u, v, w);
+    Eigen::VectorXcd z(nm);
+    for (int l = 0; l < nm; ++l) z[l] = w[l] - v[m.modes[l].body];
+    balance[j] = (*balance_meter)(u, v, z);
+  };
   auto store = [&](long j, const Eigen::VectorXcd& y) {
     if (budget_meter) budget[j] = (*budget_meter)(y);
+    if (balance_meter) measure_balance(j, y);
     Eigen::VectorXcd u, v, w;
     f.from_state(m, y, u, v, w);
     hist.t[j] = j * h;
@@ -163,6 +178,8 @@ History propagate(const ChainModel& m, const Scene& scene) {
     }
     if (budget_meter)
       for (long i = 0; i < cols; ++i) budget[j0 + i] = (*budget_meter)(re.col(i).cast<cd>() + cd(0, 1) * im.col(i).cast<cd>());
+    if (balance_meter)
+      for (long i = 0; i < cols; ++i) measure_balance(j0 + i, re.col(i).cast<cd>() + cd(0, 1) * im.col(i).cast<cd>());
     meter.block(re.topRows(n) * is, im.topRows(n) * is, re.middleRows(n, n), im.middleRows(n, n),
                 re.bottomRows(nm), im.bottomRows(nm), &hist.H[j0], &hist.H_scale[j0]);
   };
@@ -231,6 +248,7 @@ History propagate(const ChainModel& m, const Scene& scene) {
   if (m.viscous) {
     hist.max_energy_drift = std::numeric_limits<double>::quiet_NaN();  // no H (energy.cpp)
     hist.budget = energy_budget(budget, h);
+    if (balance_meter) hist.balance = energy_balance(balance, h);
   }
   else for (long j = 1; j <= steps; ++j) {
     if (m.has_friction()) hist.max_energy_drift = std::max(hist.max_energy_drift, (hist.H[j] - hist.H[j - 1]) / S0);

@@ -9,6 +9,7 @@
 
 #include "chain_model.hpp"
 #include "energy_budget.hpp"
+#include "galerkin_energy.hpp"
 #include "scene.hpp"
 
 #include <string>
@@ -26,6 +27,8 @@ struct History {
   std::vector<double> H;    // energy (energy.hpp)
   std::vector<double> H_scale;
   EnergyBudget budget;      // with viscous tanks (which leave no energy integral H): the frozen chain's budget
+  EnergyBalance balance;    // with viscous tanks whose fluid holds an energy (Galerkin tanks, one spin): H and its
+                            // dissipation (galerkin_energy.hpp); empty otherwise
   std::string method_used;  // what actually ran
   double max_energy_drift = 0;  // max |H - H0| / scale(0) (undamped) or max increase (damped)
   double wall_seconds = 0;

@@ -98,7 +98,7 @@ std::vector<std::complex<double>> get_complex_array(const Ctx& c, const toml::ta
 CavitySpec parse_cavity(const Ctx& c, const toml::table& t, const std::string& where,
                         const std::filesystem::path& base) {
   check_keys(c, t, where, {"table", "companion", "density", "scale", "center", "origin", "modes", "coverage",
-                           "static_correction", "viscosity"});
+                           "static_correction", "viscosity", "reduction"});
   CavitySpec cav;
   const toml::node* tab = t.get("table");
   if (!tab) c.fail(where + ".table", "missing");
@@ -133,6 +133,12 @@ CavitySpec parse_cavity(const Ctx& c, const toml::table& t, const std::string& w
     cav.static_correction = s->as_boolean()->get();
   }
   cav.viscosity = get_number(c, t, "viscosity", where + ".viscosity", Sign::pos, false);
+  if (const toml::node* r = t.get("reduction")) {
+    const auto* v = r->as_string();
+    if (!v || (v->get() != "modal" && v->get() != "galerkin"))
+      c.fail(where + ".reduction", "must be \"modal\" or \"galerkin\"");
+    cav.galerkin = v->get() == "galerkin";
+  }
   return cav;
 }
 

@@ -30,6 +30,8 @@ struct CavitySpec {
                                    // that move when it replaces `table` (companion_check.hpp)
   std::optional<double> viscosity; // kinematic viscosity nu (m^2/s): the table must then be viscous with
                                    // ekman = nu/(spin scale^2) (docs/rom.md, "Viscous tanks")
+  bool galerkin = false;           // reduction = "galerkin": the kept modes as a Galerkin basis, with the fluid's
+                                   // energy and dissipation (docs/rom.md, "Galerkin tanks"); "modal" (default): not
 };
 
 // An external moment on a body (N m; nonlinear model only): `axial` about the body's axis, `space` fixed in space,

@@ -21,6 +21,10 @@ std::string table_text(const ModeTable& t) {
   if (t.viscous())
     s += fmt::format("viscous: Ekman number {:g}, wall element {:g}; each mode decays as exp(-decay t), its coupling "
                      "residue is E + i E_imag (docs/viscous.md)\n", t.ekman, t.mesh_h_wall);
+  if (t.has_galerkin())
+    s += fmt::format("galerkin: the {} modes' Gram and viscous matrices (chain-rom reduction = \"galerkin\"); viscous "
+                     "form against the modes' decays: {:.1e} (docs/viscous.md, \"Galerkin matrices\")\n", t.size(),
+                     t.galerkin.dissipation_mismatch);
   if (!t.geometry_source.empty()) {
     const auto lines = std::count(t.geometry_text.begin(), t.geometry_text.end(), '\n');
     s += fmt::format("geometry: {}{}\n", t.geometry_source,
@@ -91,6 +95,10 @@ std::string table_json(const ModeTable& t) {
     j["fit_hi"] = t.fit_hi;
     j["fit_error"] = t.fit_error;
   }
+  if (t.has_galerkin())
+    j["galerkin"] = {{"gram_re", t.galerkin.gram_re}, {"gram_im", t.galerkin.gram_im},
+                     {"viscous_re", t.galerkin.viscous_re}, {"viscous_im", t.galerkin.viscous_im},
+                     {"dissipation_mismatch", t.galerkin.dissipation_mismatch}};
   if (!t.geometry_source.empty() || !t.command_line.empty())
     j["provenance"] = {{"geometry_source", t.geometry_source}, {"geometry_text", t.geometry_text},
                        {"command_line", t.command_line}};

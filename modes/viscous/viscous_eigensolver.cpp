@@ -103,11 +103,17 @@ CouplingForms coupling_forms(const ViscousForms& forms, Vec xr, Vec xi) {
   return c;
 }
 
+// The scale normalised_vector applies: xᵀ𝓜x = 1 and Re a ≥ 0, a = √(π/2) fᵀx.
+std::complex<double> table_scale(const CouplingForms& c) {
+  std::complex<double> scale = 1.0 / std::sqrt(c.xMx);
+  if ((std::sqrt(std::numbers::pi / 2) * c.fx * scale).real() < 0) scale = -scale;
+  return scale;
+}
+
 // The complex eigenvector x_j = Xr[2j] + i Xi[2j] on rank 0 (empty elsewhere), scaled as the table normalises
 // its mode: xᵀ𝓜x = 1, and the sign that makes a = √(π/2) fᵀx the table's a = sqrt(E_c / 2) (Re a ≥ 0).
 std::vector<std::complex<double>> normalised_vector(Vec xr, Vec xi, const CouplingForms& c, double& conjugate_norm) {
-  std::complex<double> scale = 1.0 / std::sqrt(c.xMx);
-  if ((std::sqrt(std::numbers::pi / 2) * c.fx * scale).real() < 0) scale = -scale;
+  const std::complex<double> scale = table_scale(c);
   conjugate_norm = c.xbarMx * std::norm(scale);
   std::vector<std::complex<double>> x;
   for (Vec v : {xr, xi}) {
@@ -128,6 +134,29 @@ std::vector<std::complex<double>> normalised_vector(Vec xr, Vec xi, const Coupli
     VecScatterDestroy(&gather);
   }
   return x;  // size 0 on the ranks other than 0 (their gathered vector is empty)
+}
+
+// The normalised mode (normalised_vector's scaling) in block form: slot 2j holds Re(s x_j), 2j + 1 Im(s x_j), with
+// x_j = Xr[2j] + i Xi[2j] (the even slots carry the complex problem's unknowns) and s = scale.
+std::shared_ptr<PVec> block_of(Vec xr, Vec xi, std::complex<double> scale) {
+  auto out = std::make_shared<PVec>();
+  petsc_check(VecDuplicate(xr, out->out()), "VecDuplicate");
+  PetscInt lo = 0, hi = 0;
+  petsc_check(VecGetOwnershipRange(xr, &lo, &hi), "VecGetOwnershipRange");
+  const PetscScalar *re = nullptr, *im = nullptr;
+  PetscScalar* b = nullptr;
+  petsc_check(VecGetArrayRead(xr, &re), "VecGetArrayRead");
+  petsc_check(VecGetArrayRead(xi, &im), "VecGetArrayRead");
+  petsc_check(VecGetArray(*out, &b), "VecGetArray");
+  for (PetscInt g = lo; g + 1 < hi; g += 2) {  // pairs never straddle ranks (viscous_forms.cpp)
+    const std::complex<double> x = scale * std::complex<double>(re[g - lo], im[g - lo]);
+    b[g - lo] = x.real();
+    b[g + 1 - lo] = x.imag();
+  }
+  petsc_check(VecRestoreArray(*out, &b), "VecRestoreArray");
+  petsc_check(VecRestoreArrayRead(xi, &im), "VecRestoreArrayRead");
+  petsc_check(VecRestoreArrayRead(xr, &re), "VecRestoreArrayRead");
+  return out;
 }
 
 // The block eigenvector X = P + iQ of (Â, M̂) for λ: ‖ÂX − λM̂X‖ / (|λ| ‖X‖) in real arithmetic.
@@ -224,6 +253,7 @@ std::vector<ViscousMode> viscous_modes_near(const ViscousForms& forms, std::comp
     const CouplingForms c = coupling_forms(forms, Xr, imag_part);
     m.residue = c.residue();
     if (settings.keep_vector) m.vector = normalised_vector(Xr, imag_part, c, m.conjugate_norm);
+    if (settings.keep_block) m.block = block_of(Xr, imag_part, table_scale(c));
     m.residual = block_residual(forms, Xr, imag_part, m.lambda);
     modes.push_back(m);
   }

@@ -12,6 +12,7 @@
 #include "viscous_forms.hpp"
 
 #include <complex>
+#include <memory>
 #include <vector>
 
 namespace rc::modes {
@@ -25,6 +26,9 @@ struct ViscousMode {
   // the TaylorHoodSpace), normalised as the table (xᵀ𝓜x = 1, a = √(π/2) fᵀx with Re a ≥ 0). Empty otherwise.
   std::vector<std::complex<double>> vector;
   double conjugate_norm = 0;  // x̄ᵀ𝓜x = ∫∫ |V|² r dr dz of that normalised x (set with keep_vector)
+  // With ViscousSolveSettings::keep_block: the same normalised x in the block form of viscous_forms.hpp (Re x_j, Im x_j
+  // on the slots 2j, 2j + 1), distributed like the forms, for Galerkin projections (galerkin_projection.hpp).
+  std::shared_ptr<PVec> block;
 };
 
 struct ViscousSolveSettings {
@@ -32,6 +36,7 @@ struct ViscousSolveSettings {
   double tolerance = 1e-10;  // SLEPc's relative tolerance
   int max_iterations = 500;
   bool keep_vector = false;  // keep each mode's eigenvector (for --fields)
+  bool keep_block = false;   // keep each mode's block vector (ViscousMode::block)
 };
 
 // The damped modes closest to the complex target, sorted by distance from it. Throws std::runtime_error when

@@ -1,5 +1,6 @@
 #include "viscous_table.hpp"
 
+#include "galerkin_projection.hpp"
 #include "mesh_broadcast.hpp"
 #include "progress.hpp"
 #include "poincare_forms.hpp"
@@ -33,6 +34,7 @@ double smallest_dimension(const geometry::ShapeSpec& shape) {
 struct Solved {
   std::vector<ViscousMode> rows;  // one per target
   long unknowns = 0;
+  GalerkinMatrices galerkin;      // the rows as a Galerkin basis (when solved with keep_block; empty otherwise)
   ModeFields fields;              // with keep_vector, on rank 0: the mesh and one field per row (viscous_fields.hpp)
 };
 
@@ -48,6 +50,7 @@ void drop_repeats(Solved& solved, std::vector<double>& targets, std::vector<doub
                   const std::function<void(const std::string&)>& report) {
   Solved kept;
   kept.unknowns = solved.unknowns;
+  std::vector<int> kept_rows;
   std::vector<ModeFields::Mode> fields = std::move(solved.fields.modes);
   kept.fields = std::move(solved.fields);  // the mesh part, not copied
   kept.fields.modes.clear();
@@ -64,9 +67,14 @@ void drop_repeats(Solved& solved, std::vector<double>& targets, std::vector<doub
       continue;
     }
     kept.rows.push_back(m);
+    kept_rows.push_back(static_cast<int>(i));
     if (i < fields.size()) kept.fields.modes.push_back(std::move(fields[i]));
     kept_targets.push_back(targets[i]);
     kept_energies.push_back(energies[i]);
+  }
+  if (solved.galerkin.gram.size() > 0) {
+    kept.galerkin.gram = solved.galerkin.gram(kept_rows, kept_rows);
+    kept.galerkin.viscous = solved.galerkin.viscous(kept_rows, kept_rows);
   }
   solved = std::move(kept);
   targets = std::move(kept_targets);
@@ -120,7 +128,30 @@ Solved solve_targets(const geometry::ShapeSpec& shape, geometry::MeshOptions& me
     out.rows.back().vector = {};  // the field holds what is needed
     progress(i + 1, targets.size());
   }
+  if (s.solve.keep_block) {
+    std::vector<Vec> blocks;
+    for (const auto& r : out.rows) blocks.push_back(*r.block);
+    out.galerkin = project_on_modes(forms, blocks);
+    for (auto& r : out.rows) r.block.reset();
+  }
   return out;
+}
+
+// The table's /galerkin block in the rows' order (sort_by_energy permutes it with them).
+void set_galerkin(ModeTable& t, const Solved& solved) {
+  const auto& g = solved.galerkin;
+  const Eigen::Index n = g.gram.rows();
+  if (n == 0) return;
+  std::vector<std::complex<double>> lambda;
+  for (const auto& m : solved.rows) lambda.push_back(m.lambda);
+  for (Eigen::Index l = 0; l < n; ++l)
+    for (Eigen::Index k = 0; k < n; ++k) {
+      t.galerkin.gram_re.push_back(g.gram(l, k).real());
+      t.galerkin.gram_im.push_back(g.gram(l, k).imag());
+      t.galerkin.viscous_re.push_back(g.viscous(l, k).real());
+      t.galerkin.viscous_im.push_back(g.viscous(l, k).imag());
+    }
+  t.galerkin.dissipation_mismatch = dissipation_mismatch(g, lambda);
 }
 
 double relative(std::complex<double> a, std::complex<double> b) { return std::abs(a - b) / std::abs(b); }
@@ -161,6 +192,7 @@ ModeTable compute_viscous_table(const geometry::ShapeSpec& shape, const ViscousT
                                 ModeFields* fields) {
   ViscousTableSettings s = settings;
   s.solve.keep_vector = fields != nullptr;
+  s.solve.keep_block = true;  // the table's /galerkin matrices
   const auto start = std::chrono::steady_clock::now();
   const auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   geometry::MeshOptions mesh = viscous_mesh_defaults(shape, s.ekman, s.mesh);
@@ -201,6 +233,7 @@ ModeTable compute_viscous_table(const geometry::ShapeSpec& shape, const ViscousT
     kept += m.residue.real();
   }
   t.coverage = t.sum_rule > 0 ? kept / t.sum_rule : 1.0;
+  set_galerkin(t, fine);
   t.normalisation = "rho = 1, omega0 = 1; each mode x is normalised to x^T M x = 1 (complex symmetric, unconjugated), "
                     "a + i a_imag = (e1 x r, V) / (i sqrt(2 pi)) and E + i E_imag = 2 (a + i a_imag)^2: the residue of "
                     "the fluid's response at lambda + i decay (docs/viscous.md)";
@@ -220,6 +253,7 @@ ModeTable compute_viscous_table(const geometry::ShapeSpec& shape, const ViscousT
     coarse.wall_size *= 2;
     ViscousTableSettings check = s;
     check.solve.keep_vector = false;
+    check.solve.keep_block = false;
     const Solved ref = solve_targets(shape, coarse, ideal.centroid_z, check, targets, energies,
                                     progress("convergence check"));
     t.convergence_reference = fmt::format("order {} with the interior and wall sizes doubled (h = {:.3g}, wall {:.3g})",

@@ -9,12 +9,14 @@
 #include "viscous_response.hpp"
 #include "viscous_table.hpp"
 
+#include <Eigen/Dense>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <complex>
 #include <cstdio>
+#include <filesystem>
 #include <numbers>
 #include <vector>
 
@@ -56,11 +58,11 @@ struct StewartsonMode {
   }
 };
 
-ModeTable viscous_table(const rc::geometry::ShapeSpec& shape, double ekman, double mesh_size = 0) {
+ModeTable viscous_table(const rc::geometry::ShapeSpec& shape, double ekman, double mesh_size = 0, int modes = 1) {
   TableRequest ideal;
   ideal.shape = shape;
   ideal.mesh.order = 6;
-  ideal.selection.modes = 1;
+  ideal.selection.modes = modes;
   ideal.check_convergence = false;
   ViscousTableSettings s;
   s.ekman = ekman;
@@ -166,6 +168,46 @@ TEST(ViscousCylinder, DominantModeExtrapolatesToTheBoundaryLayerLimit) {
               extrapolated.real(), extrapolated.imag(), limit.real(), limit.imag(),
               std::abs(extrapolated - limit) / std::abs(limit));
   EXPECT_LE(std::abs(extrapolated - limit), 0.01 * std::abs(limit));
+}
+
+// The table's /galerkin matrices (galerkin_projection.hpp): the Gram matrix G = X̄ᵀ𝓜X of the damped modes and the
+// viscous form V = Ek X̄ᵀKX, taken from the assembled matrices, not from the eigenvalues. For each mode the energy
+// identity Ek x̄ᵀKx = decay · x̄ᵀ𝓜x must hold (the mode loses its energy at twice its decay rate) to the solver's
+// accuracy, and on the table's rows after sorting (so the matrices were permuted with the rows); G is positive definite,
+// V positive semi-definite, and both survive writing and reading.
+TEST(ViscousGalerkin, ViscousFormIsTheModesDecayAndSurvivesTheFile) {
+  const ModeTable t = viscous_table({"cylinder", {{"radius", 1.0}, {"height", 2.0}}, {}}, 1e-3, 0, 4);
+  ASSERT_TRUE(t.has_galerkin());
+  const std::size_t n = t.size();
+  ASSERT_GE(n, 3u);
+  Eigen::MatrixXcd G(n, n), V(n, n);
+  for (std::size_t i = 0; i < n * n; ++i) {
+    G(i / n, i % n) = cd(t.galerkin.gram_re[i], t.galerkin.gram_im[i]);
+    V(i / n, i % n) = cd(t.galerkin.viscous_re[i], t.galerkin.viscous_im[i]);
+  }
+  double worst = 0;
+  for (std::size_t l = 0; l < n; ++l) {
+    const double rate = V(l, l).real() / G(l, l).real();
+    worst = std::max(worst, std::abs(rate / t.decay[l] - 1));
+    std::printf("row %zu: lambda %.6f decay %.6e, Ek xKx / xMx = %.6e, xMx = %.6f\n", l + 1, t.lambda[l], t.decay[l],
+                rate, G(l, l).real());
+  }
+  const Eigen::VectorXd gv = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXcd>(G).eigenvalues();
+  const Eigen::VectorXd vv = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXcd>(V).eigenvalues();
+  std::printf("energy identity on the diagonal: %.1e; dissipation mismatch %.1e; eig G in [%.4f, %.4f]; eig V in "
+              "[%.3e, %.3e]\n", worst, t.galerkin.dissipation_mismatch, gv.minCoeff(), gv.maxCoeff(), vv.minCoeff(),
+              vv.maxCoeff());
+  EXPECT_LT(worst, 1e-8);
+  EXPECT_LT(t.galerkin.dissipation_mismatch, 1e-8);
+  EXPECT_GT(gv.minCoeff(), 0.5);
+  EXPECT_GT(vv.minCoeff(), -1e-12 * vv.maxCoeff());
+  const std::filesystem::path file = std::filesystem::temp_directory_path() / "viscous_galerkin_test.h5";
+  rc::write_mode_table(t, file);
+  const ModeTable back = rc::read_mode_table(file);
+  std::filesystem::remove(file);
+  EXPECT_EQ(back.galerkin.gram_re, t.galerkin.gram_re);
+  EXPECT_EQ(back.galerkin.viscous_im, t.galerkin.viscous_im);
+  EXPECT_EQ(back.galerkin.dissipation_mismatch, t.galerkin.dissipation_mismatch);
 }
 
 // The response by forced solves (no modes) has a pole at the damped mode with the mode's residue E_c: the

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Viscous sphere tables (radius 1, spin-over mode) at Ek = 1e-3, 1e-4, 1e-5 for test_rom_viscous, written by
-# cavity-modes itself (docs/viscous.md): the chain tests read what users' scenes read.
+# Viscous tables for test_rom_viscous: the sphere (radius 1, spin-over mode) at Ek = 1e-3, 1e-4, 1e-5 and the
+# cylinder's four leading damped modes at Ek = 1e-3, written by cavity-modes itself (docs/viscous.md): the chain tests read what users' scenes read.
 set -eu
 BIN=$1
 DST=$2
@@ -8,4 +8,8 @@ mkdir -p "$DST"
 for ek in 1e-3 1e-4 1e-5; do
   "$BIN" sphere --radius 1 --ekman "$ek" --modes 1 --no-convergence-check -o "$DST/sphere_ek$ek.h5" > "$DST/sphere_ek$ek.txt"
 done
-echo "viscous sphere tables in $DST"
+# Four damped modes of the cylinder (radius 1, height 2) at Ek = 1e-3 with their Galerkin matrices, for the
+# Galerkin tanks' tests (test_galerkin_tanks.cpp).
+"$BIN" cylinder --radius 1 --height 2 --ekman 1e-3 --modes 4 --no-convergence-check -o "$DST/cylinder_ek1e-3.h5" \
+  > "$DST/cylinder_ek1e-3.txt"
+echo "viscous tables in $DST"

@@ -21,6 +21,7 @@ using cd = std::complex<double>;
 // The viscous sphere's table (make_viscous_tables.sh) turned into a one-pole response fit on s in [-1.5, 2].
 ChainModel one_pole_fit(cd pole, cd residue, double spin) {
   rc::ModeTable t = rc::read_mode_table(std::string(RC_VISCOUS_TABLES) + "/sphere_ek1e-3.h5");
+  t.galerkin = {};  // a response fit's poles are no modes
   t.lambda = {pole.real()};
   t.kappa = {2 / pole.real()};
   t.decay = {pole.imag()};
