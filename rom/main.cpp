@@ -302,11 +302,6 @@ int main(int argc, char** argv) {
         std::cout << "validity: not measured (" << validity.why_not << ")\n";
       if (model.viscous) {
         const rc::rom::EnergyBudget& b = h.budget;
-        std::cout << "energy: no integral with viscous tanks; the chain with its fluid frozen: H_b(0) = "
-                  << b.frozen_energy.front() << ", H_b(end) = " << b.frozen_energy.back() << " J, work taken by the "
-                  << "fluid " << b.fluid_work.back() << " J, friction " << b.friction_work
-                  << " J; dH_b/dt = -(friction + fluid power) to " << b.balance_residual
-                  << " on the samples (docs/rom.md, \"Energy budget\")\n";
         const rc::rom::EnergyBalance& e = h.balance;
         if (!e.empty())
           std::cout << "energy: H(0) = " << e.energy.front() << ", H(end) = " << e.energy.back()
@@ -314,7 +309,12 @@ int main(int argc, char** argv) {
                     << " J); dH/dt = -(joint power + fluid dissipation) to " << e.residual
                     << " on the samples (docs/rom.md, \"Galerkin tanks\")\n";
         else
-          std::cout << "energy: H not available: " << rc::rom::galerkin_energy_unavailable(model) << "\n";
+          std::cout << "energy: no integral with these viscous tanks: " << rc::rom::galerkin_energy_unavailable(model)
+                    << "\n";
+        std::cout << "energy budget of the chain with its fluid frozen: H_b(0) = " << b.frozen_energy.front()
+                  << ", H_b(end) = " << b.frozen_energy.back() << " J, work taken by the fluid " << b.fluid_work.back()
+                  << " J, friction " << b.friction_work << " J; dH_b/dt = -(friction + fluid power) to "
+                  << b.balance_residual << " on the samples (docs/rom.md, \"Energy budget\")\n";
       } else {
         std::cout << "energy: H(0) = " << h.H.front() << ", H(end) = " << h.H.back() << ", "
                   << (model.has_friction() ? "largest relative increase per step " : "largest relative drift ")

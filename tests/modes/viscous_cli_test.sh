@@ -152,7 +152,7 @@ import json
 j = json.load(open("spec.json"))
 assert j["stable"] and j["growth"] < 0 and j["root_agreement"] < 1e-8 and j["newton_failed"] == 0, j
 print("viscous top: slowest decay %.4f 1/s, Newton on det Phi agrees to %.1e" % (-j["growth"], j["root_agreement"]))
-' && grep -q "energy: no integral with viscous tanks; the chain with its fluid frozen" run.txt && [ -s out.h5 ] && /usr/bin/python3 -c '
+' && grep -q "energy budget of the chain with its fluid frozen" run.txt && [ -s out.h5 ] && /usr/bin/python3 -c '
 import h5py, numpy as np
 with h5py.File("out.h5") as f:
     assert "energy" not in f and "max_energy_drift" not in f.attrs, "energy written for a viscous run"
