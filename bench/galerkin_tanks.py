@@ -4,12 +4,15 @@
 One heavy top (m = 3 kg, A = 0.066, C = 0.05 kg m^2, spin 100 rad/s) with a water-like cylinder tank (radius 4 cm,
 height 8 cm, Ek = 1e-3): its two body roots with the tank entering as
   * the response fit (cavity-modes response: every mode, to the fit's error) - the reference,
+  * the Galerkin response table (cavity-modes response --galerkin: the projection on the forced solutions at the
+    same samples), modal and Galerkin reduction (one model: its E are the Galerkin residues),
   * k damped modes, modal (residues E_c) or Galerkin (residues of the Hermitian projection), k = 1 ... 10,
     with and without the static correction,
 and the energy balance of a `run` with the Galerkin tank.
 
   /usr/bin/python3 bench/galerkin_tanks.py [--bin build/modes/cavity-modes] [--rom build/rom/chain-rom]
-                                           [--tables DIR (reuse cylinder_modes.h5 and cylinder_fit.h5 there)]
+                                           [--tables DIR (reuse cylinder_modes.h5, cylinder_fit.h5 and
+                                                          cylinder_galerkin.h5 there)]
 
 Writes bench/results/galerkin_tanks_<date>.csv and prints a markdown table."""
 import argparse, json, os, subprocess, tempfile
@@ -44,13 +47,17 @@ method = "exact"
 
 def tables(args, d):
     modes, fit = os.path.join(d, "cylinder_modes.h5"), os.path.join(d, "cylinder_fit.h5")
+    galerkin = os.path.join(d, "cylinder_galerkin.h5")
     if not os.path.exists(modes):
         subprocess.run([args.bin, "cylinder", "--radius", "1", "--height", "2", "--coverage", "0.97", "--ekman", "1e-3",
                         "--no-convergence-check", "-o", modes], check=True, capture_output=True)
     if not os.path.exists(fit):
         subprocess.run([args.bin, "response", "cylinder", "--radius", "1", "--height", "2", "--ekman", "1e-3",
                         "--sigma", "-1.5:2:141", "-o", fit], check=True, capture_output=True)
-    return modes, fit
+    if not os.path.exists(galerkin):
+        subprocess.run([args.bin, "response", "cylinder", "--radius", "1", "--height", "2", "--ekman", "1e-3",
+                        "--sigma", "-1.5:2:141", "--galerkin", "-o", galerkin], check=True, capture_output=True)
+    return modes, fit, galerkin
 
 
 def body_roots(args, d, table, extra):
@@ -69,10 +76,15 @@ def main():
     args = p.parse_args()
     with tempfile.TemporaryDirectory() as tmp:
         d = args.tables or tmp
-        modes, fit = tables(args, d)
-        ref = body_roots(args, d, fit, "")
-        rows = [{"tank": "response fit", "modes": "", "static_correction": "", "nutation_re": ref[0].real,
+        modes, fit, galerkin = tables(args, d)
+        ref = body_roots(args, d, fit, "static_correction = true")
+        rows = [{"tank": "response fit", "modes": "", "static_correction": 1, "nutation_re": ref[0].real,
                  "nutation_growth": -ref[0].imag, "precession_re": ref[1].real, "precession_decay": ref[1].imag}]
+        for red in ("modal", "galerkin"):
+            r = body_roots(args, d, galerkin, 'reduction = "%s"\nstatic_correction = true' % red)
+            rows.append({"tank": "Galerkin response table, " + red, "modes": "", "static_correction": 1,
+                         "nutation_re": r[0].real, "nutation_growth": -r[0].imag, "precession_re": r[1].real,
+                         "precession_decay": r[1].imag})
         for sc in (1, 0):
             for k in (1, 2, 3, 4, 6, 8, 10):
                 for red in ("modal", "galerkin"):
@@ -81,14 +93,16 @@ def main():
                     rows.append({"tank": red, "modes": k, "static_correction": sc, "nutation_re": r[0].real,
                                  "nutation_growth": -r[0].imag, "precession_re": r[1].real,
                                  "precession_decay": r[1].imag})
-        # The energy balance of a run with all ten modes, Galerkin, static correction, at two output steps.
-        for step in (0.001, 0.0005):
-            scene = os.path.join(d, "scene.toml")
-            open(scene, "w").write(SCENE.format(table=modes, step=step,
-                                                extra='modes = 10\nreduction = "galerkin"\nstatic_correction = true'))
-            out = subprocess.run([args.rom, "run", scene, "-o", os.path.join(d, "run.h5")], capture_output=True,
-                                 text=True).stdout
-            print("step %g: %s" % (step, [l for l in out.splitlines() if "Galerkin tanks" in l][0]))
+        # The energy balance of runs with Galerkin tanks (ten damped modes; the response table), two output steps.
+        for table, extra in ((modes, "modes = 10\n"), (galerkin, "")):
+            for step in (0.001, 0.0005):
+                scene = os.path.join(d, "scene.toml")
+                open(scene, "w").write(SCENE.format(table=table, step=step, extra=extra +
+                                                    'reduction = "galerkin"\nstatic_correction = true'))
+                out = subprocess.run([args.rom, "run", scene, "-o", os.path.join(d, "run.h5")], capture_output=True,
+                                     text=True).stdout
+                print("%s, step %g: %s" % (os.path.basename(table), step,
+                                           [l for l in out.splitlines() if "Galerkin tanks" in l][0]))
     write_results("galerkin_tanks", rows)
     print("| tank | modes | static corr. | nutation Re σ | growth (1/s) | precession decay (1/s) |")
     print("|---|---|---|---|---|---|")

@@ -161,9 +161,12 @@ std::vector<T> get_vector(hid_t loc, const std::string& name, hid_t mem_type, bo
 void validate_galerkin(const ModeTable& t) {
   const auto& g = t.galerkin;
   if (g.empty() && g.gram_im.empty() && g.viscous_re.empty() && g.viscous_im.empty()) return;
-  if (!t.viscous() || t.response_fit())
-    throw std::runtime_error("/galerkin in a table that is not a damped-mode viscous table");
   const std::size_t n = t.E.size();
+  const bool coupled = !g.coupling_re.empty() || !g.coupling_im.empty();
+  if (!t.viscous() || (t.response_fit() && !coupled))
+    throw std::runtime_error("/galerkin in a table that is neither a damped-mode table nor a Galerkin response table");
+  if (coupled && (g.coupling_re.size() != n || g.coupling_im.size() != n))
+    throw std::runtime_error("/galerkin/coupling_re and coupling_im must hold one entry per row");
   for (const auto* v : {&g.gram_re, &g.gram_im, &g.viscous_re, &g.viscous_im}) {
     if (v->size() != n * n)
       throw std::runtime_error("/galerkin holds a matrix of " + std::to_string(v->size()) + " entries for " +
@@ -276,6 +279,7 @@ void ModeTable::sort_by_energy() {
   permute(kappa); permute(lambda); permute(E); permute(a); permute(N2); permute(residual);
   permute(spread); permute(members); permute(dlambda); permute(dE); permute(converged);
   permute(decay); permute(E_imag); permute(a_imag);
+  permute(galerkin.coupling_re); permute(galerkin.coupling_im);
   const std::size_t n = idx.size();
   for (auto* m : {&galerkin.gram_re, &galerkin.gram_im, &galerkin.viscous_re, &galerkin.viscous_im}) {
     if (m->size() != n * n) continue;
@@ -367,6 +371,10 @@ void write_mode_table(const ModeTable& t, const std::filesystem::path& path, con
         put_vector(gal.get(), "viscous_re", t.galerkin.viscous_re, H5T_NATIVE_DOUBLE);
         put_vector(gal.get(), "viscous_im", t.galerkin.viscous_im, H5T_NATIVE_DOUBLE);
         put_double(gal.get(), "dissipation_mismatch", t.galerkin.dissipation_mismatch);
+        if (!t.galerkin.coupling_re.empty()) {
+          put_vector(gal.get(), "coupling_re", t.galerkin.coupling_re, H5T_NATIVE_DOUBLE);
+          put_vector(gal.get(), "coupling_im", t.galerkin.coupling_im, H5T_NATIVE_DOUBLE);
+        }
       }
       if (!t.geometry_source.empty() || !t.command_line.empty()) {
         Hid prov(H5Gcreate2(root, "provenance", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
@@ -479,6 +487,8 @@ ModeTable read_mode_table(const std::filesystem::path& path) {
       t.galerkin.gram_im = get_vector<double>(gal.get(), "gram_im", H5T_NATIVE_DOUBLE, true);
       t.galerkin.viscous_re = get_vector<double>(gal.get(), "viscous_re", H5T_NATIVE_DOUBLE, true);
       t.galerkin.viscous_im = get_vector<double>(gal.get(), "viscous_im", H5T_NATIVE_DOUBLE, true);
+      t.galerkin.coupling_re = get_vector<double>(gal.get(), "coupling_re", H5T_NATIVE_DOUBLE, false);
+      t.galerkin.coupling_im = get_vector<double>(gal.get(), "coupling_im", H5T_NATIVE_DOUBLE, false);
       if (has_attr(gal.get(), "dissipation_mismatch"))
         t.galerkin.dissipation_mismatch = get_double(gal.get(), "dissipation_mismatch");
     }

@@ -68,6 +68,9 @@ struct ModeTable {
   // ½ cᴴGc and dissipates cᴴVc exactly (rom: docs/rom.md, "Galerkin tanks").
   struct Galerkin {
     std::vector<double> gram_re, gram_im, viscous_re, viscous_im;
+    // A Galerkin response table's rows (pseudo-modes: cavity-modes response --galerkin) carry their couplings
+    // f_l = fᵀx_l here (their E is already the Galerkin residue); empty for damped modes, whose f_l follow from a.
+    std::vector<double> coupling_re, coupling_im;
     // max |V − (GΛ − ΛᴴG)/(2i)| / max |V|: V from the viscous matrix against V from the Gram matrix and the rows'
     // λ + i·decay (they agree when the modes are exact eigenvectors); -1 when not measured
     double dissipation_mismatch = -1;

@@ -18,7 +18,8 @@ std::string galerkin_energy_unavailable(const ChainModel& m) {
     if (b.has_fluid && b.fluid_energy.size() == 0)
       return "body " + std::to_string(k + 1) + "'s tank is " +
              (b.fit_hi > b.fit_lo ? std::string("a response fit") : std::string("a modal viscous tank")) +
-             ", whose fluid holds no energy of its own (reduction = \"galerkin\" with a damped-mode table has one)";
+             ", whose fluid holds no energy of its own (reduction = \"galerkin\" gives one, with a damped-mode table "
+             "or a Galerkin response table)";
   }
   return {};
 }

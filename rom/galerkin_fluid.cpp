@@ -33,17 +33,22 @@ GalerkinFluid galerkin_fluid(const rc::ModeTable& t, const std::vector<int>& row
     out.dissipation = Eigen::MatrixXcd::Zero(k, k);
     return out;
   }
-  if (t.response_fit())
-    throw std::runtime_error("a response fit's poles are not modes and carry no Galerkin matrices; use a damped-mode "
-                             "table (cavity-modes SHAPE ... --ekman Ek)");
   if (!t.has_galerkin())
-    throw std::runtime_error("the table holds no /galerkin matrices (made before they were written); make it again "
-                             "with cavity-modes SHAPE ... --ekman Ek");
+    throw std::runtime_error(t.response_fit()
+                                 ? "a rational fit's poles are not modes and carry no Galerkin matrices; use a damped-"
+                                   "mode table (cavity-modes SHAPE ... --ekman Ek) or a Galerkin response table "
+                                   "(cavity-modes response ... --galerkin -o FILE.h5)"
+                                 : "the table holds no /galerkin matrices (made before they were written); make it "
+                                   "again with cavity-modes SHAPE ... --ekman Ek");
   const std::size_t n = t.size();
   const Eigen::MatrixXcd G = submatrix(t.galerkin.gram_re, t.galerkin.gram_im, n, rows);
   const Eigen::MatrixXcd V = submatrix(t.galerkin.viscous_re, t.galerkin.viscous_im, n, rows);
+  // f_l = fᵀx_l: stored for a Galerkin response table's Ritz vectors, else the damped mode's √(2/π)(a + i a_imag).
+  const bool stored = !t.galerkin.coupling_re.empty();
   Eigen::VectorXcd f(k);
-  for (Eigen::Index i = 0; i < k; ++i) f[i] = std::sqrt(2 / std::numbers::pi) * cd(t.a[rows[i]], t.a_imag[rows[i]]);
+  for (Eigen::Index i = 0; i < k; ++i)
+    f[i] = stored ? cd(t.galerkin.coupling_re[rows[i]], t.galerkin.coupling_im[rows[i]])
+                  : std::sqrt(2 / std::numbers::pi) * cd(t.a[rows[i]], t.a_imag[rows[i]]);
   const Eigen::LLT<Eigen::MatrixXcd> llt(G);
   if (llt.info() != Eigen::Success)
     throw std::runtime_error("the kept modes' Gram matrix is not positive definite (two kept modes alike)");

@@ -28,9 +28,10 @@ struct GalerkinFluid {
 };
 
 // For the table rows `rows` (the kept modes, in the chain's order). An ideal table's modes are orthogonal (G = I,
-// V = 0): its Galerkin fluid is its modal one. Throws std::runtime_error with the reason when the table has no
-// Galerkin matrices (a viscous table made before them, or a response fit, whose poles are not modes) or the kept
-// modes' Gram matrix is singular.
+// V = 0): its Galerkin fluid is its modal one. A Galerkin response table (cavity-modes response --galerkin) holds
+// Ritz vectors with their couplings f_l; its E are these Ẽ already when every row is kept. Throws
+// std::runtime_error with the reason when the table has no Galerkin matrices (a viscous table made before them, or a
+// rational fit, whose poles are not modes) or the kept modes' Gram matrix is singular.
 GalerkinFluid galerkin_fluid(const rc::ModeTable& t, const std::vector<int>& rows);
 
 }  // namespace rc::rom

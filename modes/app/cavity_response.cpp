@@ -159,27 +159,52 @@ void merge_samples(std::vector<double>& s, std::vector<std::complex<double>>& R,
 
 }  // namespace
 
-ModeTable response_fit_table(const ResponseRequest& req, double max_error) {
-  const auto start = std::chrono::steady_clock::now();
-  if (!(req.ekman > 0)) throw std::runtime_error("a response-fit table (-o FILE.h5) needs --ekman");
+void check_response_window(const ResponseRequest& req, const std::string& what) {
+  if (!(req.ekman > 0)) throw std::runtime_error(what + " (-o FILE.h5) needs --ekman");
   const std::size_t n = req.sigmas.size();
-  if (n < 9) throw std::runtime_error("a response-fit table needs --sigma FROM:TO:N with N >= 9 real frequencies");
+  if (n < 9) throw std::runtime_error(what + " needs --sigma FROM:TO:N with N >= 9 real frequencies");
   for (std::size_t k = 0; k < n; ++k)
     if (req.sigmas[k].imag() != 0 || (k > 0 && !(req.sigmas[k].real() > req.sigmas[k - 1].real())))
-      throw std::runtime_error("a response-fit table needs increasing real frequencies (--sigma FROM:TO:N, no "
-                               "--sigma-imag)");
-  // Beyond the window the fit must still fall off as R ~ (its weight)/s, as R does (docs/viscous.md, "Response
-  // fit"): without samples there AAA may spend a pole far off with a huge residue on the window's near-constant
-  // background, a pseudo-mode whose coupling E would swamp the chain's inertia. So R is also sampled on a
-  // geometric tail on both sides, which the fit matches but the window's error does not count.
-  ResponseRequest all = req;
-  const double lo = req.sigmas.front().real(), hi = req.sigmas.back().real();
+      throw std::runtime_error(what + " needs increasing real frequencies (--sigma FROM:TO:N, no --sigma-imag)");
+}
+
+std::vector<double> response_tail(double lo, double hi) {
   const double reach = std::max({std::abs(lo), std::abs(hi), 1.0});
   std::vector<double> tail;
   for (double t = 1.5 * reach; t <= 1000 * reach; t *= 1.5) {
     if (t > hi) tail.push_back(t);
     if (-t < lo) tail.push_back(-t);
   }
+  return tail;
+}
+
+ModeTable response_table_start(const ResponseRequest& req, long unknowns) {
+  // The frozen-fluid integrals and J_zh: the ideal problem on the shape's default mesh.
+  rc::geometry::MeshOptions ideal_mesh;
+  ideal_mesh.order = 6;
+  const Discretisation d(req.shape, mesh_method_defaults(req.shape, ideal_mesh));
+  ModeTable t = start_table(req.shape, d.fluid, d.zhukovsky.J_zh);
+  t.ekman = req.ekman;
+  t.fe_order = req.mesh.order;
+  t.mesh_h = req.mesh.size;
+  t.mesh_h_wall = req.mesh.wall_size;
+  t.ndof = unknowns;
+  t.fit_lo = req.sigmas.front().real();
+  t.fit_hi = req.sigmas.back().real();
+  return t;
+}
+
+ModeTable response_fit_table(const ResponseRequest& req, double max_error) {
+  const auto start = std::chrono::steady_clock::now();
+  check_response_window(req, "a response-fit table");
+  const std::size_t n = req.sigmas.size();
+  // Beyond the window the fit must still fall off as R ~ (its weight)/s, as R does (docs/viscous.md, "Response
+  // fit"): without samples there AAA may spend a pole far off with a huge residue on the window's near-constant
+  // background, a pseudo-mode whose coupling E would swamp the chain's inertia. So R is also sampled on a
+  // geometric tail on both sides (response_tail), which the fit matches but the window's error does not count.
+  ResponseRequest all = req;
+  const double lo = req.sigmas.front().real(), hi = req.sigmas.back().real();
+  const std::vector<double> tail = response_tail(lo, hi);
   for (const double t : tail) all.sigmas.emplace_back(t, 0.0);
   const ViscousForms forms = assemble_cavity_forms(req.shape, req.mesh, req.ekman);  // once, for every refinement
   const CavityResponse R = viscous_cavity_response(all, forms);
@@ -260,18 +285,7 @@ ModeTable response_fit_table(const ResponseRequest& req, double max_error) {
                                          "after {} refinements ({} samples; allowed {:.2g}): give more frequencies N or "
                                          "a larger --max-fit-error", lo, hi, err, refinements, window_s.size(), max_error));
 
-  // The frozen-fluid integrals and J_zh: the ideal problem on the shape's default mesh.
-  rc::geometry::MeshOptions ideal_mesh;
-  ideal_mesh.order = 6;
-  const Discretisation d(req.shape, mesh_method_defaults(req.shape, ideal_mesh));
-  ModeTable t = start_table(req.shape, d.fluid, d.zhukovsky.J_zh);
-  t.ekman = req.ekman;
-  t.fe_order = req.mesh.order;
-  t.mesh_h = req.mesh.size;
-  t.mesh_h_wall = req.mesh.wall_size;
-  t.ndof = R.unknowns;
-  t.fit_lo = lo;
-  t.fit_hi = hi;
+  ModeTable t = response_table_start(req, R.unknowns);
   t.fit_error = err;
   std::complex<double> sum = 0;
   for (std::size_t j = 0; j < fit.poles.size(); ++j) {

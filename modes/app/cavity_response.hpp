@@ -39,6 +39,18 @@ CavityResponse compute_cavity_response(const ResponseRequest& request);
 // with a one-line cause, also when the fit error exceeds `max_error`.
 ModeTable response_fit_table(const ResponseRequest& request, double max_error);
 
+// A response table's window (req.sigmas): --ekman given, N >= 9 increasing real frequencies; else one line starting
+// with `what` ("a response-fit table").
+void check_response_window(const ResponseRequest& request, const std::string& what);
+
+// Samples beyond the window [lo, hi] on both sides, geometric (ratio 1.5) up to 1000 × max(|lo|, |hi|, 1): R's decay
+// as (its weight)/s, which a response table must follow there too.
+std::vector<double> response_tail(double lo, double hi);
+
+// A response table before its rows: the ideal problem's frozen-fluid integrals and J_zh (the shape's default mesh),
+// the viscous mesh's description, `unknowns`, and the window as fit_lo, fit_hi.
+ModeTable response_table_start(const ResponseRequest& request, long unknowns);
+
 // "FROM:TO:N" (N evenly spaced real parts, every one with imaginary part `imag`) or a comma-separated list of
 // complex numbers "0.5+0.1i,1.2,-0.3-2e-2i" (then `imag` must be 0). Throws std::runtime_error naming the
 // malformed item.

@@ -16,6 +16,7 @@
 #include "petsc_handles.hpp"
 #include "reference_table.hpp"
 #include "cavity_response.hpp"
+#include "galerkin_response_table.hpp"
 #include "shape_commands.hpp"
 #include "table_comparison.hpp"
 #include "table_provenance.hpp"
@@ -43,6 +44,7 @@ struct ViscousOptions {
   std::string sigma;       // FROM:TO:N (real parts) or a list of complex numbers
   double sigma_imag = 0;   // imaginary part of every σ
   double max_fit_error = 1e-6;  // response to FILE.h5: the largest fit error accepted
+  bool galerkin = false;        // response to FILE.h5: a Galerkin response table instead of a rational fit
 };
 
 // The mesh of every command; --radial-size and --method (auto|mesh|separable: auto is separable for a cylinder
@@ -134,6 +136,10 @@ void add_response_options(CLI::App* cmd, ViscousOptions& viscous) {
   cmd->add_option("--max-fit-error", viscous.max_fit_error,
                   fmt::format("-o FILE.h5 only: the largest relative error of the rational fit of R between its "
                               "samples that is accepted (default {})", number(viscous.max_fit_error)));
+  cmd->add_flag("--galerkin", viscous.galerkin,
+                "-o FILE.h5 only: instead of a rational fit, the Galerkin projection on the forced solutions at the "
+                "samples: pseudo-modes whose fluid keeps an energy and dissipates it (chain-rom reduction = "
+                "\"galerkin\"), passive by construction (docs/viscous.md, \"Galerkin response table\")");
 }
 
 // An option the parsed command does not take (CLI11 keeps it in remaining()): one line naming it and the command.
@@ -141,8 +147,10 @@ void refuse_extras(const CLI::App& cmd, bool response) {
   const auto extras = cmd.remaining();
   if (extras.empty()) return;
   const std::string& first = extras.front();
-  if (!response && (first == "--sigma" || first == "--sigma-imag" || first == "--max-fit-error"))
-    throw std::runtime_error("--sigma, --sigma-imag and --max-fit-error belong to 'cavity-modes response SHAPE ...'");
+  if (!response &&
+      (first == "--sigma" || first == "--sigma-imag" || first == "--max-fit-error" || first == "--galerkin"))
+    throw std::runtime_error("--sigma, --sigma-imag, --max-fit-error and --galerkin belong to "
+                             "'cavity-modes response SHAPE ...'");
   const std::string name = (response ? "cavity-modes response " : "cavity-modes ") + cmd.get_name();
   if (first.rfind("--", 0) == 0)
     throw std::runtime_error(name + " does not take " + first + " (its options: " + name + " --help)");
@@ -302,6 +310,8 @@ int run(int argc, char** argv) {
   if (response && table_command->count("--max-fit-error") > 0 &&
       !ends_with(output, ".h5"))
     throw std::runtime_error("--max-fit-error belongs to 'cavity-modes response SHAPE ... -o FILE.h5'");
+  if (response && viscous.galerkin && !ends_with(output, ".h5"))
+    throw std::runtime_error("--galerkin belongs to 'cavity-modes response SHAPE ... -o FILE.h5'");
   if (!(viscous.max_fit_error > 0) || !std::isfinite(viscous.max_fit_error))
     throw std::runtime_error("--max-fit-error must be positive and finite");
   // Checked here, once: the viscous path hands the tolerance on past compute_mode_table's own check.
@@ -328,7 +338,8 @@ int run(int argc, char** argv) {
     if (!is_viscous && !r.separable && r.mesh.order == 0) r.mesh.order = 6;
     if (ends_with(output, ".h5")) {
       // A response-fit table: the fit's poles and residues as damped modes (docs/viscous.md, "Response fit").
-      auto table = rc::modes::response_fit_table(r, viscous.max_fit_error);
+      auto table = viscous.galerkin ? rc::modes::galerkin_response_table(r, viscous.max_fit_error)
+                                    : rc::modes::response_fit_table(r, viscous.max_fit_error);
       if (!rc::modes::is_root_rank()) return 0;
       rc::modes::record_provenance(table, req.shape, command_line);
       rc::write_mode_table(table, output);

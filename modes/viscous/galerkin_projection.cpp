@@ -48,10 +48,15 @@ Eigen::MatrixXcd projected(Mat op, const std::vector<Vec>& modes) {
 GalerkinMatrices project_on_modes(const ViscousForms& forms, const std::vector<Vec>& modes) {
   if (modes.empty()) throw std::runtime_error("a Galerkin projection needs at least one mode");
   GalerkinMatrices g;
-  const Eigen::MatrixXcd H = projected(forms.A, modes);
+  g.op = projected(forms.A, modes);
   g.gram = projected(forms.M, modes);
   g.gram = (0.5 * (g.gram + g.gram.adjoint())).eval();  // Hermitian up to rounding; made exactly so
-  g.viscous = (H - H.adjoint()) / std::complex<double>(0, 2);
+  g.viscous = (g.op - g.op.adjoint()) / std::complex<double>(0, 2);
+  PVec JF;
+  petsc_check(VecDuplicate(forms.coupling, JF.out()), "VecDuplicate");
+  turn(forms.coupling, JF);
+  g.coupling.resize(static_cast<Eigen::Index>(modes.size()));
+  for (std::size_t l = 0; l < modes.size(); ++l) g.coupling[static_cast<Eigen::Index>(l)] = block_dot(modes[l], forms.coupling, JF);
   return g;
 }
 

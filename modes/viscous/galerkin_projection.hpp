@@ -19,11 +19,14 @@
 namespace rc::modes {
 
 struct GalerkinMatrices {
-  Eigen::MatrixXcd gram;     // G_lk = x̄_lᵀ𝓜x_k
-  Eigen::MatrixXcd viscous;  // V_lk = Ek x̄_lᵀKx_k = ((H − Hᴴ)/(2i))_lk
+  Eigen::MatrixXcd gram;      // G_lk = x̄_lᵀ𝓜x_k
+  Eigen::MatrixXcd viscous;   // V_lk = Ek x̄_lᵀKx_k = ((H − Hᴴ)/(2i))_lk
+  Eigen::MatrixXcd op;        // H_lk = x̄_lᵀAx_k
+  Eigen::VectorXcd coupling;  // x̄_lᵀf (f real: the conjugate of the coupling fᵀx_l)
 };
 
-// G and V for the block vectors `modes` (each made by viscous_modes_near with keep_block), on the forms' communicator.
+// G, V, H and X̄ᵀf for the block vectors `modes` (damped modes made by viscous_modes_near with keep_block, or forced
+// solutions), on the forms' communicator.
 GalerkinMatrices project_on_modes(const ViscousForms& forms, const std::vector<Vec>& modes);
 
 // max |V − (GΛ − ΛᴴG)/(2i)| / max |V|, Λ = diag(lambda): how far the viscous form is from the one the modes' own

@@ -75,7 +75,43 @@ struct ForcedSolver {
   }
 };
 
+// π fᵀx for the block form x = a + ib: the coupling vector sits on the real slots only.
+std::complex<double> moment_of(const ViscousForms& forms, Vec x) {
+  MPI_Comm comm;
+  petsc_check(PetscObjectGetComm(reinterpret_cast<PetscObject>(x), &comm), "PetscObjectGetComm");
+  PetscScalar fa = 0, fb = 0;
+  petsc_check(VecDot(x, forms.coupling, &fa), "VecDot");  // Σ f_j a_j
+  // Σ f_j b_j: each pair (a_j, b_j) is local to one rank (viscous_forms.cpp).
+  const PetscScalar* xs = nullptr;
+  const PetscScalar* fs = nullptr;
+  PetscInt lo = 0, hi = 0;
+  petsc_check(VecGetOwnershipRange(x, &lo, &hi), "VecGetOwnershipRange");
+  petsc_check(VecGetArrayRead(x, &xs), "VecGetArrayRead");
+  petsc_check(VecGetArrayRead(forms.coupling, &fs), "VecGetArrayRead");
+  double local = 0;
+  for (PetscInt g = lo; g + 1 < hi; g += 2) local += fs[g - lo] * xs[g + 1 - lo];  // pairs never straddle ranks
+  petsc_check(VecRestoreArrayRead(x, &xs), "VecRestoreArrayRead");
+  petsc_check(VecRestoreArrayRead(forms.coupling, &fs), "VecRestoreArrayRead");
+  MPI_Allreduce(&local, &fb, 1, MPI_DOUBLE, MPI_SUM, comm);
+  return std::numbers::pi * std::complex<double>(fa, fb);
+}
+
 }  // namespace
+
+std::vector<std::shared_ptr<PVec>> forced_solutions(const ViscousForms& forms,
+                                                    const std::vector<std::complex<double>>& sigmas,
+                                                    const ResponseProgress& progress) {
+  std::vector<std::shared_ptr<PVec>> out;
+  ForcedSolver solver(forms);
+  for (const auto sigma : sigmas) {
+    auto x = std::make_shared<PVec>();
+    petsc_check(VecDuplicate(forms.coupling, x->out()), "VecDuplicate");
+    solver.solve(forms, sigma, *x);
+    out.push_back(std::move(x));
+    if (progress) progress(out.size(), sigmas.size());
+  }
+  return out;
+}
 
 std::vector<std::complex<double>> viscous_response(const ViscousForms& forms,
                                                    const std::vector<std::complex<double>>& sigmas,
@@ -84,26 +120,9 @@ std::vector<std::complex<double>> viscous_response(const ViscousForms& forms,
   PVec x;
   petsc_check(VecDuplicate(forms.coupling, x.out()), "VecDuplicate");
   ForcedSolver solver(forms);
-  MPI_Comm comm;
-  petsc_check(PetscObjectGetComm(reinterpret_cast<PetscObject>(x.get()), &comm), "PetscObjectGetComm");
   for (const auto sigma : sigmas) {
     solver.solve(forms, sigma, x);
-    // fᵀx with x = a + ib on the real and imaginary slots: the coupling vector sits on the real slots only.
-    PetscScalar fa = 0, fb = 0;
-    petsc_check(VecDot(x, forms.coupling, &fa), "VecDot");  // Σ f_j a_j
-    // Σ f_j b_j: each pair (a_j, b_j) is local to one rank (viscous_forms.cpp).
-    const PetscScalar* xs = nullptr;
-    const PetscScalar* fs = nullptr;
-    PetscInt lo = 0, hi = 0;
-    petsc_check(VecGetOwnershipRange(x, &lo, &hi), "VecGetOwnershipRange");
-    petsc_check(VecGetArrayRead(x, &xs), "VecGetArrayRead");
-    petsc_check(VecGetArrayRead(forms.coupling, &fs), "VecGetArrayRead");
-    double local = 0;
-    for (PetscInt g = lo; g + 1 < hi; g += 2) local += fs[g - lo] * xs[g + 1 - lo];  // pairs never straddle ranks
-    petsc_check(VecRestoreArrayRead(x, &xs), "VecRestoreArrayRead");
-    petsc_check(VecRestoreArrayRead(forms.coupling, &fs), "VecRestoreArrayRead");
-    MPI_Allreduce(&local, &fb, 1, MPI_DOUBLE, MPI_SUM, comm);
-    out.push_back(std::numbers::pi * std::complex<double>(fa, fb));
+    out.push_back(moment_of(forms, x));
     if (progress) progress(out.size(), sigmas.size());
   }
   return out;

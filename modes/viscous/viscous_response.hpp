@@ -11,6 +11,7 @@
 #include <complex>
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <vector>
 
 namespace rc::modes {
@@ -22,6 +23,12 @@ using ResponseProgress = std::function<void(std::size_t, std::size_t)>;
 std::vector<std::complex<double>> viscous_response(const ViscousForms& forms,
                                                    const std::vector<std::complex<double>>& sigmas,
                                                    const ResponseProgress& progress = {});
+
+// The forced solutions x(σ) = (σ𝓜 − A)⁻¹ f themselves, in the block form of viscous_forms.hpp (distributed like the
+// forms), one per σ: the responses' fields, a Galerkin basis (galerkin_response.hpp). R(σ) = π fᵀx(σ).
+std::vector<std::shared_ptr<PVec>> forced_solutions(const ViscousForms& forms,
+                                                    const std::vector<std::complex<double>>& sigmas,
+                                                    const ResponseProgress& progress = {});
 
 // A cavity's forms: meshes it (viscous_mesh_defaults must have resolved `mesh`) and assembles at `ekman` with z
 // measured from the fluid centroid. Assemble once, then call viscous_response as often as needed (the response

@@ -2,7 +2,10 @@
 // literature, and the full Navier–Stokes solver against that limit and the ideal mode it continues.
 #include "boundary_layer.hpp"
 #include "cavity_table.hpp"
+#include "cavity_response.hpp"
 #include "closed_forms.hpp"
+#include "galerkin_response_table.hpp"
+#include "passivity_scan.hpp"
 #include "mesh_broadcast.hpp"
 #include "taylor_hood_space.hpp"
 #include "viscous_eigensolver.hpp"
@@ -73,6 +76,15 @@ ModeTable viscous_table(const rc::geometry::ShapeSpec& shape, double ekman, doub
 }
 
 ModeTable viscous_sphere(double ekman) { return viscous_table({"sphere", {{"radius", 1.0}}, {}}, ekman); }
+
+// The table written to a temporary file and read back.
+ModeTable through_file(const ModeTable& t, const char* name) {
+  const std::filesystem::path file = std::filesystem::temp_directory_path() / name;
+  rc::write_mode_table(t, file);
+  ModeTable back = rc::read_mode_table(file);
+  std::filesystem::remove(file);
+  return back;
+}
 
 StewartsonMode cylinder_dominant_mode() {
   const auto m = exact::cylinder_modes(1.0, 2.0).front();
@@ -201,13 +213,68 @@ TEST(ViscousGalerkin, ViscousFormIsTheModesDecayAndSurvivesTheFile) {
   EXPECT_LT(t.galerkin.dissipation_mismatch, 1e-8);
   EXPECT_GT(gv.minCoeff(), 0.5);
   EXPECT_GT(vv.minCoeff(), -1e-12 * vv.maxCoeff());
-  const std::filesystem::path file = std::filesystem::temp_directory_path() / "viscous_galerkin_test.h5";
-  rc::write_mode_table(t, file);
-  const ModeTable back = rc::read_mode_table(file);
-  std::filesystem::remove(file);
+  const ModeTable back = through_file(t, "viscous_galerkin_test.h5");
   EXPECT_EQ(back.galerkin.gram_re, t.galerkin.gram_re);
   EXPECT_EQ(back.galerkin.viscous_im, t.galerkin.viscous_im);
   EXPECT_EQ(back.galerkin.dissipation_mismatch, t.galerkin.dissipation_mismatch);
+}
+
+// The Galerkin response table (cavity-modes response --galerkin; viscous/galerkin_response.hpp) of the sphere at
+// Ek = 1e-3 on 41 samples of [-1.5, 2]: its rows' R(s) = Σ E_c/(s − λ_c) against forced solves at points that are
+// neither samples nor the table's own midpoint checks; every Ritz value decays and the table is passive (Im R ≥ 0);
+// its leading Ritz pair is the damped spin-over mode of a damped-mode table on the same mesh (an independent solver:
+// SLEPc on the pencil), and the table survives the file with its couplings.
+TEST(ViscousGalerkin, ResponseTableIsTheResponseAndPassive) {
+  const rc::geometry::ShapeSpec sphere{"sphere", {{"radius", 1.0}}, {}};
+  ResponseRequest req;
+  req.shape = sphere;
+  req.ekman = 1e-3;
+  req.mesh = viscous_mesh_defaults(sphere, req.ekman, {});  // P3 (MeshOptions' order), the default sizes: 6 s
+  req.sigmas = parse_sigma_spec("-1.5:2:41", 0);
+  const ModeTable t = galerkin_response_table(req, 1e-5);
+  const std::vector<cd> probe = {-1.23, 0.31, 0.97, 1.04, 1.61};
+  const std::vector<cd> R = cavity_response(sphere, req.mesh, req.ekman, probe);
+  double scale = 0, worst = 0, min_decay = 1e300;
+  for (const cd r : R) scale = std::max(scale, std::abs(r));
+  for (std::size_t k = 0; k < probe.size(); ++k) {
+    cd table = 0;
+    for (std::size_t l = 0; l < t.size(); ++l)
+      table += cd(t.E[l], t.E_imag[l]) / (probe[k] - cd(t.lambda[l], t.decay[l]));
+    worst = std::max(worst, std::abs(table - R[k]) / scale);
+    std::printf("s = %+.2f: forced R = %.9f%+.9fi, table %.9f%+.9fi\n", probe[k].real(), R[k].real(), R[k].imag(),
+                table.real(), table.imag());
+  }
+  for (const double d : t.decay) min_decay = std::min(min_decay, d);
+  std::vector<cd> poles, residues;
+  for (std::size_t l = 0; l < t.size(); ++l) {
+    poles.emplace_back(t.lambda[l], t.decay[l]);
+    residues.emplace_back(t.E[l], t.E_imag[l]);
+  }
+  const rc::PassivityScan passive = rc::scan_passivity(poles, residues, -3, 4);
+  TableRequest ideal;  // the damped spin-over mode on the same mesh
+  ideal.shape = sphere;
+  ideal.mesh.order = 6;
+  ideal.selection.modes = 1;
+  ideal.check_convergence = false;
+  ViscousTableSettings damped_settings;
+  damped_settings.ekman = req.ekman;
+  damped_settings.mesh = req.mesh;
+  damped_settings.check_convergence = false;
+  const ModeTable mode = compute_viscous_table(sphere, damped_settings, compute_mode_table(ideal), {});
+  const cd ritz(t.lambda[0], t.decay[0]), damped(mode.lambda[0], mode.decay[0]);
+  std::printf("%zu Ritz pairs, fit error %.1e; R at 5 other points: %.1e of max|R|; smallest decay %.2e; min Im R on "
+              "[-3, 4] %.2e max|R|; leading Ritz pair %.9f%+.9fi, damped mode %.9f%+.9fi (%.1e); residue %.7f%+.7fi, "
+              "modal %.7f%+.7fi\n", t.size(), t.fit_error, worst, min_decay, passive.min_im, ritz.real(),
+              ritz.imag(), damped.real(), damped.imag(), std::abs(ritz - damped), t.E[0], t.E_imag[0], mode.E[0],
+              mode.E_imag[0]);
+  EXPECT_LT(worst, 1e-6);
+  EXPECT_GE(min_decay, 0.0);
+  EXPECT_GE(passive.min_im, 0.0);
+  EXPECT_LT(std::abs(ritz - damped), 1e-6);
+  EXPECT_LT(t.galerkin.dissipation_mismatch, 1e-10);
+  const ModeTable back = through_file(t, "galerkin_response_test.h5");
+  EXPECT_EQ(back.galerkin.coupling_re, t.galerkin.coupling_re);
+  EXPECT_EQ(back.galerkin.gram_im, t.galerkin.gram_im);
 }
 
 // The response by forced solves (no modes) has a pole at the damped mode with the mode's residue E_c: the

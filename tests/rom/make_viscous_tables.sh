@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Viscous tables for test_rom_viscous: the sphere (radius 1, spin-over mode) at Ek = 1e-3, 1e-4, 1e-5 and the
-# cylinder's four leading damped modes at Ek = 1e-3, written by cavity-modes itself (docs/viscous.md): the chain tests read what users' scenes read.
+# cylinder's four leading damped modes at Ek = 1e-3, the sphere's Galerkin response table, written by cavity-modes itself (docs/viscous.md): the chain tests read what users' scenes read.
 set -eu
 BIN=$1
 DST=$2
@@ -12,4 +12,7 @@ done
 # Galerkin tanks' tests (test_galerkin_tanks.cpp).
 "$BIN" cylinder --radius 1 --height 2 --ekman 1e-3 --modes 4 --no-convergence-check -o "$DST/cylinder_ek1e-3.h5" \
   > "$DST/cylinder_ek1e-3.txt"
+# The sphere's Galerkin response table (P3, 41 samples of [-1.5, 2]): pseudo-modes whose fluid keeps an energy.
+"$BIN" response sphere --radius 1 --ekman 1e-3 --order 3 --sigma -1.5:2:41 --galerkin -o "$DST/sphere_galerkin_ek1e-3.h5" \
+  > "$DST/sphere_galerkin_ek1e-3.txt"
 echo "viscous tables in $DST"

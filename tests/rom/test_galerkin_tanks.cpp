@@ -186,6 +186,44 @@ TEST(GalerkinTanks, ResiduesAreTheProjectionsShare) {
   EXPECT_LT((g.energy.rowwise().sum() - g.residue.conjugate()).norm(), 1e-12 * g.residue.norm());
 }
 
+// A Galerkin response table (cavity-modes response --galerkin): its rows' E are the Galerkin residues already, so the
+// modal and the Galerkin reductions give one chain (roots to rounding); it is passive; and with reduction =
+// "galerkin" its fluid holds an energy: `run` balances it on the samples (order 2 in the step).
+TEST(GalerkinTanks, GalerkinResponseTableIsOneModelWithAnEnergy) {
+  const auto scene_with = [](const std::string& reduction, const char* step) {
+    std::ostringstream s;
+    s << "[system]\nkind = \"fixed\"\ngravity = 0.0\n[[body]]\nmass = 0.5\nA = 0.002\nC = 0.001\ncom = 0.0\n"
+         "spin = 100.0\n[body.cavity]\ntable = \"" << viscous_table("sphere_galerkin_ek1e-3")
+      << "\"\nviscosity = 2.5e-4\ndensity = 1000.0\nscale = 0.05\ncenter = 0.0\nreduction = \"" << reduction
+      << "\"\n[initial]\ntilt = [[0.01, 0.0]]\nrate = [[0.0, 0.5]]\n[run]\nt_end = 1.0\noutput_step = " << step << "\n";
+    return parse_scene_text(s.str(), ".", "galerkin-response");
+  };
+  const Spectrum modal = compute_spectrum(build_model(scene_with("modal", "0.001")));
+  const Spectrum galerkin = compute_spectrum(build_model(scene_with("galerkin", "0.001")));
+  ASSERT_EQ(modal.roots.size(), galerkin.roots.size());
+  double worst = 0, radius = 0;
+  for (std::size_t k = 0; k < modal.roots.size(); ++k) {
+    worst = std::max(worst, std::abs(modal.roots[k].sigma - galerkin.roots[k].sigma));
+    radius = std::max(radius, std::abs(modal.roots[k].sigma));
+  }
+  std::printf("  %zu roots; modal and Galerkin reductions differ by %.1e of the spectral radius; growth %.9f 1/s; "
+              "fits not passive: %d\n", modal.roots.size(), worst / radius, galerkin.margin, galerkin.fits_not_passive);
+  EXPECT_LT(worst, 1e-9 * radius);
+  EXPECT_EQ(galerkin.fits_not_passive, 0);
+  std::vector<double> residual;
+  for (const char* step : {"0.001", "0.0005"}) {
+    const Scene scene = scene_with("galerkin", step);
+    const History h = propagate(build_model(scene), scene);
+    ASSERT_FALSE(h.balance.empty());
+    residual.push_back(h.balance.residual);
+    std::printf("  step %s: H %.6e -> %.6e J, fluid dissipated %.6e J, balance residual %.2e\n", step,
+                h.balance.energy.front(), h.balance.energy.back(), h.balance.fluid_dissipated, h.balance.residual);
+  }
+  const double order = std::log2(residual[0] / residual[1]);
+  std::printf("  the balance residual falls at order %.2f\n", order);
+  EXPECT_NEAR(order, 2, 0.3);
+}
+
 TEST(GalerkinTanks, WhatHasNoSuchEnergySaysWhy) {
   ChainOptions o;
   o.spin3 = 120;

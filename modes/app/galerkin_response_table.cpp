@@ -1,0 +1,123 @@
+#include "galerkin_response_table.hpp"
+
+#include "galerkin_projection.hpp"
+#include "galerkin_response.hpp"
+#include "passivity_scan.hpp"
+#include "petsc_handles.hpp"
+#include "progress.hpp"
+#include "viscous_response.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <iostream>
+#include <limits>
+#include <stdexcept>
+
+namespace rc::modes {
+namespace {
+
+using cd = std::complex<double>;
+
+// max |R_G − R| / max |R| over (s, R) pairs.
+double relative_error(const GalerkinReduction& g, const std::vector<cd>& s, const std::vector<cd>& R, double scale) {
+  double worst = 0;
+  for (std::size_t k = 0; k < s.size(); ++k) worst = std::max(worst, std::abs(g.response(s[k]) - R[k]) / scale);
+  return worst;
+}
+
+}  // namespace
+
+ModeTable galerkin_response_table(const ResponseRequest& req, double max_error) {
+  const auto start = std::chrono::steady_clock::now();
+  check_response_window(req, "a Galerkin response table");
+  const double lo = req.sigmas.front().real(), hi = req.sigmas.back().real();
+  std::vector<cd> samples = req.sigmas;
+  for (const double t : response_tail(lo, hi)) samples.emplace_back(t, 0.0);
+  std::vector<cd> midpoints;
+  for (std::size_t k = 0; k + 1 < req.sigmas.size(); ++k)
+    midpoints.emplace_back(0.5 * (req.sigmas[k].real() + req.sigmas[k + 1].real()), 0.0);
+
+  const ViscousForms forms = assemble_cavity_forms(req.shape, req.mesh, req.ekman);
+  Progress lines([](const std::string& line) { if (is_root_rank()) std::cerr << line << "\n"; });
+  const auto progress = [&](const char* what) {
+    return [&lines, what](std::size_t done, std::size_t total) {
+      lines.step(fmt::format("{} {}/{}", what, done, total), done, total);
+    };
+  };
+  GalerkinMatrices g;
+  {
+    const auto solutions = forced_solutions(forms, samples, progress("galerkin response: forced solve"));
+    std::vector<Vec> basis;
+    for (const auto& x : solutions) basis.push_back(*x);
+    g = project_on_modes(forms, basis);
+  }  // the solutions are freed here
+  const GalerkinReduction red = reduce_on_span(g);
+
+  // R at the samples is π fᵀx = π conj(x̄ᵀf); at the midpoints, by forced solves the basis never saw.
+  std::vector<cd> R_samples;
+  for (Eigen::Index k = 0; k < g.coupling.size(); ++k) R_samples.push_back(std::numbers::pi * std::conj(g.coupling[k]));
+  const std::vector<cd> window_R(R_samples.begin(), R_samples.begin() + static_cast<long>(req.sigmas.size()));
+  const std::vector<cd> mid_R = viscous_response(forms, midpoints, progress("galerkin response: check"));
+  double scale = 0;
+  for (const cd r : window_R) scale = std::max(scale, std::abs(r));
+  const double at_samples = relative_error(red, samples, R_samples, scale);
+  const double between = relative_error(red, midpoints, mid_R, scale);
+  if (!(between <= max_error))
+    throw std::runtime_error(fmt::format("the Galerkin response errs by {:.2g} of max|R| between its samples on [{:g}, "
+                                         "{:g}] (allowed {:.2g}): give more frequencies N or a larger --max-fit-error",
+                                         between, lo, hi, max_error));
+
+  ModeTable t = response_table_start(req, 2L * forms.complex_size);
+  t.fit_error = between;
+  const std::size_t n = red.lambda.size();
+  cd sum = 0;
+  for (std::size_t l = 0; l < n; ++l) {
+    const cd p = red.lambda[l], r = red.residue[l], a = std::sqrt(r / 2.0);
+    t.lambda.push_back(p.real());
+    t.kappa.push_back(2 / p.real());
+    t.decay.push_back(std::max(p.imag(), 0.0));  // ≥ 0 up to rounding (reduce_on_span refuses a growing one)
+    t.E.push_back(r.real());
+    t.E_imag.push_back(r.imag());
+    t.a.push_back(a.real());
+    t.a_imag.push_back(a.imag());
+    t.N2.push_back(1.0);
+    t.residual.push_back(std::max(at_samples, std::numeric_limits<double>::epsilon()));
+    t.galerkin.coupling_re.push_back(red.coupling[static_cast<Eigen::Index>(l)].real());
+    t.galerkin.coupling_im.push_back(red.coupling[static_cast<Eigen::Index>(l)].imag());
+    sum += r;
+  }
+  for (Eigen::Index l = 0; l < red.gram.rows(); ++l)
+    for (Eigen::Index k = 0; k < red.gram.cols(); ++k) {
+      t.galerkin.gram_re.push_back(red.gram(l, k).real());
+      t.galerkin.gram_im.push_back(red.gram(l, k).imag());
+      t.galerkin.viscous_re.push_back(red.viscous(l, k).real());
+      t.galerkin.viscous_im.push_back(red.viscous(l, k).imag());
+    }
+  GalerkinMatrices ritz;
+  ritz.gram = red.gram;
+  ritz.viscous = red.viscous;
+  t.galerkin.dissipation_mismatch = dissipation_mismatch(ritz, red.lambda);
+  t.coverage = t.sum_rule > 0 ? sum.real() / t.sum_rule : 1.0;
+  std::vector<cd> poles(red.lambda), residues(red.residue);
+  const PassivityScan passivity = scan_passivity(poles, residues, lo, hi);
+  t.normalisation = "pseudo-modes of a Galerkin projection on forced solutions: lambda + i decay a Ritz value, E + "
+                    "i E_imag the reduced response's residue there, a + i a_imag = sqrt((E + i E_imag)/2), N2 = 1; "
+                    "/galerkin holds the Ritz vectors' Gram and viscous matrices and couplings f^T x (docs/viscous.md, "
+                    "\"Galerkin response table\")";
+  t.solver = fmt::format("Galerkin (Hermitian) projection on the forced solutions at {} real samples in [{:g}, {:g}] "
+                         "and {} beyond it up to |s| = {:.3g} ({} directions dropped as dependent), {} Ritz pairs; R "
+                         "matched at the samples to {:.2g} and between them (forced solves at the {} midpoints) to "
+                         "{:.2g} of max|R|; min Im R on the window {:.2g} max|R|; sum of residues {:.9g}{:+.3g}i, "
+                         "A_f - J_zh = {:.9g}; forced solves on Taylor-Hood P{}/P{}, {} real unknowns",
+                         req.sigmas.size(), lo, hi, samples.size() - req.sigmas.size(), std::abs(samples.back()),
+                         red.dropped, n, at_samples, midpoints.size(), between, passivity.min_im, sum.real(),
+                         sum.imag(), t.sum_rule, req.mesh.order, req.mesh.order - 1, 2L * forms.complex_size);
+  t.tolerance = 1e-10;
+  t.sort_by_energy();
+  t.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return t;
+}
+
+}  // namespace rc::modes

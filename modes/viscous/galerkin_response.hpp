@@ -1,0 +1,36 @@
+// The viscous fluid reduced by a Hermitian (Galerkin) projection on a span of forced solutions x(s_j) =
+// (s_j𝓜 − A)⁻¹f (docs/viscous.md, "Galerkin response table"): a table of pseudo-modes, like the rational fit's,
+// that keeps an energy and dissipates it at the viscous rate, and is passive by construction.
+//
+// With an orthonormal basis Q of span X (QᴴGQ… from G = X̄ᵀ𝓜X's eigen-decomposition, dependent directions dropped),
+// the reduced pencil is H_q = QᴴAQ with G_q = I; its Ritz pairs H_q w_l = λ_l w_l are the rows. Because the reduced
+// viscous form V_q = (H_q − H_qᴴ)/(2i) is positive semi-definite, Im λ_l = w_lᴴV_q w_l ≥ 0 (no growing pseudo-mode)
+// and Im R_G(s) ≥ 0 for every real s. One-sided projection interpolates: R_G(s_j) = R(s_j) at every sample whose
+// solution is in the span (Grimme, "Krylov projection methods for model reduction", 1997), so the table is the
+// response at its samples to the solver's accuracy, and between them to what the held-out midpoints measure.
+#pragma once
+
+#include "galerkin_projection.hpp"
+
+#include <Eigen/Dense>
+
+#include <complex>
+#include <vector>
+
+namespace rc::modes {
+
+struct GalerkinReduction {
+  std::vector<std::complex<double>> lambda;   // Ritz values (Im ≥ 0), table units
+  std::vector<std::complex<double>> residue;  // R_G's residue at each: Ẽ_l = π f_l g_l, g = G′⁻¹ f̄
+  Eigen::MatrixXcd gram, viscous;             // G′ = WᴴW, V′ = WᴴV_qW in the Ritz vectors' coordinates
+  Eigen::VectorXcd coupling;                  // f_l = fᵀx_l of each Ritz vector x_l = Q w_l (unit 2-norm w_l)
+  int dropped = 0;                            // basis directions dropped as dependent
+  std::complex<double> response(std::complex<double> s) const;  // R_G(s) = Σ Ẽ_l/(s − λ_l)
+};
+
+// The Ritz pairs of the projection `g` (project_on_modes on forced solutions). Directions of G below
+// `rank_tolerance` × its largest eigenvalue are dropped (the samples' solutions are nearly dependent). Throws
+// std::runtime_error when a Ritz value grows (Im λ below −1e-10 |λ|: the viscous form is not semi-definite).
+GalerkinReduction reduce_on_span(const GalerkinMatrices& g, double rank_tolerance = 1e-13);
+
+}  // namespace rc::modes
