@@ -27,6 +27,48 @@ double relative_error(const GalerkinReduction& g, const std::vector<cd>& s, cons
   return worst;
 }
 
+// The projection on the forced solutions at `samples` (freed once projected).
+GalerkinMatrices project_on_forced_solutions(const ViscousForms& forms, const std::vector<cd>& samples,
+                                             const ResponseProgress& progress) {
+  const auto solutions = forced_solutions(forms, samples, progress);
+  std::vector<Vec> basis;
+  for (const auto& x : solutions) basis.push_back(*x);
+  return project_on_modes(forms, basis);
+}
+
+// The Ritz pairs as the table's rows (E + i E_imag their Galerkin residues, a + i a_imag = √(E/2), N2 = 1), and the
+// /galerkin block: their Gram and viscous matrices and couplings. Returns the residues' sum.
+cd add_ritz_rows(ModeTable& t, const GalerkinReduction& red, double residual) {
+  cd sum = 0;
+  for (std::size_t l = 0; l < red.lambda.size(); ++l) {
+    const cd p = red.lambda[l], r = red.residue[l], a = std::sqrt(r / 2.0);
+    t.lambda.push_back(p.real());
+    t.kappa.push_back(2 / p.real());
+    t.decay.push_back(std::max(p.imag(), 0.0));  // ≥ 0 up to rounding (reduce_on_span refuses a growing one)
+    t.E.push_back(r.real());
+    t.E_imag.push_back(r.imag());
+    t.a.push_back(a.real());
+    t.a_imag.push_back(a.imag());
+    t.N2.push_back(1.0);
+    t.residual.push_back(std::max(residual, std::numeric_limits<double>::epsilon()));
+    t.galerkin.coupling_re.push_back(red.coupling[static_cast<Eigen::Index>(l)].real());
+    t.galerkin.coupling_im.push_back(red.coupling[static_cast<Eigen::Index>(l)].imag());
+    sum += r;
+  }
+  for (Eigen::Index l = 0; l < red.gram.rows(); ++l)
+    for (Eigen::Index k = 0; k < red.gram.cols(); ++k) {
+      t.galerkin.gram_re.push_back(red.gram(l, k).real());
+      t.galerkin.gram_im.push_back(red.gram(l, k).imag());
+      t.galerkin.viscous_re.push_back(red.viscous(l, k).real());
+      t.galerkin.viscous_im.push_back(red.viscous(l, k).imag());
+    }
+  GalerkinMatrices ritz;
+  ritz.gram = red.gram;
+  ritz.viscous = red.viscous;
+  t.galerkin.dissipation_mismatch = dissipation_mismatch(ritz, red.lambda);
+  return sum;
+}
+
 }  // namespace
 
 ModeTable galerkin_response_table(const ResponseRequest& req, double max_error) {
@@ -46,13 +88,8 @@ ModeTable galerkin_response_table(const ResponseRequest& req, double max_error) 
       lines.step(fmt::format("{} {}/{}", what, done, total), done, total);
     };
   };
-  GalerkinMatrices g;
-  {
-    const auto solutions = forced_solutions(forms, samples, progress("galerkin response: forced solve"));
-    std::vector<Vec> basis;
-    for (const auto& x : solutions) basis.push_back(*x);
-    g = project_on_modes(forms, basis);
-  }  // the solutions are freed here
+  const GalerkinMatrices g =
+      project_on_forced_solutions(forms, samples, progress("galerkin response: forced solve"));
   const GalerkinReduction red = reduce_on_span(g);
 
   // R at the samples is π fᵀx = π conj(x̄ᵀf); at the midpoints, by forced solves the basis never saw.
@@ -72,33 +109,7 @@ ModeTable galerkin_response_table(const ResponseRequest& req, double max_error) 
   ModeTable t = response_table_start(req, 2L * forms.complex_size);
   t.fit_error = between;
   const std::size_t n = red.lambda.size();
-  cd sum = 0;
-  for (std::size_t l = 0; l < n; ++l) {
-    const cd p = red.lambda[l], r = red.residue[l], a = std::sqrt(r / 2.0);
-    t.lambda.push_back(p.real());
-    t.kappa.push_back(2 / p.real());
-    t.decay.push_back(std::max(p.imag(), 0.0));  // ≥ 0 up to rounding (reduce_on_span refuses a growing one)
-    t.E.push_back(r.real());
-    t.E_imag.push_back(r.imag());
-    t.a.push_back(a.real());
-    t.a_imag.push_back(a.imag());
-    t.N2.push_back(1.0);
-    t.residual.push_back(std::max(at_samples, std::numeric_limits<double>::epsilon()));
-    t.galerkin.coupling_re.push_back(red.coupling[static_cast<Eigen::Index>(l)].real());
-    t.galerkin.coupling_im.push_back(red.coupling[static_cast<Eigen::Index>(l)].imag());
-    sum += r;
-  }
-  for (Eigen::Index l = 0; l < red.gram.rows(); ++l)
-    for (Eigen::Index k = 0; k < red.gram.cols(); ++k) {
-      t.galerkin.gram_re.push_back(red.gram(l, k).real());
-      t.galerkin.gram_im.push_back(red.gram(l, k).imag());
-      t.galerkin.viscous_re.push_back(red.viscous(l, k).real());
-      t.galerkin.viscous_im.push_back(red.viscous(l, k).imag());
-    }
-  GalerkinMatrices ritz;
-  ritz.gram = red.gram;
-  ritz.viscous = red.viscous;
-  t.galerkin.dissipation_mismatch = dissipation_mismatch(ritz, red.lambda);
+  const cd sum = add_ritz_rows(t, red, at_samples);
   t.coverage = t.sum_rule > 0 ? sum.real() / t.sum_rule : 1.0;
   std::vector<cd> poles(red.lambda), residues(red.residue);
   const PassivityScan passivity = scan_passivity(poles, residues, lo, hi);
