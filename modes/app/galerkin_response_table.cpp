@@ -14,6 +14,7 @@
 #include <iostream>
 #include <limits>
 #include <stdexcept>
+#include <unistd.h>
 
 namespace rc::modes {
 namespace {
@@ -25,6 +26,20 @@ double relative_error(const GalerkinReduction& g, const std::vector<cd>& s, cons
   double worst = 0;
   for (std::size_t k = 0; k < s.size(); ++k) worst = std::max(worst, std::abs(g.response(s[k]) - R[k]) / scale);
   return worst;
+}
+
+// The forced solutions are all kept until projected: refuse, with one line, a table whose solutions would take more
+// than half of this machine's memory (per rank; a crash by the out-of-memory killer is no answer).
+void check_basis_memory(const ViscousForms& forms, std::size_t samples) {
+  int ranks = 1;
+  MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
+  const double bytes = 2.0 * forms.complex_size * sizeof(double) * static_cast<double>(samples) / ranks;
+  const double memory = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
+  if (memory > 0 && bytes > 0.5 * memory)
+    throw std::runtime_error(fmt::format("a Galerkin response table keeps its {} forced solutions until it projects "
+                                         "them: {:.1f} GB per rank, more than half of this machine's {:.1f} GB; give "
+                                         "fewer samples N, a coarser mesh, or mpirun over more machines", samples,
+                                         bytes / 1e9, memory / 1e9));
 }
 
 // The projection on the forced solutions at `samples` (freed once projected).
@@ -82,6 +97,7 @@ ModeTable galerkin_response_table(const ResponseRequest& req, double max_error) 
     midpoints.emplace_back(0.5 * (req.sigmas[k].real() + req.sigmas[k + 1].real()), 0.0);
 
   const ViscousForms forms = assemble_cavity_forms(req.shape, req.mesh, req.ekman);
+  check_basis_memory(forms, samples.size());
   Progress lines([](const std::string& line) { if (is_root_rank()) std::cerr << line << "\n"; });
   const auto progress = [&](const char* what) {
     return [&lines, what](std::size_t done, std::size_t total) {
