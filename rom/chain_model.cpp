@@ -99,8 +99,6 @@ void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
     } catch (const std::exception& e) {
       fail(scene, w + ".reduction", cav.table.filename().string() + ": " + e.what());
     }
-  } else if (!t.viscous()) {
-    gf = galerkin_fluid(t, rows);  // orthogonal modes: diag(E), no dissipation
   }
   // Spin -omega conjugates the flow (below): the forms too. Energy ~ rho L^5, dissipation ~ rho L^5 |omega|.
   const auto chain_units = [&](const Eigen::MatrixXcd& a, double factor) -> Eigen::MatrixXcd {

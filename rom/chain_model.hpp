@@ -49,9 +49,9 @@ struct BodyModel {
   double coverage = 0;       // E_kept / sum_rule
   int unconverged = 0;       // kept clusters the table flags as not converged
   std::string table;
-  // The kept modes' fluid energy and dissipation forms in the chain's coordinates z (kg m^2, kg m^2/s;
-  // galerkin_fluid.hpp): a Galerkin tank's, or an ideal tank's diag(E) and 0. Empty for a viscous modal tank or a
-  // response fit, whose fluid holds no energy of its own in the model.
+  // A Galerkin tank's kept modes' fluid energy and dissipation forms in the chain's coordinates z (kg m^2, kg m^2/s;
+  // galerkin_fluid.hpp); empty otherwise (an ideal tank's are diag(E) and 0: galerkin_energy.cpp makes them there,
+  // off the sweeps' path; a viscous modal tank or a rational fit holds no energy of its own in the model).
   bool galerkin = false;     // reduction = "galerkin": its modes' E are the Galerkin residues
   Eigen::MatrixXcd fluid_energy, fluid_dissipation;
 };

@@ -15,7 +15,7 @@ std::string galerkin_energy_unavailable(const ChainModel& m) {
     const BodyModel& b = m.bodies[k];
     if (b.omega != m.bodies[0].omega)
       return "the bodies spin at different rates (an energy that balances the fluid's dissipation needs one spin)";
-    if (b.has_fluid && b.fluid_energy.size() == 0)
+    if (b.has_fluid && b.ekman > 0 && b.fluid_energy.size() == 0)
       return "body " + std::to_string(k + 1) + "'s tank is " +
              (b.fit_hi > b.fit_lo ? std::string("a response fit") : std::string("a modal viscous tank")) +
              ", whose fluid holds no energy of its own (reduction = \"galerkin\" gives one, with a damped-mode table "
@@ -36,6 +36,20 @@ GalerkinEnergyMeter::GalerkinEnergyMeter(const ChainModel& m) : m_(m) {
   K_ = Kp.cast<cd>();
   K_abs_ = symmetric_abs(Kp).cast<cd>();
   D_ = m.D.cast<cd>();
+  for (int k = 0, first = 0; k < m.n; ++k) {
+    int count = 0;
+    while (first + count < m.n_modes() && m.modes[first + count].body == k) ++count;
+    if (count == 0) continue;
+    Tank t{k, first, m.bodies[k].fluid_energy, m.bodies[k].fluid_dissipation};
+    if (t.energy.size() == 0) {  // an ideal tank: orthogonal modes (galerkin_fluid.hpp)
+      Eigen::VectorXd E(count);
+      for (int l = 0; l < count; ++l) E[l] = m.modes[first + l].E;
+      t.energy = E.asDiagonal().toDenseMatrix().cast<cd>();
+      t.dissipation = Eigen::MatrixXcd::Zero(count, count);
+    }
+    tanks_.push_back(std::move(t));
+    first += count;
+  }
 }
 
 EnergySample GalerkinEnergyMeter::operator()(const Eigen::VectorXcd& u, const Eigen::VectorXcd& v,
@@ -47,20 +61,14 @@ EnergySample GalerkinEnergyMeter::operator()(const Eigen::VectorXcd& u, const Ei
   s.energy = kinetic + potential;
   s.scale = std::abs(kinetic) + 0.5 * u.dot(K_abs_ * u).real();
   s.joint_power = W.dot(D_ * v).real();
-  int first = 0;  // the body's first mode in z
-  for (int k = 0; k < m_.n; ++k) {
-    const BodyModel& b = m_.bodies[k];
-    const int nk = static_cast<int>(b.fluid_energy.rows());
-    if (nk == 0) continue;
-    while (first < m_.n_modes() && m_.modes[first].body != k) ++first;
-    const auto zk = z.segment(first, nk);
-    cd h = 0;
-    for (int l = 0; l < nk; ++l) h += m_.modes[first + l].E_c() * zk[l];
-    const double fluid = 0.5 * zk.dot(b.fluid_energy * zk).real(), cross = (std::conj(h) * W[k]).real();
+  for (const Tank& t : tanks_) {
+    const auto zk = z.segment(t.first, t.energy.rows());
+    cd h = 0;  // the fluid's relative angular momentum Σ Ẽ z
+    for (Eigen::Index l = 0; l < zk.size(); ++l) h += m_.modes[t.first + l].E_c() * zk[l];
+    const double fluid = 0.5 * zk.dot(t.energy * zk).real(), cross = (std::conj(h) * W[t.body]).real();
     s.energy += fluid + cross;
     s.scale += fluid + std::abs(cross);
-    s.fluid_dissipation += zk.dot(b.fluid_dissipation * zk).real();
-    first += nk;
+    s.fluid_dissipation += zk.dot(t.dissipation * zk).real();
   }
   return s;
 }

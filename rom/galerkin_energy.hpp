@@ -41,6 +41,11 @@ class GalerkinEnergyMeter {
   const ChainModel& m_;
   double omega_ = 0;
   Eigen::MatrixXcd M_, K_, K_abs_, D_;
+  struct Tank {
+    int body = 0, first = 0;             // its body, its first mode in z
+    Eigen::MatrixXcd energy, dissipation;  // 𝔈, 𝔇 (an ideal tank: diag(E), 0)
+  };
+  std::vector<Tank> tanks_;
 };
 
 struct EnergyBalance {

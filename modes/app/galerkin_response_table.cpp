@@ -127,8 +127,7 @@ ModeTable galerkin_response_table(const ResponseRequest& req, double max_error) 
   const std::size_t n = red.lambda.size();
   const cd sum = add_ritz_rows(t, red, at_samples);
   t.coverage = t.sum_rule > 0 ? sum.real() / t.sum_rule : 1.0;
-  std::vector<cd> poles(red.lambda), residues(red.residue);
-  const PassivityScan passivity = scan_passivity(poles, residues, lo, hi);
+  const PassivityScan passivity = scan_passivity(red.lambda, red.residue, lo, hi);
   t.normalisation = "pseudo-modes of a Galerkin projection on forced solutions: lambda + i decay a Ritz value, E + "
                     "i E_imag the reduced response's residue there, a + i a_imag = sqrt((E + i E_imag)/2), N2 = 1; "
                     "/galerkin holds the Ritz vectors' Gram and viscous matrices and couplings f^T x (docs/viscous.md, "

@@ -36,7 +36,7 @@ GalerkinReduction reduce_on_span(const GalerkinMatrices& g, double rank_toleranc
   out.gram = W.adjoint() * W;
   out.viscous = W.adjoint() * Vq * W;
   out.coupling = (cq.adjoint() * W).transpose();  // fᵀQw_l = conj(Qᴴf)ᵀ w_l
-  const Eigen::VectorXcd gl = out.gram.lu().solve(out.coupling.conjugate());
+  const Eigen::VectorXcd gl = out.gram.llt().solve(out.coupling.conjugate());  // G′ = WᴴW: Hermitian definite
   for (Eigen::Index l = 0; l < r; ++l) {
     const cd lambda = ritz.eigenvalues()[l];
     if (lambda.imag() < -1e-10 * std::abs(lambda))
