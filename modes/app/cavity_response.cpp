@@ -99,6 +99,31 @@ std::complex<double> parse_complex(const std::string& item) {
 
 }  // namespace
 
+void serve_response(const ResponseRequest& req, std::istream& in, std::ostream& out) {
+  if (!(req.ekman > 0)) throw std::runtime_error("--serve needs --ekman (the ideal response has its modes' closed sum)");
+  int ranks = 1;
+  MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
+  if (ranks > 1) throw std::runtime_error("--serve runs on one rank (it reads standard input)");
+  const ViscousForms forms = assemble_cavity_forms(req.shape, req.mesh, req.ekman);
+  ForcedResponse response(forms);
+  out << fmt::format("ready: viscous fluid, Ekman number {:g}, forced solves on Taylor-Hood P{}/P{} ({} real unknowns)",
+                     req.ekman, req.mesh.order, req.mesh.order - 1, 2L * forms.complex_size)
+      << std::endl;
+  std::string line;
+  while (std::getline(in, line) && !line.empty()) {
+    try {
+      const std::complex<double> sigma = parse_complex(line);
+      if (!std::isfinite(sigma.real()) || !std::isfinite(sigma.imag())) throw std::runtime_error("sigma must be finite");
+      const std::complex<double> R = response(sigma);
+      out << fmt::format("{:.17g} {:.17g}", R.real(), R.imag()) << std::endl;
+    } catch (const std::exception& e) {
+      std::string why = e.what();
+      std::replace(why.begin(), why.end(), '\n', ' ');
+      out << "error: " << why << std::endl;
+    }
+  }
+}
+
 CavityResponse compute_cavity_response(const ResponseRequest& req) {
   if (req.sigmas.empty()) throw std::runtime_error("no frequency sigma given");
   for (const auto s : req.sigmas)

@@ -10,6 +10,7 @@
 #include "mode_table.hpp"
 
 #include <complex>
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -55,6 +56,13 @@ ModeTable response_table_start(const ResponseRequest& request, long unknowns);
 // complex numbers "0.5+0.1i,1.2,-0.3-2e-2i" (then `imag` must be 0). Throws std::runtime_error naming the
 // malformed item.
 std::vector<std::complex<double>> parse_sigma_spec(const std::string& spec, double imag);
+
+// `cavity-modes response SHAPE ... --ekman Ek --serve`: assembles the viscous forms once, writes one line
+// "ready: <the method line>" on `out`, then answers each line of `in` (one complex sigma, written as --sigma's list
+// items are) with one line "R_re R_im" (17 significant digits), flushed, until end of input or an empty line. A line
+// it cannot answer (not a number, a failed factorisation) gets "error: <one line>" and the session goes on. Serial
+// only; chain-rom confirm drives it (docs/rom.md, "Confirmed roots"). Throws std::runtime_error without --ekman.
+void serve_response(const ResponseRequest& request, std::istream& in, std::ostream& out);
 
 // CSV: two `#` lines (the method, the definition), then sigma_re, sigma_im, R_re, R_im per line. Written to a
 // temporary name and renamed, so no half-written file is ever left.

@@ -45,6 +45,7 @@ struct ViscousOptions {
   double sigma_imag = 0;   // imaginary part of every σ
   double max_fit_error = 1e-6;  // response to FILE.h5: the largest fit error accepted
   bool galerkin = false;        // response to FILE.h5: a Galerkin response table instead of a rational fit
+  bool serve = false;           // response: answer sigma lines on stdin with R on stdout (chain-rom confirm)
 };
 
 // The mesh of every command; --radial-size and --method (auto|mesh|separable: auto is separable for a cylinder
@@ -140,6 +141,10 @@ void add_response_options(CLI::App* cmd, ViscousOptions& viscous) {
                 "-o FILE.h5 only: instead of a rational fit, the Galerkin projection on the forced solutions at the "
                 "samples: pseudo-modes whose fluid keeps an energy and dissipates it (chain-rom reduction = "
                 "\"galerkin\"), passive by construction (docs/viscous.md, \"Galerkin response table\")");
+  cmd->add_flag("--serve", viscous.serve,
+                "with --ekman, instead of --sigma and -o: assemble once, then answer each complex sigma read from "
+                "standard input (one a line) with 'R_re R_im' on standard output, until end of input (chain-rom "
+                "confirm drives it: docs/rom.md, \"Confirmed roots\")");
 }
 
 // An option the parsed command does not take (CLI11 keeps it in remaining()): one line naming it and the command.
@@ -226,8 +231,9 @@ int run(int argc, char** argv) {
     add_viscous_options(s.app, viscous);
     if (response) add_response_options(s.app, viscous);
     else add_table_options(s.app, req, fields, cluster_method);
-    s.app->add_option("-o,--output", output, response ? "R(sigma) as CSV, or FILE.h5: a response-fit table"
-                                                      : "mode table to write (HDF5)")->required();
+    auto* out = s.app->add_option("-o,--output", output, response ? "R(sigma) as CSV, or FILE.h5: a response-fit table"
+                                                                  : "mode table to write (HDF5)");
+    if (!response) out->required();  // response: required unless --serve (checked after parsing)
     s.app->allow_extras();
   }
 
@@ -305,7 +311,13 @@ int run(int argc, char** argv) {
   refuse_extras(*table_command, response);
   req.shape = shapes.parsed_shape();
   req.clusters.method = cluster_method == "slices" ? rc::modes::ClusterMethod::slices : rc::modes::ClusterMethod::lanczos;
-  if (response && table_command->count("--sigma") == 0)
+  if (response && viscous.serve && (table_command->count("--sigma") > 0 || !output.empty()))
+    throw std::runtime_error("--serve reads its frequencies from standard input and answers on standard output: "
+                             "give neither --sigma nor -o");
+  if (response && viscous.serve && table_command->count("--ekman") == 0)
+    throw std::runtime_error("--serve needs --ekman (the viscous fluid's forced solves)");
+  if (response && !viscous.serve && output.empty()) throw std::runtime_error("-o,--output is required");
+  if (response && !viscous.serve && table_command->count("--sigma") == 0)
     throw std::runtime_error("cavity-modes response needs --sigma FROM:TO:N");
   if (response && table_command->count("--max-fit-error") > 0 &&
       !ends_with(output, ".h5"))
@@ -331,11 +343,15 @@ int run(int argc, char** argv) {
   if (response) {
     rc::modes::ResponseRequest r;
     r.shape = req.shape;
-    r.sigmas = rc::modes::parse_sigma_spec(viscous.sigma, viscous.sigma_imag);
+    if (!viscous.serve) r.sigmas = rc::modes::parse_sigma_spec(viscous.sigma, viscous.sigma_imag);
     r.ekman = is_viscous ? viscous.ekman : 0;
     r.mesh = is_viscous ? viscous_settings.mesh : req.mesh;
     r.separable = !is_viscous && method == "separable";  // auto: forced solves for every shape
     if (!is_viscous && !r.separable && r.mesh.order == 0) r.mesh.order = 6;
+    if (viscous.serve) {
+      rc::modes::serve_response(r, std::cin, std::cout);
+      return 0;
+    }
     if (ends_with(output, ".h5")) {
       // A response-fit table: the fit's poles and residues as damped modes (docs/viscous.md, "Response fit").
       auto table = viscous.galerkin ? rc::modes::galerkin_response_table(r, viscous.max_fit_error)

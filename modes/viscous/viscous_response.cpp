@@ -113,16 +113,30 @@ std::vector<std::shared_ptr<PVec>> forced_solutions(const ViscousForms& forms,
   return out;
 }
 
+struct ForcedResponse::State {
+  const ViscousForms& forms;
+  ForcedSolver solver;
+  PVec x;
+  explicit State(const ViscousForms& f) : forms(f), solver(f) {
+    petsc_check(VecDuplicate(f.coupling, x.out()), "VecDuplicate");
+  }
+};
+
+ForcedResponse::ForcedResponse(const ViscousForms& forms) : state_(std::make_unique<State>(forms)) {}
+ForcedResponse::~ForcedResponse() = default;
+
+std::complex<double> ForcedResponse::operator()(std::complex<double> sigma) {
+  state_->solver.solve(state_->forms, sigma, state_->x);
+  return moment_of(state_->forms, state_->x);
+}
+
 std::vector<std::complex<double>> viscous_response(const ViscousForms& forms,
                                                    const std::vector<std::complex<double>>& sigmas,
                                                    const ResponseProgress& progress) {
   std::vector<std::complex<double>> out;
-  PVec x;
-  petsc_check(VecDuplicate(forms.coupling, x.out()), "VecDuplicate");
-  ForcedSolver solver(forms);
+  ForcedResponse response(forms);
   for (const auto sigma : sigmas) {
-    solver.solve(forms, sigma, x);
-    out.push_back(moment_of(forms, x));
+    out.push_back(response(sigma));
     if (progress) progress(out.size(), sigmas.size());
   }
   return out;

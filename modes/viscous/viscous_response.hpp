@@ -24,6 +24,23 @@ std::vector<std::complex<double>> viscous_response(const ViscousForms& forms,
                                                    const std::vector<std::complex<double>>& sigmas,
                                                    const ResponseProgress& progress = {});
 
+// R(σ) one σ at a time, from one solver object that keeps the pattern and MUMPS's analysis across calls: for
+// callers that choose the next σ from the last answer (a root iteration on Kononov's (22) with the fluid's own
+// response: `cavity-modes response ... --serve`, which chain-rom confirm drives; docs/rom.md, "Confirmed roots").
+// `forms` must outlive it. Throws std::runtime_error when a factorisation fails.
+class ForcedResponse {
+ public:
+  explicit ForcedResponse(const ViscousForms& forms);
+  ~ForcedResponse();
+  ForcedResponse(const ForcedResponse&) = delete;
+  ForcedResponse& operator=(const ForcedResponse&) = delete;
+  std::complex<double> operator()(std::complex<double> sigma);
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
 // The forced solutions x(σ) = (σ𝓜 − A)⁻¹ f themselves, in the block form of viscous_forms.hpp (distributed like the
 // forms), one per σ: the responses' fields, a Galerkin basis (galerkin_response.hpp). R(σ) = π fᵀx(σ).
 std::vector<std::shared_ptr<PVec>> forced_solutions(const ViscousForms& forms,

@@ -61,6 +61,23 @@ expect_error "--max-fit-error on a CSV response" "belongs to" "$BIN" response sp
 expect_error "--galerkin on a CSV response" "belongs to" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:9 --galerkin -o out.csv
 expect_error "--galerkin on a mode table" "belong to 'cavity-modes response" "$BIN" sphere --radius 1 --ekman 1e-2 --galerkin -o out.h5
 expect_error "Galerkin response table with too few samples" "Galerkin response table needs --sigma" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:5 --galerkin -o out.h5
+expect_error "--serve without --ekman" "needs --ekman" "$BIN" response sphere --radius 1 --serve
+expect_error "--serve with -o" "give neither --sigma nor -o" "$BIN" response sphere --radius 1 --ekman 1e-2 --serve -o out.csv
+expect_error "--serve with --sigma" "give neither --sigma nor -o" "$BIN" response sphere --radius 1 --ekman 1e-2 --serve --sigma 0.5
+expect_error "response without -o" "-o,--output is required" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5
+# --serve answers each sigma line with R, as the CSV path does, and a bad line with one error line.
+if printf '0.5+0.1i\nfoo\n1.2\n' | "$BIN" response sphere --radius 1 --ekman 1e-2 "${small_response[@]}" --serve > served.txt 2> served.err &&
+   "$BIN" response sphere --radius 1 --ekman 1e-2 "${small_response[@]}" --sigma 0.5+0.1i,1.2 -o direct.csv > /dev/null 2>&1 &&
+   python3 -c '
+lines = open("served.txt").read().splitlines()
+assert lines[0].startswith("ready: ") and lines[2].startswith("error: "), lines
+served = [complex(*map(float, l.split())) for l in (lines[1], lines[3])]
+rows = [l.split(",") for l in open("direct.csv") if l[:1] not in "#s"]
+direct = [complex(float(r[2]), float(r[3])) for r in rows]
+d = max(abs(a - b) / abs(b) for a, b in zip(served, direct))
+assert d < 1e-13, d
+print("served R = CSV R to %.1e" % d)
+'; then ok "response --serve"; else bad "response --serve: $(tail -2 served.err)"; fi
 expect_error "response fit that misses its tolerance" "give more frequencies" "$BIN" response sphere --radius 1 --ekman 1e-2 "${small_response[@]}" --sigma -2:3:9 --max-fit-error 1e-14 -o out.h5
 # Too few samples: the fit errs between them, samples are added where it does, and the table is made.
 if "$BIN" response sphere --radius 1 --ekman 1e-2 "${small_response[@]}" --sigma -1.5:2:11 -o refit.h5 > refit.txt 2> refit.err &&
