@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iomanip>
+#include <sstream>
 #include <stdexcept>
 #include <unistd.h>
 
@@ -234,7 +235,7 @@ void write_nonlinear_history(const NonlinearHistory& h, int n, const fs::path& o
   });
 }
 
-std::string spectrum_json(const Spectrum& sp) {
+std::string spectrum_json(const ChainModel& m, const Spectrum& sp) {
   nlohmann::ordered_json j;  // keys in the order of docs/physics.md §4
   j["roots"] = nlohmann::ordered_json::array();
   for (const Root& r : sp.roots) j["roots"].push_back({r.sigma.real(), r.sigma.imag()});
@@ -243,6 +244,8 @@ std::string spectrum_json(const Spectrum& sp) {
   j["det_residual"] = sp.det_residual;
   // beyond docs/physics.md §4: the largest -Im sigma (1/s) and the second root finder's agreement (root_newton.hpp)
   j["growth"] = sp.growth;
+  j["growing"] = sp.growing;    // with dissipation: roots growing by more than `noise` (1/s)
+  j["noise"] = sp.noise;
   j["root_agreement"] = sp.root_agreement;
   j["newton_failed"] = sp.newton_failed;
   j["outside_fit"] = sp.outside_fit;
@@ -254,6 +257,10 @@ std::string spectrum_json(const Spectrum& sp) {
     j["roots_at_zero"] = sp.roots_at_zero;
     j["certificate_disagrees"] = sp.certificate_disagrees();
   }
+  // The bodies' coefficients of (22) at full precision, for checks made outside chain-rom: A' = M_kk, C, a_k, spin.
+  j["bodies"] = nlohmann::ordered_json::array();
+  for (int k = 0; k < m.n; ++k)
+    j["bodies"].push_back({{"A_prime", m.M(k, k)}, {"C", m.bodies[k].C}, {"a", m.a[k]}, {"spin", m.bodies[k].omega}});
   if (sp.companion_checked) {
     j["companion_moved"] = sp.companion_moved;
     j["companion_worst"] = sp.companion_worst;
@@ -261,6 +268,31 @@ std::string spectrum_json(const Spectrum& sp) {
     for (const Root& r : sp.roots) j["companion_shift"].push_back(r.companion_shift);
   }
   return j.dump();
+}
+
+std::string verdict_with_dissipation(const ChainModel& m, const Spectrum& sp) {
+  std::ostringstream os;
+  os << std::setprecision(6);
+  const std::string cause = m.has_friction() ? (m.viscous ? "friction and viscous fluid" : "friction") : "viscous fluid";
+  if (!sp.stable) {
+    // The fastest-growing root, named (docs/rom.md, "Verdict with dissipation").
+    const Root* fastest = nullptr;
+    for (const Root& r : sp.roots)
+      if (std::abs(r.sigma) > sp.tolerance && (!fastest || r.sigma.imag() < fastest->sigma.imag())) fastest = &r;
+    os << "stable: no -- unstable (" << cause << "): " << sp.growing << (sp.growing == 1 ? " root grows" : " roots grow")
+       << ", the fastest at " << sp.growth << " 1/s (e-folding " << 1 / sp.growth << " s)";
+    if (fastest) os << ": " << fastest->owner << " at " << fastest->sigma.real() << " rad/s";
+  } else if (sp.growth < -sp.noise) {
+    os << "stable: yes -- every root decays (" << cause << "), the slowest at " << -sp.growth << " 1/s (e-folding "
+       << -1 / sp.growth << " s)";
+  } else {
+    os << "stable: yes -- marginally (" << cause << "): no root grows by more than rounding (" << sp.noise
+       << " 1/s), the slowest decays at " << -sp.growth << " 1/s";
+  }
+  if (sp.at_zero) os << "; " << sp.at_zero << " roots at sigma = 0 (|sigma| <= " << sp.tolerance << ") left out";
+  os << "\nlargest growth rate (-Im sigma): " << sp.growth << " 1/s (growth above " << sp.noise
+     << " 1/s, rounding of the spectral radius, counts)";
+  return os.str();
 }
 
 void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp) {
@@ -300,21 +332,12 @@ void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp) {
     os << "\n";
   }
   os << std::setprecision(6);
-  os << "stable: " << (sp.stable ? "yes" : "no") << " (|Im sigma| <= " << sp.tolerance
-     << " counts as real"
-     << (m.dissipative() ? std::string("; ") + (m.has_friction() ? "friction" : "viscous fluid") +
-                               ": no root with Im sigma < 0"
-                         : "")
-     << ")\n";
-  if (!m.dissipative())
+  os << std::setprecision(6);
+  if (!m.dissipative()) {
+    os << "stable: " << (sp.stable ? "yes" : "no") << " (|Im sigma| <= " << sp.tolerance << " counts as real)\n";
     os << "margin (largest |Im sigma|): " << sp.margin << " rad/s\n";
-  else
-  {
-    os << "largest growth rate (-Im sigma): " << sp.growth << " 1/s";
-    // The time a growing motion takes to multiply by e (or the slowest decay's, when every root decays).
-    if (sp.growth > sp.tolerance) os << " (growing: e-folds in " << 1 / sp.growth << " s)";
-    else if (sp.growth < 0) os << " (the slowest decay: e-folds in " << -1 / sp.growth << " s)";
-    os << "\n";
+  } else {
+    os << verdict_with_dissipation(m, sp) << "\n";
   }
   os << "Newton on det Phi = 0 from every root: worst shift " << sp.root_agreement << " of the spectral radius";
   if (sp.newton_failed) os << ", " << sp.newton_failed << " roots where Newton did not converge";
@@ -339,9 +362,21 @@ void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp) {
     os << "companion tables: " << sp.companion_moved << " roots (marked ~) move by more than " << kCompanionTolerance
        << " (relative) when the tables are replaced by their coarser companions; the largest move "
        << sp.companion_worst << (sp.companion_moved ? ": those roots depend on the mesh (docs/trust.md)" : "") << "\n";
-  if (sp.outside_fit)
-    os << sp.outside_fit << " roots lie outside a tank's response-fit window, where its fit is extrapolated "
-       << "(docs/viscous.md, \"Response fit\")\n";
+  if (sp.outside_fit) {
+    os << "warning: " << sp.outside_fit << " roots lie outside a tank's response-fit window, where its fit is "
+       << "extrapolated (docs/viscous.md, \"Response fit\"):";
+    int shown = 0;
+    for (const Root& r : sp.roots)
+      if (r.outside_fit && shown++ < 6) os << " " << r.sigma.real() << std::showpos << r.sigma.imag() << std::noshowpos
+                                          << "i (" << r.owner << ")";
+    if (sp.outside_fit > 6) os << " and " << sp.outside_fit - 6 << " more";
+    os << "\n";
+  }
+  for (int k = 0; k < m.n; ++k)
+    if (!sp.passivity[k].passive())
+      os << "warning: body " << k + 1 << "'s response fit is NOT passive (Im R = " << sp.passivity[k].scan.min_im
+         << " max|R| at s = " << sp.passivity[k].scan.at << "): its roots may grow by the fit alone; check them "
+         << "with the fluid's own response: chain-rom confirm SCENE (docs/rom.md, \"Confirmed roots\")\n";
   os << "worst det residual of (22): " << sp.det_residual << " (" << sp.unchecked
      << " roots at sigma = 0 or a pole not checked)\n";
 }

@@ -21,7 +21,10 @@ void write_history(const ChainModel& m, const History& h, const std::filesystem:
 void write_nonlinear_history(const NonlinearHistory& h, int n, const std::filesystem::path& out);
 
 // docs/physics.md §4: {"roots": [[re, im], ...], "stable": bool, "margin": float, "det_residual": float}
-std::string spectrum_json(const Spectrum& sp);
+std::string spectrum_json(const ChainModel& m, const Spectrum& sp);
 void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp);
+// The verdict of a chain with friction or viscous tanks, two lines: stable or not, how many roots grow, the fastest
+// with its e-folding time and owner (docs/rom.md, "Verdict with dissipation").
+std::string verdict_with_dissipation(const ChainModel& m, const Spectrum& sp);
 
 }  // namespace rc::rom

@@ -17,6 +17,7 @@ Verdict verdict_from_roots(const ChainModel& m, const Eigen::VectorXcd& sigma) {
   Verdict v;
   double radius = 0;
   for (Eigen::Index j = 0; j < sigma.size(); ++j) radius = std::max(radius, std::abs(sigma[j]));
+  const double spectral_radius = radius;
   // A dissipative chain's tolerance on growth scales with its oscillating roots only: a root that decays
   // faster than it turns (Im sigma > |Re sigma|: overdamped joints, the heavily damped pseudo-modes of a
   // response-fit table at |sigma| ~ 1e4) says nothing about the accuracy of the slow near-real roots, and let
@@ -27,20 +28,34 @@ Verdict verdict_from_roots(const ChainModel& m, const Eigen::VectorXcd& sigma) {
       if (sigma[j].imag() <= std::abs(sigma[j].real())) oscillating = std::max(oscillating, std::abs(sigma[j]));
     if (oscillating > 0) radius = oscillating;
   }
-  v.tolerance = kRealTolerance * std::max(radius, 1e-300);
+  v.radius = std::max(radius, 1e-300);
+  v.tolerance = kRealTolerance * v.radius;
   v.roots = static_cast<int>(sigma.size());
-  v.growth = sigma.size() ? -std::numeric_limits<double>::infinity() : 0.0;
   for (Eigen::Index j = 0; j < sigma.size(); ++j) {
     const double im = sigma[j].imag();
     v.margin = std::max(v.margin, std::abs(im));
-    v.growth = std::max(v.growth, -im);
     if (std::abs(im) > v.tolerance) ++v.nonreal;
   }
-  // A dissipative chain's margin is its largest growth rate: negative when every root decays.
-  if (m.dissipative()) v.margin = v.growth;
-  // Without friction Kononov's necessary condition: all roots real. With friction or a viscous
-  // tank roots move into Im sigma > 0 (decay); stable then means no root with Im sigma < 0 (growth).
-  v.stable = m.dissipative() ? v.growth <= v.tolerance : v.margin <= v.tolerance;
+  if (!m.dissipative()) {
+    // Without friction Kononov's necessary condition: all roots real.
+    v.growth = sigma.size() ? -std::numeric_limits<double>::infinity() : 0.0;
+    for (Eigen::Index j = 0; j < sigma.size(); ++j) v.growth = std::max(v.growth, -sigma[j].imag());
+    v.stable = v.margin <= v.tolerance;
+    return v;
+  }
+  // With friction or a viscous tank roots move into Im sigma > 0 (decay), and stable means that none grows: the
+  // tolerance is rounding, never physical growth (Kelvin–Tait–Chetaev: a gyroscopically stabilised chain with
+  // dissipation grows, however slowly; docs/rom.md, "Verdict with dissipation").
+  v.noise = kGrowthNoise * std::max(spectral_radius, 1e-300);
+  v.growth = -std::numeric_limits<double>::infinity();
+  for (Eigen::Index j = 0; j < sigma.size(); ++j) {
+    if (std::abs(sigma[j]) <= v.tolerance) { ++v.at_zero; continue; }
+    v.growth = std::max(v.growth, -sigma[j].imag());
+    if (-sigma[j].imag() > v.noise) ++v.growing;
+  }
+  if (!std::isfinite(v.growth)) v.growth = 0;  // every root at sigma = 0
+  v.margin = v.growth;                          // a dissipative chain's margin: its largest growth rate
+  v.stable = v.growing == 0;
   return v;
 }
 
@@ -73,7 +88,7 @@ Spectrum compute_spectrum(const ChainModel& m) {
   const int n = m.n, D = f.dim();
   Spectrum sp;
   const Verdict v = verdict_from_roots(m, cd(0, -1) * es.values);
-  const double radius = v.tolerance / kRealTolerance;
+  const double radius = v.radius;
   sp.tolerance = v.tolerance;
   for (int j = 0; j < D; ++j) {
     Root r;
@@ -109,7 +124,7 @@ Spectrum compute_spectrum(const ChainModel& m) {
     if (a.sigma.real() != b.sigma.real()) return a.sigma.real() < b.sigma.real();
     return a.sigma.imag() < b.sigma.imag();
   });
-  for (const Root& r : sp.roots) {
+  for (Root& r : sp.roots) {
     if (std::isnan(r.residual)) ++sp.unchecked;
     else sp.det_residual = std::max(sp.det_residual, r.residual);
     if (!std::isnan(r.newton_shift)) sp.root_agreement = std::max(sp.root_agreement, r.newton_shift);
@@ -119,12 +134,16 @@ Spectrum compute_spectrum(const ChainModel& m) {
         const double s = ((r.sigma + b.omega) / b.omega).real();
         if (s < b.fit_lo || s > b.fit_hi) {
           ++sp.outside_fit;
+          r.outside_fit = true;
           break;
         }
       }
   }
   sp.margin = v.margin;
   sp.growth = v.growth;
+  sp.noise = v.noise;
+  sp.growing = v.growing;
+  sp.at_zero = v.at_zero;
   sp.nonreal = v.nonreal;
   sp.stable = v.stable;
   for (int k = 0; k < n; ++k) {

@@ -22,6 +22,7 @@ struct Root {
   // Newton on det Phi = 0 started here (root_newton.hpp): |sigma_Newton - sigma| / spectral radius;
   // NaN where (22) is undefined or Newton did not converge.
   double newton_shift = 0;
+  bool outside_fit = false;        // some tank's response fit is extrapolated at this root (Spectrum::outside_fit)
   bool unconverged_owner = false;  // owned by a cluster its table flags as not converged (docs/cones.md)
   // With companion tables (companion_check.hpp): the relative distance to the nearest root computed with them, and
   // whether that passes kCompanionTolerance. NaN and false without companions.
@@ -34,7 +35,9 @@ struct Spectrum {
   double tolerance = 0;        // |Im sigma| <= tolerance counts as real
   bool stable = false;         // no friction: all roots real; friction: no growing root
   double margin = 0;           // largest |Im sigma|; friction or viscous fluid: the largest growth rate
-  double growth = 0;           // largest -Im sigma (> tolerance: a growing solution; < 0: every root decays)
+  double growth = 0;           // largest -Im sigma (> noise with dissipation: a growing solution; < 0: every root decays)
+  double noise = 0;            // with dissipation: growth below it is rounding (Verdict::noise)
+  int growing = 0, at_zero = 0;  // with dissipation: roots that grow; roots at sigma = 0 within the tolerance
   double det_residual = 0;     // worst scaled residual over the roots where (22) is defined
   int unchecked = 0;           // roots at sigma = 0 or at a pole of (22)
   double root_agreement = 0;   // worst newton_shift: eigen-roots of (26) against Newton on (22)
@@ -66,10 +69,19 @@ struct Verdict {
   double margin = 0, growth = 0, tolerance = 0;
   int nonreal = 0;
   int roots = 0;
+  double radius = 0;  // the size of the oscillating roots the tolerance is relative to
+  // Friction or viscous fluid (docs/rom.md, "Verdict with dissipation"): a root grows when -Im sigma exceeds `noise`
+  // (kGrowthNoise of the spectral radius: rounding, not physics); roots within `tolerance` of sigma = 0 are neutral
+  // (a multiple zero root's rounding is of order sqrt(eps)) and take no part in `growth`.
+  double noise = 0;
+  int growing = 0, at_zero = 0;
 };
 
 // Relative tolerance on |Im sigma| (times the spectral radius) for calling a root real.
 inline constexpr double kRealTolerance = 1e-7;
+// With dissipation: growth below this times the spectral radius is rounding (the eigen-roots agree with Newton on
+// (22) to 5e-13 of it on the water chain, docs/rom.md, "Viscous tanks"); anything above it grows.
+inline constexpr double kGrowthNoise = 1e-12;
 
 Spectrum compute_spectrum(const ChainModel& m);
 Verdict compute_verdict(const ChainModel& m);
@@ -78,6 +90,6 @@ Verdict compute_verdict(const ChainModel& m);
 Eigen::VectorXcd verdict_roots(const ChainModel& m);
 Verdict verdict_from_roots(const ChainModel& m, const Eigen::VectorXcd& sigma);
 // The size of the oscillating roots the verdict's tolerance is relative to (tolerance = kRealTolerance * radius).
-inline double verdict_radius(const Verdict& v) { return v.tolerance / kRealTolerance; }
+inline double verdict_radius(const Verdict& v) { return v.radius; }
 
 }  // namespace rc::rom
