@@ -4,6 +4,7 @@
 #include "chain_model.hpp"
 #include "empty_argument.hpp"
 #include "companion_check.hpp"
+#include "confirm_command.hpp"
 #include "linear_validity.hpp"
 #include "nonlinear_run.hpp"
 #include "output.hpp"
@@ -93,6 +94,18 @@ int main(int argc, char** argv) {
   auto* spec = app.add_subcommand("spectrum", "characteristic roots sigma (e^{i sigma t}), stability verdict, margin");
   spec->add_option("SCENE", scene_file, "scene file (TOML)")->required();
   spec->add_flag("--json", json, "print {\"roots\", \"stable\", \"margin\", \"det_residual\"} as JSON");
+  rc::rom::ConfirmRequest confirm_req;
+  auto* confirm = app.add_subcommand(
+      "confirm", "the roots of spectrum checked against the viscous tanks' own response: each body root and each "
+                 "growing root iterated on (22) with R(s) by forced solves on the table's mesh (cavity-modes response "
+                 "--serve), and the verdict from them (docs/rom.md, \"Confirmed roots\")");
+  confirm->add_option("SCENE", scene_file, "scene file (TOML)")->required();
+  confirm->add_flag("--all", confirm_req.all, "every root, not only the body roots and the growing ones");
+  confirm->add_option("--tolerance", confirm_req.tolerance, "relative step at which a root counts as converged "
+                                                            "(default 1e-10)")->check(CLI::PositiveNumber);
+  confirm->add_option("--cavity-modes", confirm_req.cavity_modes, "the cavity-modes binary (default: $CAVITY_MODES, "
+                                                                  "else the one beside chain-rom's build folder)");
+  confirm->add_flag("--json", confirm_req.json, "print {\"roots\", \"stable\", \"growth\", \"unconfirmed\", ...} as JSON");
   auto* run = app.add_subcommand("run", "time histories of u_k and the fluid coordinates with the energy monitored");
   run->add_option("SCENE", scene_file, "scene file (TOML)")->required();
   run->add_option("-o,--output", out_file, "output file: HDF5, or CSV when the name ends in .csv")->required();
@@ -245,6 +258,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     const rc::rom::Scene scene = rc::rom::parse_scene(scene_file);
+    if (confirm->parsed()) return rc::rom::confirm_roots(scene, confirm_req, std::cout) > 0 ? 3 : 0;
     if (!spec->parsed() && scene.run.present && scene.run.nonlinear()) return run_nonlinear(scene, out_file);
     const rc::rom::ChainModel model = rc::rom::build_model(scene);
     if (spec->parsed()) {
@@ -252,7 +266,7 @@ int main(int argc, char** argv) {
       if (rc::rom::has_companions(scene))
         rc::rom::mark_companion_shifts(
             sp, rc::rom::compute_spectrum(rc::rom::build_model(rc::rom::with_companions(scene))));
-      if (json) std::cout << rc::rom::spectrum_json(sp) << "\n";
+      if (json) std::cout << rc::rom::spectrum_json(model, sp) << "\n";
       else rc::rom::print_spectrum(std::cout, model, sp);
     } else {
       if (!scene.run.present) throw std::runtime_error(scene_file + ": run: missing [run] section");

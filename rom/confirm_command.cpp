@@ -1,0 +1,155 @@
+#include "confirm_command.hpp"
+
+#include "chain_model.hpp"
+#include "output.hpp"
+#include "root_confirmation.hpp"
+#include "served_response.hpp"
+#include "spectrum.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+namespace rc::rom {
+namespace fs = std::filesystem;
+namespace {
+using cd = std::complex<double>;
+
+// A folder for section files written from tables, removed with it.
+struct ScratchFolder {
+  fs::path path;
+  ScratchFolder() {
+    char tmpl[] = "/tmp/chain-rom-confirm-XXXXXX";
+    if (!mkdtemp(tmpl)) throw std::runtime_error("cannot create a temporary folder");
+    path = tmpl;
+  }
+  ~ScratchFolder() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+};
+
+// One served response per viscous tank, and the TankResponse that calls it.
+struct Tanks {
+  std::vector<std::unique_ptr<ServedResponse>> served;
+  std::vector<TankResponse> responses;
+  int solves() const {
+    int n = 0;
+    for (const auto& s : served) n += s->solves();
+    return n;
+  }
+};
+
+Tanks start_tanks(const Scene& scene, const ChainModel& m, const std::string& binary, const fs::path& scratch,
+                  std::ostream& log) {
+  Tanks t;
+  for (int k = 0; k < m.n; ++k) {
+    if (m.bodies[k].ekman <= 0) continue;
+    const CavitySpec& cav = *scene.bodies[k].cavity;
+    const rc::ModeTable table = rc::read_mode_table(cav.table);
+    std::vector<std::string> args;
+    try {
+      args = serve_arguments(table, scratch);
+    } catch (const std::exception& e) {
+      throw SceneError("body[" + std::to_string(k + 1) + "].cavity.table " + cav.table.string() + ": " + e.what());
+    }
+    log << "  body " << k + 1 << ": starting " << binary;
+    for (const auto& a : args) log << " " << a;
+    log << std::endl;
+    auto& s = *t.served.emplace_back(std::make_unique<ServedResponse>(binary, args));
+    log << "    " << s.ready_line();
+    if (table.ndof > 0 && s.unknowns() > 0 && s.unknowns() != table.ndof)
+      log << " -- NOT the table's mesh (" << table.ndof << " unknowns): the table was made by another version or "
+          << "with other defaults, so the confirmation checks the fit against a different discretisation";
+    log << std::endl;
+    ServedResponse* p = &s;
+    t.responses.push_back({k, cav.density * std::pow(cav.scale, 5), [p](cd x) { return (*p)(x); }});
+  }
+  return t;
+}
+
+// The roots a verdict rests on: body roots and growing roots (all with --all); never those at sigma = 0.
+bool selected(const Root& r, const Spectrum& sp, bool all) {
+  if (std::abs(r.sigma) <= sp.tolerance) return false;
+  return all || r.owner.rfind("body", 0) == 0 || -r.sigma.imag() > sp.noise;
+}
+
+std::string complex_text(cd z) {
+  std::ostringstream os;
+  os << std::setprecision(10) << z.real() << (z.imag() < 0 ? " - " : " + ") << std::abs(z.imag()) << "i";
+  return os.str();
+}
+
+}  // namespace
+
+int confirm_roots(const Scene& scene, const ConfirmRequest& req, std::ostream& out) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const ChainModel m = build_model(scene);
+  const Spectrum sp = compute_spectrum(m);
+  std::ostream& log = req.json ? std::cerr : out;
+  if (!m.viscous) {
+    if (req.json) out << nlohmann::json{{"roots", nlohmann::json::array()}, {"unconfirmed", 0}}.dump() << "\n";
+    else out << "no viscous tank: the roots of spectrum are (22)'s own, nothing to confirm\n";
+    return 0;
+  }
+  const ScratchFolder scratch;
+  log << "the fluid's own response R(s) by forced solves (cavity-modes response ... --serve), one per viscous tank:"
+      << std::endl;
+  Tanks tanks = start_tanks(scene, m, cavity_modes_binary(req.cavity_modes), scratch.path, log);
+  ConfirmSettings settings;
+  settings.tolerance = req.tolerance;
+  Spectrum confirmed = sp;
+  nlohmann::ordered_json jroots = nlohmann::ordered_json::array();
+  int unconfirmed = 0, count = 0;
+  for (const Root& r : sp.roots) count += selected(r, sp, req.all) ? 1 : 0;
+  log << "roots of (22) with R itself, from the table's (" << count << " roots; docs/rom.md, \"Confirmed roots\"):"
+      << std::endl;
+  for (Root& r : confirmed.roots) {
+    if (!selected(r, sp, req.all)) continue;
+    const ConfirmedRoot c = confirm_root(m, tanks.responses, r.sigma, settings);
+    log << "  " << std::setw(10) << r.owner << "  " << std::setw(34) << complex_text(c.start) << "  ->  "
+        << std::setw(34) << complex_text(c.sigma) << std::setprecision(2) << "  moved " << c.moved() << ", "
+        << c.evaluations << " evaluations" << (c.converged ? "" : "  NOT CONFIRMED: " + c.failure) << std::endl;
+    jroots.push_back({{"owner", r.owner}, {"table", {c.start.real(), c.start.imag()}},
+                      {"confirmed", {c.sigma.real(), c.sigma.imag()}}, {"converged", c.converged},
+                      {"moved", c.moved()}, {"evaluations", c.evaluations}});
+    if (c.converged) r.sigma = c.sigma;
+    else ++unconfirmed;
+  }
+  // The verdict again, from the confirmed roots (the others as the table gives them).
+  Eigen::VectorXcd sigma(static_cast<Eigen::Index>(confirmed.roots.size()));
+  for (std::size_t j = 0; j < confirmed.roots.size(); ++j) sigma[static_cast<Eigen::Index>(j)] = confirmed.roots[j].sigma;
+  const Verdict v = verdict_from_roots(m, sigma);
+  confirmed.stable = v.stable;
+  confirmed.growth = v.growth;
+  confirmed.margin = v.margin;
+  confirmed.growing = v.growing;
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (req.json) {
+    nlohmann::ordered_json j;
+    j["roots"] = jroots;
+    j["stable"] = v.stable;
+    j["growth"] = v.growth;
+    j["growing"] = v.growing;
+    j["unconfirmed"] = unconfirmed;
+    j["forced_solves"] = tanks.solves();
+    j["seconds"] = seconds;
+    out << j.dump() << "\n";
+    return unconfirmed;
+  }
+  out << std::setprecision(6) << "with the confirmed roots: " << verdict_with_dissipation(m, confirmed) << "\n";
+  if (unconfirmed)
+    out << "warning: " << unconfirmed << " roots NOT CONFIRMED (marked above): the verdict takes the table's value "
+        << "for them\n";
+  out << tanks.solves() << " forced solves, " << std::setprecision(3) << seconds << " s\n";
+  return unconfirmed;
+}
+
+}  // namespace rc::rom

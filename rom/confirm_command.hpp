@@ -1,0 +1,26 @@
+// `chain-rom confirm SCENE`: the chain's roots checked against the viscous tanks' own response. Each root that a
+// verdict rests on (every body root and every growing root; --all: every root) is taken as the start of the
+// iteration of root_confirmation.hpp with R(s) from forced solves on each table's own mesh (served_response.hpp),
+// and the verdict is given again from the confirmed roots (docs/rom.md, "Confirmed roots").
+#pragma once
+
+#include "scene.hpp"
+
+#include <ostream>
+#include <string>
+
+namespace rc::rom {
+
+struct ConfirmRequest {
+  std::string cavity_modes;  // the binary; empty: cavity_modes_binary's search
+  bool all = false;          // every root, not only the body roots and the growing ones
+  double tolerance = 1e-10;  // relative step at which a root counts as converged
+  bool json = false;
+};
+
+// Prints the tanks' forced-solve meshes, one line per root as it is confirmed, and the verdict from the confirmed
+// roots. Returns the number of roots that could not be confirmed. Throws std::runtime_error / SceneError on a bad
+// scene or a cavity-modes that cannot start.
+int confirm_roots(const Scene& scene, const ConfirmRequest& request, std::ostream& os);
+
+}  // namespace rc::rom

@@ -1,0 +1,97 @@
+#include "root_confirmation.hpp"
+
+#include "characteristic.hpp"
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace rc::rom {
+namespace {
+using cd = std::complex<double>;
+
+// The model without the listed bodies' modes and static-correction remainders: what (22) keeps of the chain when
+// those tanks' fluid is given by R instead.
+ChainModel without_tank_modes(const ChainModel& m, const std::vector<TankResponse>& tanks) {
+  ChainModel out = m;
+  const auto listed = [&](int body) {
+    return std::any_of(tanks.begin(), tanks.end(), [&](const TankResponse& t) { return t.body == body; });
+  };
+  out.modes.erase(std::remove_if(out.modes.begin(), out.modes.end(), [&](const FluidMode& f) { return listed(f.body); }),
+                  out.modes.end());
+  for (const TankResponse& t : tanks) out.bodies[t.body].E_rem = out.bodies[t.body].E_rem_imag = 0;
+  return out;
+}
+
+// Phi_true(sigma) = Phi of the stripped model − diag(rho L^5 s R(s)) (Kononov (22); chain_model.cpp's mirror at
+// negative spin: lambda_c -> -conj(lambda_c), E_c -> conj(E_c), i.e. R(s) -> conj(R(conj(s))).
+Eigen::MatrixXcd phi_true(const ChainModel& stripped, const std::vector<TankResponse>& tanks, cd sigma) {
+  Eigen::MatrixXcd Phi = characteristic_matrix(stripped, sigma);
+  for (const TankResponse& t : tanks) {
+    const double w = stripped.bodies[t.body].omega;
+    const cd s = (sigma + w) / w;
+    const cd R = w > 0 ? t.R(s) : std::conj(t.R(std::conj(s)));
+    Phi(t.body, t.body) -= t.rho_L5 * s * R;
+  }
+  return Phi;
+}
+
+// log det by LU (complex log: only exp of differences is used, so the branch does not matter); -inf when singular.
+cd log_det(const Eigen::MatrixXcd& A) {
+  const Eigen::PartialPivLU<Eigen::MatrixXcd> lu(A);
+  cd sum = 0;
+  for (Eigen::Index i = 0; i < A.rows(); ++i) {
+    const cd u = lu.matrixLU()(i, i);
+    if (u == cd(0)) return {-std::numeric_limits<double>::infinity(), 0};
+    sum += std::log(u);
+  }
+  return sum;  // the permutation's sign drops out of every ratio below (same size, a sign at most)
+}
+
+bool finite(cd z) { return std::isfinite(z.real()) && std::isfinite(z.imag()); }
+}  // namespace
+
+Eigen::MatrixXcd characteristic_matrix_with(const ChainModel& m, const std::vector<TankResponse>& tanks, cd sigma) {
+  return phi_true(without_tank_modes(m, tanks), tanks, sigma);
+}
+
+ConfirmedRoot confirm_root(const ChainModel& m, const std::vector<TankResponse>& tanks, cd start,
+                           const ConfirmSettings& settings) {
+  const ChainModel stripped = without_tank_modes(m, tanks);
+  ConfirmedRoot r;
+  r.start = r.sigma = start;
+  const auto done = [&](cd step) { return std::abs(step) <= settings.tolerance * std::abs(r.sigma); };
+  // Step 1: Newton with the table's dPhi/dsigma (f'/f = tr(Phi^-1 Phi'), root_newton.hpp) at Phi_true's value.
+  Eigen::MatrixXcd Phi0 = phi_true(stripped, tanks, start);
+  ++r.evaluations;
+  const Eigen::PartialPivLU<Eigen::MatrixXcd> lu0(Phi0);
+  if ((lu0.matrixLU().diagonal().array() == cd(0)).any()) { r.converged = true; return r; }
+  const cd trace = lu0.solve(characteristic_derivative(m, start)).trace();
+  if (!finite(trace) || trace == cd(0)) { r.failure = "no Newton step from the table's root"; return r; }
+  cd x0 = start, x1 = start - 1.0 / trace;
+  cd l0 = log_det(Phi0);
+  // Then secant steps on det Phi_true: x2 = x1 - (x1 - x0) / (1 - det0/det1).
+  for (int k = 0; k < settings.max_steps; ++k) {
+    r.sigma = x1;
+    if (!finite(x1) || std::abs(x1 - start) > 0.5 * std::abs(start) + 1.0) {
+      r.failure = "the iteration left the root's neighbourhood";
+      return r;
+    }
+    if (done(x1 - x0)) { r.converged = true; return r; }
+    const cd l1 = log_det(phi_true(stripped, tanks, x1));
+    ++r.evaluations;
+    if (std::isinf(l1.real()) && l1.real() < 0) { r.converged = true; return r; }  // exactly singular: on the root
+    const cd ratio = std::exp(l0 - l1);
+    if (!finite(ratio) || ratio == cd(1)) { r.failure = "the secant step is undefined"; return r; }
+    const cd x2 = x1 - (x1 - x0) / (1.0 - ratio);
+    x0 = x1;
+    l0 = l1;
+    x1 = x2;
+  }
+  r.sigma = x1;
+  r.failure = "no convergence in " + std::to_string(settings.max_steps) + " steps";
+  return r;
+}
+
+}  // namespace rc::rom

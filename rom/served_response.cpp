@@ -1,0 +1,237 @@
+#include "served_response.hpp"
+
+#include <array>
+#include <cerrno>
+#include <cmath>
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
+#include <fcntl.h>
+#include <fstream>
+#include <regex>
+#include <spawn.h>
+#include <stdexcept>
+#include <sys/wait.h>
+#include <unistd.h>
+
+extern char** environ;
+
+namespace rc::rom {
+namespace fs = std::filesystem;
+namespace {
+
+// The words of a command line as table_provenance.cpp's quoted_command_line writes it: blanks separate words,
+// single quotes quote (a quote inside is written '\'').
+std::vector<std::string> shell_words(const std::string& line) {
+  std::vector<std::string> words;
+  std::string w;
+  bool in_word = false, quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted) {
+      if (c == '\'') quoted = false;
+      else w += c;
+    } else if (c == '\'') {
+      quoted = in_word = true;
+    } else if (c == '\\' && i + 1 < line.size()) {
+      w += line[++i];
+      in_word = true;
+    } else if (c == ' ' || c == '\t' || c == '\n') {
+      if (in_word) words.push_back(w);
+      w.clear();
+      in_word = false;
+    } else {
+      w += c;
+      in_word = true;
+    }
+  }
+  if (quoted) throw std::runtime_error("its recorded command line has an unclosed quote");
+  if (in_word) words.push_back(w);
+  return words;
+}
+
+bool is_shape(const std::string& w) {
+  for (const char* k : {"sphere", "spheroid", "cylinder", "cone", "section"})
+    if (w == k) return true;
+  return false;
+}
+
+// cavity-modes' options that take no value (main.cpp): skipped with nothing after them.
+bool is_flag(const std::string& name) {
+  for (const char* f : {"--fields", "--fill-gaps", "--no-convergence-check", "--galerkin", "--serve", "--json", "-h",
+                        "--help"})
+    if (name == f) return true;
+  return false;
+}
+
+// What the served forced solves need: the shape's dimensions and the viscous mesh.
+bool is_kept(const std::string& name) {
+  for (const char* k : {"--radius", "--height", "--a", "--c", "--order", "--mesh-size", "--radial-size", "--wall-size"})
+    if (name == k) return true;
+  return false;
+}
+
+fs::path section_file(const rc::ModeTable& t, const std::string& recorded, const fs::path& scratch) {
+  const bool text = !t.geometry_text.empty() && t.geometry_text.rfind("(binary file", 0) != 0;
+  if (!text) {
+    if (fs::exists(recorded)) return recorded;
+    throw std::runtime_error("its section file " + recorded + " is not stored in it and not found");
+  }
+  const fs::path file = scratch / ("section" + fs::path(recorded).extension().string());
+  std::ofstream(file, std::ios::binary) << t.geometry_text;
+  return file;
+}
+}  // namespace
+
+std::vector<std::string> serve_arguments(const rc::ModeTable& t, const fs::path& scratch) {
+  if (!t.viscous()) throw std::runtime_error("it is an ideal-fluid table (its roots need no confirmation)");
+  if (t.command_line.empty()) throw std::runtime_error("it records no command line (made before provenance)");
+  const std::vector<std::string> w = shell_words(t.command_line);
+  std::size_t i = 1;
+  if (i < w.size() && w[i] == "response") ++i;
+  if (i >= w.size() || !is_shape(w[i]))
+    throw std::runtime_error("its recorded command line names no shape: " + t.command_line);
+  std::vector<std::string> args{"response", w[i]};
+  const bool section = w[i] == "section";
+  bool have_file = false;
+  for (++i; i < w.size(); ++i) {
+    std::string name = w[i], value;
+    const bool option = name.size() > 1 && name[0] == '-';
+    if (!option) {  // a positional word: the section's file
+      if (section && !have_file) {
+        args.push_back(section_file(t, name, scratch).string());
+        have_file = true;
+      }
+      continue;
+    }
+    const auto eq = name.find('=');
+    const bool inline_value = eq != std::string::npos;
+    if (inline_value) {
+      value = name.substr(eq + 1);
+      name = name.substr(0, eq);
+    }
+    if (is_flag(name)) continue;
+    if (!inline_value && i + 1 < w.size()) value = w[++i];
+    if (is_kept(name)) {
+      args.push_back(name);
+      args.push_back(value);
+    }
+  }
+  if (section && !have_file) throw std::runtime_error("its recorded command line names no section file");
+  char ek[40];
+  std::snprintf(ek, sizeof ek, "%.17g", t.ekman);
+  args.insert(args.end(), {"--ekman", ek, "--serve"});
+  return args;
+}
+
+std::string cavity_modes_binary(const std::string& given) {
+  if (!given.empty()) return given;
+  if (const char* env = std::getenv("CAVITY_MODES"); env && *env) return env;
+  std::error_code ec;
+  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    const fs::path sibling = self.parent_path().parent_path() / "modes" / "cavity-modes";
+    if (fs::exists(sibling)) return sibling.string();
+  }
+  return "cavity-modes";
+}
+
+ServedResponse::ServedResponse(const std::string& binary, const std::vector<std::string>& args) {
+  std::signal(SIGPIPE, SIG_IGN);  // a child that died is reported by the failed write, not by a signal
+  std::array<int, 2> in{}, out{};  // in: chain-rom -> child's stdin; out: child's stdout -> chain-rom
+  if (pipe(in.data()) != 0 || pipe(out.data()) != 0) throw std::runtime_error("cannot create a pipe");
+  char tmpl[] = "/tmp/chain-rom-served-XXXXXX";
+  const int err = mkstemp(tmpl);
+  if (err < 0) throw std::runtime_error("cannot create a temporary file for cavity-modes' messages");
+  stderr_file_ = tmpl;
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawn_file_actions_adddup2(&fa, in[0], 0);
+  posix_spawn_file_actions_adddup2(&fa, out[1], 1);
+  posix_spawn_file_actions_adddup2(&fa, err, 2);
+  for (int fd : {in[0], in[1], out[0], out[1], err}) posix_spawn_file_actions_addclose(&fa, fd);
+  std::vector<std::string> all{binary};
+  all.insert(all.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (auto& a : all) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  const int rc = posix_spawnp(&pid_, binary.c_str(), &fa, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&fa);
+  close(in[0]);
+  close(out[1]);
+  close(err);
+  if (rc != 0) {
+    close(in[1]);
+    close(out[0]);
+    pid_ = -1;
+    throw std::runtime_error("cannot start " + binary + ": " + std::strerror(rc) +
+                             " (give its path with --cavity-modes, or build it: scripts/build.sh)");
+  }
+  to_child_ = fdopen(in[1], "w");
+  from_child_ = fdopen(out[0], "r");
+  std::string first = read_line();
+  while (!first.empty() && first.rfind("ready: ", 0) != 0) first = read_line();  // anything printed before it
+  if (first.rfind("ready: ", 0) != 0) {
+    const std::string why = child_error();
+    shut();
+    throw std::runtime_error("cavity-modes did not start: " + why);
+  }
+  ready_ = first.substr(7);
+}
+
+ServedResponse::~ServedResponse() { shut(); }
+
+void ServedResponse::shut() {
+  if (to_child_) std::fclose(to_child_);  // end of input: the child leaves its loop and exits
+  if (from_child_) std::fclose(from_child_);
+  to_child_ = from_child_ = nullptr;
+  if (pid_ > 0) {
+    int status = 0;
+    waitpid(pid_, &status, 0);
+  }
+  pid_ = -1;
+  std::error_code ec;
+  if (!stderr_file_.empty()) fs::remove(stderr_file_, ec);
+  stderr_file_.clear();
+}
+
+std::string ServedResponse::read_line() {
+  std::string line;
+  char buf[512];
+  while (from_child_ && std::fgets(buf, sizeof buf, from_child_)) {
+    line += buf;
+    if (!line.empty() && line.back() == '\n') {
+      line.pop_back();
+      return line;
+    }
+  }
+  return line;  // end of output: the child has exited
+}
+
+std::string ServedResponse::child_error() const {
+  std::ifstream in(stderr_file_);
+  std::string line, last;
+  while (std::getline(in, line))
+    if (!line.empty()) last = line;
+  return last.empty() ? "it exited without a message" : last;
+}
+
+long ServedResponse::unknowns() const {
+  std::smatch m;
+  static const std::regex re("\\((\\d+) real unknowns\\)");
+  return std::regex_search(ready_, m, re) ? std::stol(m[1]) : 0;
+}
+
+std::complex<double> ServedResponse::operator()(std::complex<double> s) {
+  if (std::fprintf(to_child_, "%.17g%+.17gi\n", s.real(), s.imag()) < 0 || std::fflush(to_child_) != 0)
+    throw std::runtime_error("cavity-modes stopped answering: " + child_error());
+  const std::string line = read_line();
+  if (line.rfind("error: ", 0) == 0) throw std::runtime_error("cavity-modes: " + line.substr(7));
+  double re = 0, im = 0;
+  if (std::sscanf(line.c_str(), "%lf %lf", &re, &im) != 2)
+    throw std::runtime_error("cavity-modes stopped answering: " + child_error());
+  ++solves_;
+  return {re, im};
+}
+
+}  // namespace rc::rom
