@@ -3,8 +3,8 @@
 #include "chain_model.hpp"
 #include "output.hpp"
 #include "root_confirmation.hpp"
-#include "served_response.hpp"
 #include "spectrum.hpp"
+#include "tank_responses.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -21,59 +21,6 @@ namespace rc::rom {
 namespace fs = std::filesystem;
 namespace {
 using cd = std::complex<double>;
-
-// A folder for section files written from tables, removed with it.
-struct ScratchFolder {
-  fs::path path;
-  ScratchFolder() {
-    char tmpl[] = "/tmp/chain-rom-confirm-XXXXXX";
-    if (!mkdtemp(tmpl)) throw std::runtime_error("cannot create a temporary folder");
-    path = tmpl;
-  }
-  ~ScratchFolder() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-};
-
-// One served response per viscous tank, and the TankResponse that calls it.
-struct Tanks {
-  std::vector<std::unique_ptr<ServedResponse>> served;
-  std::vector<TankResponse> responses;
-  int solves() const {
-    int n = 0;
-    for (const auto& s : served) n += s->solves();
-    return n;
-  }
-};
-
-Tanks start_tanks(const Scene& scene, const ChainModel& m, const std::string& binary, const fs::path& scratch,
-                  std::ostream& log) {
-  Tanks t;
-  for (int k = 0; k < m.n; ++k) {
-    if (m.bodies[k].ekman <= 0) continue;
-    const CavitySpec& cav = *scene.bodies[k].cavity;
-    const rc::ModeTable table = rc::read_mode_table(cav.table);
-    std::vector<std::string> args;
-    try {
-      args = serve_arguments(table, scratch);
-    } catch (const std::exception& e) {
-      throw SceneError("body[" + std::to_string(k + 1) + "].cavity.table " + cav.table.string() + ": " + e.what());
-    }
-    log << "  body " << k + 1 << ": starting " << binary;
-    for (const auto& a : args) log << " " << a;
-    log << std::endl;
-    auto& s = *t.served.emplace_back(std::make_unique<ServedResponse>(binary, args));
-    log << "    " << s.ready_line();
-    if (table.ndof > 0 && s.unknowns() > 0 && s.unknowns() != table.ndof)
-      log << " -- NOT the table's mesh (" << table.ndof << " unknowns): the table was made by another version or "
-          << "with other defaults, so the confirmation checks the fit against a different discretisation";
-    log << std::endl;
-    ServedResponse* p = &s;
-    t.responses.push_back({k, cav.density * std::pow(cav.scale, 5), [p](cd x) { return (*p)(x); }});
-  }
-  return t;
-}
 
 // The roots a verdict rests on: body roots and growing roots (all with --all); never those at sigma = 0.
 bool selected(const Root& r, const Spectrum& sp, bool all) {
@@ -102,7 +49,7 @@ int confirm_roots(const Scene& scene, const ConfirmRequest& req, std::ostream& o
   const ScratchFolder scratch;
   log << "the fluid's own response R(s) by forced solves (cavity-modes response ... --serve), one per viscous tank:"
       << std::endl;
-  Tanks tanks = start_tanks(scene, m, cavity_modes_binary(req.cavity_modes), scratch.path, log);
+  TankResponses tanks = serve_tanks(scene, m, cavity_modes_binary(req.cavity_modes), scratch.path, log);
   ConfirmSettings settings;
   settings.tolerance = req.tolerance;
   Spectrum confirmed = sp;

@@ -5,6 +5,8 @@
 #include "empty_argument.hpp"
 #include "companion_check.hpp"
 #include "confirm_command.hpp"
+#include "confirmed_sweep.hpp"
+#include "served_response.hpp"
 #include "linear_validity.hpp"
 #include "nonlinear_run.hpp"
 #include "output.hpp"
@@ -129,6 +131,10 @@ int main(int argc, char** argv) {
   sweep->add_option("-o,--output", out_file, "CSV: <key>[,<key2>],stable,margin,nonreal, one row per point")->required();
   sweep->add_option("--png", png_file, "also draw the map (scripts/plot_sweep.py with /usr/bin/python3 + matplotlib)");
   sweep->add_option("--threads", threads, "worker threads (default: all cores)");
+  std::string sweep_cavity_modes;
+  sweep->add_option("--cavity-modes", sweep_cavity_modes, "a key that moves a viscous tank's Ekman number (spin, "
+                    "spin_factor, cavity scale): the cavity-modes binary that serves its forced solves (default: "
+                    "$CAVITY_MODES, else the one beside chain-rom's build folder)");
   bool no_track = false;
   sweep->add_flag("--no-track", no_track, "every point's roots by the eigen-solver (default: tracked from the "
                                           "neighbouring point's, checked, the eigen-solver where the check fails)");
@@ -179,6 +185,10 @@ int main(int argc, char** argv) {
       const std::filesystem::path out(out_file);
       if (out.has_parent_path() && !std::filesystem::is_directory(out.parent_path()))
         throw std::runtime_error(out_file + ": the output folder does not exist");
+      const bool confirmed = moves_viscous_ekman(scene, a1.key) || (a2 && moves_viscous_ekman(scene, a2->key));
+      if (confirmed && a2)
+        throw SweepError("a key that moves a viscous tank's Ekman number sweeps one value at a time (no --param2): "
+                         "each point serves forced solves at its own Ek");
       const std::string script = RC_PLOT_SWEEP_SCRIPT, python = plot_python();
       if (!png_file.empty()) {  // fail before the sweep, not after it
         if (!std::filesystem::exists(script))
@@ -186,6 +196,26 @@ int main(int argc, char** argv) {
         if (run_program({python, "-c", "import matplotlib, numpy"}, true) != 0)
           throw std::runtime_error("--png: " + python + " with matplotlib and numpy is needed to draw the map "
                                    "(apt-get install python3-matplotlib); nothing written");
+      }
+      if (confirmed) {
+        const auto points = run_confirmed_sweep(scene, a1, cavity_modes_binary(sweep_cavity_modes), 1e-10, std::cerr);
+        write_confirmed_sweep(points, a1, out);
+        int stable = 0, failed = 0;
+        for (const auto& p : points) {
+          stable += p.ok && p.stable ? 1 : 0;
+          failed += p.ok ? 0 : 1;
+        }
+        std::printf("wrote %s and its roots beside it: %zu points (%d stable, %d unstable, %d failed), roots of (22) "
+                    "with the fluid's own response\n", out_file.c_str(), points.size(), stable,
+                    static_cast<int>(points.size()) - stable - failed, failed);
+        if (!png_file.empty()) {
+          const int rc = run_program({python, script, out_file, "-o", png_file, "--growth"});
+          if (rc != 0)
+            throw std::runtime_error("--png: " + script + " failed (exit " + std::to_string(rc) + "); the CSV " +
+                                     out_file + " was written, no PNG");
+          std::printf("wrote %s\n", png_file.c_str());
+        }
+        return 0;
       }
       TableCache tables;
       // Validates the scene as given and reads its tables once; a dissipative chain's margin is a growth rate.

@@ -66,7 +66,8 @@ bool is_flag(const std::string& name) {
 
 // What the served forced solves need: the shape's dimensions and the viscous mesh.
 bool is_kept(const std::string& name) {
-  for (const char* k : {"--radius", "--height", "--a", "--c", "--order", "--mesh-size", "--radial-size", "--wall-size"})
+  for (const char* k : {"--radius", "--height", "--a", "--c", "--order", "--mesh-size", "--radial-size", "--wall-size",
+                        "--mesh-ekman"})
     if (name == k) return true;
   return false;
 }
@@ -83,7 +84,8 @@ fs::path section_file(const rc::ModeTable& t, const std::string& recorded, const
 }
 }  // namespace
 
-std::vector<std::string> serve_arguments(const rc::ModeTable& t, const fs::path& scratch) {
+std::vector<std::string> serve_arguments(const rc::ModeTable& t, const fs::path& scratch, double ekman,
+                                         double mesh_ekman) {
   if (!t.viscous()) throw std::runtime_error("it is an ideal-fluid table (its roots need no confirmation)");
   if (t.command_line.empty()) throw std::runtime_error("it records no command line (made before provenance)");
   const std::vector<std::string> w = shell_words(t.command_line);
@@ -112,15 +114,21 @@ std::vector<std::string> serve_arguments(const rc::ModeTable& t, const fs::path&
     }
     if (is_flag(name)) continue;
     if (!inline_value && i + 1 < w.size()) value = w[++i];
-    if (is_kept(name)) {
+    if (is_kept(name) && !(name == "--mesh-ekman" && mesh_ekman > 0)) {
       args.push_back(name);
       args.push_back(value);
     }
   }
   if (section && !have_file) throw std::runtime_error("its recorded command line names no section file");
   char ek[40];
-  std::snprintf(ek, sizeof ek, "%.17g", t.ekman);
-  args.insert(args.end(), {"--ekman", ek, "--serve"});
+  std::snprintf(ek, sizeof ek, "%.17g", ekman > 0 ? ekman : t.ekman);
+  args.insert(args.end(), {"--ekman", ek});
+  if (mesh_ekman > 0) {
+    char mek[40];
+    std::snprintf(mek, sizeof mek, "%.17g", mesh_ekman);
+    args.insert(args.end(), {"--mesh-ekman", mek});
+  }
+  args.push_back("--serve");
   return args;
 }
 

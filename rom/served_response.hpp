@@ -18,9 +18,13 @@ namespace rc::rom {
 
 // The arguments after the program's name of `cavity-modes response ... --serve` for a viscous table: the shape and
 // its dimensions, --order, --mesh-size, --radial-size, --wall-size from the table's command line, --ekman from the
-// table. A section's file is written from the table's stored text into `scratch` (a folder that must exist).
-// Throws std::runtime_error with one line when the table is not viscous or its command line cannot be read back.
-std::vector<std::string> serve_arguments(const rc::ModeTable& table, const std::filesystem::path& scratch);
+// table (or `ekman` when positive: the same cavity and mesh at another Ekman number, for sweeps over spin). A
+// section's file is written from the table's stored text into `scratch` (a folder that must exist). Throws
+// std::runtime_error with one line when the table is not viscous or its command line cannot be read back.
+// `mesh_ekman` (when positive) makes the mesh as for that Ekman number (cavity-modes --mesh-ekman): one mesh for
+// every point of a sweep over spin, its wall layers those of the sweep's smallest Ek.
+std::vector<std::string> serve_arguments(const rc::ModeTable& table, const std::filesystem::path& scratch,
+                                         double ekman = 0, double mesh_ekman = 0);
 
 // The cavity-modes binary: `given` if not empty, else $CAVITY_MODES, else ../modes/cavity-modes beside this
 // executable (the build tree), else "cavity-modes" (searched on PATH).

@@ -41,6 +41,7 @@ using rc::modes::TableRequest;
 struct ViscousOptions {
   double ekman = 0;
   double wall_size = 0;
+  double mesh_ekman = 0;   // the mesh as for this Ekman number (0: --ekman's); chain-rom's sweeps over spin
   std::string sigma;       // FROM:TO:N (real parts) or a list of complex numbers
   double sigma_imag = 0;   // imaginary part of every σ
   double max_fit_error = 1e-6;  // response to FILE.h5: the largest fit error accepted
@@ -88,6 +89,9 @@ void add_viscous_options(CLI::App* cmd, ViscousOptions& viscous) {
                   "continuing the ideal ones, on a wall-graded Taylor-Hood mesh (docs/viscous.md); --order and "
                   "--mesh-size then set that mesh (order 6 and d/8 unless given)");
   cmd->add_option("--wall-size", viscous.wall_size, "with --ekman: element size at the wall (default Ek^(1/2))");
+  cmd->add_option("--mesh-ekman", viscous.mesh_ekman,
+                  "with --ekman: make the wall-layer mesh as for this Ekman number, at most --ekman (default --ekman): "
+                  "one mesh for several Ekman numbers (chain-rom's sweeps over spin)");
 }
 
 // The cluster search and selection of a table (docs/modes.md).
@@ -183,7 +187,13 @@ rc::modes::ViscousTableSettings viscous_request(const ViscousOptions& v, TableRe
   s.mesh.wall_size = v.wall_size;
   s.convergence_tolerance = req.convergence_tolerance;
   s.check_convergence = req.check_convergence;
-  s.mesh = rc::modes::viscous_mesh_defaults(req.shape, v.ekman, s.mesh);
+  if (v.mesh_ekman > 0) {
+    rc::modes::viscous_mesh_defaults(req.shape, v.ekman, s.mesh);  // --ekman's own range check
+    if (!(v.mesh_ekman <= v.ekman))
+      throw std::runtime_error("--mesh-ekman must be at most --ekman (a mesh made for thicker layers does not resolve "
+                               "the flow's)");
+  }
+  s.mesh = rc::modes::viscous_mesh_defaults(req.shape, v.mesh_ekman > 0 ? v.mesh_ekman : v.ekman, s.mesh);
   req.mesh = {};
   req.mesh.order = 0;
   req.check_convergence = false;
@@ -332,6 +342,7 @@ int run(int argc, char** argv) {
   rc::modes::ViscousTableSettings viscous_settings;
   if (is_viscous) viscous_settings = viscous_request(viscous, req);
   else if (table_command->count("--wall-size") > 0) throw std::runtime_error("--wall-size applies with --ekman only");
+  else if (table_command->count("--mesh-ekman") > 0) throw std::runtime_error("--mesh-ekman applies with --ekman only");
   choose_method(*table_command, method, fields, req);
 
   int petsc_argc = static_cast<int>(args.petsc.size());

@@ -57,4 +57,25 @@ assert worst < 1e-9, "a confirmed root does not satisfy (22) with R itself"
 assert moved > 1e-6, "the coarse fit's roots should move: the check would pass by standing still"
 text_out = subprocess.run([rom, "confirm", "scene.toml", "--cavity-modes", modes], capture_output=True, text=True).stdout
 assert re.search(r"with the confirmed roots: stable: (no -- unstable .*: .* at|yes)", text_out), text_out
+
+# A sweep over spin: each point's roots by (22) with R served at its own Ek, on one mesh (the smallest Ek's, here
+# the table's at 3000 rad/s): the first point's roots must be confirm's.
+sw = subprocess.run([rom, "sweep", "scene.toml", "--param", "body[1].spin", "--from", "3000", "--to", "2000", "--steps",
+                     "3", "-o", "spin.csv", "--cavity-modes", modes], capture_output=True, text=True)
+print(sw.stderr)
+assert sw.returncode == 0, sw.stdout + sw.stderr
+rows = [l.strip().split(",") for l in open("spin.csv")][1:]
+assert [float(r[0]) for r in rows] == [3000, 2500, 2000], rows
+growth = [float(r[2]) for r in rows]
+assert all(g > 0 for g in growth) and growth[0] > growth[1] > growth[2], growth
+cells = [l.strip().split(",") for l in open("spin.roots.csv")]
+first = sorted((complex(float(r[2]), float(r[3])) for r in cells if r[0] == "3000"), key=lambda z: (z.real, z.imag))
+ref = sorted((complex(*r["confirmed"]) for r in res["roots"]), key=lambda z: (z.real, z.imag))
+d = max(abs(a - b) / abs(b) for a, b in zip(first, ref))
+print("sweep over spin: growth %s 1/s; its 3000 rad/s roots are confirm's to %.1e" % (growth, d))
+assert len(first) == len(ref) and d < 1e-9, (first, ref)
+two = subprocess.run([rom, "sweep", "scene.toml", "--param", "body[1].spin", "--from", "3000", "--to", "2000", "--steps",
+                      "2", "--param2", "system.gravity", "--from2", "0", "--to2", "9.81", "--steps2", "2", "-o", "x.csv"],
+                     capture_output=True, text=True)
+assert two.returncode == 1 and "one value at a time" in two.stderr and not os.path.exists("x.csv"), two.stderr
 print("ok")

@@ -1,0 +1,187 @@
+#include "confirmed_sweep.hpp"
+
+#include "chain_model.hpp"
+#include "root_confirmation.hpp"
+#include "spectrum.hpp"
+#include "tank_responses.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace rc::rom {
+namespace {
+using cd = std::complex<double>;
+
+bool viscous_cavity(const BodySpec& b) { return b.cavity && b.cavity->viscosity; }
+
+// The scene with each viscous tank's viscosity set so that its table's Ek holds at this point's spin and scale:
+// the table's modes scaled to this point, which give the starting roots (the fluid there is the served one).
+Scene at_table_ekman(Scene s, TableCache& tables) {
+  for (BodySpec& b : s.bodies)
+    if (viscous_cavity(b) && b.spin != 0)
+      b.cavity->viscosity = tables.get(b.cavity->table).ekman * std::abs(b.spin) * b.cavity->scale * b.cavity->scale;
+  return s;
+}
+
+bool near_any(cd z, const std::vector<FollowedRoot>& roots, double rel) {
+  for (const FollowedRoot& r : roots)
+    if (std::abs(r.sigma - z) <= rel * std::abs(z)) return true;
+  return false;
+}
+
+// The starts of a point: the followed roots (linearly extrapolated from the two points before), then the table's
+// body and growing roots that none of them is near.
+std::vector<FollowedRoot> starts_of(const Spectrum& sp, const std::vector<ConfirmedSweepPoint>& done) {
+  std::vector<FollowedRoot> starts;
+  if (!done.empty() && done.back().ok) {
+    const ConfirmedSweepPoint& last = done.back();
+    const ConfirmedSweepPoint* before = done.size() > 1 && done[done.size() - 2].ok ? &done[done.size() - 2] : nullptr;
+    for (std::size_t j = 0; j < last.roots.size(); ++j) {
+      if (!last.roots[j].converged) continue;
+      FollowedRoot r = last.roots[j];
+      // Predict along the sweep when the point before followed the same root (same index, same owner).
+      if (before && j < before->roots.size() && before->roots[j].owner == r.owner && before->roots[j].converged)
+        r.sigma = 2.0 * r.sigma - before->roots[j].sigma;
+      starts.push_back(r);
+    }
+  }
+  for (const Root& r : sp.roots) {
+    if (std::abs(r.sigma) <= sp.tolerance) continue;
+    const bool wanted = r.owner.rfind("body", 0) == 0 || -r.sigma.imag() > sp.noise;
+    if (wanted && !near_any(r.sigma, starts, 1e-2)) starts.push_back({r.owner, r.sigma, false});
+  }
+  return starts;
+}
+
+// Per body: the smallest Ek of its viscous tank over the sweep (0 for the others): the one mesh of every point.
+std::vector<double> sweep_mesh_ekman(const Scene& base, const SweepAxis& axis) {
+  std::vector<double> least(base.bodies.size(), 0.0);
+  for (int i = 0; i < axis.steps; ++i) {
+    Scene s = base;
+    set_param(s, axis.key, axis.value(i));
+    for (std::size_t b = 0; b < s.bodies.size(); ++b) {
+      const BodySpec& body = s.bodies[b];
+      if (!viscous_cavity(body) || body.spin == 0) continue;
+      const double ek = *body.cavity->viscosity / (std::abs(body.spin) * body.cavity->scale * body.cavity->scale);
+      least[b] = least[b] == 0 ? ek : std::min(least[b], ek);
+    }
+  }
+  return least;
+}
+
+ConfirmedSweepPoint evaluate(const Scene& s, double value, TableCache& tables, const std::vector<ConfirmedSweepPoint>& done,
+                             const std::string& binary, const ConfirmSettings& settings,
+                             const std::vector<double>& mesh_ekman, std::ostream& log) {
+  const auto t0 = std::chrono::steady_clock::now();
+  ConfirmedSweepPoint p;
+  p.value = value;
+  const ChainModel m = build_model(at_table_ekman(s, tables), &tables);
+  const Spectrum sp = compute_spectrum(m);
+  const ScratchFolder scratch;
+  std::ostringstream served;  // the served meshes are said once, at the first point
+  TankResponses tanks = serve_tanks(s, m, binary, scratch.path, done.empty() ? log : served, mesh_ekman);
+  for (const BodySpec& b : s.bodies)
+    if (viscous_cavity(b)) p.ekman.push_back(*b.cavity->viscosity / (std::abs(b.spin) * b.cavity->scale * b.cavity->scale));
+  for (const FollowedRoot& start : starts_of(sp, done)) {
+    const ConfirmedRoot c = confirm_root(m, tanks.responses, start.sigma, settings);
+    if (c.converged && near_any(c.sigma, p.roots, 1e-8)) continue;  // two starts, one root
+    p.roots.push_back({start.owner, c.converged ? c.sigma : start.sigma, c.converged});
+  }
+  p.growth = -std::numeric_limits<double>::infinity();
+  for (const FollowedRoot& r : p.roots) {
+    if (!r.converged) { ++p.unconfirmed; continue; }
+    p.growth = std::max(p.growth, -r.sigma.imag());
+    if (-r.sigma.imag() > sp.noise) ++p.growing;
+  }
+  p.stable = p.growing == 0;
+  p.ok = std::isfinite(p.growth);
+  if (!p.ok) p.error = "no root confirmed";
+  p.solves = tanks.solves();
+  p.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return p;
+}
+}  // namespace
+
+bool moves_viscous_ekman(const Scene& scene, const ParamKey& key) {
+  using W = ParamKey::Where;
+  if (key.is_spin_factor())
+    return std::any_of(scene.bodies.begin(), scene.bodies.end(), viscous_cavity);
+  if (key.where == W::body && key.field == "spin") return viscous_cavity(scene.bodies[key.index]);
+  if (key.where == W::cavity && key.field == "scale") return viscous_cavity(scene.bodies[key.index]);
+  return false;
+}
+
+std::vector<ConfirmedSweepPoint> run_confirmed_sweep(const Scene& base, const SweepAxis& axis, const std::string& binary,
+                                                     double tolerance, std::ostream& log) {
+  TableCache tables;
+  ConfirmSettings settings;
+  settings.tolerance = tolerance;
+  std::vector<ConfirmedSweepPoint> points;
+  const std::vector<double> mesh_ekman = sweep_mesh_ekman(base, axis);
+  log << "chain-rom sweep: " << axis.key.text << " moves the viscous tanks' Ekman numbers: each point's roots by "
+      << "(22) with the fluid's own response at its Ek (forced solves; docs/rom.md, \"Spin sweeps with viscous tanks\"), "
+      << "on one mesh per tank, its wall layers made for the sweep's smallest Ek" << std::endl;
+  for (int i = 0; i < axis.steps; ++i) {
+    const double v = axis.value(i);
+    Scene s = base;
+    set_param(s, axis.key, v);
+    for (std::size_t b = 0; b < s.bodies.size(); ++b)
+      if (viscous_cavity(s.bodies[b]) && s.bodies[b].spin == 0)
+        throw SweepError(axis.key.text + " = " + std::to_string(v) + ": body " + std::to_string(b + 1) +
+                         " does not spin there, and its viscous tank has no Ekman number");
+    ConfirmedSweepPoint p;
+    try {
+      p = evaluate(s, v, tables, points, binary, settings, mesh_ekman, log);
+    } catch (const SceneError& e) {
+      throw;  // a table that cannot be served: the same at every point
+    } catch (const std::exception& e) {
+      p.value = v;
+      p.error = e.what();
+    }
+    log << std::setprecision(6) << "  " << axis.key.text << " = " << v << ": ";
+    if (!p.ok) log << "not evaluated: " << p.error;
+    else
+      log << p.roots.size() << " roots" << (p.unconfirmed ? " (" + std::to_string(p.unconfirmed) + " NOT confirmed)" : "")
+          << ", largest growth " << p.growth << " 1/s" << (p.stable ? " (stable)" : " (unstable)") << ", " << p.solves
+          << " forced solves, " << std::setprecision(3) << p.seconds << " s";
+    log << " [" << i + 1 << "/" << axis.steps << "]" << std::endl;
+    points.push_back(p);
+  }
+  return points;
+}
+
+void write_confirmed_sweep(const std::vector<ConfirmedSweepPoint>& points, const SweepAxis& axis,
+                           const std::filesystem::path& out) {
+  const auto write = [](const std::filesystem::path& file, const std::string& text) {
+    const std::filesystem::path tmp = file.string() + ".tmp";
+    {
+      std::ofstream os(tmp);
+      os << text;
+      if (!os) throw std::runtime_error(file.string() + ": cannot write");
+    }
+    std::filesystem::rename(tmp, file);
+  };
+  std::ostringstream main, roots;
+  main << std::setprecision(17) << axis.key.text << ",stable,margin,nonreal\n";
+  roots << std::setprecision(17) << axis.key.text << ",owner,sigma_re,sigma_im,confirmed\n";
+  for (const ConfirmedSweepPoint& p : points) {
+    if (!p.ok) {
+      main << p.value << ",nan,nan,nan\n";
+      continue;
+    }
+    main << p.value << "," << (p.stable ? 1 : 0) << "," << p.growth << "," << p.roots.size() << "\n";
+    for (const FollowedRoot& r : p.roots)
+      roots << p.value << "," << r.owner << "," << r.sigma.real() << "," << r.sigma.imag() << "," << (r.converged ? 1 : 0)
+            << "\n";
+  }
+  write(out, main.str());
+  std::filesystem::path rpath = out;
+  rpath.replace_extension(".roots.csv");
+  write(rpath, roots.str());
+}
+
+}  // namespace rc::rom

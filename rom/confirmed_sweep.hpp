@@ -1,0 +1,54 @@
+// A sweep whose key moves a viscous tank's Ekman number Ek = nu/(|spin| scale^2) (body[k].spin,
+// system.spin_factor, body[k].cavity.scale): no one table holds along it, so each point's roots are those of
+// Kononov's (22) with every viscous tank's own R(s) by forced solves at that point's Ek (a served cavity-modes per
+// tank and point, on the table's mesh recipe: tank_responses.hpp), followed from point to point by the iteration of
+// root_confirmation.hpp. The first point starts from the table's roots (its modes scaled to that spin); every point
+// also tries the table's body and growing roots that no followed root is near, so a root that starts to grow on
+// the way is found (docs/rom.md, "Spin sweeps with viscous tanks").
+#pragma once
+
+#include "scene.hpp"
+#include "sweep.hpp"
+
+#include <complex>
+#include <filesystem>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace rc::rom {
+
+// True when `key` changes the Ekman number of some viscous tank of `scene`.
+bool moves_viscous_ekman(const Scene& scene, const ParamKey& key);
+
+struct FollowedRoot {
+  std::string owner;  // as the table's spectrum names it where the root was first found
+  std::complex<double> sigma;
+  bool converged = false;
+};
+
+struct ConfirmedSweepPoint {
+  double value = 0;
+  bool ok = false;
+  std::string error;
+  std::vector<double> ekman;  // per viscous tank, body order
+  std::vector<FollowedRoot> roots;
+  bool stable = false;
+  double growth = 0;          // largest -Im sigma over the confirmed roots (1/s)
+  int growing = 0, unconfirmed = 0, solves = 0;
+  double seconds = 0;
+};
+
+// Runs the sweep point by point (serially: the forced solves are the work, one served process per tank).
+// `log` gets the served meshes and one line per point. Throws SweepError for a value where a viscous tank does
+// not spin (Ek undefined).
+std::vector<ConfirmedSweepPoint> run_confirmed_sweep(const Scene& base, const SweepAxis& axis,
+                                                     const std::string& cavity_modes, double tolerance,
+                                                     std::ostream& log);
+
+// The sweep CSV of write_sweep_csv (<key>,stable,margin,nonreal; margin = the largest growth rate, nonreal = the
+// roots followed), and beside it OUT.roots.csv: <key>,owner,sigma_re,sigma_im,confirmed, one row per root and point.
+void write_confirmed_sweep(const std::vector<ConfirmedSweepPoint>& points, const SweepAxis& axis,
+                           const std::filesystem::path& out);
+
+}  // namespace rc::rom
