@@ -33,26 +33,35 @@ bool near_any(cd z, const std::vector<FollowedRoot>& roots, double rel) {
   return false;
 }
 
-// The starts of a point: the followed roots (linearly extrapolated from the two points before), then the table's
-// body and growing roots that none of them is near.
-std::vector<FollowedRoot> starts_of(const Spectrum& sp, const std::vector<ConfirmedSweepPoint>& done) {
+// The starts of a point: first the table's body and growing roots at this point (its modes scaled to this spin:
+// near the true roots, since only the Ekman number differs), then the roots followed from the point before,
+// extrapolated linearly from the two points before, which confirm_point tries only where no root confirmed from
+// the table's is near (a root the table's spectrum does not show as a body or growing root).
+std::vector<FollowedRoot> table_starts(const Spectrum& sp) {
   std::vector<FollowedRoot> starts;
-  if (!done.empty() && done.back().ok) {
-    const ConfirmedSweepPoint& last = done.back();
-    const ConfirmedSweepPoint* before = done.size() > 1 && done[done.size() - 2].ok ? &done[done.size() - 2] : nullptr;
-    for (std::size_t j = 0; j < last.roots.size(); ++j) {
-      if (!last.roots[j].converged) continue;
-      FollowedRoot r = last.roots[j];
-      // Predict along the sweep when the point before followed the same root (same index, same owner).
-      if (before && j < before->roots.size() && before->roots[j].owner == r.owner && before->roots[j].converged)
-        r.sigma = 2.0 * r.sigma - before->roots[j].sigma;
-      starts.push_back(r);
-    }
-  }
   for (const Root& r : sp.roots) {
     if (std::abs(r.sigma) <= sp.tolerance) continue;
-    const bool wanted = r.owner.rfind("body", 0) == 0 || -r.sigma.imag() > sp.noise;
-    if (wanted && !near_any(r.sigma, starts, 1e-2)) starts.push_back({r.owner, r.sigma, false});
+    if (r.owner.rfind("body", 0) == 0 || -r.sigma.imag() > sp.noise) starts.push_back({r.owner, r.sigma, false});
+  }
+  return starts;
+}
+
+std::vector<FollowedRoot> followed_starts(const std::vector<ConfirmedSweepPoint>& done) {
+  std::vector<FollowedRoot> starts;
+  if (done.empty() || !done.back().ok) return starts;
+  const ConfirmedSweepPoint& last = done.back();
+  const ConfirmedSweepPoint* before = done.size() > 1 && done[done.size() - 2].ok ? &done[done.size() - 2] : nullptr;
+  for (const FollowedRoot& r : last.roots) {
+    if (!r.converged) continue;
+    FollowedRoot s = r;
+    // The same root at the point before: the nearest confirmed one, if it is nearer than any other root now.
+    if (before) {
+      const FollowedRoot* prev = nullptr;
+      for (const FollowedRoot& q : before->roots)
+        if (q.converged && (!prev || std::abs(q.sigma - r.sigma) < std::abs(prev->sigma - r.sigma))) prev = &q;
+      if (prev) s.sigma = 2.0 * r.sigma - prev->sigma;
+    }
+    starts.push_back(s);
   }
   return starts;
 }
@@ -86,11 +95,14 @@ ConfirmedSweepPoint evaluate(const Scene& s, double value, TableCache& tables, c
   TankResponses tanks = serve_tanks(s, m, binary, scratch.path, done.empty() ? log : served, mesh_ekman);
   for (const BodySpec& b : s.bodies)
     if (viscous_cavity(b)) p.ekman.push_back(*b.cavity->viscosity / (std::abs(b.spin) * b.cavity->scale * b.cavity->scale));
-  for (const FollowedRoot& start : starts_of(sp, done)) {
+  const auto confirm = [&](const FollowedRoot& start) {
     const ConfirmedRoot c = confirm_root(m, tanks.responses, start.sigma, settings);
-    if (c.converged && near_any(c.sigma, p.roots, 1e-8)) continue;  // two starts, one root
+    if (c.converged && near_any(c.sigma, p.roots, 1e-8)) return;  // two starts, one root
     p.roots.push_back({start.owner, c.converged ? c.sigma : start.sigma, c.converged});
-  }
+  };
+  for (const FollowedRoot& start : table_starts(sp)) confirm(start);
+  for (const FollowedRoot& start : followed_starts(done))
+    if (!near_any(start.sigma, p.roots, 2e-2)) confirm(start);
   p.growth = -std::numeric_limits<double>::infinity();
   for (const FollowedRoot& r : p.roots) {
     if (!r.converged) { ++p.unconfirmed; continue; }

@@ -1,10 +1,10 @@
 // A sweep whose key moves a viscous tank's Ekman number Ek = nu/(|spin| scale^2) (body[k].spin,
 // system.spin_factor, body[k].cavity.scale): no one table holds along it, so each point's roots are those of
 // Kononov's (22) with every viscous tank's own R(s) by forced solves at that point's Ek (a served cavity-modes per
-// tank and point, on the table's mesh recipe: tank_responses.hpp), followed from point to point by the iteration of
-// root_confirmation.hpp. The first point starts from the table's roots (its modes scaled to that spin); every point
-// also tries the table's body and growing roots that no followed root is near, so a root that starts to grow on
-// the way is found (docs/rom.md, "Spin sweeps with viscous tanks").
+// tank and point, on the table's mesh recipe: tank_responses.hpp), by the iteration of root_confirmation.hpp. Each
+// point starts from the table's body and growing roots there (its modes scaled to that spin: only the Ekman number
+// differs), and from the roots followed from the point before wherever no root confirmed from those is near, so
+// that a root keeps being followed when the table stops showing it (docs/rom.md, "Spin sweeps with viscous tanks").
 #pragma once
 
 #include "scene.hpp"

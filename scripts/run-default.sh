@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The default job of README.md, runnable from any folder:
-#   1. install what is missing and build (scripts/build.sh -> build/),
+#   1. install what is missing and build the two programs (scripts/build.sh cavity-modes chain-rom -> build/;
+#      the test suite is built by scripts/test.sh),
 #   2. make the mode tables of data/scenes/default.toml (water: three response-fit tables of the viscous
 #      fluid) and of data/scenes/default_ideal.toml (the same chain with ideal fluid, for comparison) with
 #      cavity-modes into out/tables/ (the "# recipe:" lines of each scene; a table is remade only when it is
@@ -34,8 +35,8 @@ START=$SECONDS
 step() { printf '\n[run-default %3ds] %s\n' "$((SECONDS - START))" "$*"; }
 fail() { printf '[run-default] FAILED: %s\n' "$*" >&2; exit 1; }
 
-step "1/6 install and build (scripts/build.sh)"
-bash "$ROOT/scripts/build.sh" || fail "scripts/build.sh"
+step "1/6 install and build the programs (scripts/build.sh cavity-modes chain-rom)"
+bash "$ROOT/scripts/build.sh" cavity-modes chain-rom || fail "scripts/build.sh"
 [ -x "$MODES" ] || fail "$MODES was not built (RC_BUILD_MODES off?)"
 [ -x "$ROM" ] || fail "$ROM was not built (RC_BUILD_ROM off?)"
 [ -x "$PY" ] || fail "$PY not found (Debian python3 with python3-h5py, python3-matplotlib)"
