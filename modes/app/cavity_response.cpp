@@ -7,6 +7,7 @@
 #include "petsc_handles.hpp"
 #include "progress.hpp"
 #include "rational_fit.hpp"
+#include "response_samples.hpp"
 #include "table_assembly.hpp"
 #include "separable_table.hpp"
 #include "viscous_response.hpp"
@@ -57,14 +58,25 @@ CavityResponse mesh_response(const ResponseRequest& req) {
   return out;
 }
 
-// R at req.sigmas from forms assembled once (assemble_cavity_forms), with progress lines on stderr (rank 0).
-CavityResponse viscous_cavity_response(const ResponseRequest& req, const ViscousForms& forms) {
+// R at req.sigmas from forms assembled once (assemble_cavity_forms), with progress lines on stderr (rank 0). With
+// `kept`, the frequencies it holds are read from it and every new solve is added to it as soon as it is made.
+CavityResponse viscous_cavity_response(const ResponseRequest& req, const ViscousForms& forms,
+                                       ResponseSamples* kept = nullptr) {
   Progress lines([](const std::string& line) { if (is_root_rank()) std::cerr << line << "\n"; });
-  const auto report = [&](std::size_t done, std::size_t total) {
-    lines.step(fmt::format("cavity-modes response: {}/{} frequencies", done, total), done, total);
-  };
   CavityResponse out;
-  out.R = viscous_response(forms, req.sigmas, report);
+  out.R.resize(req.sigmas.size());
+  std::vector<std::size_t> missing;
+  for (std::size_t k = 0; k < req.sigmas.size(); ++k)
+    if (!kept || !kept->find(req.sigmas[k], out.R[k])) missing.push_back(k);
+  if (!missing.empty()) {
+    ForcedResponse response(forms);
+    for (std::size_t i = 0; i < missing.size(); ++i) {
+      const std::size_t k = missing[i];
+      out.R[k] = response(req.sigmas[k]);
+      if (kept) kept->add(req.sigmas[k], out.R[k]);
+      lines.step(fmt::format("cavity-modes response: {}/{} frequencies", i + 1, missing.size()), i + 1, missing.size());
+    }
+  }
   out.unknowns = 2L * forms.complex_size;
   out.method = fmt::format("viscous fluid, Ekman number {:g}, forced solves on Taylor-Hood P{}/P{} ({} real unknowns); "
                            "R = sum_l E_l/(sigma - lambda_l) + const",
@@ -232,7 +244,16 @@ ModeTable response_fit_table(const ResponseRequest& req, double max_error) {
   const std::vector<double> tail = response_tail(lo, hi);
   for (const double t : tail) all.sigmas.emplace_back(t, 0.0);
   const ViscousForms forms = assemble_cavity_forms(req.shape, req.mesh, req.ekman);  // once, for every refinement
-  const CavityResponse R = viscous_cavity_response(all, forms);
+  // Every forced solve is kept as it is made: a fit that misses its tolerance, or a stopped run, loses none of them.
+  ResponseSamples kept = req.samples_file.empty()
+                             ? ResponseSamples()
+                             : ResponseSamples(req.samples_file, response_samples_key(req.shape, req.mesh, req.ekman,
+                                                                                      2L * forms.complex_size));
+  if (kept.read() > 0 && is_root_rank())
+    std::cerr << fmt::format("cavity-modes response: {} forced solves read back from {}\n", kept.read(),
+                             kept.path().string());
+  const auto solve_start = std::chrono::steady_clock::now();
+  const CavityResponse R = viscous_cavity_response(all, forms, &kept);
   std::vector<double> window_s;
   std::vector<std::complex<double>> window_R(R.R.begin(), R.R.begin() + static_cast<long>(n)), tail_R(R.R.begin() + static_cast<long>(n), R.R.end());
   for (const auto& sigma : req.sigmas) window_s.push_back(sigma.real());
@@ -252,7 +273,7 @@ ModeTable response_fit_table(const ResponseRequest& req, double max_error) {
     if (window_s.size() + added.size() > cap) added.resize(cap - window_s.size());
     ResponseRequest more = req;
     more.sigmas.assign(added.begin(), added.end());
-    const CavityResponse extra = viscous_cavity_response(more, forms);
+    const CavityResponse extra = viscous_cavity_response(more, forms, &kept);
     merge_samples(window_s, window_R, added, extra.R);
     ++refinements;
     w = fit_window(window_s, window_R, tail, tail_R, max_error);
@@ -305,10 +326,20 @@ ModeTable response_fit_table(const ResponseRequest& req, double max_error) {
   }
   const RationalFit& fit = w.fit;
   const double err = w.error;
-  if (!(err <= max_error))
+  if (!(err <= max_error)) {
+    // What to change and what it costs: the solves made so far are kept, so a retry pays only for new frequencies.
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - solve_start).count();
+    const std::size_t solved = window_s.size() + tail.size(), new_solves = std::max<std::size_t>(kept.added(), 1);
+    const std::string kept_note =
+        kept.path().empty() ? std::string()
+                            : fmt::format("; its {} forced solves are kept in {} and read back by the same command, so "
+                                          "a retry pays only for new frequencies (about {:.2g} s each here)",
+                                          solved, kept.path().string(), seconds / static_cast<double>(new_solves));
     throw std::runtime_error(fmt::format("the rational fit of R(s) on [{:g}, {:g}] errs by {:.2g} between its samples "
                                          "after {} refinements ({} samples; allowed {:.2g}): give more frequencies N or "
-                                         "a larger --max-fit-error", lo, hi, err, refinements, window_s.size(), max_error));
+                                         "a larger --max-fit-error (at least {:.2g}){}", lo, hi, err, refinements,
+                                         window_s.size(), max_error, err, kept_note));
+  }
 
   ModeTable t = response_table_start(req, R.unknowns);
   t.fit_error = err;
@@ -347,6 +378,8 @@ ModeTable response_fit_table(const ResponseRequest& req, double max_error) {
                          tail.size(), std::abs(tail.back()),
                          err, passive, sum.real(), sum.imag(), tail.back(), (tail.back() * R.R.back()).real(), t.sum_rule,
                          R.method);
+  if (kept.read() > 0) t.solver += fmt::format(" ({} forced solves were at hand from an earlier run's kept samples)",
+                                               kept.read());
   t.tolerance = 1e-10;
   t.sort_by_energy();
   t.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

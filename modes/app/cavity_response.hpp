@@ -10,6 +10,7 @@
 #include "mode_table.hpp"
 
 #include <complex>
+#include <filesystem>
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -22,6 +23,8 @@ struct ResponseRequest {
   double ekman = 0;             // 0: ideal fluid
   bool separable = false;       // ideal cylinder: the separable mode sum instead of forced solves
   std::vector<std::complex<double>> sigmas;
+  // A response-fit table's forced solves kept as they are made (viscous/response_samples.hpp); empty: not kept.
+  std::filesystem::path samples_file;
 };
 
 struct CavityResponse {
@@ -37,7 +40,8 @@ CavityResponse compute_cavity_response(const ResponseRequest& request);
 // sample (viscous/rational_fit.hpp), its error measured on the samples in between: a viscous mode table whose
 // modes are the fit's poles and residues, with the window and the error as root attributes (fit_lo, fit_hi,
 // fit_error) and the ideal table's frozen-fluid integrals and J_zh from the ideal mesh. Throws std::runtime_error
-// with a one-line cause, also when the fit error exceeds `max_error`.
+// with a one-line cause, also when the fit error exceeds `max_error`: the forced solves are then still in
+// request.samples_file, which the same command reads back (the caller removes it once the table is written).
 ModeTable response_fit_table(const ResponseRequest& request, double max_error);
 
 // A response table's window (req.sigmas): --ekman given, N >= 9 increasing real frequencies; else one line starting

@@ -364,12 +364,18 @@ int run(int argc, char** argv) {
       return 0;
     }
     if (ends_with(output, ".h5")) {
-      // A response-fit table: the fit's poles and residues as damped modes (docs/viscous.md, "Response fit").
+      // A response-fit table: the fit's poles and residues as damped modes (docs/viscous.md, "Response fit"). Its
+      // forced solves are kept in FILE.h5.samples until the table is written (viscous/response_samples.hpp).
+      if (!viscous.galerkin) r.samples_file = output + ".samples";
       auto table = viscous.galerkin ? rc::modes::galerkin_response_table(r, viscous.max_fit_error)
                                     : rc::modes::response_fit_table(r, viscous.max_fit_error);
       if (!rc::modes::is_root_rank()) return 0;
       rc::modes::record_provenance(table, req.shape, command_line);
       rc::write_mode_table(table, output);
+      if (!r.samples_file.empty()) {
+        std::error_code gone;
+        std::filesystem::remove(r.samples_file, gone);
+      }
       print_table(table);
       return 0;
     }

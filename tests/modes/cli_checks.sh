@@ -9,7 +9,7 @@ bad() { echo "FAILED: $1"; fail=$((fail + 1)); }
 expect_error() {  # name, expected text in the message, command...
   local name=$1 text=$2
   shift 2
-  rm -f out.h5
+  rm -f out.h5 out.h5.samples
   "$@" > stdout.txt 2> stderr.txt
   local rc=$?
   local lines
@@ -17,7 +17,8 @@ expect_error() {  # name, expected text in the message, command...
   if [ "$rc" -eq 0 ]; then bad "$name: exit 0"; return; fi
   if [ "$lines" -ne 1 ]; then bad "$name: $lines lines on stderr: $(cat stderr.txt)"; return; fi
   if ! grep -v '^\[ *[0-9.]* s\] ' stderr.txt | grep -q -- "$text"; then bad "$name: message lacks '$text': $(cat stderr.txt)"; return; fi
-  if ls out.h5* > /dev/null 2>&1; then bad "$name: left a file behind"; return; fi
+  # (a response fit's kept forced solves, out.h5.samples, are no half-written table: docs/viscous.md, "Response fit")
+  if ls out.h5* 2> /dev/null | grep -qv '\.samples$'; then bad "$name: left a file behind"; return; fi
   ok "$name ($(grep -v '^\[ *[0-9.]* s\] ' stderr.txt))"
 }
 

@@ -81,6 +81,16 @@ assert d < 1e-13, d
 print("served R = CSV R to %.1e" % d)
 '; then ok "response --serve"; else bad "response --serve: $(tail -2 served.err)"; fi
 expect_error "response fit that misses its tolerance" "give more frequencies" "$BIN" response sphere --radius 1 --ekman 1e-2 "${small_response[@]}" --sigma -2:3:9 --max-fit-error 1e-14 -o out.h5
+# ... keeps its forced solves, and the retry reads them back and solves nothing it has (nor leaves them behind).
+if [ -s out.h5.samples ] && [ ! -e out.h5 ] &&
+   "$BIN" response sphere --radius 1 --ekman 1e-2 "${small_response[@]}" --sigma -2:3:9 --max-fit-error 1e-3 -o out.h5 \
+     > retry.txt 2> retry.err && grep -q "forced solves read back from out.h5.samples" retry.err &&
+   ! grep -q "cavity-modes response: [0-9]*/[0-9]* frequencies" retry.err && [ -f out.h5 ] && [ ! -e out.h5.samples ]; then
+  ok "a fit that misses its tolerance keeps its solves for the retry ($(grep -o '[0-9]* forced solves read back' retry.err))"
+else
+  bad "kept samples: $(ls out.h5* 2>&1 | tr '\n' ' ') $(tail -1 retry.err 2>/dev/null)"
+fi
+rm -f out.h5
 # Too few samples: the fit errs between them, samples are added where it does, and the table is made.
 if "$BIN" response sphere --radius 1 --ekman 1e-2 "${small_response[@]}" --sigma -1.5:2:11 -o refit.h5 > refit.txt 2> refit.err &&
    grep -q "every other of 19 real samples in \[-1.5, 2\] (11 given, 1 refinements where the fit erred)" refit.txt; then
