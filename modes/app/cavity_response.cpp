@@ -58,23 +58,45 @@ CavityResponse mesh_response(const ResponseRequest& req) {
   return out;
 }
 
+int world_ranks() {
+  int ranks = 1;
+  MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
+  return ranks;
+}
+
 // R at req.sigmas from forms assembled once (assemble_cavity_forms), with progress lines on stderr (rank 0). With
-// `kept`, the frequencies it holds are read from it and every new solve is added to it as soon as it is made.
+// `kept`, the frequencies it holds are read from it and every new solve is added to it as soon as it is made. With
+// `split` (forms assembled on PETSC_COMM_SELF under mpirun) each rank solves every ranks-th frequency on its own
+// and the answers are summed over the ranks: the frequencies, not the matrices, are shared out.
 CavityResponse viscous_cavity_response(const ResponseRequest& req, const ViscousForms& forms,
-                                       ResponseSamples* kept = nullptr) {
+                                       ResponseSamples* kept = nullptr, bool split = false) {
   Progress lines([](const std::string& line) { if (is_root_rank()) std::cerr << line << "\n"; });
   CavityResponse out;
   out.R.resize(req.sigmas.size());
   std::vector<std::size_t> missing;
   for (std::size_t k = 0; k < req.sigmas.size(); ++k)
     if (!kept || !kept->find(req.sigmas[k], out.R[k])) missing.push_back(k);
+  int rank = 0, ranks = 1;
+  if (split) {
+    MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+    ranks = world_ranks();
+  }
   if (!missing.empty()) {
     ForcedResponse response(forms);
-    for (std::size_t i = 0; i < missing.size(); ++i) {
+    std::vector<double> mine(2 * missing.size(), 0.0), all(2 * missing.size(), 0.0);
+    for (std::size_t i = static_cast<std::size_t>(rank); i < missing.size(); i += static_cast<std::size_t>(ranks)) {
       const std::size_t k = missing[i];
-      out.R[k] = response(req.sigmas[k]);
-      if (kept) kept->add(req.sigmas[k], out.R[k]);
+      const std::complex<double> R = response(req.sigmas[k]);
+      mine[2 * i] = R.real();
+      mine[2 * i + 1] = R.imag();
+      if (kept && !split) kept->add(req.sigmas[k], R);
       lines.step(fmt::format("cavity-modes response: {}/{} frequencies", i + 1, missing.size()), i + 1, missing.size());
+    }
+    if (split) MPI_Allreduce(mine.data(), all.data(), static_cast<int>(all.size()), MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD);
+    else all = mine;
+    for (std::size_t i = 0; i < missing.size(); ++i) {
+      out.R[missing[i]] = {all[2 * i], all[2 * i + 1]};
+      if (kept && split) kept->add(req.sigmas[missing[i]], out.R[missing[i]]);
     }
   }
   out.unknowns = 2L * forms.complex_size;
@@ -140,7 +162,12 @@ CavityResponse compute_cavity_response(const ResponseRequest& req) {
   if (req.sigmas.empty()) throw std::runtime_error("no frequency sigma given");
   for (const auto s : req.sigmas)
     if (!std::isfinite(s.real()) || !std::isfinite(s.imag())) throw std::runtime_error("every sigma must be finite");
-  if (req.ekman > 0) return viscous_cavity_response(req, assemble_cavity_forms(req.shape, req.mesh, req.ekman));
+  if (req.ekman > 0) {  // under mpirun the frequencies are shared out, as for a response table
+    const bool split = world_ranks() > 1 && req.sigmas.size() > 1;
+    return viscous_cavity_response(
+        req, assemble_cavity_forms(req.shape, req.mesh, req.ekman, split ? PETSC_COMM_SELF : PETSC_COMM_WORLD), nullptr,
+        split);
+  }
   return req.separable ? separable_response(req) : mesh_response(req);
 }
 
@@ -243,7 +270,11 @@ ModeTable response_fit_table(const ResponseRequest& req, double max_error) {
   const double lo = req.sigmas.front().real(), hi = req.sigmas.back().real();
   const std::vector<double> tail = response_tail(lo, hi);
   for (const double t : tail) all.sigmas.emplace_back(t, 0.0);
-  const ViscousForms forms = assemble_cavity_forms(req.shape, req.mesh, req.ekman);  // once, for every refinement
+  // Under mpirun the frequencies are shared out, each rank with the whole problem (a response table solves 100 and
+  // more of them, which a distributed factorisation on 2 cores does not speed up).
+  const bool split = world_ranks() > 1;
+  const ViscousForms forms =  // once, for every refinement
+      assemble_cavity_forms(req.shape, req.mesh, req.ekman, split ? PETSC_COMM_SELF : PETSC_COMM_WORLD);
   // Every forced solve is kept as it is made: a fit that misses its tolerance, or a stopped run, loses none of them.
   ResponseSamples kept = req.samples_file.empty()
                              ? ResponseSamples()
@@ -253,7 +284,7 @@ ModeTable response_fit_table(const ResponseRequest& req, double max_error) {
     std::cerr << fmt::format("cavity-modes response: {} forced solves read back from {}\n", kept.read(),
                              kept.path().string());
   const auto solve_start = std::chrono::steady_clock::now();
-  const CavityResponse R = viscous_cavity_response(all, forms, &kept);
+  const CavityResponse R = viscous_cavity_response(all, forms, &kept, split);
   std::vector<double> window_s;
   std::vector<std::complex<double>> window_R(R.R.begin(), R.R.begin() + static_cast<long>(n)), tail_R(R.R.begin() + static_cast<long>(n), R.R.end());
   for (const auto& sigma : req.sigmas) window_s.push_back(sigma.real());
@@ -273,7 +304,7 @@ ModeTable response_fit_table(const ResponseRequest& req, double max_error) {
     if (window_s.size() + added.size() > cap) added.resize(cap - window_s.size());
     ResponseRequest more = req;
     more.sigmas.assign(added.begin(), added.end());
-    const CavityResponse extra = viscous_cavity_response(more, forms, &kept);
+    const CavityResponse extra = viscous_cavity_response(more, forms, &kept, split);
     merge_samples(window_s, window_R, added, extra.R);
     ++refinements;
     w = fit_window(window_s, window_R, tail, tail_R, max_error);

@@ -142,10 +142,11 @@ std::vector<std::complex<double>> viscous_response(const ViscousForms& forms,
   return out;
 }
 
-ViscousForms assemble_cavity_forms(const geometry::ShapeSpec& shape, const geometry::MeshOptions& mesh, double ekman) {
+ViscousForms assemble_cavity_forms(const geometry::ShapeSpec& shape, const geometry::MeshOptions& mesh, double ekman,
+                                   MPI_Comm comm) {
   const TaylorHoodSpace space(mesh_on_root([&] { return geometry::mesh_meridian(shape, mesh); }, PETSC_COMM_WORLD));
   const double centroid_z = integrate_fluid(space.geometry()).centroid_z;
-  return assemble_viscous_forms(space, centroid_z, ekman, PETSC_COMM_WORLD);
+  return assemble_viscous_forms(space, centroid_z, ekman, comm);
 }
 
 std::vector<std::complex<double>> cavity_response(const geometry::ShapeSpec& shape, geometry::MeshOptions mesh,

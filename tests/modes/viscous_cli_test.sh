@@ -131,6 +131,19 @@ for name, re, im in (("lambda + i decay", "lambda", "decay"), ("E + i E_imag", "
     print("%s: -n 1 %.15g%+.15gi, -n 2 %.15g%+.15gi, relative difference %.1e" % (name, x.real, x.imag, y.real, y.imag, d))
     assert d < 1e-10, name
 '; then ok "mpirun -n 1 and -n 2 give the same table"; else bad "mpirun: $(tail -3 mpi2.txt)"; fi
+  # A response-fit table under mpirun shares its frequencies out between the ranks (each with the whole problem):
+  # the same samples, so the same fit as the serial run's.
+  if "$BIN" response sphere --radius 1 --ekman 1e-2 "${small_response[@]}" --sigma -1.5:2:21 -o fit1.h5 > fit1.txt 2>&1 &&
+     mpirun -n 2 "$BIN" response sphere --radius 1 --ekman 1e-2 "${small_response[@]}" --sigma -1.5:2:21 -o fit2.h5 \
+       > fit2.txt 2>&1 && /usr/bin/python3 -c '
+import h5py
+a, b = h5py.File("fit1.h5")["modes"], h5py.File("fit2.h5")["modes"]
+assert len(a["lambda"]) == len(b["lambda"]) > 0
+d = max(abs(complex(a["lambda"][i], a["decay"][i]) - complex(b["lambda"][i], b["decay"][i])) +
+        abs(complex(a["E"][i], a["E_imag"][i]) - complex(b["E"][i], b["E_imag"][i])) for i in range(len(a["lambda"])))
+print("response fit, frequencies shared by 2 ranks: poles and residues as serial to %.1e" % d)
+assert d < 1e-10, d
+'; then ok "mpirun -n 2 response fit shares its frequencies"; else bad "mpirun response fit: $(tail -2 fit2.txt)"; fi
   # A failure under mpirun: one error line (from rank 0), not one per rank.
   mpirun -n 2 "$BIN" sphere --radius 1 --ekman 1e-4 --wall-size 0.1 -o mpierr.h5 > mpierr.txt 2>&1
   if [ "$(grep -c '^cavity-modes: error:' mpierr.txt)" -eq 1 ] && [ ! -e mpierr.h5 ]; then
