@@ -379,6 +379,9 @@ void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp) {
          << "with the fluid's own response: chain-rom confirm SCENE (docs/rom.md, \"Confirmed roots\")\n";
   os << "worst det residual of (22): " << sp.det_residual << " (" << sp.unchecked
      << " roots at sigma = 0 or a pole not checked)\n";
+  if (m.viscous)
+    os << "these roots are those of the tanks' tables (a response fit holds R only to its fit error): chain-rom confirm "
+          "SCENE gives them with the fluid's own response (docs/rom.md, \"Confirmed roots\")\n";
 }
 
 }  // namespace rc::rom

@@ -59,13 +59,18 @@ for entry in "${RECIPES[@]}"; do
     echo "  $name: up to date, kept (cavity-modes ${args[*]})"
     continue
   fi
-  echo "  $name: cavity-modes ${args[*]} ..."
+  # A response table's forced solves are shared out between the cores under mpirun (docs/viscous.md, "Response fit").
+  launcher=()
+  if [ "${args[0]}" = response ] && [ "$(nproc)" -gt 1 ] && command -v mpirun > /dev/null; then
+    launcher=(env OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1 mpirun -n "$(nproc)")
+  fi
+  echo "  $name: ${launcher[*]:+mpirun -n $(nproc) }cavity-modes ${args[*]} ..."
   t0=$SECONDS
   log="$TABLES/${name%.h5}.log"
   : > "$log"
   # The table report goes to the log; the progress lines (stderr, at least every 5 s) also to the terminal.
   status=0
-  "$MODES" "${args[@]}" -o "$table" 2>&1 >> "$log" | tee -a "$log" | sed -u 's/^/    /' >&2 || status=$?
+  "${launcher[@]}" "$MODES" "${args[@]}" -o "$table" 2>&1 >> "$log" | tee -a "$log" | sed -u 's/^/    /' >&2 || status=$?
   if [ "$status" -ne 0 ]; then
     tail -n 20 "$log" >&2
     fail "cavity-modes ${args[*]} (log: $log)"
