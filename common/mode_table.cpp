@@ -67,29 +67,47 @@ void put_text(hid_t loc, const std::string& name, const std::string& v) {
 
 bool has_attr(hid_t loc, const std::string& name) { return H5Aexists(loc, name.c_str()) > 0; }
 
+// An attribute read into one value must hold exactly one element of the expected class: H5Aread writes every
+// element the file's dataspace claims, so a corrupted or foreign table whose scalar holds 4000 numbers would overwrite
+// the stack (found with AddressSanitizer).
+void require_one(hid_t attr, const std::string& name, std::initializer_list<H5T_class_t> classes, const char* what) {
+  Hid space(H5Aget_space(attr), H5Sclose);
+  const hssize_t points = space.ok() ? H5Sget_simple_extent_npoints(space.get()) : -1;
+  if (points != 1)
+    throw std::runtime_error("attribute '" + name + "' holds " + std::to_string(points) + " elements, not one " + what);
+  Hid type(H5Aget_type(attr), H5Tclose);
+  const H5T_class_t c = type.ok() ? H5Tget_class(type.get()) : H5T_NO_CLASS;
+  for (const H5T_class_t ok : classes)
+    if (c == ok) return;
+  throw std::runtime_error(std::string("attribute '") + name + "' is not " + what);
+}
+
 double get_double(hid_t loc, const std::string& name) {
   if (!has_attr(loc, name)) throw std::runtime_error("missing attribute '" + name + "'");
   Hid attr(H5Aopen(loc, name.c_str(), H5P_DEFAULT), H5Aclose);
+  if (!attr.ok()) throw std::runtime_error("attribute '" + name + "' cannot be opened");
+  require_one(attr.get(), name, {H5T_FLOAT, H5T_INTEGER}, "number");
   double v = 0;
-  if (!attr.ok() || H5Aread(attr.get(), H5T_NATIVE_DOUBLE, &v) < 0)
-    throw std::runtime_error("attribute '" + name + "' is not a number");
+  if (H5Aread(attr.get(), H5T_NATIVE_DOUBLE, &v) < 0) throw std::runtime_error("attribute '" + name + "' is not a number");
   return v;
 }
 
 long get_long(hid_t loc, const std::string& name) {
   if (!has_attr(loc, name)) throw std::runtime_error("missing attribute '" + name + "'");
   Hid attr(H5Aopen(loc, name.c_str(), H5P_DEFAULT), H5Aclose);
+  if (!attr.ok()) throw std::runtime_error("attribute '" + name + "' cannot be opened");
+  require_one(attr.get(), name, {H5T_INTEGER}, "integer");
   long v = 0;
-  if (!attr.ok() || H5Aread(attr.get(), H5T_NATIVE_LONG, &v) < 0)
-    throw std::runtime_error("attribute '" + name + "' is not an integer");
+  if (H5Aread(attr.get(), H5T_NATIVE_LONG, &v) < 0) throw std::runtime_error("attribute '" + name + "' is not an integer");
   return v;
 }
 
 std::string get_string(hid_t loc, const std::string& name) {
   if (!has_attr(loc, name)) throw std::runtime_error("missing attribute '" + name + "'");
   Hid attr(H5Aopen(loc, name.c_str(), H5P_DEFAULT), H5Aclose);
+  if (!attr.ok()) throw std::runtime_error("attribute '" + name + "' cannot be opened");
+  require_one(attr.get(), name, {H5T_STRING}, "string");
   Hid ftype(H5Aget_type(attr.get()), H5Tclose);
-  if (H5Tget_class(ftype.get()) != H5T_STRING) throw std::runtime_error("attribute '" + name + "' is not a string");
   if (H5Tis_variable_str(ftype.get()) > 0) {
     Hid mtype(H5Tcopy(H5T_C_S1), H5Tclose);
     H5Tset_size(mtype.get(), H5T_VARIABLE);
@@ -100,6 +118,7 @@ std::string get_string(hid_t loc, const std::string& name) {
     return printable_text(s);
   }
   std::size_t n = H5Tget_size(ftype.get());
+  if (n > 64u << 10) throw std::runtime_error("attribute '" + name + "' claims a string of " + std::to_string(n) + " bytes");
   std::string buf(n + 1, '\0');
   Hid mtype(H5Tcopy(H5T_C_S1), H5Tclose);
   H5Tset_size(mtype.get(), n + 1);
@@ -225,6 +244,9 @@ void ModeTable::validate() const {
   validate_galerkin(*this);
   for (double x : {volume, A_f, C_f, J_zh, sum_rule, coverage})
     if (!std::isfinite(x)) throw std::runtime_error("a root attribute holds a non-finite value");
+  for (const auto* column : {&kappa, &lambda, &E, &a, &N2, &decay, &E_imag, &a_imag})
+    for (double x : *column)
+      if (!std::isfinite(x)) throw std::runtime_error("/modes holds a non-finite value (NaN or infinity)");
   if (!viscous())  // a viscous residue's real part is the ideal E only in the limit
     for (double e : E)
       if (e < 0) throw std::runtime_error("/modes/E holds a negative value");
@@ -301,7 +323,13 @@ void write_mode_table(const ModeTable& t, const std::filesystem::path& path, con
   const std::filesystem::path xdmf = xdmf_companion(path), xdmf_tmp = xdmf.string() + ".tmp" + std::to_string(::getpid());
   try {
     {
-      Hid file(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+      // HDF5 1.8's file format and later: superblock version 2 and version 2 object headers, whose metadata carry
+      // checksums, so that a damaged table is refused on opening rather than read (the default, the oldest format,
+      // has none).
+      Hid fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+      if (!fapl.ok() || H5Pset_libver_bounds(fapl.get(), H5F_LIBVER_V18, H5F_LIBVER_LATEST) < 0)
+        throw std::runtime_error("cannot set HDF5's file format bounds");
+      Hid file(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()), H5Fclose);
       if (!file.ok()) throw std::runtime_error("cannot create " + path.string());
       hid_t root = file.get();
       put_string(root, "format", kModeTableFormat);
@@ -414,6 +442,8 @@ ModeTable read_mode_table(const std::filesystem::path& path) {
     Hid file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
     if (!file.ok()) throw std::runtime_error("cannot open");
     hid_t root = file.get();
+    H5F_info2_t info;
+    const bool checksummed = H5Fget_info2(root, &info) >= 0 && info.super.version >= 2;
     if (!has_attr(root, "format") || get_string(root, "format") != kModeTableFormat)
       throw std::runtime_error("not a mode table (root attribute format != \"cavity-mode-table\")");
     ModeTable t;
@@ -499,6 +529,7 @@ ModeTable read_mode_table(const std::filesystem::path& path) {
       t.command_line = get_text(prov.get(), "command_line");
     }
     t.validate();
+    t.checksummed = checksummed;
     return t;
   } catch (const std::exception& e) {
     throw std::runtime_error(path.string() + ": " + e.what());

@@ -47,6 +47,9 @@ struct ModeTable {
   // Provenance (/provenance, optional; docs/physics.md §4): how the table was made, so that it can be made again.
   // geometry_source: "sphere radius=1" for a built-in shape, the section file's name for `section FILE`;
   // geometry_text: that section file's full text (empty for built-in shapes); command_line: the command as typed.
+  // Read from the file: whether its metadata carry checksums (HDF5 superblock version 2 or later, as written since
+  // 2026-11-26); an older table reads the same, without that protection (`cavity-modes info` says so).
+  bool checksummed = true;
   std::string geometry_source, geometry_text, command_line;
 
   // --- /modes datasets, one entry per mode ------------------------------------------------

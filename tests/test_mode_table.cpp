@@ -2,11 +2,14 @@
 #include "mode_table.hpp"
 
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
 #include <cmath>
 #include <complex>
 #include <filesystem>
 #include <fstream>
+#include <utility>
+#include <vector>
 
 namespace fs = std::filesystem;
 
@@ -147,4 +150,65 @@ TEST(ModeTable, IdentitiesAreCheckedOnReading) {
   t = sample();
   t.volume = 0;
   expect_identity(t, "volume > 0");
+}
+
+// A table is a file users exchange: reading one must be memory-safe whatever it holds. A root attribute read into
+// one number that holds 4000 (or 2) elements used to be read past its one stack slot (AddressSanitizer); a NaN in
+// /modes/E was accepted. Each is now refused with one line naming it. Written tables carry HDF5's checksummed
+// metadata (superblock version 2).
+namespace {
+void replace_root_attribute(const fs::path& file, const char* name, std::size_t count) {
+  const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  H5Adelete(f, name);
+  const hsize_t n = count;
+  const hid_t space = H5Screate_simple(1, &n, nullptr);
+  const hid_t a = H5Acreate2(f, name, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT);
+  const std::vector<double> values(count, 0.5);
+  H5Awrite(a, H5T_NATIVE_DOUBLE, values.data());
+  H5Aclose(a);
+  H5Sclose(space);
+  H5Fclose(f);
+}
+
+std::string read_error(const fs::path& file) {
+  try {
+    rc::read_mode_table(file);
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "read without error";
+}
+}  // namespace
+
+TEST(ModeTable, AttributesOfTheWrongSizeAreRefusedNotRead) {
+  const fs::path p = fs::temp_directory_path() / "rc_table_sizes.h5";
+  for (const auto& [name, count] : std::vector<std::pair<const char*, std::size_t>>{{"A_f", 4000}, {"coverage", 2},
+                                                                                    {"fe_order", 3}}) {
+    rc::write_mode_table(sample(), p);
+    replace_root_attribute(p, name, count);
+    const std::string e = read_error(p);
+    EXPECT_NE(e.find(std::string("attribute '") + name + "' holds " + std::to_string(count) + " elements"),
+              std::string::npos) << e;
+  }
+  // A number where an integer belongs (fe_order as one double) is refused by its class, not converted.
+  rc::write_mode_table(sample(), p);
+  replace_root_attribute(p, "fe_order", 1);
+  EXPECT_NE(read_error(p).find("'fe_order' is not integer"), std::string::npos) << read_error(p);
+  fs::remove(p);
+}
+
+TEST(ModeTable, NonFiniteModesAreRefusedAndTablesAreChecksummed) {
+  const fs::path p = fs::temp_directory_path() / "rc_table_nan.h5";
+  rc::write_mode_table(sample(), p);
+  EXPECT_TRUE(rc::read_mode_table(p).checksummed);
+  const hid_t f = H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  const hid_t set = H5Dopen2(f, "/modes/E", H5P_DEFAULT);
+  const std::vector<double> E{std::nan(""), 0.01};
+  H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, E.data());
+  H5Dclose(set);
+  H5Fclose(f);
+  EXPECT_NE(read_error(p).find("non-finite"), std::string::npos) << read_error(p);
+  fs::remove(p);
 }

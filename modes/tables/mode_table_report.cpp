@@ -33,6 +33,9 @@ std::string table_text(const ModeTable& t) {
                                                            "cavity-modes info FILE --geometry prints it)", lines));
   }
   if (!t.command_line.empty()) s += fmt::format("made by: {}\n", t.command_line);
+  if (!t.checksummed)
+    s += "file format: HDF5's oldest (superblock version 0), whose metadata carry no checksums: damage to it is not "
+         "detected on opening (a table written again by this cavity-modes has them)\n";
   const bool conv = !t.converged.empty();
   if (conv)
     s += fmt::format("convergence: against {}, tolerance {:g}; {} of {} clusters converged\n", t.convergence_reference,
