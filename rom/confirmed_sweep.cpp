@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iomanip>
+#include <optional>
 #include <sstream>
 
 namespace rc::rom {
@@ -82,17 +83,15 @@ std::vector<double> sweep_mesh_ekman(const Scene& base, const SweepAxis& axis) {
   return least;
 }
 
+// The point's roots with `tanks` serving each viscous tank at the point's Ekman number.
 ConfirmedSweepPoint evaluate(const Scene& s, double value, TableCache& tables, const std::vector<ConfirmedSweepPoint>& done,
-                             const std::string& binary, const ConfirmSettings& settings,
-                             const std::vector<double>& mesh_ekman, std::ostream& log) {
+                             TankResponses& tanks, const ConfirmSettings& settings) {
   const auto t0 = std::chrono::steady_clock::now();
+  const int solves_before = tanks.solves();
   ConfirmedSweepPoint p;
   p.value = value;
   const ChainModel m = build_model(at_table_ekman(s, tables), &tables);
   const Spectrum sp = compute_spectrum(m);
-  const ScratchFolder scratch;
-  std::ostringstream served;  // the served meshes are said once, at the first point
-  TankResponses tanks = serve_tanks(s, m, binary, scratch.path, done.empty() ? log : served, mesh_ekman);
   for (const BodySpec& b : s.bodies)
     if (viscous_cavity(b)) p.ekman.push_back(*b.cavity->viscosity / (std::abs(b.spin) * b.cavity->scale * b.cavity->scale));
   const auto confirm = [&](const FollowedRoot& start) {
@@ -112,7 +111,7 @@ ConfirmedSweepPoint evaluate(const Scene& s, double value, TableCache& tables, c
   p.stable = p.growing == 0;
   p.ok = std::isfinite(p.growth);
   if (!p.ok) p.error = "no root confirmed";
-  p.solves = tanks.solves();
+  p.solves = tanks.solves() - solves_before;
   p.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return p;
 }
@@ -133,10 +132,17 @@ std::vector<ConfirmedSweepPoint> run_confirmed_sweep(const Scene& base, const Sw
   ConfirmSettings settings;
   settings.tolerance = tolerance;
   std::vector<ConfirmedSweepPoint> points;
-  const std::vector<double> mesh_ekman = sweep_mesh_ekman(base, axis);
-  log << "chain-rom sweep: " << axis.key.text << " moves the viscous tanks' Ekman numbers: each point's roots by "
-      << "(22) with the fluid's own response at its Ek (forced solves; docs/rom.md, \"Spin sweeps with viscous tanks\"), "
-      << "on one mesh per tank, its wall layers made for the sweep's smallest Ek" << std::endl;
+  const bool moves = moves_viscous_ekman(base, axis.key);
+  const std::vector<double> mesh_ekman = moves ? sweep_mesh_ekman(base, axis) : std::vector<double>{};
+  log << "chain-rom sweep: each point's roots by (22) with the fluid's own response (forced solves; docs/rom.md, "
+      << (moves ? "\"Spin sweeps with viscous tanks\"): " + axis.key.text + " moves the Ekman numbers, so each point "
+                  "is served at its own, on one mesh per tank with its wall layers made for the sweep's smallest Ek"
+                : std::string("\"Confirmed roots\"): the tanks served once for every point"))
+      << std::endl;
+  // A key that leaves the Ekman numbers alone: one served process per tank for the whole sweep.
+  const ScratchFolder scratch;
+  std::optional<TankResponses> shared;
+  if (!moves) shared = serve_tanks(base, build_model(base, &tables), binary, scratch.path, log);
   for (int i = 0; i < axis.steps; ++i) {
     const double v = axis.value(i);
     Scene s = base;
@@ -147,7 +153,14 @@ std::vector<ConfirmedSweepPoint> run_confirmed_sweep(const Scene& base, const Sw
                          " does not spin there, and its viscous tank has no Ekman number");
     ConfirmedSweepPoint p;
     try {
-      p = evaluate(s, v, tables, points, binary, settings, mesh_ekman, log);
+      if (shared) {
+        p = evaluate(s, v, tables, points, *shared, settings);
+      } else {
+        std::ostringstream quiet;  // the served meshes are said once, at the first point
+        TankResponses own = serve_tanks(s, build_model(at_table_ekman(s, tables), &tables), binary, scratch.path,
+                                        points.empty() ? log : quiet, mesh_ekman);
+        p = evaluate(s, v, tables, points, own, settings);
+      }
     } catch (const SceneError& e) {
       throw;  // a table that cannot be served: the same at every point
     } catch (const std::exception& e) {

@@ -39,7 +39,9 @@ struct ConfirmedSweepPoint {
   double seconds = 0;
 };
 
-// Runs the sweep point by point (serially: the forced solves are the work, one served process per tank).
+// Runs the sweep point by point (serially: the forced solves are the work). A key that moves the Ekman numbers serves
+// every point at its own (a served process per tank and point); any other key (sweep --confirm) serves each tank once
+// for the whole sweep and confirms every point's body and growing roots with it.
 // `log` gets the served meshes and one line per point. Throws SweepError for a value where a viscous tank does
 // not spin (Ek undefined).
 std::vector<ConfirmedSweepPoint> run_confirmed_sweep(const Scene& base, const SweepAxis& axis,

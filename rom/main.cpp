@@ -97,6 +97,11 @@ int main(int argc, char** argv) {
   spec->add_option("SCENE", scene_file, "scene file (TOML)")->required();
   spec->add_flag("--json", json, "print {\"roots\", \"stable\", \"margin\", \"det_residual\"} as JSON");
   rc::rom::ConfirmRequest confirm_req;
+  bool spec_confirm = false;
+  spec->add_flag("--confirm", spec_confirm, "viscous tanks: what chain-rom confirm prints, the roots the verdict rests "
+                                            "on with the fluid's own response (docs/rom.md, \"Confirmed roots\")");
+  spec->add_option("--cavity-modes", confirm_req.cavity_modes, "with --confirm: the cavity-modes binary (default: "
+                                                               "$CAVITY_MODES, else the one beside chain-rom's build folder)");
   auto* confirm = app.add_subcommand(
       "confirm", "the roots of spectrum checked against the viscous tanks' own response: each body root and each "
                  "growing root iterated on (22) with R(s) by forced solves on the table's mesh (cavity-modes response "
@@ -135,6 +140,10 @@ int main(int argc, char** argv) {
   sweep->add_option("--cavity-modes", sweep_cavity_modes, "a key that moves a viscous tank's Ekman number (spin, "
                     "spin_factor, cavity scale): the cavity-modes binary that serves its forced solves (default: "
                     "$CAVITY_MODES, else the one beside chain-rom's build folder)");
+  bool sweep_confirm = false;
+  sweep->add_flag("--confirm", sweep_confirm, "viscous tanks: every point's body and growing roots confirmed with the "
+                  "fluid's own response by forced solves (docs/rom.md, \"Confirmed roots\"; always so for a key that "
+                  "moves a viscous tank's Ekman number)");
   bool no_track = false;
   sweep->add_flag("--no-track", no_track, "every point's roots by the eigen-solver (default: tracked from the "
                                           "neighbouring point's, checked, the eigen-solver where the check fails)");
@@ -185,10 +194,14 @@ int main(int argc, char** argv) {
       const std::filesystem::path out(out_file);
       if (out.has_parent_path() && !std::filesystem::is_directory(out.parent_path()))
         throw std::runtime_error(out_file + ": the output folder does not exist");
-      const bool confirmed = moves_viscous_ekman(scene, a1.key) || (a2 && moves_viscous_ekman(scene, a2->key));
-      if (confirmed && a2)
+      const bool moves = moves_viscous_ekman(scene, a1.key) || (a2 && moves_viscous_ekman(scene, a2->key));
+      const bool confirmed = moves || sweep_confirm;
+      if (moves && a2)
         throw SweepError("a key that moves a viscous tank's Ekman number sweeps one value at a time (no --param2): "
                          "each point serves forced solves at its own Ek");
+      if (sweep_confirm && a2) throw SweepError("--confirm sweeps one value at a time (no --param2)");
+      if (sweep_confirm && !build_model(scene).viscous)
+        throw SweepError("--confirm: the scene has no viscous tank (its roots are (22)'s own)");
       const std::string script = RC_PLOT_SWEEP_SCRIPT, python = plot_python();
       if (!png_file.empty()) {  // fail before the sweep, not after it
         if (!std::filesystem::exists(script))
@@ -288,7 +301,9 @@ int main(int argc, char** argv) {
       return 0;
     }
     const rc::rom::Scene scene = rc::rom::parse_scene(scene_file);
-    if (confirm->parsed()) return rc::rom::confirm_roots(scene, confirm_req, std::cout) > 0 ? 3 : 0;
+    if (spec->parsed() && spec_confirm) confirm_req.json = json;
+    if (confirm->parsed() || (spec->parsed() && spec_confirm))
+      return rc::rom::confirm_roots(scene, confirm_req, std::cout) > 0 ? 3 : 0;
     if (!spec->parsed() && scene.run.present && scene.run.nonlinear()) return run_nonlinear(scene, out_file);
     const rc::rom::ChainModel model = rc::rom::build_model(scene);
     if (spec->parsed()) {

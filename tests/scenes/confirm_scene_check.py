@@ -78,4 +78,14 @@ two = subprocess.run([rom, "sweep", "scene.toml", "--param", "body[1].spin", "--
                       "2", "--param2", "system.gravity", "--from2", "0", "--to2", "9.81", "--steps2", "2", "-o", "x.csv"],
                      capture_output=True, text=True)
 assert two.returncode == 1 and "one value at a time" in two.stderr and not os.path.exists("x.csv"), two.stderr
+# spectrum --confirm is confirm; sweep --confirm over a key that leaves Ek alone serves each tank once.
+alias = json.loads(subprocess.run([rom, "spectrum", "scene.toml", "--confirm", "--json", "--cavity-modes", modes],
+                                  capture_output=True, text=True, check=True).stdout)
+assert [r["confirmed"] for r in alias["roots"]] == [r["confirmed"] for r in res["roots"]], alias
+sc = subprocess.run([rom, "sweep", "scene.toml", "--param", "body[1].C", "--from", "0.004", "--to", "0.005", "--steps",
+                     "2", "--confirm", "-o", "c.csv", "--cavity-modes", modes], capture_output=True, text=True)
+assert sc.returncode == 0 and "served once for every point" in sc.stderr, sc.stderr
+crow = [l.strip().split(",") for l in open("c.csv")][1:]
+assert len(crow) == 2 and abs(float(crow[0][2]) - res["growth"]) < 1e-9 * res["growth"], (crow, res["growth"])
+print("spectrum --confirm = confirm; sweep --confirm over C: growth %s 1/s" % [float(r[2]) for r in crow])
 print("ok")
