@@ -1,4 +1,4 @@
-// Passivity of response-fit tanks (rom/fit_passivity.hpp): Im R(s) >= 0 on the fit's window. A one-pole fit with a
+// Passivity of response-fit tanks (rom/model/fit_passivity.hpp): Im R(s) >= 0 on the fit's window. A one-pole fit with a
 // real residue is passive; one whose residue has a large imaginary part is not, and the smallest Im R found on the
 // grid must be the minimum of the closed form Im[E/(s - p)] over the window.
 #include "chain_model.hpp"

@@ -1,4 +1,4 @@
-// Galerkin tanks (rom/galerkin_fluid.hpp, rom/galerkin_energy.hpp; docs/rom.md, "Galerkin tanks"): the kept damped
+// Galerkin tanks (rom/model/galerkin_fluid.hpp, rom/model/galerkin_energy.hpp; docs/rom.md, "Galerkin tanks"): the kept damped
 // modes as a Galerkin basis of the fluid, whose energy H balances the joints' and the fluid's dissipation.
 //  * dH/dt from the first-order matrix B at random states (exact for a quadratic H: [H(x + ẋ) − H(x − ẋ)]/2) against
 //    −(joint power + fluid dissipation): chains of one spin, fixed and free, with friction, two Galerkin tanks (the

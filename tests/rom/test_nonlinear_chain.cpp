@@ -1,5 +1,5 @@
-// The nonlinear chain of rigid bodies (rom/nonlinear_chain.hpp, rom/nonlinear_run.hpp) against independent
-// computations: one body is the rigid body of rom/rigid_body.hpp (Euler's equations, a separate formulation);
+// The nonlinear chain of rigid bodies (rom/nonlinear/nonlinear_chain.hpp, rom/nonlinear/nonlinear_run.hpp) against independent
+// computations: one body is the rigid body of rom/nonlinear/rigid_body.hpp (Euler's equations, a separate formulation);
 // the free chain keeps its angular momentum and energy; the fixed chain's energy error falls at the integrator's
 // order; at small amplitude the chain is the linear system (26), the error falling as the amplitude squared.
 #include "chain_model.hpp"

@@ -1,4 +1,4 @@
-// The nonlinear rigid body about a fixed point (rom/rigid_body.hpp), the first brick of the nonlinear chain:
+// The nonlinear rigid body about a fixed point (rom/nonlinear/rigid_body.hpp), the first brick of the nonlinear chain:
 // the Lagrange top at a large angle against its closed form (turning points of the nutation from the cubic in
 // cos θ), the conserved energy and vertical angular momentum, the order of the Lie-group integrator, and the free
 // asymmetric body's angular momentum vector.

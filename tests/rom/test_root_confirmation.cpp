@@ -1,4 +1,4 @@
-// Confirmed roots (rom/root_confirmation.hpp, docs/rom.md "Confirmed roots"): the iteration on (22) with a tank's own
+// Confirmed roots (rom/confirm/root_confirmation.hpp, docs/rom.md "Confirmed roots"): the iteration on (22) with a tank's own
 // R(s) must land on the roots of the chain whose tank IS that R. A fit table with one pole stands for a fluid whose
 // true response has a second, narrow pole beside it (what a rational fit can miss); the chain built from a two-pole
 // table is the independent reference, its roots by the eigen-solver of (26).

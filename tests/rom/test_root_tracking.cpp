@@ -1,4 +1,4 @@
-// Root tracking (rom/root_tracking.hpp), the stability maps' root finder: on a three-body chain whose tanks carry
+// Root tracking (rom/analysis/root_tracking.hpp), the stability maps' root finder: on a three-body chain whose tanks carry
 // response-fit-like viscous tables (40 damped poles each, some of them heavily damped pseudo-poles, as cavity-modes
 // response fits have), the tracked roots must be the eigen-solver's, point by point along a line and over a 2-D map,
 // and a start that cannot lead to the whole set of roots must be refused, never accepted.

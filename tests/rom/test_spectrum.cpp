@@ -137,7 +137,7 @@ TEST(Spectrum, RootsSatisfyTheCharacteristicDeterminant) {
   EXPECT_GT(off, 1e-6);
 }
 
-// Companion tables (rom/companion_check.hpp): a coarser-mesh table of the same cavity. An identical companion
+// Companion tables (rom/analysis/companion_check.hpp): a coarser-mesh table of the same cavity. An identical companion
 // moves no root; one whose cluster differs by 1e-3 in E moves the roots that cluster shapes, and they are marked;
 // a companion of another cavity is refused.
 TEST(Spectrum, CompanionTableMarksTheRootsThatMove) {
@@ -174,7 +174,7 @@ TEST(Spectrum, CompanionTableMarksTheRootsThatMove) {
   EXPECT_THROW(with_companions(with(sphere_file(1))), SceneError);
 }
 
-// The Sturm-type certificate (rom/real_root_certificate.hpp) on the Lagrange top next to its threshold
+// The Sturm-type certificate (rom/analysis/real_root_certificate.hpp) on the Lagrange top next to its threshold
 // C w = 2 sqrt(A a g): 2e-15 above it the two roots are real, 7.9e-7 apart, and the sign count proves both; 2e-15
 // below it they are a complex pair with |Im sigma| = 4.0e-7, inside the tolerance 6.3e-7 that calls them real, and
 // the count proves none: certificate and tolerance disagree, and the spectrum says so.

@@ -1,4 +1,4 @@
-// The verdict with dissipation (rom/spectrum.hpp, docs/rom.md "Verdict with dissipation"): a root that grows is never
+// The verdict with dissipation (rom/analysis/spectrum.hpp, docs/rom.md "Verdict with dissipation"): a root that grows is never
 // "stable", however slowly, once its growth is above rounding (kGrowthNoise of the spectral radius); roots at
 // sigma = 0 within the tolerance are neutral. Before, growth under 1e-7 of the oscillating roots' size counted as
 // neutral: a precession growing at 2.5e-4 1/s beside a nutation at 3000 rad/s was called stable.

@@ -8,7 +8,7 @@
 //  * the ideal sphere (Ek -> 0) and the energy-sink rule (Thomson & Reiter 1960; Kaplan, Modern Spacecraft
 //    Dynamics and Control, 1976, §5): with internal dissipation a body spinning about its axis of least
 //    inertia (C < A) nutates ever wider, one spinning about its axis of most inertia (C > A) settles,
-//  * the nonlinear chain (rom/nonlinear_chain.hpp) with the same viscous tank: at small amplitude it is (26), the
+//  * the nonlinear chain (rom/nonlinear/nonlinear_chain.hpp) with the same viscous tank: at small amplitude it is (26), the
 //    difference falling as the amplitude squared.
 #include "bench.hpp"
 #include "chain_model.hpp"

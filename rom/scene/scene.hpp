@@ -66,7 +66,7 @@ struct RunSpec {
   double output_step = 0;
   std::string method = "exact";  // exact | gauss | rk45
   double tolerance = 1e-10;
-  std::string model = "linear";  // linear (system (26)) | nonlinear (rom/nonlinear_chain.hpp)
+  std::string model = "linear";  // linear (system (26)) | nonlinear (rom/nonlinear/nonlinear_chain.hpp)
   bool nonlinear() const { return model == "nonlinear"; }
 };
 
