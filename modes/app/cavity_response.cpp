@@ -258,6 +258,38 @@ ModeTable response_table_start(const ResponseRequest& req, long unknowns) {
   return t;
 }
 
+namespace {
+
+// The response's kept forced solves (viscous/response_samples.hpp): those of an earlier run of the same cavity, mesh
+// and Ek are read back and said so; none when the request keeps none.
+ResponseSamples kept_samples(const ResponseRequest& req, const ViscousForms& forms) {
+  if (req.samples_file.empty()) return {};
+  ResponseSamples kept(req.samples_file, response_samples_key(req.shape, req.mesh, req.ekman, 2L * forms.complex_size));
+  if (kept.read() > 0 && is_root_rank())
+    std::cerr << fmt::format("cavity-modes response: {} forced solves read back from {}\n", kept.read(),
+                             kept.path().string());
+  return kept;
+}
+
+// A fit that misses its tolerance: what to change and what it costs (the solves made so far are kept, so a retry pays
+// only for new frequencies).
+std::string fit_failure(double lo, double hi, double err, double max_error, int refinements, std::size_t solved,
+                        std::size_t window, const ResponseSamples& kept,
+                        std::chrono::steady_clock::time_point solve_start) {
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - solve_start).count();
+  const std::size_t new_solves = std::max<std::size_t>(kept.added(), 1);
+  const std::string kept_note =
+      kept.path().empty() ? std::string()
+                          : fmt::format("; its {} forced solves are kept in {} and read back by the same command, so "
+                                        "a retry pays only for new frequencies (about {:.2g} s each here)",
+                                        solved, kept.path().string(), seconds / static_cast<double>(new_solves));
+  return fmt::format("the rational fit of R(s) on [{:g}, {:g}] errs by {:.2g} between its samples after {} refinements "
+                     "({} samples; allowed {:.2g}): give more frequencies N or a larger --max-fit-error (at least "
+                     "{:.2g}){}", lo, hi, err, refinements, window, max_error, err, kept_note);
+}
+
+}  // namespace
+
 ModeTable response_fit_table(const ResponseRequest& req, double max_error) {
   const auto start = std::chrono::steady_clock::now();
   check_response_window(req, "a response-fit table");
@@ -276,13 +308,7 @@ ModeTable response_fit_table(const ResponseRequest& req, double max_error) {
   const ViscousForms forms =  // once, for every refinement
       assemble_cavity_forms(req.shape, req.mesh, req.ekman, split ? PETSC_COMM_SELF : PETSC_COMM_WORLD);
   // Every forced solve is kept as it is made: a fit that misses its tolerance, or a stopped run, loses none of them.
-  ResponseSamples kept = req.samples_file.empty()
-                             ? ResponseSamples()
-                             : ResponseSamples(req.samples_file, response_samples_key(req.shape, req.mesh, req.ekman,
-                                                                                      2L * forms.complex_size));
-  if (kept.read() > 0 && is_root_rank())
-    std::cerr << fmt::format("cavity-modes response: {} forced solves read back from {}\n", kept.read(),
-                             kept.path().string());
+  ResponseSamples kept = kept_samples(req, forms);
   const auto solve_start = std::chrono::steady_clock::now();
   const CavityResponse R = viscous_cavity_response(all, forms, &kept, split);
   std::vector<double> window_s;
@@ -357,20 +383,9 @@ ModeTable response_fit_table(const ResponseRequest& req, double max_error) {
   }
   const RationalFit& fit = w.fit;
   const double err = w.error;
-  if (!(err <= max_error)) {
-    // What to change and what it costs: the solves made so far are kept, so a retry pays only for new frequencies.
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - solve_start).count();
-    const std::size_t solved = window_s.size() + tail.size(), new_solves = std::max<std::size_t>(kept.added(), 1);
-    const std::string kept_note =
-        kept.path().empty() ? std::string()
-                            : fmt::format("; its {} forced solves are kept in {} and read back by the same command, so "
-                                          "a retry pays only for new frequencies (about {:.2g} s each here)",
-                                          solved, kept.path().string(), seconds / static_cast<double>(new_solves));
-    throw std::runtime_error(fmt::format("the rational fit of R(s) on [{:g}, {:g}] errs by {:.2g} between its samples "
-                                         "after {} refinements ({} samples; allowed {:.2g}): give more frequencies N or "
-                                         "a larger --max-fit-error (at least {:.2g}){}", lo, hi, err, refinements,
-                                         window_s.size(), max_error, err, kept_note));
-  }
+  if (!(err <= max_error))
+    throw std::runtime_error(fit_failure(lo, hi, err, max_error, refinements, window_s.size() + tail.size(),
+                                         window_s.size(), kept, solve_start));
 
   ModeTable t = response_table_start(req, R.unknowns);
   t.fit_error = err;

@@ -204,6 +204,22 @@ bool ends_with(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
 }
 
+// What `cavity-modes response` takes together: --serve (stdin, stdout) or --sigma and -o; the fit's options with an
+// .h5 output only.
+void check_response_options(const CLI::App& cmd, const ViscousOptions& viscous, const std::string& output) {
+  if (viscous.serve && (cmd.count("--sigma") > 0 || !output.empty()))
+    throw std::runtime_error("--serve reads its frequencies from standard input and answers on standard output: "
+                             "give neither --sigma nor -o");
+  if (viscous.serve && cmd.count("--ekman") == 0)
+    throw std::runtime_error("--serve needs --ekman (the viscous fluid's forced solves)");
+  if (!viscous.serve && output.empty()) throw std::runtime_error("-o,--output is required");
+  if (!viscous.serve && cmd.count("--sigma") == 0) throw std::runtime_error("cavity-modes response needs --sigma FROM:TO:N");
+  if (cmd.count("--max-fit-error") > 0 && !ends_with(output, ".h5"))
+    throw std::runtime_error("--max-fit-error belongs to 'cavity-modes response SHAPE ... -o FILE.h5'");
+  if (viscous.galerkin && !ends_with(output, ".h5"))
+    throw std::runtime_error("--galerkin belongs to 'cavity-modes response SHAPE ... -o FILE.h5'");
+}
+
 // The table's report, then the plain line on what converged (empty when everything did).
 void print_table(const rc::ModeTable& table) {
   std::cout << rc::modes::table_text(table);
@@ -321,19 +337,7 @@ int run(int argc, char** argv) {
   refuse_extras(*table_command, response);
   req.shape = shapes.parsed_shape();
   req.clusters.method = cluster_method == "slices" ? rc::modes::ClusterMethod::slices : rc::modes::ClusterMethod::lanczos;
-  if (response && viscous.serve && (table_command->count("--sigma") > 0 || !output.empty()))
-    throw std::runtime_error("--serve reads its frequencies from standard input and answers on standard output: "
-                             "give neither --sigma nor -o");
-  if (response && viscous.serve && table_command->count("--ekman") == 0)
-    throw std::runtime_error("--serve needs --ekman (the viscous fluid's forced solves)");
-  if (response && !viscous.serve && output.empty()) throw std::runtime_error("-o,--output is required");
-  if (response && !viscous.serve && table_command->count("--sigma") == 0)
-    throw std::runtime_error("cavity-modes response needs --sigma FROM:TO:N");
-  if (response && table_command->count("--max-fit-error") > 0 &&
-      !ends_with(output, ".h5"))
-    throw std::runtime_error("--max-fit-error belongs to 'cavity-modes response SHAPE ... -o FILE.h5'");
-  if (response && viscous.galerkin && !ends_with(output, ".h5"))
-    throw std::runtime_error("--galerkin belongs to 'cavity-modes response SHAPE ... -o FILE.h5'");
+  if (response) check_response_options(*table_command, viscous, output);
   if (!(viscous.max_fit_error > 0) || !std::isfinite(viscous.max_fit_error))
     throw std::runtime_error("--max-fit-error must be positive and finite");
   // Checked here, once: the viscous path hands the tolerance on past compute_mode_table's own check.

@@ -20,6 +20,8 @@ ComplexEigen complex_eigen(const Eigen::MatrixXcd& A, bool vectors) {
   ComplexEigen out;
   const int n = static_cast<int>(A.rows());
   if (n == 0) return out;
+  // LAPACK's QR iteration does not return on infinite or NaN entries (a fuzzed table looped for minutes).
+  if (!A.allFinite()) throw std::runtime_error("the first-order matrix of (26) is not finite: no roots");
 #ifdef RC_HAVE_LAPACK
   Eigen::MatrixXcd a = A;  // zgeev overwrites its input
   out.values.resize(n);

@@ -115,3 +115,18 @@ TEST(RootConfirmation, ReachesTheRootsOfTheTrueResponse) {
 }
 
 }  // namespace rc::rom
+
+namespace rc::rom {
+// A table's decay of 1e308 is finite and read; times a spin it is not, and the eigen-solver looped on it without end
+// (found by the fuzz test): the model refuses it with one line naming the table.
+TEST(RootConfirmation, ModesThatOverflowWhenScaledAreRefused) {
+  const std::string file = fit_table({{{1.0, 1e308}, {1.2, 0.0}}}, "overflowing_fit");
+  try {
+    chain(file, 100.0);
+    ADD_FAILURE() << "a mode with decay 1e308 x 100 rad/s was accepted";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("body[2].cavity.table: a mode scaled to the body's spin and scale overflows"),
+              std::string::npos) << e.what();
+  }
+}
+}  // namespace rc::rom

@@ -1,0 +1,58 @@
+#include "external_programs.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <fcntl.h>
+#include <filesystem>
+#include <spawn.h>
+#include <stdexcept>
+#include <sys/wait.h>
+
+extern char** environ;
+
+namespace rc::rom::app {
+
+int run_program(const std::vector<std::string>& args, bool quiet) {
+  std::vector<char*> argv;
+  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  if (quiet) {
+    posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&fa, 2, "/dev/null", O_WRONLY, 0);
+  }
+  pid_t pid;
+  const int rc = posix_spawn(&pid, argv[0], &fa, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&fa);
+  if (rc != 0) return -1;
+  int status = 0;
+  if (waitpid(pid, &status, 0) < 0) return -1;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
+}
+
+std::string plot_python() {
+  const char* env = std::getenv("CHAIN_ROM_PYTHON");
+  return env && *env ? env : "/usr/bin/python3";
+}
+
+void check_plot_tools(const std::string& script, const std::string& what) {
+  if (!std::filesystem::exists(script))
+    throw std::runtime_error("--png: " + script + " not found (the source tree's scripts/)");
+  if (run_program({plot_python(), "-c", "import matplotlib, numpy"}, true) != 0)
+    throw std::runtime_error("--png: " + plot_python() + " with matplotlib and numpy is needed to draw the " + what +
+                             " (apt-get install python3-matplotlib); nothing written");
+}
+
+void draw_plot(const std::string& script, const std::string& csv, const std::string& png,
+               const std::vector<std::string>& extra) {
+  std::vector<std::string> cmd = {plot_python(), script, csv, "-o", png};
+  cmd.insert(cmd.end(), extra.begin(), extra.end());
+  const int rc = run_program(cmd);
+  if (rc != 0)
+    throw std::runtime_error("--png: " + script + " failed (exit " + std::to_string(rc) + "); the CSV " + csv +
+                             " was written, no PNG");
+  std::printf("wrote %s\n", png.c_str());
+}
+
+}  // namespace rc::rom::app
