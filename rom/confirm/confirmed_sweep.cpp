@@ -181,14 +181,22 @@ std::vector<ConfirmedSweepPoint> run_confirmed_sweep(const Scene& base, const Sw
 
 void write_confirmed_sweep(const std::vector<ConfirmedSweepPoint>& points, const SweepAxis& axis,
                            const std::filesystem::path& out) {
+  // Each file under a temporary name, then renamed: never a half-written CSV.
   const auto write = [](const std::filesystem::path& file, const std::string& text) {
     const std::filesystem::path tmp = file.string() + ".tmp";
-    {
-      std::ofstream os(tmp);
-      os << text;
-      if (!os) throw std::runtime_error(file.string() + ": cannot write");
+    try {
+      {
+        std::ofstream os(tmp);
+        os << text;
+        os.flush();
+        if (!os) throw std::runtime_error(file.string() + ": cannot write");
+      }
+      std::filesystem::rename(tmp, file);
+    } catch (...) {
+      std::error_code ec;
+      std::filesystem::remove(tmp, ec);
+      throw;
     }
-    std::filesystem::rename(tmp, file);
   };
   std::ostringstream main, roots;
   main << std::setprecision(17) << axis.key.text << ",stable,margin,nonreal\n";
