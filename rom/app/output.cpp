@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <unistd.h>
@@ -270,6 +271,51 @@ std::string spectrum_json(const ChainModel& m, const Spectrum& sp) {
   return j.dump();
 }
 
+namespace {
+
+// Whether a root is listed without --all: a body's root, one that grows (or, without dissipation, leaves the real
+// axis), or one a check marks.
+bool listed_by_default(const ChainModel& m, const Spectrum& sp, const Root& r) {
+  if (r.owner.rfind("body", 0) == 0 || r.unconverged_owner || r.companion_moved) return true;
+  return m.dissipative() ? -r.sigma.imag() > sp.noise && std::abs(r.sigma) > sp.tolerance
+                         : std::abs(r.sigma.imag()) > sp.tolerance;
+}
+
+void print_root(std::ostream& os, const ChainModel& m, const Spectrum& sp, const Root& r) {
+  os << std::setprecision(12) << "  " << std::setw(20) << r.sigma.real() << "  " << std::setw(20) << r.sigma.imag()
+     << "i  " << std::setw(10) << r.owner << (r.unconverged_owner ? "*" : " ") << (r.companion_moved ? "~" : " ")
+     << " det residual ";
+  if (std::isnan(r.residual)) os << "n/a (sigma = 0 or at a pole of (22))";
+  else os << std::setprecision(3) << r.residual;
+  // With dissipation the rate a user reads: growth or decay with its e-folding time.
+  const double rate = -r.sigma.imag();
+  if (m.dissipative() && std::abs(r.sigma) > sp.tolerance && std::abs(rate) > sp.noise)
+    os << std::setprecision(3) << (rate > 0 ? "  grows " : "  decays ") << std::abs(rate) << " 1/s (e-folding "
+       << 1 / std::abs(rate) << " s)";
+  os << "\n";
+}
+
+}  // namespace
+
+void print_roots(std::ostream& os, const ChainModel& m, const Spectrum& sp, bool all) {
+  os << "roots sigma (rad/s, solutions e^{i sigma t})" << (all ? "" : ": the bodies', those that grow and those a check marks") << ":\n";
+  int left = 0;
+  double slowest = std::numeric_limits<double>::infinity();  // the slowest decay among the roots left out
+  for (const Root& r : sp.roots) {
+    if (all || listed_by_default(m, sp, r)) {
+      print_root(os, m, sp, r);
+      continue;
+    }
+    ++left;
+    if (std::abs(r.sigma) > sp.tolerance) slowest = std::min(slowest, r.sigma.imag());
+  }
+  if (left == 0) return;
+  os << std::setprecision(3) << "  and " << left << " fluid roots not listed (--all lists every root, --json gives them)";
+  if (m.dissipative() && std::isfinite(slowest)) os << ": none grows, the slowest decays at " << slowest << " 1/s";
+  else if (!m.dissipative()) os << ": all real";
+  os << "\n";
+}
+
 std::string verdict_with_dissipation(const ChainModel& m, const Spectrum& sp) {
   std::ostringstream os;
   os << std::setprecision(6);
@@ -295,7 +341,7 @@ std::string verdict_with_dissipation(const ChainModel& m, const Spectrum& sp) {
   return os.str();
 }
 
-void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp) {
+void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp, bool all) {
   os << (m.free_chain ? "free" : "fixed") << " chain, " << m.n << " bodies, " << m.n_modes()
      << " fluid modes\n";
   for (int k = 0; k < m.n; ++k) {
@@ -321,17 +367,7 @@ void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp) {
     }
     os << "\n";
   }
-  os << "roots sigma (rad/s, solutions e^{i sigma t}):\n";
-  os << std::setprecision(12);
-  for (const Root& r : sp.roots) {
-    os << "  " << std::setw(20) << r.sigma.real() << "  " << std::setw(20) << r.sigma.imag() << "i  "
-       << std::setw(10) << r.owner << (r.unconverged_owner ? "*" : " ") << (r.companion_moved ? "~" : " ")
-       << " det residual ";
-    if (std::isnan(r.residual)) os << "n/a (sigma = 0 or at a pole of (22))";
-    else os << std::setprecision(3) << r.residual << std::setprecision(12);
-    os << "\n";
-  }
-  os << std::setprecision(6);
+  print_roots(os, m, sp, all);
   os << std::setprecision(6);
   if (!m.dissipative()) {
     os << "stable: " << (sp.stable ? "yes" : "no") << " (|Im sigma| <= " << sp.tolerance << " counts as real)\n";

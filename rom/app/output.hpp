@@ -22,7 +22,10 @@ void write_nonlinear_history(const NonlinearHistory& h, int n, const std::filesy
 
 // docs/physics.md §4: {"roots": [[re, im], ...], "stable": bool, "margin": float, "det_residual": float}
 std::string spectrum_json(const ChainModel& m, const Spectrum& sp);
-void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp);
+// The bodies' lines, the roots (without `all`: the bodies' roots, the growing ones and those a check marks, then one
+// line on the rest), the verdict and the checks.
+void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp, bool all = false);
+void print_roots(std::ostream& os, const ChainModel& m, const Spectrum& sp, bool all);
 // The verdict of a chain with friction or viscous tanks, two lines: stable or not, how many roots grow, the fastest
 // with its e-folding time and owner (docs/rom.md, "Verdict with dissipation").
 std::string verdict_with_dissipation(const ChainModel& m, const Spectrum& sp);

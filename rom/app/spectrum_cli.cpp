@@ -28,13 +28,15 @@ int confirm_exit(const Scene& scene, const ConfirmRequest& req) { return confirm
 Command add_spectrum_command(CLI::App& app) {
   struct Options {
     std::string scene;
-    bool json = false, confirm = false;
+    bool json = false, confirm = false, all = false;
     ConfirmRequest confirm_request;
   };
   auto o = std::make_shared<Options>();
   auto* cmd = app.add_subcommand("spectrum", "characteristic roots sigma (e^{i sigma t}), stability verdict, margin");
   cmd->add_option("SCENE", o->scene, "scene file (TOML)")->required();
   cmd->add_flag("--json", o->json, "print {\"roots\", \"stable\", \"margin\", \"det_residual\"} as JSON");
+  cmd->add_flag("--all", o->all, "list every root (default: the bodies' roots, the growing ones and those a check "
+                                 "marks, and one line on the rest)");
   cmd->add_flag("--confirm", o->confirm, "viscous tanks: what chain-rom confirm prints, the roots the verdict rests "
                                          "on with the fluid's own response (docs/rom.md, \"Confirmed roots\")");
   add_cavity_modes_option(cmd, o->confirm_request, "with --confirm: ");
@@ -49,7 +51,7 @@ Command add_spectrum_command(CLI::App& app) {
             if (has_companions(scene))
               mark_companion_shifts(sp, compute_spectrum(build_model(with_companions(scene))));
             if (o->json) std::cout << spectrum_json(model, sp) << "\n";
-            else print_spectrum(std::cout, model, sp);
+            else print_spectrum(std::cout, model, sp, o->all);
             return 0;
           }};
 }
