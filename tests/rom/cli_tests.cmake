@@ -19,6 +19,9 @@ rom_cli(help ARGS --help EXPECT_EXIT 0 MATCH "spectrum")
 rom_cli(spectrum_json ARGS spectrum;top_spheroid.toml;--json EXPECT_EXIT 0
         MATCH "^\\{\"roots\":\\[\\[.*\\]\\],\"stable\":(true|false),\"margin\":[^,]+,\"det_residual\":[^,]+(,.*)?\\}")
 rom_cli(spectrum_text ARGS spectrum;three_pendulums.toml EXPECT_EXIT 0 MATCH "stable: yes")
+# The text leads with the bodies' roots and sums up the fluid's; --all lists every root.
+rom_cli(spectrum_summary ARGS spectrum;top_spheroid.toml EXPECT_EXIT 0 MATCH "and [0-9]+ fluid roots not listed[^\n]*: all real")
+rom_cli(spectrum_all ARGS spectrum;top_spheroid.toml;--all EXPECT_EXIT 0 MATCH "fluid 1\\.1")
 rom_cli(greenhill_unstable ARGS spectrum;greenhill_prolate.toml;--json EXPECT_EXIT 0 MATCH "\"stable\":false")
 rom_cli(run_h5 ARGS run;two_tops.toml;-o;out_two_tops.h5 EXPECT_EXIT 0 MATCH "largest relative drift")
 rom_cli(run_csv ARGS run;top_spheroid.toml;-o;out_top.csv EXPECT_EXIT 0 MATCH "wrote out_top.csv")
