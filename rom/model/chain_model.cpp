@@ -183,6 +183,19 @@ void require_linear_scene(const Scene& scene) {
 
 }  // namespace
 
+namespace {
+// Each kept mode scaled to its body's spin and scale must be finite: a table's decay of 1e308 (finite, and so accepted
+// by the reader) times a spin is infinite, and LAPACK's eigen-solver looped on it without end (fuzz).
+void check_modes_finite(const Scene& scene, const std::vector<FluidMode>& modes) {
+  for (const FluidMode& md : modes)
+    if (!std::isfinite(md.lambda) || !std::isfinite(md.decay) || !std::isfinite(md.E) || !std::isfinite(md.E_imag) ||
+        !std::isfinite(md.a_over_N2))
+      fail(scene, "body[" + std::to_string(md.body + 1) + "].cavity.table",
+           "a mode scaled to the body's spin and scale overflows double precision (row " +
+               std::to_string(md.table_index + 1) + " of the table: lambda, decay or E too large)");
+}
+}  // namespace
+
 ChainModel build_model(const Scene& scene, TableCache* tables, bool linear_keys_only) {
   if (linear_keys_only) require_linear_scene(scene);
   ChainModel cm;
@@ -257,14 +270,7 @@ ChainModel build_model(const Scene& scene, TableCache* tables, bool linear_keys_
   if (!cm.M.allFinite() || !cm.K.allFinite() || !cm.D.allFinite() || !cm.G.allFinite())
     fail(scene, "body", "the chain's inertia, stiffness, friction or gyroscopic terms overflow double precision "
                         "(masses, inertias, lengths, spins or gravity too large together)");
-  // Likewise each kept mode scaled to its body's spin and scale: a table's decay of 1e308 (finite, and so accepted by
-  // the reader) times a spin is infinite, and LAPACK's eigen-solver looped on it without end (fuzz).
-  for (const FluidMode& md : cm.modes)
-    if (!std::isfinite(md.lambda) || !std::isfinite(md.decay) || !std::isfinite(md.E) || !std::isfinite(md.E_imag) ||
-        !std::isfinite(md.a_over_N2))
-      fail(scene, "body[" + std::to_string(md.body + 1) + "].cavity.table",
-           "a mode scaled to the body's spin and scale overflows double precision (row " +
-               std::to_string(md.table_index + 1) + " of the table: lambda, decay or E too large)");
+  check_modes_finite(scene, cm.modes);
   cm.M_eff = cm.M;
   cm.M_eff_imag.setZero(n);
   for (int k = 0; k < n; ++k) {
