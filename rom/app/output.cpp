@@ -297,6 +297,21 @@ void print_root(std::ostream& os, const ChainModel& m, const Spectrum& sp, const
 
 }  // namespace
 
+// The roots where a response fit is extrapolated: named when a verdict rests on them (the bodies' and the growing
+// ones), counted otherwise (most are a fit's heavily damped pseudo-roots far beyond its window).
+void print_outside_fit(std::ostream& os, const ChainModel& m, const Spectrum& sp) {
+  std::ostringstream named;
+  int shown = 0;
+  for (const Root& r : sp.roots)
+    if (r.outside_fit && listed_by_default(m, sp, r) && shown++ < 6)
+      named << " " << r.sigma.real() << std::showpos << r.sigma.imag() << std::noshowpos << "i (" << r.owner << ")";
+  if (shown > 0)
+    os << "warning: " << shown << " of the roots listed lie outside a tank's response-fit window, where its fit is "
+       << "extrapolated (docs/viscous.md, \"Response fit\"):" << named.str() << (shown > 6 ? " and more" : "") << "\n";
+  if (sp.outside_fit > shown)
+    os << sp.outside_fit - shown << " fluid roots not listed lie outside a fit's window too (no verdict rests on them)\n";
+}
+
 void print_roots(std::ostream& os, const ChainModel& m, const Spectrum& sp, bool all) {
   os << "roots sigma (rad/s, solutions e^{i sigma t})" << (all ? "" : ": the bodies', those that grow and those a check marks") << ":\n";
   int left = 0;
@@ -398,16 +413,7 @@ void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp, b
     os << "companion tables: " << sp.companion_moved << " roots (marked ~) move by more than " << kCompanionTolerance
        << " (relative) when the tables are replaced by their coarser companions; the largest move "
        << sp.companion_worst << (sp.companion_moved ? ": those roots depend on the mesh (docs/trust.md)" : "") << "\n";
-  if (sp.outside_fit) {
-    os << "warning: " << sp.outside_fit << " roots lie outside a tank's response-fit window, where its fit is "
-       << "extrapolated (docs/viscous.md, \"Response fit\"):";
-    int shown = 0;
-    for (const Root& r : sp.roots)
-      if (r.outside_fit && shown++ < 6) os << " " << r.sigma.real() << std::showpos << r.sigma.imag() << std::noshowpos
-                                          << "i (" << r.owner << ")";
-    if (sp.outside_fit > 6) os << " and " << sp.outside_fit - 6 << " more";
-    os << "\n";
-  }
+  if (sp.outside_fit) print_outside_fit(os, m, sp);
   for (int k = 0; k < m.n; ++k)
     if (!sp.passivity[k].passive())
       os << "warning: body " << k + 1 << "'s response fit is NOT passive (Im R = " << sp.passivity[k].scan.min_im

@@ -26,6 +26,7 @@ std::string spectrum_json(const ChainModel& m, const Spectrum& sp);
 // line on the rest), the verdict and the checks.
 void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp, bool all = false);
 void print_roots(std::ostream& os, const ChainModel& m, const Spectrum& sp, bool all);
+void print_outside_fit(std::ostream& os, const ChainModel& m, const Spectrum& sp);
 // The verdict of a chain with friction or viscous tanks, two lines: stable or not, how many roots grow, the fastest
 // with its e-folding time and owner (docs/rom.md, "Verdict with dissipation").
 std::string verdict_with_dissipation(const ChainModel& m, const Spectrum& sp);
