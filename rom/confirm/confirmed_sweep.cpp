@@ -83,14 +83,15 @@ std::vector<double> sweep_mesh_ekman(const Scene& base, const SweepAxis& axis) {
   return least;
 }
 
-// The point's roots with `tanks` serving each viscous tank at the point's Ekman number.
-ConfirmedSweepPoint evaluate(const Scene& s, double value, TableCache& tables, const std::vector<ConfirmedSweepPoint>& done,
-                             TankResponses& tanks, const ConfirmSettings& settings) {
+// The point's roots with `tanks` serving each viscous tank at the point's Ekman number; `m` is the point's model with
+// the tables' own Ekman numbers (at_table_ekman), whose roots start the iterations.
+ConfirmedSweepPoint evaluate(const Scene& s, const ChainModel& m, double value,
+                             const std::vector<ConfirmedSweepPoint>& done, TankResponses& tanks,
+                             const ConfirmSettings& settings) {
   const auto t0 = std::chrono::steady_clock::now();
   const int solves_before = tanks.solves();
   ConfirmedSweepPoint p;
   p.value = value;
-  const ChainModel m = build_model(at_table_ekman(s, tables), &tables);
   const Spectrum sp = compute_spectrum(m);
   for (const BodySpec& b : s.bodies)
     if (viscous_cavity(b)) p.ekman.push_back(*b.cavity->viscosity / (std::abs(b.spin) * b.cavity->scale * b.cavity->scale));
@@ -142,7 +143,7 @@ std::vector<ConfirmedSweepPoint> run_confirmed_sweep(const Scene& base, const Sw
   // A key that leaves the Ekman numbers alone: one served process per tank for the whole sweep.
   const ScratchFolder scratch;
   std::optional<TankResponses> shared;
-  if (!moves) shared = serve_tanks(base, build_model(base, &tables), binary, scratch.path, log);
+  if (!moves) shared = serve_tanks(base, build_model(base, &tables), binary, scratch.path, log, {}, &tables);
   for (int i = 0; i < axis.steps; ++i) {
     const double v = axis.value(i);
     Scene s = base;
@@ -153,13 +154,13 @@ std::vector<ConfirmedSweepPoint> run_confirmed_sweep(const Scene& base, const Sw
                          " does not spin there, and its viscous tank has no Ekman number");
     ConfirmedSweepPoint p;
     try {
+      const ChainModel m = build_model(at_table_ekman(s, tables), &tables);  // once a point
       if (shared) {
-        p = evaluate(s, v, tables, points, *shared, settings);
+        p = evaluate(s, m, v, points, *shared, settings);
       } else {
         std::ostringstream quiet;  // the served meshes are said once, at the first point
-        TankResponses own = serve_tanks(s, build_model(at_table_ekman(s, tables), &tables), binary, scratch.path,
-                                        points.empty() ? log : quiet, mesh_ekman);
-        p = evaluate(s, v, tables, points, own, settings);
+        TankResponses own = serve_tanks(s, m, binary, scratch.path, points.empty() ? log : quiet, mesh_ekman, &tables);
+        p = evaluate(s, m, v, points, own, settings);
       }
     } catch (const SceneError& e) {
       throw;  // a table that cannot be served: the same at every point

@@ -24,12 +24,13 @@ int TankResponses::solves() const {
 }
 
 TankResponses serve_tanks(const Scene& scene, const ChainModel& m, const std::string& binary, const fs::path& scratch,
-                          std::ostream& log, const std::vector<double>& mesh_ekman) {
+                          std::ostream& log, const std::vector<double>& mesh_ekman, TableCache* tables) {
   TankResponses t;
   for (int k = 0; k < m.n; ++k) {
     if (m.bodies[k].ekman <= 0) continue;
     const CavitySpec& cav = *scene.bodies[k].cavity;
-    const rc::ModeTable table = rc::read_mode_table(cav.table);
+    const rc::ModeTable own = tables ? rc::ModeTable() : rc::read_mode_table(cav.table);
+    const rc::ModeTable& table = tables ? tables->get(cav.table) : own;
     // The scene's own Ekman number: the table's within 1 % for spectrum; any for a sweep over spin.
     const double scene_ekman = *cav.viscosity / (std::abs(scene.bodies[k].spin) * cav.scale * cav.scale);
     const bool same_ek = std::abs(scene_ekman - table.ekman) <= kEkmanTolerance * table.ekman;
