@@ -19,6 +19,7 @@
 #  4. bench/results/chain_rom_<date>_speed.md: machine, date, commit, load and every timing.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+source "$ROOT/scripts/blas-core.sh"
 REPEAT=3
 if [ "${1:-}" = "--repeat" ]; then REPEAT="${2:?--repeat N}"; fi
 ROM="$ROOT/build/rom/chain-rom"

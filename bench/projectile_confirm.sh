@@ -6,6 +6,7 @@
 #   bash bench/projectile_confirm.sh [BUILD_DIR] [OUT]        (about 10 minutes idle on 2 cores)
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
+source "$ROOT/scripts/blas-core.sh"
 BUILD=${1:-$ROOT/build}
 OUT=${2:-$ROOT/bench/results}
 MODES=$BUILD/modes/cavity-modes

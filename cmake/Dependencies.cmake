@@ -9,6 +9,9 @@ pkg_check_modules(HDF5 REQUIRED IMPORTED_TARGET hdf5-openmpi)
 if(RC_BUILD_MODES)
   pkg_check_modules(PETSC REQUIRED IMPORTED_TARGET PETSc)
   pkg_check_modules(SLEPC REQUIRED IMPORTED_TARGET SLEPc)
+  # zgemm for the Krylov response basis (modes/fe/dense_blas.*): libblas-dev's link name; at run time Debian's
+  # alternatives give the OpenBLAS that MUMPS uses too.
+  find_package(BLAS REQUIRED)
   find_library(GMSH_LIBRARY NAMES gmsh REQUIRED)
   find_path(GMSH_INCLUDE_DIR gmsh.h REQUIRED)
   add_library(gmsh::gmsh UNKNOWN IMPORTED)

@@ -30,6 +30,7 @@ TABLES="$OUT/tables"
 MODES="$ROOT/build/modes/cavity-modes"
 ROM="$ROOT/build/rom/chain-rom"
 PY=/usr/bin/python3
+source "$ROOT/scripts/blas-core.sh"
 START=$SECONDS
 
 step() { printf '\n[run-default %3ds] %s\n' "$((SECONDS - START))" "$*"; }

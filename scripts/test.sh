@@ -8,6 +8,7 @@ if [ "${1:-}" = "--help" ] || [ "${1:-}" = "-h" ]; then
   exit 0
 fi
 cd "$(dirname "$0")/.."
+source scripts/blas-core.sh
 bash scripts/build.sh
 cd build
 ctest --output-on-failure -j "$(nproc)" "$@"

@@ -14,4 +14,9 @@ namespace rc::modes {
 // between the samples (measured against forced solves at their midpoints) above `max_error`.
 ModeTable galerkin_response_table(const ResponseRequest& request, double max_error);
 
+// The same kind of table from a rational Krylov space with greedily chosen expansion points
+// (viscous/krylov_response.hpp; docs/viscous.md, "Krylov response table"): a few factorisations and many
+// back-substitutions instead of a forced solve per sample. Throws std::runtime_error with a one-line cause.
+ModeTable krylov_response_table(const ResponseRequest& request, double max_error);
+
 }  // namespace rc::modes

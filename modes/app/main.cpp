@@ -46,6 +46,7 @@ struct ViscousOptions {
   double sigma_imag = 0;   // imaginary part of every σ
   double max_fit_error = 1e-6;  // response to FILE.h5: the largest fit error accepted
   bool galerkin = false;        // response to FILE.h5: a Galerkin response table instead of a rational fit
+  bool krylov = false;          // response to FILE.h5: a Galerkin table on a greedy rational Krylov space
   bool serve = false;           // response: answer sigma lines on stdin with R on stdout (chain-rom confirm)
 };
 
@@ -145,6 +146,10 @@ void add_response_options(CLI::App* cmd, ViscousOptions& viscous) {
                 "-o FILE.h5 only: instead of a rational fit, the Galerkin projection on the forced solutions at the "
                 "samples: pseudo-modes whose fluid keeps an energy and dissipates it (chain-rom reduction = "
                 "\"galerkin\"), passive by construction (docs/viscous.md, \"Galerkin response table\")");
+  cmd->add_flag("--krylov", viscous.krylov,
+                "-o FILE.h5 only: the Galerkin projection on a rational Krylov space whose expansion points are "
+                "chosen where an error estimate is largest: a few factorisations instead of a forced solve per "
+                "sample (docs/viscous.md, \"Krylov response table\")");
   cmd->add_flag("--serve", viscous.serve,
                 "with --ekman, instead of --sigma and -o: assemble once, then answer each complex sigma read from "
                 "standard input (one a line) with 'R_re R_im' on standard output, until end of input (chain-rom "
@@ -157,8 +162,9 @@ void refuse_extras(const CLI::App& cmd, bool response) {
   if (extras.empty()) return;
   const std::string& first = extras.front();
   if (!response &&
-      (first == "--sigma" || first == "--sigma-imag" || first == "--max-fit-error" || first == "--galerkin"))
-    throw std::runtime_error("--sigma, --sigma-imag, --max-fit-error and --galerkin belong to "
+      (first == "--sigma" || first == "--sigma-imag" || first == "--max-fit-error" || first == "--galerkin" ||
+       first == "--krylov"))
+    throw std::runtime_error("--sigma, --sigma-imag, --max-fit-error, --galerkin and --krylov belong to "
                              "'cavity-modes response SHAPE ...'");
   const std::string name = (response ? "cavity-modes response " : "cavity-modes ") + cmd.get_name();
   if (first.rfind("--", 0) == 0)
@@ -216,8 +222,10 @@ void check_response_options(const CLI::App& cmd, const ViscousOptions& viscous, 
   if (!viscous.serve && cmd.count("--sigma") == 0) throw std::runtime_error("cavity-modes response needs --sigma FROM:TO:N");
   if (cmd.count("--max-fit-error") > 0 && !ends_with(output, ".h5"))
     throw std::runtime_error("--max-fit-error belongs to 'cavity-modes response SHAPE ... -o FILE.h5'");
-  if (viscous.galerkin && !ends_with(output, ".h5"))
-    throw std::runtime_error("--galerkin belongs to 'cavity-modes response SHAPE ... -o FILE.h5'");
+  if ((viscous.galerkin || viscous.krylov) && !ends_with(output, ".h5"))
+    throw std::runtime_error(std::string(viscous.galerkin ? "--galerkin" : "--krylov") +
+                             " belongs to 'cavity-modes response SHAPE ... -o FILE.h5'");
+  if (viscous.galerkin && viscous.krylov) throw std::runtime_error("--galerkin and --krylov exclude each other");
 }
 
 // The table's report, then the plain line on what converged (empty when everything did).
@@ -370,8 +378,9 @@ int run(int argc, char** argv) {
     if (ends_with(output, ".h5")) {
       // A response-fit table: the fit's poles and residues as damped modes (docs/viscous.md, "Response fit"). Its
       // forced solves are kept in FILE.h5.samples until the table is written (viscous/response_samples.hpp).
-      if (!viscous.galerkin) r.samples_file = output + ".samples";
+      if (!viscous.galerkin && !viscous.krylov) r.samples_file = output + ".samples";
       auto table = viscous.galerkin ? rc::modes::galerkin_response_table(r, viscous.max_fit_error)
+                   : viscous.krylov ? rc::modes::krylov_response_table(r, viscous.max_fit_error)
                                     : rc::modes::response_fit_table(r, viscous.max_fit_error);
       if (!rc::modes::is_root_rank()) return 0;
       rc::modes::record_provenance(table, req.shape, command_line);

@@ -58,7 +58,7 @@ bool is_shape(const std::string& w) {
 
 // cavity-modes' options that take no value (main.cpp): skipped with nothing after them.
 bool is_flag(const std::string& name) {
-  for (const char* f : {"--fields", "--fill-gaps", "--no-convergence-check", "--galerkin", "--serve", "--json", "-h",
+  for (const char* f : {"--fields", "--fill-gaps", "--no-convergence-check", "--galerkin", "--krylov", "--serve", "--json", "-h",
                         "--help"})
     if (name == f) return true;
   return false;
@@ -147,9 +147,12 @@ std::string cavity_modes_binary(const std::string& given) {
 ServedResponse::ServedResponse(const std::string& binary, const std::vector<std::string>& args) {
   std::signal(SIGPIPE, SIG_IGN);  // a child that died is reported by the failed write, not by a signal
   std::array<int, 2> in{}, out{};  // in: chain-rom -> child's stdin; out: child's stdout -> chain-rom
-  if (pipe(in.data()) != 0 || pipe(out.data()) != 0) throw std::runtime_error("cannot create a pipe");
+  // Close-on-exec: a second child (one per tank) must not inherit this child's pipe ends, or closing ours would
+  // never give this one its end of input (a scene with three tanks waited for ever).
+  if (pipe2(in.data(), O_CLOEXEC) != 0 || pipe2(out.data(), O_CLOEXEC) != 0)
+    throw std::runtime_error("cannot create a pipe");
   char tmpl[] = "/tmp/chain-rom-served-XXXXXX";
-  const int err = mkstemp(tmpl);
+  const int err = mkostemp(tmpl, O_CLOEXEC);
   if (err < 0) throw std::runtime_error("cannot create a temporary file for cavity-modes' messages");
   stderr_file_ = tmpl;
   posix_spawn_file_actions_t fa;

@@ -61,6 +61,10 @@ expect_error "--max-fit-error on a CSV response" "belongs to" "$BIN" response sp
 expect_error "--galerkin on a CSV response" "belongs to" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:9 --galerkin -o out.csv
 expect_error "--galerkin on a mode table" "belong to 'cavity-modes response" "$BIN" sphere --radius 1 --ekman 1e-2 --galerkin -o out.h5
 expect_error "Galerkin response table with too few samples" "Galerkin response table needs --sigma" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:5 --galerkin -o out.h5
+expect_error "--krylov on a CSV response" "belongs to" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:9 --krylov -o out.csv
+expect_error "--krylov on a mode table" "belong to 'cavity-modes response" "$BIN" sphere --radius 1 --ekman 1e-2 --krylov -o out.h5
+expect_error "--krylov with --galerkin" "exclude each other" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:9 --krylov --galerkin -o out.h5
+expect_error "Krylov response table with too few samples" "Krylov response table needs --sigma" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:5 --krylov -o out.h5
 expect_error "--mesh-ekman above --ekman" "must be at most --ekman" "$BIN" response sphere --radius 1 --ekman 1e-3 --mesh-ekman 1e-2 --serve
 expect_error "--mesh-ekman without --ekman" "applies with --ekman only" "$BIN" sphere --radius 1 --mesh-ekman 1e-3 -o out.h5
 expect_error "--serve without --ekman" "needs --ekman" "$BIN" response sphere --radius 1 --serve

@@ -14,14 +14,14 @@ extern "C" void zgeev_(const char* jobvl, const char* jobvr, const int* n, std::
                        std::size_t jobvl_len, std::size_t jobvr_len);
 #endif
 
-namespace rc::rom {
+namespace rc {
 
-ComplexEigen complex_eigen(const Eigen::MatrixXcd& A, bool vectors) {
+ComplexEigen complex_eigen(const Eigen::MatrixXcd& A, bool vectors, const char* what) {
   ComplexEigen out;
   const int n = static_cast<int>(A.rows());
   if (n == 0) return out;
   // LAPACK's QR iteration does not return on infinite or NaN entries (a fuzzed table looped for minutes).
-  if (!A.allFinite()) throw std::runtime_error("the first-order matrix of (26) is not finite: no roots");
+  if (!A.allFinite()) throw std::runtime_error(std::string(what) + " is not finite: no eigenvalues");
 #ifdef RC_HAVE_LAPACK
   Eigen::MatrixXcd a = A;  // zgeev overwrites its input
   out.values.resize(n);
@@ -49,4 +49,4 @@ ComplexEigen complex_eigen(const Eigen::MatrixXcd& A, bool vectors) {
   return out;
 }
 
-}  // namespace rc::rom
+}  // namespace rc

@@ -1,4 +1,5 @@
-// Eigenvalues and right eigenvectors of a dense complex matrix (the first-order system of `chain-rom spectrum`):
+// Eigenvalues and right eigenvectors of a dense complex matrix (the first-order system of `chain-rom spectrum`, the
+// reduced pencils of cavity-modes' Krylov response tables):
 // LAPACK's zgeev when the build found LAPACK (Debian's liblapack, OpenBLAS's where installed: multishift QR with
 // aggressive early deflation, 3-4 times faster than Eigen's ComplexEigenSolver at the 260 unknowns of a chain with
 // three response-fit tables; docs/benchmarks.md), else Eigen's. Not for concurrent use from several threads (a
@@ -7,14 +8,15 @@
 
 #include <Eigen/Dense>
 
-namespace rc::rom {
+namespace rc {
 
 struct ComplexEigen {
   Eigen::VectorXcd values;
   Eigen::MatrixXcd vectors;  // unit 2-norm columns; empty unless asked for
 };
 
-// Throws std::runtime_error when the QR iteration does not converge.
-ComplexEigen complex_eigen(const Eigen::MatrixXcd& A, bool vectors);
+// Throws std::runtime_error when the QR iteration does not converge, or naming `what` when A is not finite.
+ComplexEigen complex_eigen(const Eigen::MatrixXcd& A, bool vectors,
+                           const char* what = "the first-order matrix of (26)");
 
-}  // namespace rc::rom
+}  // namespace rc

@@ -1,0 +1,321 @@
+#include "krylov_response.hpp"
+
+#include "dense_blas.hpp"
+#include "reduced_transfer.hpp"
+#include "shifted_solver.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+
+namespace rc::modes {
+namespace {
+
+using cd = std::complex<double>;
+
+// A block vector's local pairs (Re, Im) as complex numbers, and back (pairs never straddle ranks: viscous_forms.cpp).
+Eigen::VectorXcd local_of(Vec v) {
+  PetscInt n = 0;
+  const PetscScalar* a = nullptr;
+  petsc_check(VecGetLocalSize(v, &n), "VecGetLocalSize");
+  petsc_check(VecGetArrayRead(v, &a), "VecGetArrayRead");
+  Eigen::VectorXcd out = Eigen::Map<const Eigen::VectorXcd>(reinterpret_cast<const cd*>(a), n / 2);
+  petsc_check(VecRestoreArrayRead(v, &a), "VecRestoreArrayRead");
+  return out;
+}
+
+void store(const Eigen::VectorXcd& x, Vec v) {
+  PetscScalar* a = nullptr;
+  petsc_check(VecGetArray(v, &a), "VecGetArray");
+  Eigen::Map<Eigen::VectorXcd>(reinterpret_cast<cd*>(a), x.size()) = x;
+  petsc_check(VecRestoreArray(v, &a), "VecRestoreArray");
+}
+
+// The 𝓜-orthonormal basis and the small matrices of both projections, grown a block of vectors at a time (one
+// expansion point's Krylov vectors): the products with the basis are matrix–matrix products, one pass over its
+// memory per block rather than one per vector.
+class KrylovBasis {
+ public:
+  explicit KrylovBasis(const ViscousForms& forms) : forms_(forms) {
+    petsc_check(PetscObjectGetComm(reinterpret_cast<PetscObject>(forms.coupling.get()), &comm_), "PetscObjectGetComm");
+    petsc_check(VecDuplicate(forms.coupling, in_.out()), "VecDuplicate");
+    petsc_check(VecDuplicate(forms.coupling, out_.out()), "VecDuplicate");
+    f_ = local_of(forms.coupling);
+  }
+
+  int size() const { return m_; }
+
+  // Orthonormalises the columns of W (local rows of block vectors, themselves 𝓜-orthonormal) against the basis —
+  // two passes of block classical Gram–Schmidt in 𝓜's inner product — and appends what is new (directions whose
+  // remaining norm is above 1e-7 of the columns' unit norm). Returns how many vectors were appended.
+  int add(Eigen::MatrixXcd W);
+
+  // 𝓜 x and x̄ᵀ𝓜y-type products for the point's own Arnoldi process (krylov_reduction's expand).
+  Eigen::VectorXcd apply(Mat op, const Eigen::VectorXcd& x);
+  cd mdot(const Eigen::VectorXcd& x, const Eigen::VectorXcd& mx) const { return sum(x.dot(mx)); }
+
+  // π fᵀx for a block vector x (f is real: f.dot(x) = fᵀx).
+  cd moment(const Eigen::VectorXcd& x) const { return std::numbers::pi * sum(f_.dot(x)); }
+
+  ReducedTransfer galerkin() const {
+    const auto n = m_;
+    return {Mh_.topLeftCorner(n, n), Hh_.topLeftCorner(n, n), fh_.head(n).conjugate(), fh_.head(n)};
+  }
+  ReducedTransfer bilinear() const {
+    const auto n = m_;
+    return {Mb_.topLeftCorner(n, n), Ab_.topLeftCorner(n, n), fh_.head(n).conjugate(), fh_.head(n).conjugate()};
+  }
+  GalerkinMatrices projection() const;
+
+ private:
+  Eigen::MatrixXcd apply(Mat op, const Eigen::MatrixXcd& W);
+  cd sum(cd local) const {
+    MPI_Allreduce(MPI_IN_PLACE, &local, 2, MPI_DOUBLE, MPI_SUM, comm_);
+    return local;
+  }
+  void sum(Eigen::MatrixXcd& v) const {
+    MPI_Allreduce(MPI_IN_PLACE, v.data(), 2 * static_cast<int>(v.size()), MPI_DOUBLE, MPI_SUM, comm_);
+  }
+  void orthogonalise(Eigen::MatrixXcd& W);
+  void reserve(int n);
+  void append(const Eigen::MatrixXcd& W);
+
+  const ViscousForms& forms_;
+  MPI_Comm comm_;
+  PVec in_, out_;
+  Eigen::VectorXcd f_;
+  Eigen::MatrixXcd X_;                  // local rows, m_ columns used
+  Eigen::MatrixXcd Hh_, Mh_, Ab_, Mb_;  // XᴴAX, Xᴴ𝓜X, XᵀAX, Xᵀ𝓜X
+  Eigen::VectorXcd fh_;                 // Xᴴf
+  int m_ = 0;
+};
+
+Eigen::VectorXcd KrylovBasis::apply(Mat op, const Eigen::VectorXcd& x) {
+  store(x, in_);
+  petsc_check(MatMult(op, in_, out_), "MatMult");
+  return local_of(out_);
+}
+
+Eigen::MatrixXcd KrylovBasis::apply(Mat op, const Eigen::MatrixXcd& W) {
+  Eigen::MatrixXcd out(W.rows(), W.cols());
+  for (Eigen::Index j = 0; j < W.cols(); ++j) out.col(j) = apply(op, Eigen::VectorXcd(W.col(j)));
+  return out;
+}
+
+void KrylovBasis::reserve(int n) {
+  if (n <= X_.cols()) return;
+  const int cap = std::max(n, 2 * static_cast<int>(X_.cols()) + 16);
+  X_.conservativeResize(f_.size(), cap);
+  for (auto* P : {&Hh_, &Mh_, &Ab_, &Mb_}) P->conservativeResize(cap, cap);
+  fh_.conservativeResize(cap);
+}
+
+void KrylovBasis::orthogonalise(Eigen::MatrixXcd& W) {
+  for (int pass = 0; pass < 2 && m_ > 0; ++pass) {
+    Eigen::MatrixXcd H;
+    blas_product(X_.leftCols(m_), true, apply(forms_.M, W), H);
+    sum(H);
+    blas_subtract_product(X_.leftCols(m_), H, W);
+  }
+}
+
+int KrylovBasis::add(Eigen::MatrixXcd W) {
+  orthogonalise(W);
+  // What is left, made orthonormal through its Gram matrix's eigen-decomposition (small directions dropped).
+  Eigen::MatrixXcd G = W.adjoint() * apply(forms_.M, W);
+  sum(G);
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXcd> es(0.5 * (G + G.adjoint()));
+  Eigen::Index first = 0;
+  while (first < G.rows() && !(es.eigenvalues()[first] > 1e-14)) ++first;
+  const Eigen::Index r = G.rows() - first;
+  if (r == 0) return 0;
+  Eigen::MatrixXcd Q = W * es.eigenvectors().rightCols(r) *
+                       es.eigenvalues().tail(r).cwiseSqrt().cwiseInverse().asDiagonal();
+  append(Q);
+  return static_cast<int>(r);
+}
+
+// The new columns' entries of every small matrix in one product with [X W]ᴴ and one reduction: XᴴAW; XᵀAW̄ (the new
+// rows of XᴴAX, since wᴴAx = xᵀAw̄ for complex symmetric A); Xᴴ𝓜W; XᵀAW and Xᵀ𝓜W (Xᵀv = conj(Xᴴv̄)); and Wᴴf.
+void KrylovBasis::append(const Eigen::MatrixXcd& W) {
+  const Eigen::Index k = W.cols(), old = m_, n = old + k;
+  reserve(static_cast<int>(n));
+  X_.middleCols(old, k) = W;
+  const auto Xn = X_.leftCols(n);
+  const Eigen::MatrixXcd AW = apply(forms_.A, W), MW = apply(forms_.M, W);
+  const Eigen::MatrixXcd AWbar = apply(forms_.A, Eigen::MatrixXcd(W.conjugate()));
+  Eigen::MatrixXcd rhs(W.rows(), 5 * k);
+  rhs << AW, AWbar.conjugate(), MW, AW.conjugate(), MW.conjugate();
+  Eigen::MatrixXcd Z(n + 1, 5 * k), XZ;
+  blas_product(Xn, true, rhs, XZ);
+  Z.topRows(n) = XZ;
+  Z.row(n).head(k) = (W.adjoint() * f_).transpose();
+  Z.row(n).tail(4 * k).setZero();
+  sum(Z);
+  for (Eigen::Index j = 0; j < k; ++j) {
+    const Eigen::Index c = old + j;
+    Hh_.col(c).head(n) = Z.col(j);
+    Hh_.row(c).head(n) = Z.col(k + j).conjugate().transpose();
+    Hh_(c, c) = Z(c, j);
+    Mh_.col(c).head(n) = Z.col(2 * k + j);
+    Mh_.row(c).head(n) = Z.col(2 * k + j).adjoint();
+    Mh_(c, c) = Z(c, 2 * k + j).real();
+    Ab_.col(c).head(n) = Z.col(3 * k + j).conjugate();
+    Ab_.row(c).head(n) = Z.col(3 * k + j).conjugate().transpose();
+    Mb_.col(c).head(n) = Z.col(4 * k + j).conjugate();
+    Mb_.row(c).head(n) = Z.col(4 * k + j).conjugate().transpose();
+    fh_[c] = Z(n, j);
+  }
+  m_ = static_cast<int>(n);
+}
+
+GalerkinMatrices KrylovBasis::projection() const {
+  GalerkinMatrices g;
+  g.gram = Mh_.topLeftCorner(m_, m_);
+  g.gram = (0.5 * (g.gram + g.gram.adjoint())).eval();
+  g.op = Hh_.topLeftCorner(m_, m_);
+  g.viscous = (g.op - g.op.adjoint()) / cd(0, 2);
+  g.coupling = fh_.head(m_);
+  return g;
+}
+
+// The greedy loop's state: the basis, one solver, the candidates and what has been measured.
+class Greedy {
+ public:
+  Greedy(const ViscousForms& forms, const std::vector<double>& window, const std::vector<double>& beyond)
+      : forms_(forms), basis_(forms), solver_(forms), window_(window) {
+    candidates_ = window;
+    candidates_.insert(candidates_.end(), beyond.begin(), beyond.end());
+    petsc_check(VecDuplicate(forms.coupling, x_.out()), "VecDuplicate");
+    petsc_check(VecDuplicate(forms.coupling, v_.out()), "VecDuplicate");
+    petsc_check(PetscObjectGetComm(reinterpret_cast<PetscObject>(forms.coupling.get()), &comm_), "PetscObjectGetComm");
+  }
+
+  // R(s) by a forced solve; x(s) into `x` when given (the basis unchanged).
+  cd forced(double s, Eigen::VectorXcd* x = nullptr) {
+    solver_.factor(s);
+    solver_.solve(forms_.coupling, x_);
+    const Eigen::VectorXcd xs = local_of(x_);
+    if (x) *x = xs;
+    return basis_.moment(xs);
+  }
+
+  // Factors at s, makes the point's Krylov vectors x(s), (S⁻¹𝓜)x(s), … by Arnoldi in 𝓜's inner product (against
+  // the point's own vectors), and adds them to the basis as one block; returns R(s) by the first, forced solve.
+  cd expand(double s, int vectors) {
+    Eigen::VectorXcd q;
+    const cd R = forced(s, &q);
+    Eigen::MatrixXcd W(q.size(), vectors);
+    Eigen::MatrixXcd MW(q.size(), vectors);
+    int k = 0;
+    for (; k < vectors; ++k) {
+      if (k > 0) {
+        store(MW.col(k - 1), v_);
+        solver_.solve(v_, x_);
+        q = local_of(x_);
+      }
+      if (!normalise_against(q, W.leftCols(k), MW.leftCols(k))) break;
+      W.col(k) = q;
+      MW.col(k) = basis_.apply(forms_.M, q);
+    }
+    basis_.add(W.leftCols(k));
+    return R;
+  }
+
+  // R_G's scale (max over the window) and the worst estimate |R_B − R_G| over the candidates, relative to it.
+  struct Worst { double s = 0, estimate = 0, scale = 0; };
+  Worst worst() const {
+    const ReducedTransfer G = basis_.galerkin(), B = basis_.bilinear();
+    Worst w;
+    std::vector<double> est(candidates_.size());
+    for (std::size_t i = 0; i < candidates_.size(); ++i) {
+      const cd g = G(candidates_[i]);
+      est[i] = std::abs(B(candidates_[i]) - g);
+      if (i < window_.size()) w.scale = std::max(w.scale, std::abs(g));
+    }
+    const auto at = std::max_element(est.begin(), est.end()) - est.begin();
+    w.s = candidates_[static_cast<std::size_t>(at)];
+    w.estimate = est[static_cast<std::size_t>(at)] / w.scale;
+    w.scale *= std::numbers::pi;
+    return w;
+  }
+
+  cd galerkin_at(double s) const { return std::numbers::pi * basis_.galerkin()(s); }
+  const KrylovBasis& basis() const { return basis_; }
+
+ private:
+  // q against the columns of W (𝓜W given), twice, then to unit 𝓜-norm; false when nothing is left of it.
+  bool normalise_against(Eigen::VectorXcd& q, const Eigen::Ref<const Eigen::MatrixXcd>& W,
+                         const Eigen::Ref<const Eigen::MatrixXcd>& MW) {
+    const Eigen::VectorXcd mq0 = basis_.apply(forms_.M, q);
+    const double before = std::sqrt(std::max(basis_.mdot(q, mq0).real(), 0.0));
+    for (int pass = 0; pass < 2 && W.cols() > 0; ++pass) {
+      Eigen::VectorXcd h = MW.adjoint() * q;  // W̄ᵀ𝓜q = (𝓜W)ᴴq, 𝓜 real symmetric
+      MPI_Allreduce(MPI_IN_PLACE, h.data(), 2 * static_cast<int>(h.size()), MPI_DOUBLE, MPI_SUM, comm_);
+      q -= W * h;
+    }
+    const double norm = std::sqrt(std::max(basis_.mdot(q, basis_.apply(forms_.M, q)).real(), 0.0));
+    if (!(norm > 1e-10 * before)) return false;
+    q /= norm;
+    return true;
+  }
+
+  const ViscousForms& forms_;
+  KrylovBasis basis_;
+  ShiftedSolver solver_;
+  MPI_Comm comm_;
+  std::vector<double> window_, candidates_;
+  PVec x_, v_;
+};
+
+}  // namespace
+
+KrylovReduction krylov_reduction(const ViscousForms& forms, const std::vector<double>& window,
+                                 const std::vector<double>& beyond, const KrylovOptions& options,
+                                 const std::function<void(const std::string&)>& progress) {
+  if (window.size() < 3) throw std::invalid_argument("a Krylov response reduction needs at least 3 window frequencies");
+  Greedy greedy(forms, window, beyond);
+  KrylovReduction out;
+  for (const double s : {window.front(), 0.5 * (window.front() + window.back()), window.back()}) {
+    greedy.expand(s, options.vectors_per_point);
+    out.points.push_back(s);
+    out.point_errors.push_back(std::numeric_limits<double>::quiet_NaN());
+  }
+  for (;;) {
+    const auto worst = greedy.worst();
+    const cd before = greedy.galerkin_at(worst.s);
+    if (worst.estimate <= options.tolerance) {
+      // The estimate says done: a forced solve where it is largest says whether it is right. If not, that point
+      // (factored already) is expanded like any other and the search goes on.
+      out.check_point = worst.s;
+      out.check_error = std::abs(greedy.forced(worst.s) - before) / worst.scale;
+      if (out.check_error <= options.tolerance) {
+        out.estimate = worst.estimate;
+        out.scale = worst.scale;
+        break;
+      }
+    }
+    if (static_cast<int>(out.points.size()) >= options.max_points)
+      throw std::runtime_error(fmt::format("the Krylov response still errs by {:.2g} of max|R| (at s = {:.6g}) after "
+                                           "{} expansion points, {} vectors (allowed {:.2g}): a larger "
+                                           "--max-fit-error, or a narrower window",
+                                           std::max(worst.estimate, out.check_error), worst.s, out.points.size(),
+                                           greedy.basis().size(), options.tolerance));
+    const cd R = greedy.expand(worst.s, options.vectors_per_point);
+    out.points.push_back(worst.s);
+    out.point_errors.push_back(std::abs(R - before) / worst.scale);
+    if (progress)
+      progress(fmt::format("krylov response: point {} at s = {:.6g}: estimated {:.2g}, measured {:.2g} of max|R|; {} "
+                           "vectors", out.points.size(), worst.s, worst.estimate, out.point_errors.back(),
+                           greedy.basis().size()));
+  }
+  out.projection = greedy.basis().projection();
+  out.vectors = greedy.basis().size();
+  return out;
+}
+
+}  // namespace rc::modes

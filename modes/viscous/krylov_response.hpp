@@ -1,0 +1,50 @@
+// The viscous fluid's response reduced on a rational Krylov space whose expansion points are chosen greedily
+// (docs/viscous.md, "Krylov response table"): tables in seconds instead of hundreds of forced solves.
+//
+// At an expansion point s_i one MUMPS factorisation of S(s_i) = s_i𝓜 − A gives, by back-substitutions only (about
+// 1/30 of a factorisation each), the Krylov vectors S⁻¹f, (S⁻¹𝓜)S⁻¹f, …: a shift-and-invert Krylov space, which holds
+// the damped modes nearest s_i and the forced solutions x(s) = S(s)⁻¹f for s near s_i. The basis X (𝓜-orthonormal,
+// over every point) carries two reduced models of R(s) = π fᵀS(s)⁻¹f:
+//   R_G(s) = π fᵀX (Xᴴ S(s) X)⁻¹ Xᴴf   the Hermitian (Galerkin) projection: passive, it becomes the table;
+//   R_B(s) = π fᵀX (Xᵀ S(s) X)⁻¹ Xᵀf   the bilinear one: A and 𝓜 are complex symmetric (viscous_forms.hpp), so the
+//                                        dual problem Sᵀy = f is the primal one and R_B's error is quadratic in the
+//                                        basis's error.
+// R_B − R_G = π x_Bᵀ r_G (x_B = X c_B, r_G the Galerkin residual) is the dual-weighted residual estimate of R_G's
+// error, at O(m²) per frequency (reduced_transfer.hpp). The next expansion point is the candidate frequency where
+// it is largest; a forced solve there measures R_G's true error before the point is added.
+#pragma once
+
+#include "galerkin_projection.hpp"
+#include "viscous_forms.hpp"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace rc::modes {
+
+struct KrylovOptions {
+  double tolerance = 1e-6;    // stop when the estimate is below this × max|R| on the window
+  int vectors_per_point = 8;  // Krylov vectors per expansion point (one factorisation, this many back-substitutions)
+  int max_points = 60;        // expansion points (factorisations) at most
+};
+
+struct KrylovReduction {
+  GalerkinMatrices projection;        // the Hermitian projection on the basis: reduce_on_span gives the table's rows
+  std::vector<double> points;         // expansion points, in the order chosen
+  std::vector<double> point_errors;   // |R(s) − R_G(s)| / scale just before s was added (the first ones: NaN)
+  double estimate = 0;                // max over the candidates of |R_B − R_G| / scale, final basis
+  double check_point = 0;             // a forced solve at the final worst candidate, not added to the basis:
+  double check_error = 0;             //   |R − R_G| / scale there
+  double scale = 0;                   // max |R_G| over the window's candidates
+  int vectors = 0;                    // basis size
+};
+
+// Chooses expansion points among `window` (real frequencies, increasing) and `beyond` (the tail) until the estimate
+// is below options.tolerance. Throws std::runtime_error with a one-line cause when a solve fails or max_points is
+// reached first (naming the estimate then).
+KrylovReduction krylov_reduction(const ViscousForms& forms, const std::vector<double>& window,
+                                 const std::vector<double>& beyond, const KrylovOptions& options,
+                                 const std::function<void(const std::string&)>& progress = {});
+
+}  // namespace rc::modes
