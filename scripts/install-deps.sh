@@ -17,7 +17,9 @@ PACKAGES=(
                                         # reference BLAS): viscous LU factorisations 3.5x faster. Serial: the
                                         # threaded build made the dense sum-rule eigensolve 400x less exact
   libeigen3-dev                         # chain-rom linear algebra
-  liblapack-dev                         # chain-rom spectrum: LAPACK zgeev (complex_eigen.hpp)
+  liblapack-dev                         # LAPACK zgeev (common/complex_eigen.hpp): chain-rom spectrum, the Krylov
+                                        # response tables' reduced pencils
+  libblas-dev                           # zgemm for the Krylov response basis (modes/fe/dense_blas.hpp)
   libhdf5-openmpi-dev                   # the HDF5 flavour PETSc links
   libcli11-dev libtomlplusplus-dev libfmt-dev nlohmann-json3-dev
   libgtest-dev
