@@ -44,7 +44,7 @@ def main():
             for kind in ("fit", "galerkin"):
                 out = os.path.join(d, "%s_%d.h5" % (kind, n))
                 cmd = [args.bin, "response", *shape, "--ekman", "1e-3", "--sigma", "-1.5:2:%d" % n, "-o", out]
-                cmd += ["--max-fit-error", "1"] + (["--galerkin"] if kind == "galerkin" else [])
+                cmd += ["--max-fit-error", "1"] + (["--galerkin"] if kind == "galerkin" else ["--fit"])
                 t0 = time.time()
                 subprocess.run(cmd, check=True, capture_output=True)
                 seconds = time.time() - t0

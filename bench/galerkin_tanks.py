@@ -53,7 +53,7 @@ def tables(args, d):
                         "--no-convergence-check", "-o", modes], check=True, capture_output=True)
     if not os.path.exists(fit):
         subprocess.run([args.bin, "response", "cylinder", "--radius", "1", "--height", "2", "--ekman", "1e-3",
-                        "--sigma", "-1.5:2:141", "-o", fit], check=True, capture_output=True)
+                        "--sigma", "-1.5:2:141", "--fit", "-o", fit], check=True, capture_output=True)
     if not os.path.exists(galerkin):
         subprocess.run([args.bin, "response", "cylinder", "--radius", "1", "--height", "2", "--ekman", "1e-3",
                         "--sigma", "-1.5:2:141", "--galerkin", "-o", galerkin], check=True, capture_output=True)

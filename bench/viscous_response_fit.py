@@ -34,7 +34,7 @@ def fit_table(binary, ek, step, path):
     sig = ",".join("%.12g" % x for x in samples(ek, step))
     t0 = time.time()
     p = subprocess.run([binary, "response", "sphere", "--radius", "1", "--ekman", repr(ek), "--sigma", sig,
-                        "--max-fit-error", "1e-4", "-o", path], capture_output=True, text=True)
+                        "--max-fit-error", "1e-4", "--fit", "-o", path], capture_output=True, text=True)
     if p.returncode:
         raise SystemExit("Ek %g: %s" % (ek, p.stderr.strip()))
     out = p.stdout

@@ -178,6 +178,11 @@ ModeTable krylov_response_table(const ResponseRequest& req, double max_error) {
 
   ModeTable t = response_table_start(req, 2L * forms.complex_size);
   t.fit_error = std::max(k.estimate, k.check_error);
+  if (!k.within_tolerance && is_root_rank())
+    std::cerr << fmt::format("cavity-modes response: warning: after {} expansion points the table errs by {:.2g} of "
+                             "max|R|, above --max-fit-error {:.2g}; it is written with that error (fit_error): a "
+                             "larger --max-fit-error, or a narrower window\n", k.points.size(), t.fit_error,
+                             max_error);
   const cd sum = add_ritz_rows(t, red, t.fit_error);
   t.coverage = t.sum_rule > 0 ? sum.real() / t.sum_rule : 1.0;
   const PassivityScan passivity = scan_passivity(red.lambda, red.residue, lo, hi);
@@ -189,11 +194,13 @@ ModeTable krylov_response_table(const ResponseRequest& req, double max_error) {
                          "greedily on {} frequencies of [{:g}, {:g}] and {} beyond it up to |s| = {:.3g}, {} vectors "
                          "per point, {} basis vectors ({} directions dropped as dependent), {} Ritz pairs; estimated "
                          "error (bilinear against Hermitian projection) at most {:.2g} of max|R|, measured by a forced "
-                         "solve at the worst estimate s = {:.6g}: {:.2g}; min Im R on the window {:.2g} max|R|; sum of "
+                         "solve at the worst estimate s = {:.6g}: {:.2g}{}; min Im R on the window {:.2g} max|R|; sum of "
                          "residues {:.9g}{:+.3g}i, A_f - J_zh = {:.9g}; forced solves on Taylor-Hood P{}/P{}, {} real "
                          "unknowns", k.points.size(), window.size(), lo, hi, beyond.size(), std::abs(beyond.back()),
                          options.vectors_per_point, k.vectors, red.dropped, red.lambda.size(), k.estimate,
-                         k.check_point, k.check_error, passivity.min_im, sum.real(), sum.imag(), t.sum_rule,
+                         k.check_point, k.check_error,
+                         k.within_tolerance ? "" : fmt::format(" (NOT within --max-fit-error {:.2g})", max_error),
+                         passivity.min_im, sum.real(), sum.imag(), t.sum_rule,
                          req.mesh.order, req.mesh.order - 1, 2L * forms.complex_size);
   t.tolerance = 1e-10;
   t.sort_by_energy();

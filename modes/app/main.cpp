@@ -45,8 +45,9 @@ struct ViscousOptions {
   std::string sigma;       // FROM:TO:N (real parts) or a list of complex numbers
   double sigma_imag = 0;   // imaginary part of every σ
   double max_fit_error = 1e-6;  // response to FILE.h5: the largest fit error accepted
-  bool galerkin = false;        // response to FILE.h5: a Galerkin response table instead of a rational fit
-  bool krylov = false;          // response to FILE.h5: a Galerkin table on a greedy rational Krylov space
+  // response to FILE.h5: the Krylov response table (the default), a rational fit, or the Galerkin projection on
+  // the forced solutions at the samples.
+  bool krylov = false, fit = false, galerkin = false;
   bool serve = false;           // response: answer sigma lines on stdin with R on stdout (chain-rom confirm)
 };
 
@@ -140,16 +141,18 @@ void add_response_options(CLI::App* cmd, ViscousOptions& viscous) {
   cmd->add_option("--sigma-imag", viscous.sigma_imag,
                   fmt::format("the imaginary part of every sigma of FROM:TO:N (default {})", number(viscous.sigma_imag)));
   cmd->add_option("--max-fit-error", viscous.max_fit_error,
-                  fmt::format("-o FILE.h5 only: the largest relative error of the rational fit of R between its "
-                              "samples that is accepted (default {})", number(viscous.max_fit_error)));
-  cmd->add_flag("--galerkin", viscous.galerkin,
-                "-o FILE.h5 only: instead of a rational fit, the Galerkin projection on the forced solutions at the "
-                "samples: pseudo-modes whose fluid keeps an energy and dissipates it (chain-rom reduction = "
-                "\"galerkin\"), passive by construction (docs/viscous.md, \"Galerkin response table\")");
+                  fmt::format("-o FILE.h5 only: the largest error of the table's R, relative to max|R| on the window, "
+                              "that is accepted (default {})", number(viscous.max_fit_error)));
   cmd->add_flag("--krylov", viscous.krylov,
-                "-o FILE.h5 only: the Galerkin projection on a rational Krylov space whose expansion points are "
-                "chosen where an error estimate is largest: a few factorisations instead of a forced solve per "
-                "sample (docs/viscous.md, \"Krylov response table\")");
+                "-o FILE.h5 only, the default: the Galerkin projection on a rational Krylov space whose expansion "
+                "points are chosen where an error estimate is largest, a few factorisations instead of a forced "
+                "solve per sample; passive, its fluid holds an energy (docs/viscous.md, \"Krylov response table\")");
+  cmd->add_flag("--fit", viscous.fit,
+                "-o FILE.h5 only: instead, a rational (AAA) fit of R by forced solves at the samples, refined where "
+                "it errs (docs/viscous.md, \"Response fit\")");
+  cmd->add_flag("--galerkin", viscous.galerkin,
+                "-o FILE.h5 only: instead, the Galerkin projection on the forced solutions at the samples "
+                "(docs/viscous.md, \"Galerkin response table\")");
   cmd->add_flag("--serve", viscous.serve,
                 "with --ekman, instead of --sigma and -o: assemble once, then answer each complex sigma read from "
                 "standard input (one a line) with 'R_re R_im' on standard output, until end of input (chain-rom "
@@ -163,8 +166,8 @@ void refuse_extras(const CLI::App& cmd, bool response) {
   const std::string& first = extras.front();
   if (!response &&
       (first == "--sigma" || first == "--sigma-imag" || first == "--max-fit-error" || first == "--galerkin" ||
-       first == "--krylov"))
-    throw std::runtime_error("--sigma, --sigma-imag, --max-fit-error, --galerkin and --krylov belong to "
+       first == "--krylov" || first == "--fit"))
+    throw std::runtime_error("--sigma, --sigma-imag, --max-fit-error, --krylov, --fit and --galerkin belong to "
                              "'cavity-modes response SHAPE ...'");
   const std::string name = (response ? "cavity-modes response " : "cavity-modes ") + cmd.get_name();
   if (first.rfind("--", 0) == 0)
@@ -222,10 +225,11 @@ void check_response_options(const CLI::App& cmd, const ViscousOptions& viscous, 
   if (!viscous.serve && cmd.count("--sigma") == 0) throw std::runtime_error("cavity-modes response needs --sigma FROM:TO:N");
   if (cmd.count("--max-fit-error") > 0 && !ends_with(output, ".h5"))
     throw std::runtime_error("--max-fit-error belongs to 'cavity-modes response SHAPE ... -o FILE.h5'");
-  if ((viscous.galerkin || viscous.krylov) && !ends_with(output, ".h5"))
-    throw std::runtime_error(std::string(viscous.galerkin ? "--galerkin" : "--krylov") +
+  if ((viscous.galerkin || viscous.krylov || viscous.fit) && !ends_with(output, ".h5"))
+    throw std::runtime_error(std::string(viscous.galerkin ? "--galerkin" : viscous.fit ? "--fit" : "--krylov") +
                              " belongs to 'cavity-modes response SHAPE ... -o FILE.h5'");
-  if (viscous.galerkin && viscous.krylov) throw std::runtime_error("--galerkin and --krylov exclude each other");
+  if (int(viscous.galerkin) + int(viscous.krylov) + int(viscous.fit) > 1)
+    throw std::runtime_error("--krylov, --fit and --galerkin exclude each other (one table method)");
 }
 
 // The table's report, then the plain line on what converged (empty when everything did).
@@ -376,12 +380,13 @@ int run(int argc, char** argv) {
       return 0;
     }
     if (ends_with(output, ".h5")) {
-      // A response-fit table: the fit's poles and residues as damped modes (docs/viscous.md, "Response fit"). Its
-      // forced solves are kept in FILE.h5.samples until the table is written (viscous/response_samples.hpp).
-      if (!viscous.galerkin && !viscous.krylov) r.samples_file = output + ".samples";
+      // A response table: pseudo-modes whose R is the fluid's on the window (docs/viscous.md, "Krylov response
+      // table"). A rational fit keeps its forced solves in FILE.h5.samples until the table is written
+      // (viscous/response_samples.hpp).
+      if (viscous.fit) r.samples_file = output + ".samples";
       auto table = viscous.galerkin ? rc::modes::galerkin_response_table(r, viscous.max_fit_error)
-                   : viscous.krylov ? rc::modes::krylov_response_table(r, viscous.max_fit_error)
-                                    : rc::modes::response_fit_table(r, viscous.max_fit_error);
+                   : viscous.fit    ? rc::modes::response_fit_table(r, viscous.max_fit_error)
+                                    : rc::modes::krylov_response_table(r, viscous.max_fit_error);
       if (!rc::modes::is_root_rank()) return 0;
       rc::modes::record_provenance(table, req.shape, command_line);
       rc::write_mode_table(table, output);

@@ -26,7 +26,7 @@ namespace rc::modes {
 struct KrylovOptions {
   double tolerance = 1e-6;    // stop when the estimate is below this × max|R| on the window
   int vectors_per_point = 8;  // Krylov vectors per expansion point (one factorisation, this many back-substitutions)
-  int max_points = 60;        // expansion points (factorisations) at most
+  int max_points = 100;       // expansion points (factorisations) at most
 };
 
 struct KrylovReduction {
@@ -38,11 +38,12 @@ struct KrylovReduction {
   double check_error = 0;             //   |R − R_G| / scale there
   double scale = 0;                   // max |R_G| over the window's candidates
   int vectors = 0;                    // basis size
+  bool within_tolerance = true;       // false: max_points reached first (estimate and check_error say how far)
 };
 
 // Chooses expansion points among `window` (real frequencies, increasing) and `beyond` (the tail) until the estimate
-// is below options.tolerance. Throws std::runtime_error with a one-line cause when a solve fails or max_points is
-// reached first (naming the estimate then).
+// is below options.tolerance, or max_points are used (then within_tolerance is false). Throws std::runtime_error with
+// a one-line cause when a solve fails.
 KrylovReduction krylov_reduction(const ViscousForms& forms, const std::vector<double>& window,
                                  const std::vector<double>& beyond, const KrylovOptions& options,
                                  const std::function<void(const std::string&)>& progress = {});

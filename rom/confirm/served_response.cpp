@@ -58,7 +58,7 @@ bool is_shape(const std::string& w) {
 
 // cavity-modes' options that take no value (main.cpp): skipped with nothing after them.
 bool is_flag(const std::string& name) {
-  for (const char* f : {"--fields", "--fill-gaps", "--no-convergence-check", "--galerkin", "--krylov", "--serve", "--json", "-h",
+  for (const char* f : {"--fields", "--fill-gaps", "--no-convergence-check", "--galerkin", "--krylov", "--fit", "--serve", "--json", "-h",
                         "--help"})
     if (name == f) return true;
   return false;

@@ -63,6 +63,7 @@ expect_error "--galerkin on a mode table" "belong to 'cavity-modes response" "$B
 expect_error "Galerkin response table with too few samples" "Galerkin response table needs --sigma" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:5 --galerkin -o out.h5
 expect_error "--krylov on a CSV response" "belongs to" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:9 --krylov -o out.csv
 expect_error "--krylov on a mode table" "belong to 'cavity-modes response" "$BIN" sphere --radius 1 --ekman 1e-2 --krylov -o out.h5
+expect_error "--fit on a CSV response" "belongs to" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:9 --fit -o out.csv
 expect_error "--krylov with --galerkin" "exclude each other" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:9 --krylov --galerkin -o out.h5
 expect_error "Krylov response table with too few samples" "Krylov response table needs --sigma" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:5 --krylov -o out.h5
 expect_error "--mesh-ekman above --ekman" "must be at most --ekman" "$BIN" response sphere --radius 1 --ekman 1e-3 --mesh-ekman 1e-2 --serve
@@ -84,10 +85,10 @@ d = max(abs(a - b) / abs(b) for a, b in zip(served, direct))
 assert d < 1e-13, d
 print("served R = CSV R to %.1e" % d)
 '; then ok "response --serve"; else bad "response --serve: $(tail -2 served.err)"; fi
-expect_error "response fit that misses its tolerance" "give more frequencies" "$BIN" response sphere --radius 1 --ekman 1e-2 "${small_response[@]}" --sigma -2:3:9 --max-fit-error 1e-14 -o out.h5
+expect_error "response fit that misses its tolerance" "give more frequencies" "$BIN" response sphere --radius 1 --ekman 1e-2 "${small_response[@]}" --sigma -2:3:9 --max-fit-error 1e-14 --fit -o out.h5
 # ... keeps its forced solves, and the retry reads them back and solves nothing it has (nor leaves them behind).
 if [ -s out.h5.samples ] && [ ! -e out.h5 ] &&
-   "$BIN" response sphere --radius 1 --ekman 1e-2 "${small_response[@]}" --sigma -2:3:9 --max-fit-error 1e-3 -o out.h5 \
+   "$BIN" response sphere --radius 1 --ekman 1e-2 "${small_response[@]}" --sigma -2:3:9 --max-fit-error 1e-3 --fit -o out.h5 \
      > retry.txt 2> retry.err && grep -q "forced solves read back from out.h5.samples" retry.err &&
    ! grep -q "cavity-modes response: [0-9]*/[0-9]* frequencies" retry.err && [ -f out.h5 ] && [ ! -e out.h5.samples ]; then
   ok "a fit that misses its tolerance keeps its solves for the retry ($(grep -o '[0-9]* forced solves read back' retry.err))"
@@ -95,8 +96,16 @@ else
   bad "kept samples: $(ls out.h5* 2>&1 | tr '\n' ' ') $(tail -1 retry.err 2>/dev/null)"
 fi
 rm -f out.h5
+# A Krylov table that cannot reach its tolerance (1e-15: rounding) is still written, marked with the error it has.
+if "$BIN" response sphere --radius 1 --ekman 1e-2 "${small_response[@]}" --sigma -2:3:9 --max-fit-error 1e-15 -o cap.h5 \
+     > cap.txt 2> cap.err && [ -f cap.h5 ] && grep -q "warning: after 100 expansion points the table errs by" cap.err &&
+   grep -q "NOT within --max-fit-error 1e-15" cap.txt; then
+  ok "a Krylov table out of expansion points is written and marked ($(grep -o 'errs by [0-9.e+-]*' cap.err))"
+else
+  bad "Krylov table at its point limit: $(tail -1 cap.err)"
+fi
 # Too few samples: the fit errs between them, samples are added where it does, and the table is made.
-if "$BIN" response sphere --radius 1 --ekman 1e-2 "${small_response[@]}" --sigma -1.5:2:11 -o refit.h5 > refit.txt 2> refit.err &&
+if "$BIN" response sphere --radius 1 --ekman 1e-2 "${small_response[@]}" --sigma -1.5:2:11 --fit -o refit.h5 > refit.txt 2> refit.err &&
    grep -q "every other of 19 real samples in \[-1.5, 2\] (11 given, 1 refinements where the fit erred)" refit.txt; then
   ok "response fit refines its samples where it errs ($(grep -o 'max error between the window.s samples [0-9.e+-]*' refit.txt))"
 else
@@ -137,8 +146,8 @@ for name, re, im in (("lambda + i decay", "lambda", "decay"), ("E + i E_imag", "
 '; then ok "mpirun -n 1 and -n 2 give the same table"; else bad "mpirun: $(tail -3 mpi2.txt)"; fi
   # A response-fit table under mpirun shares its frequencies out between the ranks (each with the whole problem):
   # the same samples, so the same fit as the serial run's.
-  if "$BIN" response sphere --radius 1 --ekman 1e-2 "${small_response[@]}" --sigma -1.5:2:21 -o fit1.h5 > fit1.txt 2>&1 &&
-     mpirun -n 2 "$BIN" response sphere --radius 1 --ekman 1e-2 "${small_response[@]}" --sigma -1.5:2:21 -o fit2.h5 \
+  if "$BIN" response sphere --radius 1 --ekman 1e-2 "${small_response[@]}" --sigma -1.5:2:21 --fit -o fit1.h5 > fit1.txt 2>&1 &&
+     mpirun -n 2 "$BIN" response sphere --radius 1 --ekman 1e-2 "${small_response[@]}" --sigma -1.5:2:21 --fit -o fit2.h5 \
        > fit2.txt 2>&1 && /usr/bin/python3 -c '
 import h5py
 a, b = h5py.File("fit1.h5")["modes"], h5py.File("fit2.h5")["modes"]
@@ -239,7 +248,7 @@ scene "viscosity = 3.2e-3"   # back to the linear scene
 # pole is the eigensolver's damped mode on the same mesh (measured 3.8e-7; the residue 9.9e-6: the fit's pole also
 # carries its weak neighbours), and at the chain's body roots (near the real axis) the fit's R is the R of a forced
 # solve at that complex frequency (no fit, no modes; measured 1.4e-10 and 1.9e-10).
-if "$BIN" response sphere --radius 1 --ekman 1e-2 "${small_response[@]}" --sigma -1.5:2:36 -o fit.h5 > fit.txt 2>&1 &&
+if "$BIN" response sphere --radius 1 --ekman 1e-2 "${small_response[@]}" --sigma -1.5:2:36 --fit -o fit.h5 > fit.txt 2>&1 &&
    "$BIN" info fit.h5 --json > fit.json && sed -i 's/visc.h5/fit.h5/' scene.toml &&
    "$ROM" spectrum scene.toml --json > fitspec.json && "$ROM" spectrum scene.toml > fitspec.txt &&
    grep -q "modes of a response fit" fitspec.txt && python3 - "$BIN" <<'PY'
