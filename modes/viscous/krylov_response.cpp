@@ -241,7 +241,18 @@ class Greedy {
     w.s = candidates_[static_cast<std::size_t>(at)];
     w.estimate = est[static_cast<std::size_t>(at)] / w.scale;
     w.scale *= std::numbers::pi;
-    return w;
+    // Every rank computed this from the same reduced matrices, but the next point is factored collectively: rank 0's
+    // choice is everyone's, so that rounding can never send two ranks to different points.
+    double shared[3] = {w.s, w.estimate, w.scale};
+    MPI_Bcast(shared, 3, MPI_DOUBLE, 0, comm_);
+    return {shared[0], shared[1], shared[2]};
+  }
+
+  // |R(s) − R_G(s)| / scale by a forced solve, rank 0's value for every rank (it decides whether to stop).
+  double measured_error(double s, cd before, double scale) {
+    double e = std::abs(forced(s) - before) / scale;
+    MPI_Bcast(&e, 1, MPI_DOUBLE, 0, comm_);
+    return e;
   }
 
   cd galerkin_at(double s) const { return std::numbers::pi * basis_.galerkin()(s); }
@@ -292,7 +303,7 @@ KrylovReduction krylov_reduction(const ViscousForms& forms, const std::vector<do
       // The estimate says done: a forced solve where it is largest says whether it is right. If not, that point
       // (factored already) is expanded like any other and the search goes on.
       out.check_point = worst.s;
-      out.check_error = std::abs(greedy.forced(worst.s) - before) / worst.scale;
+      out.check_error = greedy.measured_error(worst.s, before, worst.scale);
       if (out.check_error <= options.tolerance) {
         out.estimate = worst.estimate;
         out.scale = worst.scale;
@@ -305,7 +316,7 @@ KrylovReduction krylov_reduction(const ViscousForms& forms, const std::vector<do
       out.estimate = worst.estimate;
       out.scale = worst.scale;
       out.check_point = worst.s;
-      out.check_error = std::abs(greedy.forced(worst.s) - before) / worst.scale;
+      out.check_error = greedy.measured_error(worst.s, before, worst.scale);
       break;
     }
     const cd R = greedy.expand(worst.s, options.vectors_per_point);

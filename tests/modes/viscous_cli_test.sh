@@ -157,6 +157,21 @@ d = max(abs(complex(a["lambda"][i], a["decay"][i]) - complex(b["lambda"][i], b["
 print("response fit, frequencies shared by 2 ranks: poles and residues as serial to %.1e" % d)
 assert d < 1e-10, d
 '; then ok "mpirun -n 2 response fit shares its frequencies"; else bad "mpirun response fit: $(tail -2 fit2.txt)"; fi
+  # A Krylov response table under mpirun: distributed matrices and basis, the points chosen by rank 0 for all; its R
+  # is the serial table's to the factorisations' rounding.
+  if "$BIN" response sphere --radius 1 --ekman 1e-2 "${small_response[@]}" --sigma -1.5:2:21 -o kry1.h5 > kry1.txt 2>&1 &&
+     mpirun -n 2 "$BIN" response sphere --radius 1 --ekman 1e-2 "${small_response[@]}" --sigma -1.5:2:21 -o kry2.h5 \
+       > kry2.txt 2>&1 && /usr/bin/python3 -c '
+import h5py
+def R(f, s):
+    m = h5py.File(f)["modes"]
+    return sum(complex(e, ei) / (s - complex(l, d)) for e, ei, l, d in zip(m["E"], m["E_imag"], m["lambda"], m["decay"]))
+grid = [-1.5 + 3.5 * k / 200 for k in range(201)]
+a, b = [R("kry1.h5", s) for s in grid], [R("kry2.h5", s) for s in grid]
+d = max(abs(x - y) for x, y in zip(a, b)) / max(abs(x) for x in a)
+print("Krylov table under mpirun -n 2: R as serial to %.1e of max|R|" % d)
+assert d < 1e-9, d
+'; then ok "mpirun -n 2 Krylov response table"; else bad "mpirun Krylov table: $(tail -2 kry2.txt)"; fi
   # A failure under mpirun: one error line (from rank 0), not one per rank.
   mpirun -n 2 "$BIN" sphere --radius 1 --ekman 1e-4 --wall-size 0.1 -o mpierr.h5 > mpierr.txt 2>&1
   if [ "$(grep -c '^cavity-modes: error:' mpierr.txt)" -eq 1 ] && [ ! -e mpierr.h5 ]; then
