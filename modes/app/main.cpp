@@ -240,6 +240,182 @@ void print_table(const rc::ModeTable& table) {
   std::cout << std::flush;
 }
 
+// -o,--output of every shape command (required for a table; for a response unless --serve, checked after parsing).
+void add_output_option(CLI::App* cmd, bool response, std::string& output) {
+  auto* out = cmd->add_option("-o,--output", output, response ? "R(sigma) as CSV, or FILE.h5: a response table"
+                                                            : "mode table to write (HDF5)");
+  if (!response) out->required();
+  cmd->allow_extras();
+}
+
+// The checks of the viscous and response options, once, and the viscous table's settings (empty without --ekman).
+rc::modes::ViscousTableSettings resolve_viscous(const CLI::App& cmd, bool response, bool is_viscous,
+                                                ViscousOptions& viscous, const std::string& output, TableRequest& req) {
+  if (response) check_response_options(cmd, viscous, output);
+  if (!(viscous.max_fit_error > 0) || !std::isfinite(viscous.max_fit_error))
+    throw std::runtime_error("--max-fit-error must be positive and finite");
+  // Checked here, once: the viscous path hands the tolerance on past compute_mode_table's own check.
+  if (!response && req.check_convergence) rc::modes::validate_convergence_tolerance(req.convergence_tolerance);
+  if (is_viscous) return viscous_request(viscous, req);
+  if (cmd.count("--wall-size") > 0) throw std::runtime_error("--wall-size applies with --ekman only");
+  if (cmd.count("--mesh-ekman") > 0) throw std::runtime_error("--mesh-ekman applies with --ekman only");
+  return {};
+}
+
+// `cavity-modes info FILE`: the table's report, its JSON, or its stored section text.
+struct InfoRequest {
+  std::string file;
+  bool json = false, geometry_text = false;
+};
+
+CLI::App* add_info_command(CLI::App& app, InfoRequest& r) {
+  auto* info = app.add_subcommand("info", "print a mode table's attributes and modes");
+  info->add_option("file", r.file, "mode table (HDF5)")->required();
+  info->add_flag("--json", r.json, "print docs/physics.md §4's JSON object");
+  info->add_flag("--geometry", r.geometry_text, "print only the section file's text stored in the table (redirect it "
+                                                "to a file to mesh the same section again)");
+  return info;
+}
+
+int run_info(const InfoRequest& r) {
+  auto table = rc::read_mode_table(r.file);
+  if (r.geometry_text) {
+    if (table.geometry_text.empty())
+      throw std::runtime_error(r.file + ": no section text stored (" +
+                               (table.geometry_source.empty() ? "the table predates provenance"
+                                                              : "a built-in shape: " + table.geometry_source) + ")");
+    std::cout << table.geometry_text << std::flush;
+  } else if (r.json) {
+    std::cout << rc::modes::table_json(table) << std::flush;
+  } else {
+    print_table(table);
+  }
+  return 0;
+}
+
+// `cavity-modes compare FILE REFERENCE`: against a reference CSV or another table of the same cavity.
+struct CompareRequest {
+  std::string table, reference;
+  double tolerance = 1e-6;
+};
+
+CLI::App* add_compare_command(CLI::App& app, CompareRequest& r) {
+  auto* compare = app.add_subcommand("compare", "compare a table with a reference CSV (published or closed-form "
+                                                "kappa and E, docs/reference-tables.md), or with another table of "
+                                                "the same cavity (REFERENCE.h5: integrals, band weights, clusters; "
+                                                "a refinement study, docs/trust.md); fails past the tolerance");
+  compare->add_option("file", r.table, "mode table (HDF5)")->required();
+  compare->add_option("reference", r.reference, "reference: a CSV, or a mode table (.h5)")->required();
+  compare->add_option("--tolerance", r.tolerance,
+                      "largest relative difference accepted: of kappa and E (CSV); of the integrals and of the band "
+                      "weights over A_f - J_zh (table) (default " + number(r.tolerance) + ")");
+  return compare;
+}
+
+int run_compare(const CompareRequest& r) {
+  if (ends_with(r.reference, ".h5")) {
+    const auto a = rc::read_mode_table(r.table), b = rc::read_mode_table(r.reference);
+    const auto cmp = rc::modes::compare_tables(a, b, r.tolerance);
+    std::cout << rc::modes::table_comparison_text(cmp, a, b, r.table, r.reference) << std::flush;
+    if (cmp.failing > 0) throw std::runtime_error(rc::modes::table_comparison_failure(cmp));
+    return 0;
+  }
+  const auto table = rc::read_mode_table(r.table);
+  const auto cmp = rc::modes::compare_with_reference(table, rc::modes::read_reference_csv(r.reference), r.tolerance,
+                                                     r.reference);
+  std::cout << rc::modes::comparison_text(cmp, table, r.table, r.reference) << std::flush;
+  if (cmp.failing > 0) throw std::runtime_error(rc::modes::comparison_failure(cmp, r.reference));
+  return 0;
+}
+
+// `cavity-modes response SHAPE ...`: R(sigma) as CSV, a response table (FILE.h5), or served one sigma at a time.
+int run_response(const TableRequest& req, const ViscousOptions& viscous, bool is_viscous,
+                 const rc::modes::ViscousTableSettings& viscous_settings, const std::string& method,
+                 const std::string& output, const std::string& command_line) {
+  rc::modes::ResponseRequest r;
+  r.shape = req.shape;
+  if (!viscous.serve) r.sigmas = rc::modes::parse_sigma_spec(viscous.sigma, viscous.sigma_imag);
+  r.ekman = is_viscous ? viscous.ekman : 0;
+  r.mesh = is_viscous ? viscous_settings.mesh : req.mesh;
+  r.separable = !is_viscous && method == "separable";  // auto: forced solves for every shape
+  if (!is_viscous && !r.separable && r.mesh.order == 0) r.mesh.order = 6;
+  if (viscous.serve) {
+    rc::modes::serve_response(r, std::cin, std::cout);
+    return 0;
+  }
+  if (ends_with(output, ".h5")) {
+    // A response table: pseudo-modes whose R is the fluid's on the window (docs/viscous.md, "Krylov response
+    // table"). A rational fit keeps its forced solves in FILE.h5.samples until the table is written
+    // (viscous/response_samples.hpp).
+    if (viscous.fit) r.samples_file = output + ".samples";
+    auto table = viscous.galerkin ? rc::modes::galerkin_response_table(r, viscous.max_fit_error)
+                 : viscous.fit    ? rc::modes::response_fit_table(r, viscous.max_fit_error)
+                                  : rc::modes::krylov_response_table(r, viscous.max_fit_error);
+    if (!rc::modes::is_root_rank()) return 0;
+    rc::modes::record_provenance(table, req.shape, command_line);
+    rc::write_mode_table(table, output);
+    if (!r.samples_file.empty()) {
+      std::error_code gone;
+      std::filesystem::remove(r.samples_file, gone);
+    }
+    print_table(table);
+    return 0;
+  }
+  const auto R = rc::modes::compute_cavity_response(r);
+  if (!rc::modes::is_root_rank()) return 0;
+  rc::modes::write_response(output, r.sigmas, R.R, R.method);
+  std::cout << "wrote " << output << ": R(sigma) at " << r.sigmas.size() << " frequencies (" << R.method << ")\n";
+  return 0;
+}
+
+// `cavity-modes SHAPE ... -o FILE.h5`: the mode table (ideal, or with --ekman the damped modes).
+int run_table(const TableRequest& req, bool is_viscous, const rc::modes::ViscousTableSettings& viscous_settings,
+              bool fields, const std::string& output, const std::string& command_line) {
+  if (fields) rc::check_companion_name(output);  // before the long computation
+  rc::ModeFields mode_fields;
+  const bool root = rc::modes::is_root_rank();
+  const auto report = [root](const std::string& line) { if (root) std::cerr << line << "\n"; };
+  // With --ekman the fields are the damped modes' (the ideal targets need none).
+  auto table = rc::modes::compute_mode_table(req, report, fields && !is_viscous ? &mode_fields : nullptr);
+  if (is_viscous)
+    table = rc::modes::compute_viscous_table(req.shape, viscous_settings, table, report, fields ? &mode_fields : nullptr);
+  if (!root) return 0;  // under mpirun: rank 0 writes the table
+  rc::modes::record_provenance(table, req.shape, command_line);
+  rc::write_mode_table(table, output, fields ? &mode_fields : nullptr);
+  print_table(table);
+  if (req.selection.modes && table.size() < static_cast<std::size_t>(*req.selection.modes))
+    std::cerr << fmt::format("cavity-modes: note: --modes {} asked, the table holds {}: this cavity has no other "
+                             "coupling cluster above the selection's threshold (coverage {:.6f})\n",
+                             *req.selection.modes, table.size(), table.coverage);
+  return 0;
+}
+
+// A first word that is neither a shape nor a command: one line naming what is expected.
+void check_command_name(CLI::App& app, const std::vector<std::string>& ours) {
+  const auto commands = app.get_subcommands([](CLI::App*) { return true; });
+  const bool known = std::any_of(commands.begin(), commands.end(), [&](CLI::App* c) {
+    return ours.size() > 1 && c->get_name() == ours[1];
+  });
+  if (ours.size() > 1 && ours[1][0] != '-' && !known)
+    throw std::runtime_error("unknown shape or command '" + ours[1] +
+                             "' (expected sphere, spheroid, cylinder, cone, section, info or compare)");
+}
+
+// Parses; returns -1 when parsed, else the exit code (help printed, or a command-line error: 2).
+int parse_command_line(CLI::App& app, std::vector<std::string>& words) {
+  std::vector<char*> ours;
+  for (auto& a : words) ours.push_back(a.data());
+  try {
+    app.parse(static_cast<int>(ours.size()), ours.data());
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "cavity-modes: error: " << e.what() << " (see --help)\n";
+    return 2;  // every command-line error, whatever CLI11's own code
+  }
+  return -1;
+}
+
 int run(int argc, char** argv) {
   const std::string command_line = rc::modes::quoted_command_line(std::vector<std::string>(argv, argv + argc));
   if (const std::string empty = rc::empty_argument_error(argc, argv); !empty.empty()) {
@@ -269,96 +445,23 @@ int run(int argc, char** argv) {
     add_viscous_options(s.app, viscous);
     if (response) add_response_options(s.app, viscous);
     else add_table_options(s.app, req, fields, cluster_method);
-    auto* out = s.app->add_option("-o,--output", output, response ? "R(sigma) as CSV, or FILE.h5: a response-fit table"
-                                                                  : "mode table to write (HDF5)");
-    if (!response) out->required();  // response: required unless --serve (checked after parsing)
-    s.app->allow_extras();
+    add_output_option(s.app, response, output);
   }
+  InfoRequest info_request;
+  CompareRequest compare_request;
+  CLI::App* info = add_info_command(app, info_request);
+  CLI::App* compare = add_compare_command(app, compare_request);
+  check_command_name(app, args.ours);
+  if (const int code = parse_command_line(app, args.ours); code >= 0) return code;
+  if (info->parsed()) return run_info(info_request);
+  if (compare->parsed()) return run_compare(compare_request);
 
-  std::string info_file;
-  bool json = false;
-  auto* info = app.add_subcommand("info", "print a mode table's attributes and modes");
-  info->add_option("file", info_file, "mode table (HDF5)")->required();
-  info->add_flag("--json", json, "print docs/physics.md §4's JSON object");
-  bool geometry_text = false;
-  info->add_flag("--geometry", geometry_text, "print only the section file's text stored in the table (redirect it "
-                                              "to a file to mesh the same section again)");
-
-  std::string compare_table, compare_reference;
-  double compare_tolerance = 1e-6;
-  auto* compare = app.add_subcommand("compare", "compare a table with a reference CSV (published or closed-form "
-                                                "kappa and E, docs/reference-tables.md), or with another table of "
-                                                "the same cavity (REFERENCE.h5: integrals, band weights, clusters; "
-                                                "a refinement study, docs/trust.md); fails past the tolerance");
-  compare->add_option("file", compare_table, "mode table (HDF5)")->required();
-  compare->add_option("reference", compare_reference, "reference: a CSV, or a mode table (.h5)")->required();
-  compare->add_option("--tolerance", compare_tolerance,
-                      "largest relative difference accepted: of kappa and E (CSV); of the integrals and of the band "
-                      "weights over A_f - J_zh (table) (default " + number(compare_tolerance) + ")");
-
-  const auto commands = app.get_subcommands([](CLI::App*) { return true; });
-  const bool known = std::any_of(commands.begin(), commands.end(), [&](CLI::App* c) {
-    return args.ours.size() > 1 && c->get_name() == args.ours[1];
-  });
-  if (args.ours.size() > 1 && args.ours[1][0] != '-' && !known)
-    throw std::runtime_error("unknown shape or command '" + args.ours[1] +
-                             "' (expected sphere, spheroid, cylinder, cone, section, info or compare)");
-  std::vector<char*> ours;
-  for (auto& a : args.ours) ours.push_back(a.data());
-  try {
-    app.parse(static_cast<int>(ours.size()), ours.data());
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    std::cerr << "cavity-modes: error: " << e.what() << " (see --help)\n";
-    return 2;  // every command-line error, whatever CLI11's own code
-  }
-
-  if (info->parsed()) {
-    auto table = rc::read_mode_table(info_file);
-    if (geometry_text) {
-      if (table.geometry_text.empty())
-        throw std::runtime_error(info_file + ": no section text stored (" +
-                                 (table.geometry_source.empty() ? "the table predates provenance"
-                                                                : "a built-in shape: " + table.geometry_source) + ")");
-      std::cout << table.geometry_text << std::flush;
-    } else if (json) {
-      std::cout << rc::modes::table_json(table) << std::flush;
-    } else {
-      print_table(table);
-    }
-    return 0;
-  }
-  if (compare->parsed() && ends_with(compare_reference, ".h5")) {
-    const auto a = rc::read_mode_table(compare_table), b = rc::read_mode_table(compare_reference);
-    const auto cmp = rc::modes::compare_tables(a, b, compare_tolerance);
-    std::cout << rc::modes::table_comparison_text(cmp, a, b, compare_table, compare_reference) << std::flush;
-    if (cmp.failing > 0) throw std::runtime_error(rc::modes::table_comparison_failure(cmp));
-    return 0;
-  }
-  if (compare->parsed()) {
-    const auto table = rc::read_mode_table(compare_table);
-    const auto cmp = rc::modes::compare_with_reference(table, rc::modes::read_reference_csv(compare_reference),
-                                                       compare_tolerance, compare_reference);
-    std::cout << rc::modes::comparison_text(cmp, table, compare_table, compare_reference) << std::flush;
-    if (cmp.failing > 0) throw std::runtime_error(rc::modes::comparison_failure(cmp, compare_reference));
-    return 0;
-  }
-  const rc::modes::ShapeCommand* parsed = shapes.parsed();
-  CLI::App* table_command = parsed->app;
+  CLI::App* table_command = shapes.parsed()->app;
   refuse_extras(*table_command, response);
   req.shape = shapes.parsed_shape();
   req.clusters.method = cluster_method == "slices" ? rc::modes::ClusterMethod::slices : rc::modes::ClusterMethod::lanczos;
-  if (response) check_response_options(*table_command, viscous, output);
-  if (!(viscous.max_fit_error > 0) || !std::isfinite(viscous.max_fit_error))
-    throw std::runtime_error("--max-fit-error must be positive and finite");
-  // Checked here, once: the viscous path hands the tolerance on past compute_mode_table's own check.
-  if (!response && req.check_convergence) rc::modes::validate_convergence_tolerance(req.convergence_tolerance);
   const bool is_viscous = table_command->count("--ekman") > 0;
-  rc::modes::ViscousTableSettings viscous_settings;
-  if (is_viscous) viscous_settings = viscous_request(viscous, req);
-  else if (table_command->count("--wall-size") > 0) throw std::runtime_error("--wall-size applies with --ekman only");
-  else if (table_command->count("--mesh-ekman") > 0) throw std::runtime_error("--mesh-ekman applies with --ekman only");
+  const auto viscous_settings = resolve_viscous(*table_command, response, is_viscous, viscous, output, req);
   choose_method(*table_command, method, fields, req);
 
   int petsc_argc = static_cast<int>(args.petsc.size());
@@ -367,59 +470,8 @@ int run(int argc, char** argv) {
   petsc_argv.push_back(nullptr);
   char** pargv = petsc_argv.data();
   rc::modes::PetscSession session(&petsc_argc, &pargv);
-  if (response) {
-    rc::modes::ResponseRequest r;
-    r.shape = req.shape;
-    if (!viscous.serve) r.sigmas = rc::modes::parse_sigma_spec(viscous.sigma, viscous.sigma_imag);
-    r.ekman = is_viscous ? viscous.ekman : 0;
-    r.mesh = is_viscous ? viscous_settings.mesh : req.mesh;
-    r.separable = !is_viscous && method == "separable";  // auto: forced solves for every shape
-    if (!is_viscous && !r.separable && r.mesh.order == 0) r.mesh.order = 6;
-    if (viscous.serve) {
-      rc::modes::serve_response(r, std::cin, std::cout);
-      return 0;
-    }
-    if (ends_with(output, ".h5")) {
-      // A response table: pseudo-modes whose R is the fluid's on the window (docs/viscous.md, "Krylov response
-      // table"). A rational fit keeps its forced solves in FILE.h5.samples until the table is written
-      // (viscous/response_samples.hpp).
-      if (viscous.fit) r.samples_file = output + ".samples";
-      auto table = viscous.galerkin ? rc::modes::galerkin_response_table(r, viscous.max_fit_error)
-                   : viscous.fit    ? rc::modes::response_fit_table(r, viscous.max_fit_error)
-                                    : rc::modes::krylov_response_table(r, viscous.max_fit_error);
-      if (!rc::modes::is_root_rank()) return 0;
-      rc::modes::record_provenance(table, req.shape, command_line);
-      rc::write_mode_table(table, output);
-      if (!r.samples_file.empty()) {
-        std::error_code gone;
-        std::filesystem::remove(r.samples_file, gone);
-      }
-      print_table(table);
-      return 0;
-    }
-    const auto R = rc::modes::compute_cavity_response(r);
-    if (!rc::modes::is_root_rank()) return 0;
-    rc::modes::write_response(output, r.sigmas, R.R, R.method);
-    std::cout << "wrote " << output << ": R(sigma) at " << r.sigmas.size() << " frequencies (" << R.method << ")\n";
-    return 0;
-  }
-  if (fields) rc::check_companion_name(output);  // before the long computation
-  rc::ModeFields mode_fields;
-  const bool root = rc::modes::is_root_rank();
-  const auto report = [root](const std::string& line) { if (root) std::cerr << line << "\n"; };
-  // With --ekman the fields are the damped modes' (the ideal targets need none).
-  auto table = rc::modes::compute_mode_table(req, report, fields && !is_viscous ? &mode_fields : nullptr);
-  if (is_viscous)
-    table = rc::modes::compute_viscous_table(req.shape, viscous_settings, table, report, fields ? &mode_fields : nullptr);
-  if (!root) return 0;  // under mpirun: rank 0 writes the table
-  rc::modes::record_provenance(table, req.shape, command_line);
-  rc::write_mode_table(table, output, fields ? &mode_fields : nullptr);
-  print_table(table);
-  if (req.selection.modes && table.size() < static_cast<std::size_t>(*req.selection.modes))
-    std::cerr << fmt::format("cavity-modes: note: --modes {} asked, the table holds {}: this cavity has no other "
-                             "coupling cluster above the selection's threshold (coverage {:.6f})\n",
-                             *req.selection.modes, table.size(), table.coverage);
-  return 0;
+  if (response) return run_response(req, viscous, is_viscous, viscous_settings, method, output, command_line);
+  return run_table(req, is_viscous, viscous_settings, fields, output, command_line);
 }
 
 }  // namespace
