@@ -137,7 +137,8 @@ void generate(int order, double size, const std::string& where, double radial_si
   gmsh::model::mesh::setOrder(order);
 }
 
-int physical_tag(int dim, const std::string& name, const std::string& where) {
+// The tag of the physical group `name` of dimension `dim`, or -1 when there is none.
+int find_physical_tag(int dim, const std::string& name) {
   gmsh::vectorpair groups;
   gmsh::model::getPhysicalGroups(groups, dim);
   for (const auto& [d, tag] : groups) {
@@ -145,8 +146,14 @@ int physical_tag(int dim, const std::string& name, const std::string& where) {
     gmsh::model::getPhysicalName(d, tag, n);
     if (n == name) return tag;
   }
+  return -1;
+}
+
+int physical_tag(int dim, const std::string& name, const std::string& where) {
+  const int tag = find_physical_tag(dim, name);
+  if (tag >= 0) return tag;
   throw std::runtime_error(where + ": no " + std::to_string(dim) + "D physical group named '" + name +
-                           "' (a section needs 2D \"fluid\", 1D \"wall\" and 1D \"axis\")");
+                           "' (a section needs 2D \"fluid\", 1D \"wall\", and 1D \"axis\" where it touches r = 0)");
 }
 
 // The one element type of dimension `dim` over the entities of a physical group.
@@ -209,8 +216,11 @@ void read_wall_and_axis(GmshMesh& m, const std::string& where) {
     throw std::runtime_error(where + ": 'wall' elements are not lines of the triangles' order " +
                              std::to_string(m.order));
   m.wall_edges = element_nodes(type, wall);
+  // A ring-shaped section (annulus, torus) has no axis: its wall is its whole boundary (checked by add_axis).
+  const int axis = find_physical_tag(1, "axis");
+  if (axis < 0) return;
   std::vector<double> coord;
-  gmsh::model::mesh::getNodesForPhysicalGroup(1, physical_tag(1, "axis", where), m.axis_nodes, coord);
+  gmsh::model::mesh::getNodesForPhysicalGroup(1, axis, m.axis_nodes, coord);
   if (m.axis_nodes.empty()) throw std::runtime_error(where + ": physical group 'axis' has no nodes");
 }
 
@@ -265,7 +275,7 @@ GmshMesh mesh_section(const ShapeSpec& shape, const MeshOptions& options) {
   return detail::with_gmsh(where, [&](detail::GmshSession& session) {
     gmsh::open(path);
     session.throw_if_error(where);
-    for (const auto& [dim, name] : {std::pair{2, "fluid"}, {1, "wall"}, {1, "axis"}}) physical_tag(dim, name, where);
+    for (const auto& [dim, name] : {std::pair{2, "fluid"}, {1, "wall"}}) physical_tag(dim, name, where);
     if (ext == ".msh") {
       GmshMesh m = read_mesh(where);
       m.size = longest_side(m);
@@ -312,10 +322,18 @@ int mapped(const std::unordered_map<std::size_t, int>& index, std::size_t tag, c
   return it->second;
 }
 
-// Axis nodes must lie on r = 0 up to rounding; they are snapped to exactly 0.
+// Axis nodes must lie on r = 0 up to rounding; they are snapped to exactly 0. Without an axis group (a ring-shaped
+// section) no node may lie there: the m = 1 fields need the axis conditions wherever the section touches r = 0.
 void add_axis(MeridianMesh& m, const GmshMesh& g, const std::unordered_map<std::size_t, int>& index,
               const std::string& where) {
   const double tol = kAxisTolerance * g.extent;
+  if (g.axis_nodes.empty()) {
+    for (const auto& node : m.nodes)
+      if (node[0] <= tol)
+        throw std::runtime_error(where + ": the section reaches r = 0 (a node at z = " + number(node[1]) +
+                                 ") but has no 1D physical group named 'axis' there");
+    return;
+  }
   for (std::size_t tag : g.axis_nodes) {
     const int i = mapped(index, tag, "axis", where);
     if (std::abs(m.nodes[i][0]) > tol)

@@ -26,6 +26,12 @@ SpheroidValues spheroid(double a, double c);
 // n < max_axial and ξ < max_xi, sorted by E descending.
 std::vector<Mode> cylinder_modes(double a, double height, int max_axial = 8, double max_xi = 60.0);
 
+// The annular cylinder b < r < a, |z| < h (a rod of radius b inside the cylinder; no axis): p = F(ξ r/a) sin(k z),
+// F = J1 + c Y1, k = (2n+1)π/(2h), x F′(x) + κ F(x) = 0 at x = ξ and x = ξ b/a (the walls' u_r = 0), ξ² = (k a)²(κ² − 1):
+// det [[gJ(ξ), gY(ξ)], [gJ(ξ b/a), gY(ξ b/a)]] = 0 with gF(x) = x F0(x) + (κ − 1) F1(x) (docs/physics.md, "Annular
+// cylinder"). E by quadrature as for the full cylinder. Sorted by E descending.
+std::vector<Mode> annular_cylinder_modes(double b, double a, double height, int max_axial = 8, double max_xi = 60.0);
+
 // J_zh = m_f [h²/3 − 3a²/4 + (8a³/h) Σ_j tanh(ξ_j h/a) / (ξ_j³ (ξ_j² − 1))], J1′(ξ_j) = 0, h = half height.
 double cylinder_zhukovsky(double a, double height, int terms = 4000);
 
