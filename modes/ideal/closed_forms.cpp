@@ -29,6 +29,18 @@ double bisect(const std::function<double(double)>& f, double lo, double hi) {
   return 0.5 * (lo + hi);
 }
 
+// found(ξ) at each sign change of f on (0, max_xi), sampled every 1e-3 and bisected to machine precision.
+void for_each_root(const std::function<double(double)>& f, double max_xi, const std::function<void(double)>& found) {
+  const double step = 1e-3;
+  double x0 = step, f0 = f(x0);
+  for (double x1 = 2 * step; x1 < max_xi; x1 += step) {
+    const double f1 = f(x1);
+    if ((f0 < 0) != (f1 < 0)) found(bisect(f, x0, x1));
+    x0 = x1;
+    f0 = f1;
+  }
+}
+
 // E of p = F(q r) sin(k z) on b < r < a, |z| < h, with the docs/physics.md §2 formulas (ω0 = 1), by tensor
 // Gauss–Legendre quadrature; F and dF are the radial function and its derivative in their argument.
 double mode_energy(double b, double a, double h, double k, double q, double lambda,
@@ -84,22 +96,15 @@ std::vector<Mode> cylinder_modes(double a, double height, int max_axial, double 
         return xi * J0(xi) + (kappa - 1) * J1(xi);
       };
       int j = 0;
-      const double step = 1e-3;
-      double x0 = step, f0 = f(x0);
-      for (double x1 = 2 * step; x1 < max_xi; x1 += step) {
-        const double f1 = f(x1);
-        if ((f0 < 0) != (f1 < 0)) {
-          const double xi = bisect(f, x0, x1);
-          Mode m;
-          m.kappa = sign * std::sqrt(1 + xi * xi / (ka * ka));
-          m.lambda = 2 / m.kappa;
-          m.axial = n;
-          m.radial = ++j;
-          m.E = cylinder_mode_energy(a, h, ka / a, xi, m.lambda);
-          modes.push_back(m);
-        }
-        x0 = x1; f0 = f1;
-      }
+      for_each_root(f, max_xi, [&](double xi) {
+        Mode m;
+        m.kappa = sign * std::sqrt(1 + xi * xi / (ka * ka));
+        m.lambda = 2 / m.kappa;
+        m.axial = n;
+        m.radial = ++j;
+        m.E = cylinder_mode_energy(a, h, ka / a, xi, m.lambda);
+        modes.push_back(m);
+      });
     }
   }
   std::sort(modes.begin(), modes.end(), [](const Mode& x, const Mode& y) { return x.E > y.E; });
@@ -139,28 +144,21 @@ std::vector<Mode> annular_cylinder_modes(double b, double a, double height, int 
         return gJ(xi, kappa) * gY(beta * xi, kappa) - gJ(beta * xi, kappa) * gY(xi, kappa);
       };
       int j = 0;
-      const double step = 1e-3;
-      double x0 = step, f0 = D(x0);
-      for (double x1 = 2 * step; x1 < max_xi; x1 += step) {
-        const double f1 = D(x1);
-        if ((f0 < 0) != (f1 < 0)) {
-          const double xi = bisect(D, x0, x1), kappa = kappa_of(xi);
-          // F = J1 + c Y1 with the outer wall's condition (or the rod's, where Y1's is near zero there).
-          const double go = gY(xi, kappa), gi = gY(beta * xi, kappa);
-          const double c = std::abs(go) > std::abs(gi) ? -gJ(xi, kappa) / go : -gJ(beta * xi, kappa) / gi;
-          const auto F = [c](double x) { return J1(x) + c * Y1(x); };
-          const auto dF = [c](double x) { return J1prime(x) + c * (Y0(x) - Y1(x) / x); };
-          Mode m;
-          m.kappa = kappa;
-          m.lambda = 2 / kappa;
-          m.axial = n;
-          m.radial = ++j;
-          m.E = mode_energy(b, a, h, ka / a, xi / a, m.lambda, F, dF);
-          modes.push_back(m);
-        }
-        x0 = x1;
-        f0 = f1;
-      }
+      for_each_root(D, max_xi, [&](double xi) {
+        const double kappa = kappa_of(xi);
+        // F = J1 + c Y1 with the outer wall's condition (or the rod's, where Y1's is near zero there).
+        const double go = gY(xi, kappa), gi = gY(beta * xi, kappa);
+        const double c = std::abs(go) > std::abs(gi) ? -gJ(xi, kappa) / go : -gJ(beta * xi, kappa) / gi;
+        const auto F = [c](double x) { return J1(x) + c * Y1(x); };
+        const auto dF = [c](double x) { return J1prime(x) + c * (Y0(x) - Y1(x) / x); };
+        Mode m;
+        m.kappa = kappa;
+        m.lambda = 2 / kappa;
+        m.axial = n;
+        m.radial = ++j;
+        m.E = mode_energy(b, a, h, ka / a, xi / a, m.lambda, F, dF);
+        modes.push_back(m);
+      });
     }
   }
   std::sort(modes.begin(), modes.end(), [](const Mode& x, const Mode& y) { return x.E > y.E; });
