@@ -22,6 +22,8 @@ using rc::modes::ReferenceRow;
 
 constexpr const char* kSpheroidSource = "Poincaré/Greenhill spheroid, closed form (docs/physics.md §2)";
 constexpr const char* kStewartsonSource = "Stewartson (1959) J. Fluid Mech. 5, 577, closed form evaluated here";
+constexpr const char* kAnnulusSource =
+    "Stewartson's separation with J1 and Y1 (docs/physics.md section 2 annular cylinder), closed form evaluated here";
 constexpr int kCylinderModes = 8;
 
 void write(const fs::path& path, const std::string& comment, const std::vector<ReferenceRow>& rows) {
@@ -90,6 +92,26 @@ int main(int argc, char** argv) {
             fmt::format("Circular cylinder radius {}, height {} (2h/a = {}): the {} Stewartson modes of largest E "
                         "(n: axial index, k = (2n+1)pi/height; j: radial root index for that n and sign of kappa).",
                         number(radius), number(height), number(height / radius), kCylinderModes),
+            rows);
+    }
+    {  // data/sections/annulus.geo: rod 0.3, radius 1, height 2 (docs/physics.md §2, "annular cylinder")
+      const auto modes = rc::modes::exact::annular_cylinder_modes(0.3, 1.0, 2.0);
+      if (modes.size() < kCylinderModes) throw std::runtime_error("too few annular cylinder modes found");
+      std::vector<ReferenceRow> rows;
+      for (int i = 0; i < kCylinderModes; ++i) {
+        const auto& m = modes[i];
+        ReferenceRow r;
+        r.shape = "section";
+        r.kappa = m.kappa;
+        r.E = m.E;
+        r.source = kAnnulusSource;
+        r.label = fmt::format("n={} j={} kappa{}0", m.axial, m.radial, m.kappa > 0 ? ">" : "<");
+        rows.push_back(r);
+      }
+      write(dir / "section_annulus.csv",
+            fmt::format("The annular cylinder of data/sections/annulus.geo (rod radius 0.3, radius 1, height 2; no "
+                        "axis): the {} separable modes F = J1 + c Y1 of largest E (n: axial index, k = "
+                        "(2n+1)pi/height; j: root index for that n and sign of kappa).", kCylinderModes),
             rows);
     }
     return 0;
