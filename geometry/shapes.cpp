@@ -25,6 +25,12 @@ const std::map<std::string, std::vector<std::string>>& required_dims() {
   return dims;
 }
 
+// Dimensions a shape may take besides its required ones: the cylinder's coaxial rod (an annular cavity, no axis).
+const std::map<std::string, std::vector<std::string>>& optional_dims() {
+  static const std::map<std::string, std::vector<std::string>> dims = {{"cylinder", {"inner_radius"}}};
+  return dims;
+}
+
 std::string join(const std::vector<std::string>& names) {
   std::string s;
   for (const auto& n : names) s += (s.empty() ? "" : ", ") + n;
@@ -45,7 +51,7 @@ void add_groups(const std::vector<int>& fluid, const std::vector<int>& wall, con
   geo::synchronize();
   gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, fluid), "fluid");
   gmsh::model::setPhysicalName(1, gmsh::model::addPhysicalGroup(1, wall), "wall");
-  gmsh::model::setPhysicalName(1, gmsh::model::addPhysicalGroup(1, axis), "axis");
+  if (!axis.empty()) gmsh::model::setPhysicalName(1, gmsh::model::addPhysicalGroup(1, axis), "axis");
 }
 
 // Counter-clockwise loop of curves -> plane surface (positively oriented triangles).
@@ -70,23 +76,25 @@ void build_ellipse(double a, double c, double h) {
   add_groups({surface({lower, upper, axis})}, {lower, upper}, {axis});
 }
 
-void build_cylinder(double radius, double height, double h, double radial_size) {
+// inner > 0: the liquid around a coaxial rod of that radius; the rod's line is wall and there is no axis.
+void build_cylinder(double radius, double height, double h, double radial_size, double inner) {
   const double z0 = -0.5 * height, z1 = 0.5 * height;
-  const int p0 = geo::addPoint(0, z0, 0, h), p1 = geo::addPoint(radius, z0, 0, h),
-            p2 = geo::addPoint(radius, z1, 0, h), p3 = geo::addPoint(0, z1, 0, h);
+  const int p0 = geo::addPoint(inner, z0, 0, h), p1 = geo::addPoint(radius, z0, 0, h),
+            p2 = geo::addPoint(radius, z1, 0, h), p3 = geo::addPoint(inner, z1, 0, h);
   const int bottom = geo::addLine(p0, p1), side = geo::addLine(p1, p2), top = geo::addLine(p2, p3),
             axis = geo::addLine(p3, p0);
   const int fluid = surface({bottom, side, top, axis});
   if (radial_size > 0) {
     // Low-frequency inertial modes vary much faster in r than in z (Stewartson: ξ = k a √(κ² − 1)), so
     // the radial and axial sizes are set apart.
-    const int nr = std::max(1, static_cast<int>(std::ceil(radius / radial_size - 1e-9)));
+    const int nr = std::max(1, static_cast<int>(std::ceil((radius - inner) / radial_size - 1e-9)));
     const int nz = std::max(1, static_cast<int>(std::ceil(height / h - 1e-9)));
     for (int c : {bottom, top}) geo::mesh::setTransfiniteCurve(c, nr + 1);
     for (int c : {side, axis}) geo::mesh::setTransfiniteCurve(c, nz + 1);
     geo::mesh::setTransfiniteSurface(fluid, "Alternate");
   }
-  add_groups({fluid}, {bottom, side, top}, {axis});
+  if (inner > 0) add_groups({fluid}, {bottom, side, top, axis}, {});
+  else add_groups({fluid}, {bottom, side, top}, {axis});
 }
 
 void build_cone(double radius, double height, double h) {
@@ -153,15 +161,21 @@ void validate_shape(const ShapeSpec& shape) {
     throw std::runtime_error("unknown shape kind '" + shape.kind +
                              "' (expected sphere, spheroid, cylinder, cone or section)");
   const auto& names = it->second;
+  std::vector<std::string> allowed = names;
+  if (const auto opt = optional_dims().find(shape.kind); opt != optional_dims().end())
+    allowed.insert(allowed.end(), opt->second.begin(), opt->second.end());
   for (const auto& [name, value] : shape.dims) {
-    if (std::find(names.begin(), names.end(), name) == names.end())
-      throw std::runtime_error(shape.kind + ": unknown dimension '" + name + "' (expected: " + join(names) + ")");
+    if (std::find(allowed.begin(), allowed.end(), name) == allowed.end())
+      throw std::runtime_error(shape.kind + ": unknown dimension '" + name + "' (expected: " + join(allowed) + ")");
     if (!std::isfinite(value) || value <= 0)
       throw std::runtime_error(shape.kind + ": dimension " + name + " = " + number(value) +
                                " must be positive and finite");
   }
   for (const auto& name : names)
     if (!shape.dims.count(name)) throw std::runtime_error(shape.kind + ": missing dimension '" + name + "'");
+  if (shape.dims.count("inner_radius") && !(shape.dims.at("inner_radius") < shape.dims.at("radius")))
+    throw std::runtime_error(shape.kind + ": inner radius " + number(shape.dims.at("inner_radius")) +
+                             " must be below the radius " + number(shape.dims.at("radius")));
   if (shape.kind == "section" && shape.file.empty())
     throw std::runtime_error("section: no file given (a .geo or .msh meridian section)");
 }
@@ -169,7 +183,8 @@ void validate_shape(const ShapeSpec& shape) {
 double smallest_dimension(const ShapeSpec& shape) {
   if (shape.kind == "sphere") return dim(shape, "radius");
   if (shape.kind == "spheroid") return std::min(dim(shape, "a"), dim(shape, "c"));
-  return std::min(dim(shape, "radius"), dim(shape, "height"));
+  const double inner = shape.dims.count("inner_radius") ? dim(shape, "inner_radius") : 0.0;
+  return std::min(dim(shape, "radius") - inner, dim(shape, "height"));
 }
 
 bool build_shape(const ShapeSpec& shape, double size, double radial_size, const MeshOptions* layers) {
@@ -181,7 +196,8 @@ bool build_shape(const ShapeSpec& shape, double size, double radial_size, const 
   } else if (shape.kind == "spheroid") {
     build_ellipse(dim(shape, "a"), dim(shape, "c"), size);
   } else if (shape.kind == "cylinder") {
-    build_cylinder(dim(shape, "radius"), dim(shape, "height"), size, radial_size);
+    build_cylinder(dim(shape, "radius"), dim(shape, "height"), size, radial_size,
+                   shape.dims.count("inner_radius") ? dim(shape, "inner_radius") : 0.0);
   } else if (shape.kind == "cone") {
     if (layers && layers->wall_size > 0 && layers->wall_layer > layers->wall_size) {
       build_layered_cone(dim(shape, "radius"), dim(shape, "height"), size, *layers);

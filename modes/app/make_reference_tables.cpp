@@ -94,7 +94,8 @@ int main(int argc, char** argv) {
                         number(radius), number(height), number(height / radius), kCylinderModes),
             rows);
     }
-    {  // data/sections/annulus.geo: rod 0.3, radius 1, height 2 (docs/physics.md §2, "annular cylinder")
+    {  // The annular cylinder (rod radius 0.3, radius 1, height 2; docs/physics.md §2, "annular cylinder"): as the
+       // section data/sections/annulus.geo and as the built-in `cylinder --inner-radius 0.3`.
       const auto modes = rc::modes::exact::annular_cylinder_modes(0.3, 1.0, 2.0);
       if (modes.size() < kCylinderModes) throw std::runtime_error("too few annular cylinder modes found");
       std::vector<ReferenceRow> rows;
@@ -108,10 +109,15 @@ int main(int argc, char** argv) {
         r.label = fmt::format("n={} j={} kappa{}0", m.axial, m.radial, m.kappa > 0 ? ">" : "<");
         rows.push_back(r);
       }
-      write(dir / "section_annulus.csv",
-            fmt::format("The annular cylinder of data/sections/annulus.geo (rod radius 0.3, radius 1, height 2; no "
-                        "axis): the {} separable modes F = J1 + c Y1 of largest E (n: axial index, k = "
-                        "(2n+1)pi/height; j: root index for that n and sign of kappa).", kCylinderModes),
+      const std::string what = fmt::format(
+          "(rod radius 0.3, radius 1, height 2; no axis): the {} separable modes F = J1 + c Y1 of largest E (n: axial "
+          "index, k = (2n+1)pi/height; j: root index for that n and sign of kappa).", kCylinderModes);
+      write(dir / "section_annulus.csv", "The annular cylinder of data/sections/annulus.geo " + what, rows);
+      for (auto& r : rows) {
+        r.shape = "cylinder";
+        r.dimensions = {{"inner_radius", 0.3}, {"radius", 1.0}, {"height", 2.0}};
+      }
+      write(dir / "cylinder_radius1_height2_inner0.3.csv", "The annular cylinder, cylinder --inner-radius 0.3 " + what,
             rows);
     }
     return 0;

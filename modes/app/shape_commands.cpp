@@ -18,6 +18,9 @@ ShapeCommands::ShapeCommands(CLI::App& app, const std::string& purpose) {
   add("spheroid", "spheroid with equatorial semi-axis a and polar semi-axis c",
       {{"a", "equatorial semi-axis"}, {"c", "polar semi-axis"}});
   add("cylinder", "circular cylinder", {{"radius", "radius"}, {"height", "full height"}});
+  commands_.back().app->add_option("--inner-radius", commands_.back().inner_radius,
+                                   "radius of a coaxial rod inside: the liquid fills inner radius < r < radius (an "
+                                   "annular cavity, no axis; the mesh method)");
   add("cone", "cone, apex down, flat lid on top", {{"radius", "lid radius"}, {"height", "height"}});
   add("section", "the user's meridian section (.geo or .msh; docs/geometry.md)", {});
   commands_.back().app->add_option("file", commands_.back().file, "section file")->required();
@@ -36,6 +39,8 @@ geometry::ShapeSpec ShapeCommands::parsed_shape() const {
   s.kind = c->kind;
   if (c->kind == "section") s.file = c->file;
   else s.dims = c->dims;
+  if (const auto* inner = c->app->get_option_no_throw("--inner-radius"); inner && inner->count() > 0)
+    s.dims["inner_radius"] = c->inner_radius;
   return s;
 }
 

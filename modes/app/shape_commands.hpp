@@ -17,6 +17,7 @@ struct ShapeCommand {
   std::string kind;
   std::map<std::string, double> dims;  // bound to the dimension options
   std::string file;                    // section only
+  double inner_radius = 0;             // cylinder only, when --inner-radius is given
 };
 
 class ShapeCommands {

@@ -26,8 +26,10 @@ constexpr double kLayersThickness = 10.0;     // anisotropic wall layers cover t
 double smallest_dimension(const geometry::ShapeSpec& shape) {
   if (shape.kind == "sphere") return shape.dims.at("radius");
   if (shape.kind == "spheroid") return std::min(shape.dims.at("a"), shape.dims.at("c"));
-  if (shape.kind == "cylinder" || shape.kind == "cone")
-    return std::min(shape.dims.at("radius"), shape.dims.at("height"));
+  if (shape.kind == "cylinder" || shape.kind == "cone") {
+    const double inner = shape.dims.count("inner_radius") ? shape.dims.at("inner_radius") : 0.0;  // a rod's gap
+    return std::min(shape.dims.at("radius") - inner, shape.dims.at("height"));
+  }
   return 0;  // section: the geometry layer's default (1/8 of the smallest side)
 }
 

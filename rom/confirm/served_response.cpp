@@ -66,7 +66,7 @@ bool is_flag(const std::string& name) {
 
 // What the served forced solves need: the shape's dimensions and the viscous mesh.
 bool is_kept(const std::string& name) {
-  for (const char* k : {"--radius", "--height", "--a", "--c", "--order", "--mesh-size", "--radial-size", "--wall-size",
+  for (const char* k : {"--radius", "--height", "--inner-radius", "--a", "--c", "--order", "--mesh-size", "--radial-size", "--wall-size",
                         "--mesh-ekman"})
     if (name == k) return true;
   return false;
