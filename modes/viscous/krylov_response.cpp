@@ -218,16 +218,21 @@ class Greedy {
         solver_.solve(v_, x_);
         q = local_of(x_);
       }
-      if (!normalise_against(q, W.leftCols(k), MW.leftCols(k))) break;
+      Eigen::VectorXcd mq;
+      if (!normalise_against(q, W.leftCols(k), MW.leftCols(k), mq)) break;
       W.col(k) = q;
-      MW.col(k) = basis_.apply(forms_.M, q);
+      MW.col(k) = mq;
     }
     basis_.add(W.leftCols(k));
     return R;
   }
 
-  // R_G's scale (max over the window) and the worst estimate |R_B − R_G| over the candidates, relative to it.
-  struct Worst { double s = 0, estimate = 0, scale = 0; };
+  // R_G's scale (max over the window), the worst estimate |R_B − R_G| over the candidates relative to it, and R_G
+  // there (what the forced solve at s is measured against).
+  struct Worst {
+    double s = 0, estimate = 0, scale = 0;
+    cd galerkin = 0;
+  };
   Worst worst() const {
     const ReducedTransfer G = basis_.galerkin(), B = basis_.bilinear();
     Worst w;
@@ -241,11 +246,12 @@ class Greedy {
     w.s = candidates_[static_cast<std::size_t>(at)];
     w.estimate = est[static_cast<std::size_t>(at)] / w.scale;
     w.scale *= std::numbers::pi;
+    w.galerkin = std::numbers::pi * G(w.s);
     // Every rank computed this from the same reduced matrices, but the next point is factored collectively: rank 0's
     // choice is everyone's, so that rounding can never send two ranks to different points.
-    double shared[3] = {w.s, w.estimate, w.scale};
-    MPI_Bcast(shared, 3, MPI_DOUBLE, 0, comm_);
-    return {shared[0], shared[1], shared[2]};
+    double shared[5] = {w.s, w.estimate, w.scale, w.galerkin.real(), w.galerkin.imag()};
+    MPI_Bcast(shared, 5, MPI_DOUBLE, 0, comm_);
+    return {shared[0], shared[1], shared[2], {shared[3], shared[4]}};
   }
 
   // |R(s) − R_G(s)| / scale by a forced solve, rank 0's value for every rank (it decides whether to stop).
@@ -255,13 +261,13 @@ class Greedy {
     return e;
   }
 
-  cd galerkin_at(double s) const { return std::numbers::pi * basis_.galerkin()(s); }
   const KrylovBasis& basis() const { return basis_; }
 
  private:
-  // q against the columns of W (𝓜W given), twice, then to unit 𝓜-norm; false when nothing is left of it.
+  // q against the columns of W (𝓜W given), twice, then to unit 𝓜-norm, with 𝓜q into mq; false when nothing is left
+  // of it.
   bool normalise_against(Eigen::VectorXcd& q, const Eigen::Ref<const Eigen::MatrixXcd>& W,
-                         const Eigen::Ref<const Eigen::MatrixXcd>& MW) {
+                         const Eigen::Ref<const Eigen::MatrixXcd>& MW, Eigen::VectorXcd& mq) {
     const Eigen::VectorXcd mq0 = basis_.apply(forms_.M, q);
     const double before = std::sqrt(std::max(basis_.mdot(q, mq0).real(), 0.0));
     for (int pass = 0; pass < 2 && W.cols() > 0; ++pass) {
@@ -269,9 +275,11 @@ class Greedy {
       MPI_Allreduce(MPI_IN_PLACE, h.data(), 2 * static_cast<int>(h.size()), MPI_DOUBLE, MPI_SUM, comm_);
       q -= W * h;
     }
-    const double norm = std::sqrt(std::max(basis_.mdot(q, basis_.apply(forms_.M, q)).real(), 0.0));
+    mq = basis_.apply(forms_.M, q);
+    const double norm = std::sqrt(std::max(basis_.mdot(q, mq).real(), 0.0));
     if (!(norm > 1e-10 * before)) return false;
     q /= norm;
+    mq /= norm;
     return true;
   }
 
@@ -298,7 +306,7 @@ KrylovReduction krylov_reduction(const ViscousForms& forms, const std::vector<do
   }
   for (;;) {
     const auto worst = greedy.worst();
-    const cd before = greedy.galerkin_at(worst.s);
+    const cd before = worst.galerkin;
     if (worst.estimate <= options.tolerance) {
       // The estimate says done: a forced solve where it is largest says whether it is right. If not, that point
       // (factored already) is expanded like any other and the search goes on.
