@@ -70,6 +70,24 @@ struct WorkSetup {
   double T = 0, rho = 0;
 };
 
+// A work-precision row: appended, and shown to `progress`.
+BenchRow add_work_row(std::vector<BenchRow>& rows, const std::function<void(const BenchRow&)>& progress,
+                      const char* method, const char* parameter, double value, long steps, const Timing& tm,
+                      double error) {
+  BenchRow r;
+  r.part = "work";
+  r.method = method;
+  r.parameter = parameter;
+  r.value = value;
+  r.steps = steps;
+  r.wall_seconds = tm.wall;
+  r.cpu_seconds = tm.cpu;
+  r.error = error;
+  rows.push_back(r);
+  if (progress) progress(r);
+  return r;
+}
+
 // Stop a sweep once the error reaches the rounding floor: below 1e-14, or below 1e-9 and no longer
 // halving when the work doubles (or more).
 bool at_floor(double err, double previous) { return err < 1e-14 || (err < 1e-9 && err > 0.5 * previous); }
@@ -91,17 +109,7 @@ void sweep_gauss(const WorkSetup& w, const BenchOptions& opt, std::vector<BenchR
         y.swap(tmp);
       }
     }, opt.min_seconds);
-    BenchRow r;
-    r.part = "work";
-    r.method = "gauss";
-    r.parameter = "step";
-    r.value = h;
-    r.steps = N;
-    r.wall_seconds = tm.wall;
-    r.cpu_seconds = tm.cpu;
-    r.error = relative_error(y, w.ref);
-    rows.push_back(r);
-    if (progress) progress(r);
+    const BenchRow r = add_work_row(rows, progress, "gauss", "step", h, N, tm, relative_error(y, w.ref));
     if (at_floor(r.error, previous)) break;
     previous = r.error;
   }
@@ -124,17 +132,7 @@ void sweep_rk45(const WorkSetup& w, const Scene& scene, const BenchOptions& opt,
       double h = std::min(w.T, 1.0 / std::max(w.rho, 1e-300));
       rk45_advance(w.f.B, y, 0.0, w.T, tol, h, steps);
     }, opt.min_seconds);
-    BenchRow r;
-    r.part = "work";
-    r.method = "rk45";
-    r.parameter = "tolerance";
-    r.value = tol;
-    r.steps = steps;
-    r.wall_seconds = tm.wall;
-    r.cpu_seconds = tm.cpu;
-    r.error = relative_error(y, w.ref);
-    rows.push_back(r);
-    if (progress) progress(r);
+    const BenchRow r = add_work_row(rows, progress, "rk45", "tolerance", tol, steps, tm, relative_error(y, w.ref));
     if (at_floor(r.error, previous)) break;
     previous = r.error;
   }
@@ -162,15 +160,8 @@ void work_precision(const ChainModel& m, const Scene& scene, const BenchOptions&
   const Timing tr = time_runs([&] { ref = reference_state(m, w.f.s, w.y0, w.T); }, 0);
   w.ref = ref.y;
   out.reference_mantissa_bits = ref.mantissa_bits;
-  BenchRow r;
-  r.part = "work";
-  r.method = "reference";
-  r.parameter = "method_difference";
-  r.wall_seconds = tr.wall;
-  r.cpu_seconds = tr.cpu;
-  r.error = ref.method_difference;
-  out.rows.push_back(r);
-  if (progress) progress(r);
+  const BenchRow r = add_work_row(out.rows, progress, "reference", "method_difference", BenchRow{}.value,
+                                  BenchRow{}.steps, tr, ref.method_difference);
   if (!m.dissipative()) {
     // H is conserved without friction (docs/rom.md, "Energy"): its change from y0 to the reference's
     // final state, relative to the size of its parts.
