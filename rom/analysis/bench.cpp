@@ -1,5 +1,7 @@
 #include "bench.hpp"
 
+#include "atomic_file.hpp"
+
 #include "chain_model.hpp"
 #include "complex_eigen.hpp"
 #include "energy.hpp"
@@ -328,32 +330,17 @@ std::string format_bench_row(const BenchRow& r) {
 }
 
 void write_bench_csv(const BenchResult& res, const fs::path& out) {
-  if (out.has_parent_path() && !fs::is_directory(out.parent_path()))
-    throw std::runtime_error(out.string() + ": the output folder does not exist");
-  fs::path tmp = out;
-  tmp += ".tmp-" + std::to_string(::getpid());
-  try {
-    {
-      std::ofstream os(tmp);
-      if (!os) throw std::runtime_error(tmp.string() + ": cannot create");
-      os << "part,method,parameter,value,steps,body,static_correction,spin_factor,coverage,wall_seconds,"
-            "cpu_seconds,error\n";
-      for (const BenchRow& r : res.rows) {
-        os << r.part << ',' << r.method << ',' << r.parameter << ',' << field(r.value, "%.10g") << ','
-           << (r.steps >= 0 ? std::to_string(r.steps) : "") << ',' << (r.body > 0 ? std::to_string(r.body) : "")
-           << ',' << (r.static_correction >= 0 ? std::to_string(r.static_correction) : "") << ','
-           << field(r.spin_factor, "%g") << ',' << field(r.coverage, "%.8f") << ',' << field(r.wall_seconds)
-           << ',' << field(r.cpu_seconds) << ',' << field(r.error) << '\n';
-      }
-      os.flush();
-      if (!os) throw std::runtime_error(tmp.string() + ": write failed");
+  write_text_atomically(out, [&](std::ostream& os) {
+    os << "part,method,parameter,value,steps,body,static_correction,spin_factor,coverage,wall_seconds,"
+          "cpu_seconds,error\n";
+    for (const BenchRow& r : res.rows) {
+      os << r.part << ',' << r.method << ',' << r.parameter << ',' << field(r.value, "%.10g") << ','
+         << (r.steps >= 0 ? std::to_string(r.steps) : "") << ',' << (r.body > 0 ? std::to_string(r.body) : "")
+         << ',' << (r.static_correction >= 0 ? std::to_string(r.static_correction) : "") << ','
+         << field(r.spin_factor, "%g") << ',' << field(r.coverage, "%.8f") << ',' << field(r.wall_seconds)
+         << ',' << field(r.cpu_seconds) << ',' << field(r.error) << '\n';
     }
-    fs::rename(tmp, out);
-  } catch (...) {
-    std::error_code ec;
-    fs::remove(tmp, ec);
-    throw;
-  }
+  });
 }
 
 }  // namespace rc::rom

@@ -1,5 +1,7 @@
 #include "sweep.hpp"
 
+#include "atomic_file.hpp"
+
 #include "root_tracking.hpp"
 
 #include <atomic>
@@ -393,36 +395,21 @@ SweepResult run_sweep(const Scene& base, TableCache& tables, const SweepAxis& a1
 
 void write_sweep_csv(const SweepResult& r, const SweepAxis& a1, const std::optional<SweepAxis>& a2,
                      const fs::path& out) {
-  if (out.has_parent_path() && !fs::is_directory(out.parent_path()))
-    throw std::runtime_error(out.string() + ": the output folder does not exist");
-  fs::path tmp = out;
-  tmp += ".tmp-" + std::to_string(::getpid());
-  try {
-    {
-      std::ofstream os(tmp);
-      if (!os) throw std::runtime_error(tmp.string() + ": cannot create");
-      os << a1.key.text << (a2 ? "," + a2->key.text : std::string()) << ",stable,margin,nonreal\n";
-      char buf[64];
-      for (const SweepPoint& p : r.points) {
-        os << fmt(p.v1);
-        if (a2) os << "," << fmt(p.v2);
-        if (p.ok) {
-          std::snprintf(buf, sizeof buf, ",%d,%.9e,%d\n", p.verdict.stable ? 1 : 0, p.verdict.margin,
-                        p.verdict.nonreal);
-          os << buf;
-        } else {
-          os << ",nan,nan,nan\n";
-        }
+  write_text_atomically(out, [&](std::ostream& os) {
+    os << a1.key.text << (a2 ? "," + a2->key.text : std::string()) << ",stable,margin,nonreal\n";
+    char buf[64];
+    for (const SweepPoint& p : r.points) {
+      os << fmt(p.v1);
+      if (a2) os << "," << fmt(p.v2);
+      if (p.ok) {
+        std::snprintf(buf, sizeof buf, ",%d,%.9e,%d\n", p.verdict.stable ? 1 : 0, p.verdict.margin,
+                      p.verdict.nonreal);
+        os << buf;
+      } else {
+        os << ",nan,nan,nan\n";
       }
-      os.flush();
-      if (!os) throw std::runtime_error(tmp.string() + ": write failed");
     }
-    fs::rename(tmp, out);
-  } catch (...) {
-    std::error_code ec;
-    fs::remove(tmp, ec);
-    throw;
-  }
+  });
 }
 
 }  // namespace rc::rom

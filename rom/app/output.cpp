@@ -1,5 +1,7 @@
 #include "output.hpp"
 
+#include "atomic_file.hpp"
+
 #include "companion_check.hpp"
 
 #include <hdf5.h>
@@ -149,23 +151,6 @@ void write_h5(const ChainModel& m, const History& h, const fs::path& tmp) {
   }
 }
 
-// Writes through `write` to a temporary name beside `out`, then renames it into place (never a partial file).
-template <class Writer>
-void write_atomically(const fs::path& out, Writer write) {
-  if (out.has_parent_path() && !fs::is_directory(out.parent_path()))
-    throw std::runtime_error(out.string() + ": the output folder does not exist");
-  fs::path tmp = out;
-  tmp += ".tmp-" + std::to_string(::getpid());
-  try {
-    write(tmp);
-    fs::rename(tmp, out);
-  } catch (...) {
-    std::error_code ec;
-    fs::remove(tmp, ec);
-    throw;
-  }
-}
-
 void write_nonlinear_csv(const NonlinearHistory& nh, int n, const fs::path& tmp) {
   const History& h = nh.base;
   std::ofstream os(tmp);
@@ -223,14 +208,14 @@ void write_nonlinear_h5(const NonlinearHistory& nh, int n, const fs::path& tmp) 
 }  // namespace
 
 void write_history(const ChainModel& m, const History& h, const fs::path& out) {
-  write_atomically(out, [&](const fs::path& tmp) {
+  write_file_atomically(out, [&](const fs::path& tmp) {
     if (lower_ext(out) == ".csv") write_csv(m, h, tmp);
     else write_h5(m, h, tmp);
   });
 }
 
 void write_nonlinear_history(const NonlinearHistory& h, int n, const fs::path& out) {
-  write_atomically(out, [&](const fs::path& tmp) {
+  write_file_atomically(out, [&](const fs::path& tmp) {
     if (lower_ext(out) == ".csv") write_nonlinear_csv(h, n, tmp);
     else write_nonlinear_h5(h, n, tmp);
   });

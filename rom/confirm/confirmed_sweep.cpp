@@ -1,5 +1,7 @@
 #include "confirmed_sweep.hpp"
 
+#include "atomic_file.hpp"
+
 #include "chain_model.hpp"
 #include "root_confirmation.hpp"
 #include "spectrum.hpp"
@@ -184,20 +186,7 @@ void write_confirmed_sweep(const std::vector<ConfirmedSweepPoint>& points, const
                            const std::filesystem::path& out) {
   // Each file under a temporary name, then renamed: never a half-written CSV.
   const auto write = [](const std::filesystem::path& file, const std::string& text) {
-    const std::filesystem::path tmp = file.string() + ".tmp";
-    try {
-      {
-        std::ofstream os(tmp);
-        os << text;
-        os.flush();
-        if (!os) throw std::runtime_error(file.string() + ": cannot write");
-      }
-      std::filesystem::rename(tmp, file);
-    } catch (...) {
-      std::error_code ec;
-      std::filesystem::remove(tmp, ec);
-      throw;
-    }
+    write_text_atomically(file, [&](std::ostream& os) { os << text; });
   };
   std::ostringstream main, roots;
   main << std::setprecision(17) << axis.key.text << ",stable,margin,nonreal\n";
