@@ -23,6 +23,8 @@ struct ResponseRequest {
   double ekman = 0;             // 0: ideal fluid
   bool separable = false;       // ideal cylinder: the separable mode sum instead of forced solves
   std::vector<std::complex<double>> sigmas;
+  // A Krylov response table's frequencies where its R must be the fluid's own (viscous/krylov_response.hpp).
+  std::vector<std::complex<double>> exact_at;
   // A response-fit table's forced solves kept as they are made (viscous/response_samples.hpp); empty: not kept.
   std::filesystem::path samples_file;
 };

@@ -170,6 +170,7 @@ ModeTable krylov_response_table(const ResponseRequest& req, double max_error) {
   const ViscousForms forms = assemble_cavity_forms(req.shape, req.mesh, req.ekman);
   KrylovOptions options;
   options.tolerance = max_error;
+  options.exact_at = req.exact_at;
   const std::vector<double> window = refined_window(req.sigmas, 8), beyond = response_tail(lo, hi);
   const KrylovReduction k = krylov_reduction(forms, window, beyond, options, [](const std::string& line) {
     if (is_root_rank()) std::cerr << line << "\n";
@@ -192,12 +193,16 @@ ModeTable krylov_response_table(const ResponseRequest& req, double max_error) {
                     "\"Krylov response table\")";
   t.solver = fmt::format("Galerkin (Hermitian) projection on a rational Krylov space: {} expansion points chosen "
                          "greedily on {} frequencies of [{:g}, {:g}] and {} beyond it up to |s| = {:.3g}, {} vectors "
-                         "per point, {} basis vectors ({} directions dropped as dependent), {} Ritz pairs; estimated "
+                         "per point{}, {} basis vectors ({} directions dropped as dependent), {} Ritz pairs; estimated "
                          "error (bilinear against Hermitian projection) at most {:.2g} of max|R|, measured by a forced "
                          "solve at the worst estimate s = {:.6g}: {:.2g}{}; min Im R on the window {:.2g} max|R|; sum of "
                          "residues {:.9g}{:+.3g}i, A_f - J_zh = {:.9g}; forced solves on Taylor-Hood P{}/P{}, {} real "
                          "unknowns", k.points.size(), window.size(), lo, hi, beyond.size(), std::abs(beyond.back()),
-                         options.vectors_per_point, k.vectors, red.dropped, red.lambda.size(), k.estimate,
+                         options.vectors_per_point,
+                         req.exact_at.empty() ? std::string()
+                                              : fmt::format(", and {} more at the given frequencies (--exact-at), "
+                                                            "where R is exact", req.exact_at.size()),
+                         k.vectors, red.dropped, red.lambda.size(), k.estimate,
                          k.check_point, k.check_error,
                          k.within_tolerance ? "" : fmt::format(" (NOT within --max-fit-error {:.2g})", max_error),
                          passivity.min_im, sum.real(), sum.imag(), t.sum_rule,

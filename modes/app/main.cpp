@@ -48,6 +48,7 @@ struct ViscousOptions {
   // response to FILE.h5: the Krylov response table (the default), a rational fit, or the Galerkin projection on
   // the forced solutions at the samples.
   bool krylov = false, fit = false, galerkin = false;
+  std::string exact_at;         // response to FILE.h5, Krylov: complex frequencies where R must be exact
   bool serve = false;           // response: answer sigma lines on stdin with R on stdout (chain-rom confirm)
 };
 
@@ -153,6 +154,10 @@ void add_response_options(CLI::App* cmd, ViscousOptions& viscous) {
   cmd->add_flag("--galerkin", viscous.galerkin,
                 "-o FILE.h5 only: instead, the Galerkin projection on the forced solutions at the samples "
                 "(docs/viscous.md, \"Galerkin response table\")");
+  cmd->add_option("--exact-at", viscous.exact_at,
+                  "-o FILE.h5, Krylov table only: complex frequencies (a list such as 0.81-0.002i,1.3) where the "
+                  "table's R must be the fluid's own: expansion points before the greedy search (chain-rom confirm "
+                  "--refine-tables gives the chain's roots here: docs/rom.md, \"Confirmed roots\")");
   cmd->add_flag("--serve", viscous.serve,
                 "with --ekman, instead of --sigma and -o: assemble once, then answer each complex sigma read from "
                 "standard input (one a line) with 'R_re R_im' on standard output, until end of input (chain-rom "
@@ -234,6 +239,9 @@ void check_response_options(const CLI::App& cmd, const ViscousOptions& viscous, 
                              " belongs to 'cavity-modes response SHAPE ... -o FILE.h5'");
   if (int(viscous.galerkin) + int(viscous.krylov) + int(viscous.fit) > 1)
     throw std::runtime_error("--krylov, --fit and --galerkin exclude each other (one table method)");
+  if (cmd.count("--exact-at") > 0 && (!ends_with(output, ".h5") || viscous.galerkin || viscous.fit))
+    throw std::runtime_error("--exact-at belongs to a Krylov response table: 'cavity-modes response SHAPE --ekman Ek "
+                             "--sigma ... -o FILE.h5' without --fit or --galerkin");
 }
 
 // The table's report, then the plain line on what converged (empty when everything did).
@@ -339,6 +347,15 @@ int run_response(const TableRequest& req, const ViscousOptions& viscous, bool is
   rc::modes::ResponseRequest r;
   r.shape = req.shape;
   if (!viscous.serve) r.sigmas = rc::modes::parse_sigma_spec(viscous.sigma, viscous.sigma_imag);
+  if (!viscous.exact_at.empty()) {
+    try {
+      r.exact_at = rc::modes::parse_sigma_spec(viscous.exact_at, 0);
+    } catch (const std::exception& e) {  // parse_sigma_spec names --sigma; the list was --exact-at's
+      std::string what = e.what();
+      if (what.rfind("--sigma", 0) == 0) what.replace(0, 7, "--exact-at");
+      throw std::runtime_error(what);
+    }
+  }
   r.ekman = is_viscous ? viscous.ekman : 0;
   r.mesh = is_viscous ? viscous_settings.mesh : req.mesh;
   r.separable = !is_viscous && method == "separable";  // auto: forced solves for every shape

@@ -196,7 +196,7 @@ class Greedy {
   }
 
   // R(s) by a forced solve; x(s) into `x` when given (the basis unchanged).
-  cd forced(double s, Eigen::VectorXcd* x = nullptr) {
+  cd forced(cd s, Eigen::VectorXcd* x = nullptr) {
     solver_.factor(s);
     solver_.solve(forms_.coupling, x_);
     const Eigen::VectorXcd xs = local_of(x_);
@@ -206,7 +206,7 @@ class Greedy {
 
   // Factors at s, makes the point's Krylov vectors x(s), (S⁻¹𝓜)x(s), … by Arnoldi in 𝓜's inner product (against
   // the point's own vectors), and adds them to the basis as one block; returns R(s) by the first, forced solve.
-  cd expand(double s, int vectors) {
+  cd expand(cd s, int vectors) {
     Eigen::VectorXcd q;
     const cd R = forced(s, &q);
     Eigen::MatrixXcd W(q.size(), vectors);
@@ -304,6 +304,7 @@ KrylovReduction krylov_reduction(const ViscousForms& forms, const std::vector<do
     out.points.push_back(s);
     out.point_errors.push_back(std::numeric_limits<double>::quiet_NaN());
   }
+  for (const cd s : options.exact_at) greedy.expand(s, options.vectors_per_point);
   for (;;) {
     const auto worst = greedy.worst();
     const cd before = worst.galerkin;

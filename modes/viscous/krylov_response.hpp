@@ -17,6 +17,7 @@
 #include "galerkin_projection.hpp"
 #include "viscous_forms.hpp"
 
+#include <complex>
 #include <functional>
 #include <string>
 #include <vector>
@@ -27,11 +28,15 @@ struct KrylovOptions {
   double tolerance = 1e-6;    // stop when the estimate is below this × max|R| on the window
   int vectors_per_point = 8;  // Krylov vectors per expansion point (one factorisation, this many back-substitutions)
   int max_points = 100;       // expansion points (factorisations) at most
+  // Complex frequencies where R_G must be R itself (a chain's roots: chain-rom confirm --refine-tables): each is an
+  // expansion point before the greedy search, so x(s) lies in the basis and the Hermitian projection returns it
+  // exactly (R_G(s) = R(s) to rounding). Not counted in max_points.
+  std::vector<std::complex<double>> exact_at;
 };
 
 struct KrylovReduction {
   GalerkinMatrices projection;        // the Hermitian projection on the basis: reduce_on_span gives the table's rows
-  std::vector<double> points;         // expansion points, in the order chosen
+  std::vector<double> points;         // expansion points, in the order chosen (exact_at's are not listed)
   std::vector<double> point_errors;   // |R(s) − R_G(s)| / scale just before s was added (the first ones: NaN)
   double estimate = 0;                // max over the candidates of |R_B − R_G| / scale, final basis
   double check_point = 0;             // a forced solve at the final worst candidate, not added to the basis:

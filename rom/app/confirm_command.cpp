@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -34,6 +35,24 @@ std::string complex_text(cd z) {
   return os.str();
 }
 
+// After --refine-tables: the spectrum of the remade tables against the confirmed roots, one line per root; returns
+// the largest relative distance.
+double compare_refined(const Scene& scene, const std::vector<cd>& confirmed, std::ostream& log) {
+  const Spectrum sp = compute_spectrum(build_model(scene));
+  double worst = 0;
+  log << "spectrum with the refined tables against the confirmed roots:" << std::endl;
+  for (const cd& c : confirmed) {
+    const auto nearest = std::min_element(sp.roots.begin(), sp.roots.end(), [&](const Root& a, const Root& b) {
+      return std::abs(a.sigma - c) < std::abs(b.sigma - c);
+    });
+    const double d = std::abs(nearest->sigma - c) / std::abs(c);
+    worst = std::max(worst, d);
+    log << "  " << std::setw(10) << nearest->owner << "  " << std::setw(34) << complex_text(nearest->sigma)
+        << std::setprecision(2) << "  relative distance " << d << std::endl;
+  }
+  return worst;
+}
+
 }  // namespace
 
 int confirm_roots(const Scene& scene, const ConfirmRequest& req, std::ostream& out) {
@@ -41,6 +60,7 @@ int confirm_roots(const Scene& scene, const ConfirmRequest& req, std::ostream& o
   const ChainModel m = build_model(scene);
   const Spectrum sp = compute_spectrum(m);
   std::ostream& log = req.json ? std::cerr : out;
+  if (m.viscous && req.refine_tables) check_refinable(scene, m);
   if (!m.viscous) {
     if (req.json) out << nlohmann::json{{"roots", nlohmann::json::array()}, {"unconfirmed", 0}}.dump() << "\n";
     else out << "no viscous tank: the roots of spectrum are (22)'s own, nothing to confirm\n";
@@ -54,6 +74,7 @@ int confirm_roots(const Scene& scene, const ConfirmRequest& req, std::ostream& o
   settings.tolerance = req.tolerance;
   Spectrum confirmed = sp;
   nlohmann::ordered_json jroots = nlohmann::ordered_json::array();
+  std::vector<cd> confirmed_sigmas;
   int unconfirmed = 0, count = 0;
   for (const Root& r : sp.roots) count += selected(r, sp, req.all) ? 1 : 0;
   log << "roots of (22) with R itself, from the table's (" << count << " roots; docs/rom.md, \"Confirmed roots\"):"
@@ -67,8 +88,12 @@ int confirm_roots(const Scene& scene, const ConfirmRequest& req, std::ostream& o
     jroots.push_back({{"owner", r.owner}, {"table", {c.start.real(), c.start.imag()}},
                       {"confirmed", {c.sigma.real(), c.sigma.imag()}}, {"converged", c.converged},
                       {"moved", c.moved()}, {"evaluations", c.evaluations}});
-    if (c.converged) r.sigma = c.sigma;
-    else ++unconfirmed;
+    if (c.converged) {
+      r.sigma = c.sigma;
+      confirmed_sigmas.push_back(c.sigma);
+    } else {
+      ++unconfirmed;
+    }
   }
   // The verdict again, from the confirmed roots (the others as the table gives them).
   Eigen::VectorXcd sigma(static_cast<Eigen::Index>(confirmed.roots.size()));
@@ -78,6 +103,16 @@ int confirm_roots(const Scene& scene, const ConfirmRequest& req, std::ostream& o
   confirmed.growth = v.growth;
   confirmed.margin = v.margin;
   confirmed.growing = v.growing;
+  const int solves = tanks.solves();
+  double refined_distance = -1;
+  std::vector<RefinedTable> refined;
+  if (req.refine_tables && !confirmed_sigmas.empty()) {
+    tanks = {};  // the served solvers' memory back before the tables are remade
+    log << "tables remade with R exact at the confirmed roots (cavity-modes response ... --exact-at):" << std::endl;
+    refined = refine_tables(scene, m, confirmed_sigmas, cavity_modes_binary(req.cavity_modes), scratch.path, req.run,
+                            log);
+    refined_distance = compare_refined(scene, confirmed_sigmas, log);
+  }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (req.json) {
     nlohmann::ordered_json j;
@@ -86,7 +121,11 @@ int confirm_roots(const Scene& scene, const ConfirmRequest& req, std::ostream& o
     j["growth"] = v.growth;
     j["growing"] = v.growing;
     j["unconfirmed"] = unconfirmed;
-    j["forced_solves"] = tanks.solves();
+    j["forced_solves"] = solves;
+    if (req.refine_tables) {
+      j["refined_tables"] = refined.size();
+      j["refined_distance"] = refined_distance;
+    }
     j["seconds"] = seconds;
     out << j.dump() << "\n";
     return unconfirmed;
@@ -95,7 +134,10 @@ int confirm_roots(const Scene& scene, const ConfirmRequest& req, std::ostream& o
   if (unconfirmed)
     out << "warning: " << unconfirmed << " roots NOT CONFIRMED (marked above): the verdict takes the table's value "
         << "for them\n";
-  out << tanks.solves() << " forced solves, " << std::setprecision(3) << seconds << " s\n";
+  if (refined_distance >= 0)
+    out << std::setprecision(2) << refined.size() << " tables refined: spectrum's roots are now the confirmed ones to "
+        << refined_distance << " relative\n";
+  out << solves << " forced solves, " << std::setprecision(3) << seconds << " s\n";
   return unconfirmed;
 }
 

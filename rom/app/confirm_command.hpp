@@ -5,6 +5,7 @@
 #pragma once
 
 #include "scene.hpp"
+#include "table_refinement.hpp"
 
 #include <ostream>
 #include <string>
@@ -16,6 +17,10 @@ struct ConfirmRequest {
   bool all = false;          // every root, not only the body roots and the growing ones
   double tolerance = 1e-10;  // relative step at which a root counts as converged
   bool json = false;
+  // Remake each viscous tank's Krylov response table with R exact at the confirmed roots (table_refinement.hpp),
+  // then say how far the new tables' roots are from the confirmed ones. `run` starts cavity-modes.
+  bool refine_tables = false;
+  ProgramRunner run;
 };
 
 // Prints the tanks' forced-solve meshes, one line per root as it is confirmed, and the verdict from the confirmed

@@ -4,6 +4,8 @@
 #include <cstdlib>
 #include <fcntl.h>
 #include <filesystem>
+#include <fstream>
+#include <string>
 #include <spawn.h>
 #include <stdexcept>
 #include <sys/wait.h>
@@ -12,23 +14,44 @@ extern char** environ;
 
 namespace rc::rom::app {
 
-int run_program(const std::vector<std::string>& args, bool quiet) {
+namespace {
+
+// args[0] run with its standard output and error into `sink` (a file, truncated), or inherited when empty.
+int spawn_and_wait(const std::vector<std::string>& args, const std::string& sink) {
   std::vector<char*> argv;
   for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
   posix_spawn_file_actions_t fa;
   posix_spawn_file_actions_init(&fa);
-  if (quiet) {
-    posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_addopen(&fa, 2, "/dev/null", O_WRONLY, 0);
+  if (!sink.empty()) {
+    posix_spawn_file_actions_addopen(&fa, 1, sink.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_adddup2(&fa, 1, 2);
   }
   pid_t pid;
-  const int rc = posix_spawn(&pid, argv[0], &fa, nullptr, argv.data(), environ);
+  const int rc = posix_spawnp(&pid, argv[0], &fa, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&fa);
   if (rc != 0) return -1;
   int status = 0;
   if (waitpid(pid, &status, 0) < 0) return -1;
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
+}
+
+}  // namespace
+
+int run_program(const std::vector<std::string>& args, bool quiet) {
+  return spawn_and_wait(args, quiet ? "/dev/null" : "");
+}
+
+int run_program_logged(const std::vector<std::string>& args, const std::string& log_file) {
+  const int status = spawn_and_wait(args, log_file);
+  if (status == 0) return 0;
+  // The program's last line says why (cavity-modes' errors are one line).
+  std::ifstream in(log_file);
+  std::string line, last;
+  while (std::getline(in, line))
+    if (!line.empty()) last = line;
+  if (!last.empty()) std::fprintf(stderr, "%s\n", last.c_str());
+  return status;
 }
 
 std::string plot_python() {

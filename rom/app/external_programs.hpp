@@ -9,6 +9,9 @@ namespace rc::rom::app {
 // Runs args[0] with the arguments (no shell); returns its exit status, or -1 if it cannot start.
 int run_program(const std::vector<std::string>& args, bool quiet = false);
 
+// The same with its output into `log_file`; when it fails, its last line is printed on standard error.
+int run_program_logged(const std::vector<std::string>& args, const std::string& log_file);
+
 // The Python that draws maps: Debian's (python3-matplotlib), or $CHAIN_ROM_PYTHON.
 std::string plot_python();
 

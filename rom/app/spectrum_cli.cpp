@@ -5,6 +5,7 @@
 #include "chain_model.hpp"
 #include "companion_check.hpp"
 #include "confirm_command.hpp"
+#include "external_programs.hpp"
 #include "output.hpp"
 #include "scene.hpp"
 #include "spectrum.hpp"
@@ -72,6 +73,11 @@ Command add_confirm_command(CLI::App& app) {
                                                        "(default 1e-10)")->check(CLI::PositiveNumber);
   add_cavity_modes_option(cmd, o->request, "");
   cmd->add_flag("--json", o->request.json, "print {\"roots\", \"stable\", \"growth\", \"unconfirmed\", ...} as JSON");
+  cmd->add_flag("--refine-tables", o->request.refine_tables,
+                "then remake each viscous tank's Krylov response table with its R exact at the confirmed roots "
+                "(cavity-modes response ... --exact-at; the file replaced when that succeeds), so that spectrum, run "
+                "and sweep give the confirmed roots; prints how far the new tables' roots are from them");
+  o->request.run = run_program_logged;
   return {cmd, [o] { return confirm_exit(parse_scene(o->scene), o->request); }};
 }
 

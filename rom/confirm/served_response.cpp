@@ -1,5 +1,7 @@
 #include "served_response.hpp"
 
+#include "recorded_command.hpp"
+
 #include <array>
 #include <cerrno>
 #include <cmath>
@@ -20,42 +22,6 @@ namespace rc::rom {
 namespace fs = std::filesystem;
 namespace {
 
-// The words of a command line as table_provenance.cpp's quoted_command_line writes it: blanks separate words,
-// single quotes quote (a quote inside is written '\'').
-std::vector<std::string> shell_words(const std::string& line) {
-  std::vector<std::string> words;
-  std::string w;
-  bool in_word = false, quoted = false;
-  for (std::size_t i = 0; i < line.size(); ++i) {
-    const char c = line[i];
-    if (quoted) {
-      if (c == '\'') quoted = false;
-      else w += c;
-    } else if (c == '\'') {
-      quoted = in_word = true;
-    } else if (c == '\\' && i + 1 < line.size()) {
-      w += line[++i];
-      in_word = true;
-    } else if (c == ' ' || c == '\t' || c == '\n') {
-      if (in_word) words.push_back(w);
-      w.clear();
-      in_word = false;
-    } else {
-      w += c;
-      in_word = true;
-    }
-  }
-  if (quoted) throw std::runtime_error("its recorded command line has an unclosed quote");
-  if (in_word) words.push_back(w);
-  return words;
-}
-
-bool is_shape(const std::string& w) {
-  for (const char* k : {"sphere", "spheroid", "cylinder", "cone", "section"})
-    if (w == k) return true;
-  return false;
-}
-
 // cavity-modes' options that take no value (main.cpp): skipped with nothing after them.
 bool is_flag(const std::string& name) {
   for (const char* f : {"--fields", "--fill-gaps", "--no-convergence-check", "--galerkin", "--krylov", "--fit", "--serve", "--json", "-h",
@@ -72,16 +38,6 @@ bool is_kept(const std::string& name) {
   return false;
 }
 
-fs::path section_file(const rc::ModeTable& t, const std::string& recorded, const fs::path& scratch) {
-  const bool text = !t.geometry_text.empty() && t.geometry_text.rfind("(binary file", 0) != 0;
-  if (!text) {
-    if (fs::exists(recorded)) return recorded;
-    throw std::runtime_error("its section file " + recorded + " is not stored in it and not found");
-  }
-  const fs::path file = scratch / ("section" + fs::path(recorded).extension().string());
-  std::ofstream(file, std::ios::binary) << t.geometry_text;
-  return file;
-}
 }  // namespace
 
 std::vector<std::string> serve_arguments(const rc::ModeTable& t, const fs::path& scratch, double ekman,

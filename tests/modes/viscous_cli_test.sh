@@ -66,6 +66,10 @@ expect_error "--krylov on a mode table" "belong to 'cavity-modes response" "$BIN
 expect_error "--fit on a CSV response" "belongs to" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:9 --fit -o out.csv
 expect_error "--krylov with --galerkin" "exclude each other" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:9 --krylov --galerkin -o out.h5
 expect_error "Krylov response table with too few samples" "Krylov response table needs --sigma" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:5 --krylov -o out.h5
+expect_error "--exact-at with --fit" "belongs to a Krylov response table" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:9 --fit --exact-at 0.7-0.01i -o out.h5
+expect_error "--exact-at on a CSV response" "belongs to a Krylov response table" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:9 --exact-at 0.7 -o out.csv
+expect_error "--exact-at malformed" "0.7-x" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:9 --exact-at 0.7-x -o out.h5
+expect_error "--exact-at on a mode table" "does not take --exact-at" "$BIN" sphere --radius 1 --ekman 1e-2 --exact-at 0.7 -o out.h5
 expect_error "--mesh-ekman above --ekman" "must be at most --ekman" "$BIN" response sphere --radius 1 --ekman 1e-3 --mesh-ekman 1e-2 --serve
 expect_error "--mesh-ekman without --ekman" "applies with --ekman only" "$BIN" sphere --radius 1 --mesh-ekman 1e-3 -o out.h5
 expect_error "--serve without --ekman" "needs --ekman" "$BIN" response sphere --radius 1 --serve

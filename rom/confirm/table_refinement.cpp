@@ -1,0 +1,127 @@
+#include "table_refinement.hpp"
+
+#include "recorded_command.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <stdexcept>
+
+namespace rc::rom {
+namespace fs = std::filesystem;
+namespace {
+using cd = std::complex<double>;
+
+bool is_krylov_table(const rc::ModeTable& t) {
+  return t.viscous() && t.normalisation.find("rational Krylov space") != std::string::npos;
+}
+
+// --sigma's list syntax (cavity-modes parse_sigma_spec): "re+imi" items separated by commas, full precision.
+std::string complex_list(const std::vector<cd>& z) {
+  std::string out;
+  char item[96];
+  for (const cd& s : z) {
+    std::snprintf(item, sizeof item, "%s%.17g%+.17gi", out.empty() ? "" : ",", s.real(), s.imag());
+    out += item;
+  }
+  return out;
+}
+
+// The options whose value is replaced (the output and the exact frequencies).
+bool is_replaced(const std::string& name) { return name == "-o" || name == "--output" || name == "--exact-at"; }
+
+}  // namespace
+
+std::vector<cd> tank_frequencies(double omega, const std::vector<cd>& roots) {
+  std::vector<cd> out;
+  for (const cd& sigma : roots) {
+    const cd s0 = (sigma + omega) / omega;
+    const cd s = omega > 0 ? s0 : std::conj(s0);
+    bool repeat = false;
+    for (const cd& t : out) repeat = repeat || std::abs(t - s) <= 1e-12 * std::max(1.0, std::abs(s));
+    if (!repeat) out.push_back(s);
+  }
+  return out;
+}
+
+std::vector<std::string> refine_arguments(const rc::ModeTable& t, const std::vector<cd>& exact_at,
+                                          const fs::path& output, const fs::path& scratch) {
+  if (!is_krylov_table(t))
+    throw std::runtime_error("it is not a Krylov response table (remake it with cavity-modes response ... -o FILE.h5 "
+                             "without --fit or --galerkin to refine it)");
+  if (t.command_line.empty()) throw std::runtime_error("it records no command line (made before provenance)");
+  const std::vector<std::string> w = shell_words(t.command_line);
+  if (w.size() < 3 || w[1] != "response" || !is_shape(w[2]))
+    throw std::runtime_error("its recorded command line is not 'cavity-modes response SHAPE ...': " + t.command_line);
+  std::vector<std::string> args{"response", w[2]};
+  const bool section = w[2] == "section";
+  bool have_file = false;
+  for (std::size_t i = 3; i < w.size(); ++i) {
+    const std::string& word = w[i];
+    if (word.size() < 2 || word[0] != '-') {  // positional: the section's file
+      args.push_back(section && !have_file ? section_file(t, word, scratch).string() : word);
+      have_file = have_file || section;
+      continue;
+    }
+    const auto eq = word.find('=');
+    const std::string name = word.substr(0, eq);
+    if (!is_replaced(name)) {
+      args.push_back(word);
+      continue;
+    }
+    if (eq == std::string::npos) ++i;  // its value is the next word
+  }
+  if (section && !have_file) throw std::runtime_error("its recorded command line names no section file");
+  args.insert(args.end(), {"--exact-at", complex_list(exact_at), "-o", output.string()});
+  return args;
+}
+
+void check_refinable(const Scene& scene, const ChainModel& m) {
+  for (int k = 0; k < m.n; ++k) {
+    if (m.bodies[k].ekman <= 0) continue;
+    const fs::path& file = scene.bodies[k].cavity->table;
+    const rc::ModeTable t = rc::read_mode_table(file);
+    if (!is_krylov_table(t))
+      throw SceneError("body[" + std::to_string(k + 1) + "].cavity.table " + file.string() +
+                       ": --refine-tables remakes Krylov response tables only, and this is not one (remake it with "
+                       "cavity-modes response ... -o FILE.h5 without --fit or --galerkin)");
+  }
+}
+
+std::vector<RefinedTable> refine_tables(const Scene& scene, const ChainModel& m, const std::vector<cd>& roots,
+                                        const std::string& binary, const fs::path& scratch, const ProgramRunner& run,
+                                        std::ostream& log) {
+  // One run per table file, with the frequencies of every body that uses it (bodies of other spins add their own).
+  std::map<std::string, std::vector<cd>> frequencies;
+  for (int k = 0; k < m.n; ++k) {
+    if (m.bodies[k].ekman <= 0) continue;
+    auto& f = frequencies[scene.bodies[k].cavity->table.string()];
+    for (const cd& s : tank_frequencies(m.bodies[k].omega, roots)) f.push_back(s);
+  }
+  std::vector<RefinedTable> out;
+  for (const auto& [name, exact_at] : frequencies) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const fs::path file = name;
+    const fs::path tmp = file.parent_path() / (file.stem().string() + ".refining.h5");
+    std::vector<std::string> args{binary};
+    for (auto& a : refine_arguments(rc::read_mode_table(file), exact_at, tmp, scratch)) args.push_back(std::move(a));
+    log << "  " << file.string() << ": R made exact at " << exact_at.size() << " frequencies:";
+    for (const auto& a : args) log << " " << a;
+    log << std::endl;
+    const int status = run(args, (scratch / "refine.log").string());
+    if (status != 0) {
+      std::error_code gone;
+      fs::remove(tmp, gone);
+      throw std::runtime_error("refining " + file.string() + ": cavity-modes " +
+                               (status < 0 ? "did not start" : "exited with status " + std::to_string(status)) +
+                               " (the table is unchanged)");
+    }
+    fs::rename(tmp, file);
+    out.push_back({file, static_cast<int>(exact_at.size()),
+                   std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()});
+  }
+  return out;
+}
+
+}  // namespace rc::rom
