@@ -182,11 +182,7 @@ void refuse_extras(const CLI::App& cmd, bool response) {
 
 // Resolves --method and the order's default; refuses options that only the other method has.
 void choose_method(const CLI::App& cmd, const std::string& choice, bool fields, TableRequest& req) {
-  const bool annular = req.shape.dims.count("inner_radius") > 0;
-  if (annular && choice == "separable")
-    throw std::runtime_error("--method separable does not take --inner-radius yet (the annular cylinder: --method mesh)");
-  const bool separable =
-      choice == "separable" || (choice == "auto" && req.shape.kind == "cylinder" && !fields && !annular);
+  const bool separable = choice == "separable" || (choice == "auto" && req.shape.kind == "cylinder" && !fields);
   req.method = separable ? rc::modes::TableMethod::separable : rc::modes::TableMethod::mesh;
   if (req.mesh.order == 0 && !separable) req.mesh.order = 6;  // separable: its own default (separable_table.hpp)
   if (!separable) return;

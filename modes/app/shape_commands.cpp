@@ -20,7 +20,7 @@ ShapeCommands::ShapeCommands(CLI::App& app, const std::string& purpose) {
   add("cylinder", "circular cylinder", {{"radius", "radius"}, {"height", "full height"}});
   commands_.back().app->add_option("--inner-radius", commands_.back().inner_radius,
                                    "radius of a coaxial rod inside: the liquid fills inner radius < r < radius (an "
-                                   "annular cavity, no axis; the mesh method)");
+                                   "annular cavity, no axis)");
   add("cone", "cone, apex down, flat lid on top", {{"radius", "lid radius"}, {"height", "height"}});
   add("section", "the user's meridian section (.geo or .msh; docs/geometry.md)", {});
   commands_.back().app->add_option("file", commands_.back().file, "section file")->required();

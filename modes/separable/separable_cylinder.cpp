@@ -123,24 +123,29 @@ void parallel_for(int count, Body body, const SeparableProgress& progress) {
 }  // namespace
 
 SeparableGrid SeparableGrid::graded(double radius, double height, int order, int radial_elements, int axial_elements,
-                                    int corner_layers) {
+                                    int corner_layers, double inner_radius) {
   SeparableGrid g;
   g.order = order;
-  g.radial = graded_breaks(0, radius, radial_elements, corner_layers, false, true);
+  g.inner_radius = inner_radius;
+  g.radial = graded_breaks(inner_radius, radius, radial_elements, corner_layers, inner_radius > 0, true);
   g.axial = graded_breaks(-0.5 * height, 0.5 * height, axial_elements, corner_layers, true, true);
   return g;
 }
 
 SeparableSpectrum solve_separable_cylinder(double radius, double height, const SeparableGrid& grid,
                                            const SeparableProgress& progress) {
+  const double b = grid.inner_radius;
   if (!(radius > 0 && std::isfinite(radius) && height > 0 && std::isfinite(height)))
     throw std::invalid_argument("separable cylinder: radius and height must be positive and finite");
+  if (!(b >= 0 && b < radius)) throw std::invalid_argument("separable cylinder: the inner radius must be in [0, radius)");
   const auto spans = [](const std::vector<double>& b, double lo, double hi) {
     return b.size() >= 2 && std::abs(b.front() - lo) <= 1e-12 * (hi - lo) && std::abs(b.back() - hi) <= 1e-12 * (hi - lo);
   };
-  if (!spans(grid.radial, 0, radius) || !spans(grid.axial, -0.5 * height, 0.5 * height))
+  if (!spans(grid.radial, b, radius) || !spans(grid.axial, -0.5 * height, 0.5 * height))
     throw std::invalid_argument("separable cylinder: the grid does not span the cylinder");
-  const LineSpace R(grid.radial, grid.order, true);
+  // On the axis p = 0 (m = 1); an annulus has no axis, and its inner wall, like the outer one, is a natural
+  // condition of the forms (u·n = 0: the boundary terms of Cr at both ends are the wall integral of G_c).
+  const LineSpace R(grid.radial, grid.order, b == 0);
   const LineSpace Z(grid.axial, grid.order, false);
 
   SeparableSpectrum out;

@@ -1,7 +1,8 @@
 // The circular cylinder's Poincaré problem separated at the discrete level (docs/modes.md, "Separable
 // cylinder solver").
 //
-// On a tensor-product grid of 1-D Lagrange elements (r: 0..a with p = 0 on the axis; z over the height),
+// On a tensor-product grid of 1-D Lagrange elements (r: 0..a with p = 0 on the axis, or b..a for an annular
+// cylinder around a coaxial rod of radius b, whose inner wall is a wall like the outer one; z over the height),
 // the forms of docs/physics.md §2 are Kronecker products of 1-D forms:
 //   Kh = Ar ⊗ Bz,  Kz = Br ⊗ Az,  Gc = Cr ⊗ Bz,
 //   Ar = ∫ (φ_i′φ_j′ + φ_iφ_j/r²) r dr,  Br = ∫ φ_iφ_j r dr,  Cr = ∫ (φ_i′φ_j + φ_iφ_j′) dr,
@@ -28,13 +29,15 @@ namespace rc::modes {
 // Element breaks of the two factor spaces and their order.
 struct SeparableGrid {
   int order = 8;
-  std::vector<double> radial;  // on [0, radius], increasing
+  double inner_radius = 0;     // > 0: the annular cylinder inner_radius < r < radius (no axis)
+  std::vector<double> radial;  // on [inner_radius, radius], increasing
   std::vector<double> axial;   // on [−height/2, height/2], increasing; symmetric about 0 (even modes then decouple)
 
-  // Uniform elements, the one at r = radius and the one at each lid further cut into corner_layers + 1 pieces
-  // halving towards the corner (graded_breaks, line_space.hpp). axial_elements >= 2.
+  // Uniform elements, the one at each wall (r = radius, and r = inner_radius when positive) and the one at each lid
+  // further cut into corner_layers + 1 pieces halving towards the corner (graded_breaks, line_space.hpp).
+  // axial_elements >= 2.
   static SeparableGrid graded(double radius, double height, int order, int radial_elements, int axial_elements,
-                              int corner_layers);
+                              int corner_layers, double inner_radius = 0);
   int radial_elements() const { return static_cast<int>(radial.size()) - 1; }
   int axial_elements() const { return static_cast<int>(axial.size()) - 1; }
 };
@@ -59,6 +62,7 @@ struct SeparableSpectrum {
   std::vector<SeparableMode> modes;  // every eigenpair of every coupled axial vector, E descending
 };
 
+// The cavity is the cylinder (grid.inner_radius = 0) or the annular cylinder grid.inner_radius < r < radius.
 // Throws std::invalid_argument for non-positive or non-finite dimensions or a grid that does not span them, and
 // std::runtime_error if a dense factorisation fails.
 // progress(done, total) is called from the calling thread as the radial problems finish.

@@ -125,6 +125,9 @@ int confirm_roots(const Scene& scene, const ConfirmRequest& req, std::ostream& o
     if (req.refine_tables) {
       j["refined_tables"] = refined.size();
       j["refined_distance"] = refined_distance;
+      double remade = 0;
+      for (const RefinedTable& r : refined) remade += r.seconds;
+      j["refine_seconds"] = remade;
     }
     j["seconds"] = seconds;
     out << j.dump() << "\n";

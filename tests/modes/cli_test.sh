@@ -49,7 +49,6 @@ expect_error "empty option value" "an empty value after --coverage" "$BIN" spher
 expect_error "empty option value (=)" "an empty value for --mesh-size" "$BIN" sphere --radius 1 --mesh-size= -o out.h5
 expect_error "misspelt option" "does not take --mesh-sise" "$BIN" cone --radius 1 --height 1 --mesh-sise 0.1 -o out.h5
 expect_error "separable with --fields" "--fields needs --method mesh" "$BIN" cylinder --radius 1 --height 2 --method separable --fields -o out.h5
-expect_error "separable with --inner-radius" "does not take --inner-radius" "$BIN" cylinder --radius 1 --height 2 --inner-radius 0.3 --method separable -o out.h5
 expect_error "rod as wide as the cylinder" "must be below the radius" "$BIN" cylinder --radius 1 --height 2 --inner-radius 1 -o out.h5
 expect_error "--inner-radius on a cone" "cone does not take --inner-radius" "$BIN" cone --radius 1 --height 1 --inner-radius 0.3 -o out.h5
 expect_error "separable order out of range" "order 13 is outside 1..12" "$BIN" cylinder --radius 1 --height 2 --order 13 -o out.h5
