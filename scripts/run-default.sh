@@ -2,7 +2,7 @@
 # The default job of README.md, runnable from any folder:
 #   1. install what is missing and build the two programs (scripts/build.sh cavity-modes chain-rom -> build/;
 #      the test suite is built by scripts/test.sh),
-#   2. make the mode tables of data/scenes/default.toml (water: three response-fit tables of the viscous
+#   2. make the mode tables of data/scenes/default.toml (water: three Krylov response tables of the viscous
 #      fluid) and of data/scenes/default_ideal.toml (the same chain with ideal fluid, for comparison) with
 #      cavity-modes into out/tables/ (the "# recipe:" lines of each scene; a table is remade only when it is
 #      missing or older than the cavity-modes binary or its scene),

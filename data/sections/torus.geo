@@ -2,7 +2,7 @@
 // R = 1 about the spin axis (a ring tank around an engine). Meridian half-section in the (x = r, y = z) plane: the
 // disc of radius a centred at (R, 0). It nowhere touches r = 0, so it has no "axis" group: its wall is its whole
 // boundary. No closed form for its modes; its frozen-fluid integrals are exact (volume 2π²Ra², A_f = m(R²/2 + 5a²/8),
-// C_f = m(R² + 3a²/4)) and its sum rule Σ E = A_f − J_zh is an identity of every discretisation (docs/geometry.md,
+// C_f = m(R² + 3a²/4)) and its sum rule Σ E = A_f − J_zh holds to the curved wall's geometric error (docs/geometry.md,
 // "Ring-shaped sections"). Mesh size and order come from cavity-modes' options.
 R = 1.0;
 a = 0.4;

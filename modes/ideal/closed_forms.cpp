@@ -19,28 +19,6 @@ double J1prime(double x) { return J0(x) - J1(x) / x; }
 double Y0(double x) { return std::cyl_neumann(0.0, x); }
 double Y1(double x) { return std::cyl_neumann(1.0, x); }
 
-// Bisection refined to machine precision on a bracket [lo, hi] with a sign change of f.
-double bisect(const std::function<double(double)>& f, double lo, double hi) {
-  double flo = f(lo);
-  for (int it = 0; it < 200 && hi - lo > 1e-15 * std::max(1.0, std::abs(hi)); ++it) {
-    const double mid = 0.5 * (lo + hi), fm = f(mid);
-    if ((fm < 0) == (flo < 0)) { lo = mid; flo = fm; } else { hi = mid; }
-  }
-  return 0.5 * (lo + hi);
-}
-
-// found(ξ) at each sign change of f on (0, max_xi), sampled every 1e-3 and bisected to machine precision.
-void for_each_root(const std::function<double(double)>& f, double max_xi, const std::function<void(double)>& found) {
-  const double step = 1e-3;
-  double x0 = step, f0 = f(x0);
-  for (double x1 = 2 * step; x1 < max_xi; x1 += step) {
-    const double f1 = f(x1);
-    if ((f0 < 0) != (f1 < 0)) found(bisect(f, x0, x1));
-    x0 = x1;
-    f0 = f1;
-  }
-}
-
 // E of p = F(q r) sin(k z) on b < r < a, |z| < h, with the docs/physics.md §2 formulas (ω0 = 1), by tensor
 // Gauss–Legendre quadrature; F and dF are the radial function and its derivative in their argument.
 double mode_energy(double b, double a, double h, double k, double q, double lambda,
@@ -72,6 +50,28 @@ double cylinder_mode_energy(double a, double h, double k, double xi, double lamb
 }
 
 }  // namespace
+
+// Bisection refined to machine precision on a bracket [lo, hi] with a sign change of f.
+double bisect(const std::function<double(double)>& f, double lo, double hi) {
+  double flo = f(lo);
+  for (int it = 0; it < 200 && hi - lo > 1e-15 * std::max(1.0, std::abs(hi)); ++it) {
+    const double mid = 0.5 * (lo + hi), fm = f(mid);
+    if ((fm < 0) == (flo < 0)) { lo = mid; flo = fm; } else { hi = mid; }
+  }
+  return 0.5 * (lo + hi);
+}
+
+// found(ξ) at each sign change of f on (0, max_xi), sampled every 1e-3 and bisected to machine precision.
+void for_each_root(const std::function<double(double)>& f, double max_xi, const std::function<void(double)>& found) {
+  const double step = 1e-3;
+  double x0 = step, f0 = f(x0);
+  for (double x1 = 2 * step; x1 < max_xi; x1 += step) {
+    const double f1 = f(x1);
+    if ((f0 < 0) != (f1 < 0)) found(bisect(f, x0, x1));
+    x0 = x1;
+    f0 = f1;
+  }
+}
 
 SpheroidValues spheroid(double a, double c) {
   SpheroidValues s;

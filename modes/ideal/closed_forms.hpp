@@ -3,9 +3,16 @@
 // Used by the tests and by the shipped reference tables; nothing here touches the FE solver.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 namespace rc::modes::exact {
+
+// Bisection refined to machine precision on a bracket [lo, hi] with a sign change of f.
+double bisect(const std::function<double(double)>& f, double lo, double hi);
+
+// found(x) at each sign change of f on (0, max_xi), sampled every 1e-3 and bisected to machine precision.
+void for_each_root(const std::function<double(double)>& f, double max_xi, const std::function<void(double)>& found);
 
 struct Mode {
   double kappa = 0, lambda = 0, E = 0;
