@@ -77,6 +77,79 @@ void write_partial_fill(const fs::path& dir) {
   std::cout << path.string() << ": " << rows << " rows\n";
 }
 
+// The spheroids c/a = 0.5 and 2: their single coupling mode each.
+void write_spheroids(const fs::path& dir) {
+  for (const double c : {0.5, 2.0}) {
+    const double a = 1.0;
+    const auto s = rc::modes::exact::spheroid(a, c);
+    ReferenceRow r;
+    r.shape = "spheroid";
+    r.dimensions = {{"a", a}, {"c", c}};
+    r.kappa = s.mode.kappa;
+    r.E = s.mode.E;
+    r.source = kSpheroidSource;
+    r.label = "the single coupling mode, lambda = 2a^2/(a^2 + c^2)";
+    write(dir / fmt::format("spheroid_a{}_c{}.csv", number(a), number(c)),
+          fmt::format("Spheroid a = {}, c = {} (c/a = {}): its only mode with E > 0.", number(a), number(c),
+                      number(c / a)),
+          {r});
+  }
+}
+
+// Stewartson's cylinders 2h/a = 1, 2, 4: the modes of largest E.
+void write_cylinders(const fs::path& dir) {
+  for (const double height : {1.0, 2.0, 4.0}) {
+    const double radius = 1.0;
+    const auto modes = rc::modes::exact::cylinder_modes(radius, height);
+    if (modes.size() < kCylinderModes) throw std::runtime_error("too few cylinder modes found");
+    std::vector<ReferenceRow> rows;
+    for (int i = 0; i < kCylinderModes; ++i) {
+      const auto& m = modes[i];
+      ReferenceRow r;
+      r.shape = "cylinder";
+      r.dimensions = {{"radius", radius}, {"height", height}};
+      r.kappa = m.kappa;
+      r.E = m.E;
+      r.source = kStewartsonSource;
+      r.label = fmt::format("n={} j={} kappa{}0", m.axial, m.radial, m.kappa > 0 ? ">" : "<");
+      rows.push_back(r);
+    }
+    write(dir / fmt::format("cylinder_radius{}_height{}.csv", number(radius), number(height)),
+          fmt::format("Circular cylinder radius {}, height {} (2h/a = {}): the {} Stewartson modes of largest E "
+                      "(n: axial index, k = (2n+1)pi/height; j: radial root index for that n and sign of kappa).",
+                      number(radius), number(height), number(height / radius), kCylinderModes),
+          rows);
+  }
+}
+
+// The annular cylinder (rod radius 0.3, radius 1, height 2; docs/physics.md §2, "annular cylinder"): as the section
+// data/sections/annulus.geo and as the built-in `cylinder --inner-radius 0.3`.
+void write_annulus(const fs::path& dir) {
+  const auto modes = rc::modes::exact::annular_cylinder_modes(0.3, 1.0, 2.0);
+  if (modes.size() < kCylinderModes) throw std::runtime_error("too few annular cylinder modes found");
+  std::vector<ReferenceRow> rows;
+  for (int i = 0; i < kCylinderModes; ++i) {
+    const auto& m = modes[i];
+    ReferenceRow r;
+    r.shape = "section";
+    r.kappa = m.kappa;
+    r.E = m.E;
+    r.source = kAnnulusSource;
+    r.label = fmt::format("n={} j={} kappa{}0", m.axial, m.radial, m.kappa > 0 ? ">" : "<");
+    rows.push_back(r);
+  }
+  const std::string what = fmt::format(
+      "(rod radius 0.3, radius 1, height 2; no axis): the {} separable modes F = J1 + c Y1 of largest E (n: axial "
+      "index, k = (2n+1)pi/height; j: root index for that n and sign of kappa).", kCylinderModes);
+  write(dir / "section_annulus.csv", "The annular cylinder of data/sections/annulus.geo " + what, rows);
+  for (auto& r : rows) {
+    r.shape = "cylinder";
+    r.dimensions = {{"inner_radius", 0.3}, {"radius", 1.0}, {"height", 2.0}};
+  }
+  write(dir / "cylinder_radius1_height2_inner0.3.csv", "The annular cylinder, cylinder --inner-radius 0.3 " + what,
+        rows);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -89,69 +162,9 @@ int main(int argc, char** argv) {
     const fs::path dir = argv[1];
     if (!fs::is_directory(dir)) throw std::runtime_error(dir.string() + ": not a directory");
 
-    for (const double c : {0.5, 2.0}) {
-      const double a = 1.0;
-      const auto s = rc::modes::exact::spheroid(a, c);
-      ReferenceRow r;
-      r.shape = "spheroid";
-      r.dimensions = {{"a", a}, {"c", c}};
-      r.kappa = s.mode.kappa;
-      r.E = s.mode.E;
-      r.source = kSpheroidSource;
-      r.label = "the single coupling mode, lambda = 2a^2/(a^2 + c^2)";
-      write(dir / fmt::format("spheroid_a{}_c{}.csv", number(a), number(c)),
-            fmt::format("Spheroid a = {}, c = {} (c/a = {}): its only mode with E > 0.", number(a), number(c),
-                        number(c / a)),
-            {r});
-    }
-    for (const double height : {1.0, 2.0, 4.0}) {
-      const double radius = 1.0;
-      const auto modes = rc::modes::exact::cylinder_modes(radius, height);
-      if (modes.size() < kCylinderModes) throw std::runtime_error("too few cylinder modes found");
-      std::vector<ReferenceRow> rows;
-      for (int i = 0; i < kCylinderModes; ++i) {
-        const auto& m = modes[i];
-        ReferenceRow r;
-        r.shape = "cylinder";
-        r.dimensions = {{"radius", radius}, {"height", height}};
-        r.kappa = m.kappa;
-        r.E = m.E;
-        r.source = kStewartsonSource;
-        r.label = fmt::format("n={} j={} kappa{}0", m.axial, m.radial, m.kappa > 0 ? ">" : "<");
-        rows.push_back(r);
-      }
-      write(dir / fmt::format("cylinder_radius{}_height{}.csv", number(radius), number(height)),
-            fmt::format("Circular cylinder radius {}, height {} (2h/a = {}): the {} Stewartson modes of largest E "
-                        "(n: axial index, k = (2n+1)pi/height; j: radial root index for that n and sign of kappa).",
-                        number(radius), number(height), number(height / radius), kCylinderModes),
-            rows);
-    }
-    {  // The annular cylinder (rod radius 0.3, radius 1, height 2; docs/physics.md §2, "annular cylinder"): as the
-       // section data/sections/annulus.geo and as the built-in `cylinder --inner-radius 0.3`.
-      const auto modes = rc::modes::exact::annular_cylinder_modes(0.3, 1.0, 2.0);
-      if (modes.size() < kCylinderModes) throw std::runtime_error("too few annular cylinder modes found");
-      std::vector<ReferenceRow> rows;
-      for (int i = 0; i < kCylinderModes; ++i) {
-        const auto& m = modes[i];
-        ReferenceRow r;
-        r.shape = "section";
-        r.kappa = m.kappa;
-        r.E = m.E;
-        r.source = kAnnulusSource;
-        r.label = fmt::format("n={} j={} kappa{}0", m.axial, m.radial, m.kappa > 0 ? ">" : "<");
-        rows.push_back(r);
-      }
-      const std::string what = fmt::format(
-          "(rod radius 0.3, radius 1, height 2; no axis): the {} separable modes F = J1 + c Y1 of largest E (n: axial "
-          "index, k = (2n+1)pi/height; j: root index for that n and sign of kappa).", kCylinderModes);
-      write(dir / "section_annulus.csv", "The annular cylinder of data/sections/annulus.geo " + what, rows);
-      for (auto& r : rows) {
-        r.shape = "cylinder";
-        r.dimensions = {{"inner_radius", 0.3}, {"radius", 1.0}, {"height", 2.0}};
-      }
-      write(dir / "cylinder_radius1_height2_inner0.3.csv", "The annular cylinder, cylinder --inner-radius 0.3 " + what,
-            rows);
-    }
+    write_spheroids(dir);
+    write_cylinders(dir);
+    write_annulus(dir);
     write_partial_fill(dir);
     return 0;
   } catch (const std::exception& e) {

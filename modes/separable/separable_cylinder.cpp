@@ -92,6 +92,19 @@ void parallel_for(int count, Body body, const SeparableProgress& progress) {
   if (failure) std::rethrow_exception(failure);
 }
 
+// Axial vectors that the coupling functionals do not see carry no E: μ = 0 (constant) and, z′ being measured
+// from the mid-plane, the even vectors, whose s_n, t_n come out at 1e-13..1e-12 of the odd ones' from the
+// rounding of the axial eigensolver. 1e-9 separates the two with margin; a vector it drops could carry at
+// most ~1e-18 of the sum rule, and the sum-rule check (sum_E) would show anything larger.
+std::vector<int> coupled_axial_vectors(const Eigen::VectorXd& mu, const Eigen::VectorXd& s, const Eigen::VectorXd& t) {
+  const double smax = s.cwiseAbs().maxCoeff(), tmax = t.cwiseAbs().maxCoeff();
+  std::vector<int> coupled;
+  for (Eigen::Index k = 0; k < mu.size(); ++k)
+    if (mu(k) > 0 && (std::abs(s(k)) > 1e-9 * smax || std::abs(t(k)) > 1e-9 * tmax))
+      coupled.push_back(static_cast<int>(k));
+  return coupled;
+}
+
 }  // namespace
 
 SeparableGrid SeparableGrid::graded(double radius, double height, int order, int radial_elements, int axial_elements,
@@ -146,14 +159,7 @@ SeparableSpectrum solve_separable_cylinder(double radius, double height, const S
   }
   out.sum_rule = out.fluid.A_f - out.J_zh;
 
-  // Axial vectors that the coupling functionals do not see carry no E: μ = 0 (constant) and, z′ being measured
-  // from the mid-plane, the even vectors, whose s_n, t_n come out at 1e-13..1e-12 of the odd ones' from the
-  // rounding of the axial eigensolver. 1e-9 separates the two with margin; a vector it drops could carry at
-  // most ~1e-18 of the sum rule, and the sum-rule check (sum_E) would show anything larger.
-  const double smax = s.cwiseAbs().maxCoeff(), tmax = t.cwiseAbs().maxCoeff();
-  std::vector<int> coupled;
-  for (int k = 0; k < Z.ndof(); ++k)
-    if (mu(k) > 0 && (std::abs(s(k)) > 1e-9 * smax || std::abs(t(k)) > 1e-9 * tmax)) coupled.push_back(k);
+  const std::vector<int> coupled = coupled_axial_vectors(mu, s, t);
   out.coupled_axial = static_cast<int>(coupled.size());
   std::vector<std::vector<SeparableMode>> per_axial(coupled.size());
   parallel_for(static_cast<int>(coupled.size()), [&](int i) {

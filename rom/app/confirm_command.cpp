@@ -55,10 +55,102 @@ double compare_refined(const Scene& scene, const std::vector<cd>& confirmed, std
 
 }  // namespace
 
+namespace {
+
+// What the iteration gave: the spectrum with the confirmed roots in place, its verdict, and one JSON row a root.
+struct Confirmation {
+  Spectrum spectrum;
+  Verdict verdict;
+  nlohmann::ordered_json roots = nlohmann::ordered_json::array();
+  std::vector<cd> sigmas;  // the converged roots
+  int unconfirmed = 0;
+};
+
+// Iterates every selected root of `sp` on (22) with the tanks' own R, one line each on `log`, and gives the verdict
+// again from the confirmed roots (the others as the table gives them).
+Confirmation confirm_selected(const ChainModel& m, const Spectrum& sp, const TankResponses& tanks,
+                              const ConfirmRequest& req, std::ostream& log) {
+  ConfirmSettings settings;
+  settings.tolerance = req.tolerance;
+  Confirmation c{sp, {}, {}, {}, 0};
+  int count = 0;
+  for (const Root& r : sp.roots) count += selected(r, sp, req.all) ? 1 : 0;
+  log << "roots of (22) with R itself, from the table's (" << count << " roots; docs/rom.md, \"Confirmed roots\"):"
+      << std::endl;
+  for (Root& r : c.spectrum.roots) {
+    if (!selected(r, sp, req.all)) continue;
+    const ConfirmedRoot root = confirm_root(m, tanks.responses, r.sigma, settings);
+    log << "  " << std::setw(10) << r.owner << "  " << std::setw(34) << complex_text(root.start) << "  ->  "
+        << std::setw(34) << complex_text(root.sigma) << std::setprecision(2) << "  moved " << root.moved() << ", "
+        << root.evaluations << " evaluations" << (root.converged ? "" : "  NOT CONFIRMED: " + root.failure)
+        << std::endl;
+    c.roots.push_back({{"owner", r.owner}, {"table", {root.start.real(), root.start.imag()}},
+                       {"confirmed", {root.sigma.real(), root.sigma.imag()}}, {"converged", root.converged},
+                       {"moved", root.moved()}, {"evaluations", root.evaluations}});
+    if (root.converged) {
+      r.sigma = root.sigma;
+      c.sigmas.push_back(root.sigma);
+    } else {
+      ++c.unconfirmed;
+    }
+  }
+  Eigen::VectorXcd sigma(static_cast<Eigen::Index>(c.spectrum.roots.size()));
+  for (std::size_t j = 0; j < c.spectrum.roots.size(); ++j)
+    sigma[static_cast<Eigen::Index>(j)] = c.spectrum.roots[j].sigma;
+  c.verdict = verdict_from_roots(m, sigma);
+  c.spectrum.stable = c.verdict.stable;
+  c.spectrum.growth = c.verdict.growth;
+  c.spectrum.margin = c.verdict.margin;
+  c.spectrum.growing = c.verdict.growing;
+  return c;
+}
+
+// --refine-tables: the remade tables and how far their spectrum's roots are from the confirmed ones (-1: none).
+struct Refinement {
+  std::vector<RefinedTable> tables;
+  double distance = -1;
+  double seconds() const {
+    double s = 0;
+    for (const RefinedTable& t : tables) s += t.seconds;
+    return s;
+  }
+};
+
+void print_json(std::ostream& out, const Confirmation& c, const Refinement& refinement, bool refine, int solves,
+                double seconds) {
+  nlohmann::ordered_json j;
+  j["roots"] = c.roots;
+  j["stable"] = c.verdict.stable;
+  j["growth"] = c.verdict.growth;
+  j["growing"] = c.verdict.growing;
+  j["unconfirmed"] = c.unconfirmed;
+  j["forced_solves"] = solves;
+  if (refine) {
+    j["refined_tables"] = refinement.tables.size();
+    j["refined_distance"] = refinement.distance;
+    j["refine_seconds"] = refinement.seconds();
+  }
+  j["seconds"] = seconds;
+  out << j.dump() << "\n";
+}
+
+void print_text(std::ostream& out, const ChainModel& m, const Confirmation& c, const Refinement& refinement,
+                int solves, double seconds) {
+  out << std::setprecision(6) << "with the confirmed roots: " << verdict_with_dissipation(m, c.spectrum) << "\n";
+  if (c.unconfirmed)
+    out << "warning: " << c.unconfirmed << " roots NOT CONFIRMED (marked above): the verdict takes the table's value "
+        << "for them\n";
+  if (refinement.distance >= 0)
+    out << std::setprecision(2) << refinement.tables.size() << " tables refined: spectrum's roots are now the "
+        << "confirmed ones to " << refinement.distance << " relative\n";
+  out << solves << " forced solves, " << std::setprecision(3) << seconds << " s\n";
+}
+
+}  // namespace
+
 int confirm_roots(const Scene& scene, const ConfirmRequest& req, std::ostream& out) {
   const auto t0 = std::chrono::steady_clock::now();
   const ChainModel m = build_model(scene);
-  const Spectrum sp = compute_spectrum(m);
   std::ostream& log = req.json ? std::cerr : out;
   if (m.viscous && req.refine_tables) check_refinable(scene, m);
   if (!m.viscous) {
@@ -70,78 +162,20 @@ int confirm_roots(const Scene& scene, const ConfirmRequest& req, std::ostream& o
   log << "the fluid's own response R(s) by forced solves (cavity-modes response ... --serve), one per viscous tank:"
       << std::endl;
   TankResponses tanks = serve_tanks(scene, m, cavity_modes_binary(req.cavity_modes), scratch.path, log);
-  ConfirmSettings settings;
-  settings.tolerance = req.tolerance;
-  Spectrum confirmed = sp;
-  nlohmann::ordered_json jroots = nlohmann::ordered_json::array();
-  std::vector<cd> confirmed_sigmas;
-  int unconfirmed = 0, count = 0;
-  for (const Root& r : sp.roots) count += selected(r, sp, req.all) ? 1 : 0;
-  log << "roots of (22) with R itself, from the table's (" << count << " roots; docs/rom.md, \"Confirmed roots\"):"
-      << std::endl;
-  for (Root& r : confirmed.roots) {
-    if (!selected(r, sp, req.all)) continue;
-    const ConfirmedRoot c = confirm_root(m, tanks.responses, r.sigma, settings);
-    log << "  " << std::setw(10) << r.owner << "  " << std::setw(34) << complex_text(c.start) << "  ->  "
-        << std::setw(34) << complex_text(c.sigma) << std::setprecision(2) << "  moved " << c.moved() << ", "
-        << c.evaluations << " evaluations" << (c.converged ? "" : "  NOT CONFIRMED: " + c.failure) << std::endl;
-    jroots.push_back({{"owner", r.owner}, {"table", {c.start.real(), c.start.imag()}},
-                      {"confirmed", {c.sigma.real(), c.sigma.imag()}}, {"converged", c.converged},
-                      {"moved", c.moved()}, {"evaluations", c.evaluations}});
-    if (c.converged) {
-      r.sigma = c.sigma;
-      confirmed_sigmas.push_back(c.sigma);
-    } else {
-      ++unconfirmed;
-    }
-  }
-  // The verdict again, from the confirmed roots (the others as the table gives them).
-  Eigen::VectorXcd sigma(static_cast<Eigen::Index>(confirmed.roots.size()));
-  for (std::size_t j = 0; j < confirmed.roots.size(); ++j) sigma[static_cast<Eigen::Index>(j)] = confirmed.roots[j].sigma;
-  const Verdict v = verdict_from_roots(m, sigma);
-  confirmed.stable = v.stable;
-  confirmed.growth = v.growth;
-  confirmed.margin = v.margin;
-  confirmed.growing = v.growing;
+  const Confirmation c = confirm_selected(m, compute_spectrum(m), tanks, req, log);
   const int solves = tanks.solves();
-  double refined_distance = -1;
-  std::vector<RefinedTable> refined;
-  if (req.refine_tables && !confirmed_sigmas.empty()) {
+  Refinement refinement;
+  if (req.refine_tables && !c.sigmas.empty()) {
     tanks = {};  // the served solvers' memory back before the tables are remade
     log << "tables remade with R exact at the confirmed roots (cavity-modes response ... --exact-at):" << std::endl;
-    refined = refine_tables(scene, m, confirmed_sigmas, cavity_modes_binary(req.cavity_modes), scratch.path, req.run,
-                            log);
-    refined_distance = compare_refined(scene, confirmed_sigmas, log);
+    refinement.tables = refine_tables(scene, m, c.sigmas, cavity_modes_binary(req.cavity_modes), scratch.path,
+                                      req.run, log);
+    refinement.distance = compare_refined(scene, c.sigmas, log);
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (req.json) {
-    nlohmann::ordered_json j;
-    j["roots"] = jroots;
-    j["stable"] = v.stable;
-    j["growth"] = v.growth;
-    j["growing"] = v.growing;
-    j["unconfirmed"] = unconfirmed;
-    j["forced_solves"] = solves;
-    if (req.refine_tables) {
-      j["refined_tables"] = refined.size();
-      j["refined_distance"] = refined_distance;
-      double remade = 0;
-      for (const RefinedTable& r : refined) remade += r.seconds;
-      j["refine_seconds"] = remade;
-    }
-    j["seconds"] = seconds;
-    out << j.dump() << "\n";
-    return unconfirmed;
-  }
-  out << std::setprecision(6) << "with the confirmed roots: " << verdict_with_dissipation(m, confirmed) << "\n";
-  if (unconfirmed)
-    out << "warning: " << unconfirmed << " roots NOT CONFIRMED (marked above): the verdict takes the table's value "
-        << "for them\n";
-  if (refined_distance >= 0)
-    out << std::setprecision(2) << refined.size() << " tables refined: spectrum's roots are now the confirmed ones to "
-        << refined_distance << " relative\n";
-  out << solves << " forced solves, " << std::setprecision(3) << seconds << " s\n";
-  return unconfirmed;
+  if (req.json) print_json(out, c, refinement, req.refine_tables, solves, seconds);
+  else print_text(out, m, c, refinement, solves, seconds);
+  return c.unconfirmed;
 }
 
 }  // namespace rc::rom
