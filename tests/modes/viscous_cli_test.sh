@@ -130,31 +130,24 @@ print("response: |R| peaks at sigma = %.2f%+.2fi (the damped spin-over mode is n
 assert abs(peak[0] - 1) <= 0.15
 '; then ok "response CSV"; else bad "response: $(tail -2 resp.txt)"; fi
 
-# The same command, the same table: two identical serial runs side by side (each loading the other's core) agree to
-# the eigensolver's tolerance (1e-10) — measured up to 3.3e-13, from the factorisation's OpenMP threads, whose
-# reductions round differently under load — and with OMP_NUM_THREADS=1 bit for bit (docs/viscous.md, "Reproducible
-# tables").
-same=(cylinder --radius 1 --height 2 --method mesh --ekman 1e-3 --modes 2 --order 4 --mesh-size 0.25 --no-convergence-check)
-compare_same() {  # $1: the largest difference allowed
-  /usr/bin/python3 -c '
-import h5py, numpy as np, sys
-a, b = h5py.File("same1.h5")["modes"], h5py.File("same2.h5")["modes"]
-names = ["lambda", "decay", "E", "E_imag"]
-d = max(float(np.max(np.abs(a[n][:] - b[n][:]) / np.abs(a["lambda"][:]))) for n in names)
-print("two runs side by side: largest difference %.1e (allowed %s)" % (d, sys.argv[1]))
-assert d <= float(sys.argv[1])
-' "$1"
-}
-env -u OMP_NUM_THREADS "$BIN" "${same[@]}" -o same1.h5 > same1.txt 2>&1 &
-env -u OMP_NUM_THREADS "$BIN" "${same[@]}" -o same2.h5 > same2.txt 2>&1
-wait
-if compare_same 1e-10; then ok "the same command twice: the same table to the eigensolver's tolerance"
-else bad "two identical runs differ: $(tail -2 same2.txt)"; fi
-OMP_NUM_THREADS=1 "$BIN" "${same[@]}" -o same1.h5 > same1.txt 2>&1 &
-OMP_NUM_THREADS=1 "$BIN" "${same[@]}" -o same2.h5 > same2.txt 2>&1
-wait
-if compare_same 0; then ok "the same command twice with OMP_NUM_THREADS=1: the same table bit for bit"
-else bad "two identical single-threaded runs differ: $(tail -2 same2.txt)"; fi
+# The same command, the same table: two identical serial runs side by side (each loading the other's core) give the
+# same table bit for bit. gmsh numbered the same viscous mesh differently in about one run of three (its order follows
+# heap addresses), and the sums then rounded differently (up to 4e-13); the mesh is now numbered canonically
+# (geometry/meridian_mesh.cpp; docs/viscous.md, "Reproducible tables").
+same=(cylinder --radius 1 --height 2 --method mesh --ekman 1e-3 --modes 2 --order 4 --mesh-size 0.25)
+for pair in 1 2 3; do
+  env -u OMP_NUM_THREADS "$BIN" "${same[@]}" -o same1.h5 > same1.txt 2>&1 &
+  env -u OMP_NUM_THREADS "$BIN" "${same[@]}" -o same$((pair + 1)).h5 > same2.txt 2>&1
+  wait
+done
+if /usr/bin/python3 -c '
+import h5py, numpy as np
+f = [h5py.File("same%d.h5" % i)["modes"] for i in (1, 2, 3, 4)]
+names = ["lambda", "decay", "E", "E_imag", "dlambda", "dE"]
+d = [max(float(np.max(np.abs(f[0][n][:] - x[n][:]))) for n in names) for x in f[1:]]
+print("four runs, two at a time: largest difference from the first %s" % d)
+assert max(d) == 0
+'; then ok "the same command: the same table, bit for bit"; else bad "identical runs differ: $(tail -2 same2.txt)"; fi
 
 # Distributed: the same table with mpirun -n 1 and -n 2 (PETSc's distributed matrices, parallel MUMPS). At the
 # default eigensolver tolerance (1e-10) two runs, serial or not, agree to about 2e-10; on the coarse P3 mesh
