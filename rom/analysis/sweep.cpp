@@ -84,6 +84,55 @@ std::string fmt(double x) {
 
 }  // namespace
 
+namespace {
+
+// The 0-based index of "what[s]" (1-based in the key), refused in one line when not a number or out of range.
+int key_index(const std::string& s, std::size_t count, const std::string& what, const std::string& option,
+              const std::string& key) {
+  long v = 0;
+  try {
+    v = std::stol(s);
+  } catch (...) {
+    fail(option, key, what + " index " + s + " is not a number");
+  }
+  if (count == 0) fail(option, key, "the scene has no " + what + "s");
+  if (v < 1 || v > static_cast<long>(count))
+    fail(option, key, what + " index " + s + " out of range 1.." + std::to_string(count) + " (indices count from 1)");
+  return static_cast<int>(v - 1);
+}
+
+// A field that is not a sweepable number: why, in one line.
+[[noreturn]] void refuse_field(const std::string& f, const std::string& option, const std::string& key) {
+  if (f == "kind" || f == "table" || f == "static_correction" || f == "modes")
+    fail(option, key, "not a sweepable number (" + f + " is " +
+                          (f == "modes" ? "an integer" : f == "static_correction" ? "a boolean" : "a string") +
+                          "); keys: " + kKeyList);
+  fail(option, key, "unknown key; numeric keys: " + std::string(kKeyList));
+}
+
+// body[k].cavity.FIELD (and body[k].cavity.table=PATTERN, a family of tables).
+void parse_cavity_key(ParamKey& k, const std::string& key_text, const std::string& key, const std::string& body,
+                      const Scene& scene, const std::string& option) {
+  static const std::set<std::string> cav_num{"density", "scale", "center", "coverage", "table"};
+  if (!cav_num.count(k.field)) refuse_field(k.field, option, key);
+  k.index = key_index(body, scene.size(), "body", option, key);
+  const auto& cav = scene.bodies[k.index].cavity;
+  if (!cav) fail(option, key, "body " + std::to_string(k.index + 1) + " has no cavity");
+  if (k.field == "coverage" && cav->modes)
+    fail(option, key, "the cavity gives modes; coverage can only be swept when modes is absent");
+  if (k.field != "table") return;
+  const std::size_t eq = key_text.find('=');
+  if (eq == std::string::npos)
+    fail(option, key, "a family of tables is swept as " + key +
+                          "=PATTERN, PATTERN a file name with one printf conversion of the swept value "
+                          "(e.g. " + key + "=cone_h%.2f.h5)");
+  k.table_pattern = key_text.substr(eq + 1);
+  const std::string problem = table_pattern_problem(k.table_pattern);
+  if (!problem.empty()) fail(option, key_text, problem);
+}
+
+}  // namespace
+
 ParamKey parse_param_key(const std::string& key_text, const Scene& scene, const std::string& option) {
   using W = ParamKey::Where;
   // body[k].cavity.table=PATTERN: the key proper, then the family's file-name pattern.
@@ -93,75 +142,40 @@ ParamKey parse_param_key(const std::string& key_text, const Scene& scene, const 
       re_body(R"(^body\[(-?[0-9]+)\]\.([A-Za-z_]+)$)"),
       re_cav(R"(^body\[(-?[0-9]+)\]\.cavity\.([A-Za-z_]+)$)"),
       re_joint(R"(^joint\[(-?[0-9]+)\]\.([A-Za-z_]+)$)");
-  const std::set<std::string> body_num{"mass", "A", "C", "com", "next_joint", "spin"};
-  const std::set<std::string> cav_num{"density", "scale", "center", "coverage", "table"};
-  const std::set<std::string> joint_num{"stiffness", "friction"};
+  static const std::set<std::string> body_num{"mass", "A", "C", "com", "next_joint", "spin"};
+  static const std::set<std::string> joint_num{"stiffness", "friction"};
   ParamKey k;
   k.text = key_text;
   std::smatch m;
-  auto index = [&](const std::string& s, std::size_t count, const std::string& what) {
-    long v = 0;
-    try {
-      v = std::stol(s);
-    } catch (...) {
-      fail(option, key, what + " index " + s + " is not a number");
-    }
-    if (count == 0) fail(option, key, "the scene has no " + what + "s");
-    if (v < 1 || v > static_cast<long>(count))
-      fail(option, key, what + " index " + s + " out of range 1.." + std::to_string(count) +
-                            " (indices count from 1)");
-    return static_cast<int>(v - 1);
-  };
-  auto not_numeric = [&](const std::string& f) {
-    if (f == "kind" || f == "table" || f == "static_correction" || f == "modes")
-      fail(option, key, "not a sweepable number (" + f + " is " +
-                            (f == "modes" ? "an integer" : f == "static_correction" ? "a boolean" : "a string") +
-                            "); keys: " + kKeyList);
-    fail(option, key, "unknown key; numeric keys: " + std::string(kKeyList));
-  };
   if (std::regex_match(key, m, re_sys)) {
     k.where = W::system;
     k.field = m[1];
     if (k.field == "spin_factor") {  // every body's spin times the value: the scene's own spins are kept in the key
       for (const BodySpec& b : scene.bodies) k.base_spins.push_back(b.spin);
     } else if (k.field != "gravity") {
-      not_numeric(k.field);
+      refuse_field(k.field, option, key);
     }
   } else if (std::regex_match(key, m, re_sup)) {
     k.where = W::support;
     k.field = m[1];
-    if (k.field != "friction") not_numeric(k.field);
+    if (k.field != "friction") refuse_field(k.field, option, key);
     if (scene.free_chain) fail(option, key, "a free chain has no support");
   } else if (std::regex_match(key, m, re_cav)) {
     k.where = W::cavity;
     k.field = m[2];
-    if (!cav_num.count(k.field)) not_numeric(k.field);
-    k.index = index(m[1], scene.size(), "body");
-    const auto& cav = scene.bodies[k.index].cavity;
-    if (!cav) fail(option, key, "body " + std::to_string(k.index + 1) + " has no cavity");
-    if (k.field == "coverage" && cav->modes)
-      fail(option, key, "the cavity gives modes; coverage can only be swept when modes is absent");
-    if (k.field == "table") {
-      if (eq == std::string::npos)
-        fail(option, key, "a family of tables is swept as " + key +
-                              "=PATTERN, PATTERN a file name with one printf conversion of the swept value "
-                              "(e.g. " + key + "=cone_h%.2f.h5)");
-      k.table_pattern = key_text.substr(eq + 1);
-      const std::string problem = table_pattern_problem(k.table_pattern);
-      if (!problem.empty()) fail(option, key_text, problem);
-    }
+    parse_cavity_key(k, key_text, key, m[1], scene, option);
   } else if (std::regex_match(key, m, re_body)) {
     k.where = W::body;
     k.field = m[2];
-    if (!body_num.count(k.field)) not_numeric(k.field);
-    k.index = index(m[1], scene.size(), "body");
+    if (!body_num.count(k.field)) refuse_field(k.field, option, key);
+    k.index = key_index(m[1], scene.size(), "body", option, key);
     if (k.field == "next_joint" && k.index + 1 == static_cast<int>(scene.size()))
       fail(option, key, "next_joint of the last body is not used");
   } else if (std::regex_match(key, m, re_joint)) {
     k.where = W::joint;
     k.field = m[2];
-    if (!joint_num.count(k.field)) not_numeric(k.field);
-    k.index = index(m[1], scene.joints.size(), "joint");
+    if (!joint_num.count(k.field)) refuse_field(k.field, option, key);
+    k.index = key_index(m[1], scene.joints.size(), "joint", option, key);
   } else {
     fail(option, key, std::string("unknown key; numeric keys: ") + kKeyList);
   }
@@ -307,6 +321,49 @@ void evaluate_point(const Scene& s, TableCache& tables, bool track, SweepPoint& 
 
 }  // namespace
 
+namespace {
+
+// Every table must be in the cache before threads share it (get() then only reads): the scene's own, then every
+// member of a swept family.
+void load_tables(const Scene& base, TableCache& tables, const SweepAxis& a1, const std::optional<SweepAxis>& a2) {
+  (void)build_model(base, &tables);
+  for (const SweepAxis* ax : {&a1, a2 ? &*a2 : nullptr}) {
+    if (!ax || !ax->key.is_table()) continue;
+    for (int i = 0; i < ax->steps; ++i) {
+      const fs::path file = table_of(ax->key, ax->value(i));
+      try {
+        (void)tables.get(file);
+      } catch (const std::exception& e) {
+        throw SweepError(ax->key.text + ": table of value " + fmt(ax->value(i)) + ": " + e.what());
+      }
+    }
+  }
+}
+
+// The sweep's progress from any thread, at most once a second (and not for the last point).
+class ThrottledProgress {
+ public:
+  ThrottledProgress(const SweepProgress& progress, std::chrono::steady_clock::time_point t0)
+      : progress_(progress), t0_(t0) {}
+  void done(long d, long total) {
+    if (!progress_) return;
+    const double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+    if (el - last_.load() < 1.0 || d >= total) return;
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (el - last_.load() < 1.0) return;
+    last_.store(el);
+    progress_(d, total, el);
+  }
+
+ private:
+  const SweepProgress& progress_;
+  std::chrono::steady_clock::time_point t0_;
+  std::atomic<double> last_{0};
+  std::mutex mutex_;
+};
+
+}  // namespace
+
 SweepResult run_sweep(const Scene& base, TableCache& tables, const SweepAxis& a1,
                       const std::optional<SweepAxis>& a2, int threads, const SweepProgress& progress, bool track) {
   using clock = std::chrono::steady_clock;
@@ -329,8 +386,8 @@ SweepResult run_sweep(const Scene& base, TableCache& tables, const SweepAxis& a1
   // The roots the first line's points ended with: the rows start from them once the first line is done.
   std::vector<LineState> end_state(total);
   std::atomic<long> next{0}, done{0};
-  std::mutex progress_mutex, fallback_mutex;
-  std::atomic<double> last_report{0};
+  std::mutex fallback_mutex;
+  ThrottledProgress report(progress, t0);
 
   auto walk = [&](const Line& line) {
     Scene s = base;  // private copy: only the swept values change
@@ -346,17 +403,7 @@ SweepResult run_sweep(const Scene& base, TableCache& tables, const SweepAxis& a1
       }
       evaluate_point(s, tables, track, pt, st, why);
       if (&line == &first) end_state[p] = st;
-      const long d = ++done;
-      if (progress) {
-        const double el = std::chrono::duration<double>(clock::now() - t0).count();
-        if (el - last_report.load() >= 1.0 && d < total) {
-          std::lock_guard<std::mutex> lock(progress_mutex);
-          if (el - last_report.load() >= 1.0) {
-            last_report.store(el);
-            progress(d, total, el);
-          }
-        }
-      }
+      report.done(++done, total);
     }
     if (!why.empty()) {
       std::lock_guard<std::mutex> lock(fallback_mutex);
@@ -366,20 +413,7 @@ SweepResult run_sweep(const Scene& base, TableCache& tables, const SweepAxis& a1
   auto worker = [&]() {
     for (long l; (l = next.fetch_add(1)) < static_cast<long>(lines.size());) walk(lines[l]);
   };
-  // Every table must be in the cache before threads share it (get() then only reads): the scene's
-  // own, then every member of a swept family.
-  (void)build_model(base, &tables);
-  for (const SweepAxis* ax : {&a1, a2 ? &*a2 : nullptr}) {
-    if (!ax || !ax->key.is_table()) continue;
-    for (int i = 0; i < ax->steps; ++i) {
-      const fs::path file = table_of(ax->key, ax->value(i));
-      try {
-        (void)tables.get(file);
-      } catch (const std::exception& e) {
-        throw SweepError(ax->key.text + ": table of value " + fmt(ax->value(i)) + ": " + e.what());
-      }
-    }
-  }
+  load_tables(base, tables, a1, a2);
   if (!first.points.empty()) walk(first);
   std::vector<std::thread> pool;
   for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
