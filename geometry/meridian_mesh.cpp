@@ -450,6 +450,19 @@ void add_wall(MeridianMesh& m, const GmshMesh& g, const std::unordered_map<std::
 
 void check_shape(const ShapeSpec& shape) { detail::validate_shape(shape); }
 
+double default_mesh_size(const ShapeSpec& shape) {
+  detail::validate_shape(shape);
+  if (shape.kind != "section") return kDefaultSizeFraction * detail::smallest_dimension(shape);
+  const std::string where = "section '" + shape.file.string() + "'";
+  if (std::filesystem::is_directory(shape.file) || !std::ifstream(shape.file))
+    throw std::runtime_error(where + ": cannot read the file");
+  return detail::with_gmsh(where, [&](detail::GmshSession& session) {
+    gmsh::open(shape.file.string());
+    session.throw_if_error(where);
+    return kDefaultSizeFraction * model_smallest_side();
+  });
+}
+
 MeridianMesh mesh_meridian(const ShapeSpec& shape, const MeshOptions& options) {
   detail::validate_shape(shape);
   check_options(options);

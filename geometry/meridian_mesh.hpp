@@ -59,6 +59,11 @@ MeridianMesh mesh_meridian(const ShapeSpec& shape, const MeshOptions& options);
 // The shape checks of mesh_meridian alone (kind and dimensions), for solvers that need no mesh.
 void check_shape(const ShapeSpec& shape);
 
+// The element size mesh_meridian takes when MeshOptions::size is 0 (docs/geometry.md, "Mesh options and
+// defaults"): 1/8 of a built-in shape's smallest dimension, or of the smallest side of a section's bounding box (the
+// file is opened for it). Throws what mesh_meridian throws for an unreadable shape.
+double default_mesh_size(const ShapeSpec& shape);
+
 // The reference triangle of a given order with a Gauss rule exact to `degree`: basis values and
 // gradients at the quadrature points, in the same local node order as MeridianMesh::triangles.
 struct ReferenceTriangle {

@@ -11,6 +11,7 @@
 #include "table_assembly.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <chrono>
@@ -113,12 +114,34 @@ FoundClusters find_clusters(const Discretisation& d, const SpectralSurvey& surve
 
 }  // namespace
 
+namespace {
+
+// --target: the integrals of the ideal discretisation and the given frequencies as rows (TableRequest::targets).
+ModeTable target_table(const TableRequest& req, Progress& progress_lines) {
+  const Discretisation d(req.shape, mesh_method_defaults(req.shape, req.mesh));
+  progress_lines.step(fmt::format("assembled {} dofs, J_zh = {:.10g}; targets given, no survey", d.space.ndof(),
+                                  d.zhukovsky.J_zh));
+  ModeTable t = start_table(req.shape, d.fluid, d.zhukovsky.J_zh);
+  t.fe_order = d.space.order();
+  t.mesh_h = d.space.mesh().size;
+  t.ndof = d.space.ndof();
+  t.solver = fmt::format("given targets (--target {}): no ideal survey", fmt::join(req.targets, ","));
+  std::vector<Cluster> rows;
+  for (const double lambda : req.targets) rows.push_back({lambda, 0.0, 0.0, 0.0, 1});
+  add_modes(t, rows);
+  t.wall_seconds = progress_lines.elapsed();
+  return t;
+}
+
+}  // namespace
+
 ModeTable compute_mode_table(const TableRequest& req, const ProgressFn& progress, ModeFields* fields) {
   validate(req.selection);
   if (req.check_convergence) validate_convergence_tolerance(req.convergence_tolerance);
   // Lines at least every 5 s while working, with the time left once clusters are counted (progress.hpp).
   Progress progress_lines(progress);
   auto report = [&](const std::string& what) { progress_lines.step(what); };
+  if (!req.targets.empty()) return target_table(req, progress_lines);
 
   if (req.method == TableMethod::separable) {
     if (fields) throw std::runtime_error("--fields needs --method mesh (the separable solver keeps no 2-D mesh)");

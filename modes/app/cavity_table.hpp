@@ -28,6 +28,10 @@ struct TableRequest {
   ClusterSettings clusters;
   double convergence_tolerance = 1e-6;  // per-cluster flag against a coarser discretisation (convergence.hpp)
   bool check_convergence = true;
+  // Given frequencies λ instead of the survey's clusters (cavity-modes --target, viscous tables only): the table
+  // holds the frozen-fluid integrals and J_zh, and one row per target with E = 0 (no survey, no clusters): the
+  // viscous continuation then takes the damped mode nearest each (viscous_table.hpp).
+  std::vector<double> targets;
 };
 
 // The mesh method's element size where the request leaves it 0: geometry's default (1/8 of the smallest

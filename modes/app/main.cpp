@@ -42,6 +42,7 @@ struct ViscousOptions {
   double ekman = 0;
   double wall_size = 0;
   double mesh_ekman = 0;   // the mesh as for this Ekman number (0: --ekman's); chain-rom's sweeps over spin
+  std::string target;      // tables: the ideal frequencies to continue, instead of the survey's (--target)
   std::string sigma;       // FROM:TO:N (real parts) or a list of complex numbers
   double sigma_imag = 0;   // imaginary part of every σ
   double max_fit_error = 1e-6;  // response to FILE.h5: the largest fit error accepted
@@ -86,7 +87,7 @@ void add_mesh_options(CLI::App* cmd, const std::string& kind, bool response, Tab
       ->check(CLI::IsMember({"auto", "mesh", "separable"}));
 }
 
-void add_viscous_options(CLI::App* cmd, ViscousOptions& viscous) {
+void add_viscous_options(CLI::App* cmd, ViscousOptions& viscous, bool response) {
   cmd->add_option("--ekman", viscous.ekman,
                   "viscous fluid with Ekman number Ek = nu/(omega0 L^2): damped modes (decay, complex coupling) "
                   "continuing the ideal ones, on a wall-graded Taylor-Hood mesh (docs/viscous.md); --order and "
@@ -95,6 +96,11 @@ void add_viscous_options(CLI::App* cmd, ViscousOptions& viscous) {
   cmd->add_option("--mesh-ekman", viscous.mesh_ekman,
                   "with --ekman: make the wall-layer mesh as for this Ekman number, at most --ekman (default --ekman): "
                   "one mesh for several Ekman numbers (chain-rom's sweeps over spin)");
+  if (response) return;
+  cmd->add_option("--target", viscous.target,
+                  "with --ekman, a table: the damped modes nearest these frequencies lambda (a list such as 1.0,0.5, "
+                  "each in (-2, 2)) instead of those of the ideal survey's clusters, which it then skips "
+                  "(docs/viscous.md, \"Given targets\")");
 }
 
 // The cluster search and selection of a table (docs/modes.md).
@@ -194,7 +200,32 @@ void choose_method(const CLI::App& cmd, const std::string& choice, bool fields, 
 
 // The viscous mesh from the user's --order, --mesh-size, --wall-size; the ideal targets keep the method's own
 // defaults (the request's mesh is reset) and skip their own convergence check.
+// --target's list: real frequencies in (-2, 2), not 0 (the inertial range of a completely filled cavity).
+std::vector<double> parse_targets(const std::string& list) {
+  std::vector<double> out;
+  std::vector<std::complex<double>> items;
+  try {
+    items = rc::modes::parse_sigma_spec(list, 0);
+  } catch (const std::exception& e) {
+    std::string what = e.what();
+    if (what.rfind("--sigma", 0) == 0) what.replace(0, 7, "--target");
+    throw std::runtime_error(what);
+  }
+  for (const auto& z : items) {
+    if (z.imag() != 0 || !(std::abs(z.real()) < 2) || z.real() == 0)
+      throw std::runtime_error(fmt::format("--target {}: each target must be a real frequency in (-2, 2), not 0",
+                                           list));
+    out.push_back(z.real());
+  }
+  return out;
+}
+
 rc::modes::ViscousTableSettings viscous_request(const ViscousOptions& v, TableRequest& req) {
+  if (!v.target.empty()) {
+    if (req.selection.modes || req.selection.coverage)
+      throw std::runtime_error("--target gives the modes itself: drop --modes and --coverage");
+    req.targets = parse_targets(v.target);
+  }
   rc::modes::ViscousTableSettings s;
   s.ekman = v.ekman;
   s.mesh = req.mesh;
@@ -267,6 +298,8 @@ rc::modes::ViscousTableSettings resolve_viscous(const CLI::App& cmd, bool respon
   if (is_viscous) return viscous_request(viscous, req);
   if (cmd.count("--wall-size") > 0) throw std::runtime_error("--wall-size applies with --ekman only");
   if (cmd.count("--mesh-ekman") > 0) throw std::runtime_error("--mesh-ekman applies with --ekman only");
+  if (cmd.get_option_no_throw("--target") && cmd.count("--target") > 0)
+    throw std::runtime_error("--target applies with --ekman only (the ideal table's modes come from its survey)");
   return {};
 }
 
@@ -459,7 +492,7 @@ int run(int argc, char** argv) {
   // Each shape lists only what it takes (cavity-modes sphere --help); anything else is refused by name.
   for (auto& s : shapes.all()) {
     add_mesh_options(s.app, s.kind, response, req, method);
-    add_viscous_options(s.app, viscous);
+    add_viscous_options(s.app, viscous, response);
     if (response) add_response_options(s.app, viscous);
     else add_table_options(s.app, req, fields, cluster_method);
     add_output_option(s.app, response, output);

@@ -30,7 +30,7 @@ double smallest_dimension(const geometry::ShapeSpec& shape) {
     const double inner = shape.dims.count("inner_radius") ? shape.dims.at("inner_radius") : 0.0;  // a rod's gap
     return std::min(shape.dims.at("radius") - inner, shape.dims.at("height"));
   }
-  return 0;  // section: the geometry layer's default (1/8 of the smallest side)
+  return 8 * geometry::default_mesh_size(shape);  // section: the smallest side of its bounding box
 }
 
 struct Solved {
@@ -175,12 +175,13 @@ geometry::MeshOptions viscous_mesh_defaults(const geometry::ShapeSpec& shape, do
   if (mesh.wall_size == 0) mesh.wall_size = layer;
   if (mesh.size > 0) mesh.wall_size = std::min(mesh.wall_size, mesh.size);
   // Layers at most half as thick as the interior elements (gmsh's layers invert otherwise); beyond them the
-  // interior elements carry the rest of a thick Ekman layer. gmsh's BoundaryLayer field where the wall meets the
-  // axis at a right angle (sphere, spheroid, cylinder); the cone builds its layers into the CAD model (gmsh 4.8's
-  // field crashed or inverted at its apex; geometry/shapes.cpp); user sections get the isotropic grading.
-  const bool layers = shape.kind != "section";
+  // interior elements carry the rest of a thick Ekman layer. gmsh's BoundaryLayer field along the wall (sphere,
+  // spheroid, cylinder and user sections); the cone builds its layers into the CAD model (gmsh 4.8's field crashed or
+  // inverted at its apex; geometry/shapes.cpp). Where the field inverts an element, viscous_mesh falls back to the
+  // isotropic grading. (Sections had only the grading until 2026-11-26: Kore's shell at Ek = 1e-3 took 171 400
+  // unknowns and 14 s, with layers 38 236 and 3 s: docs/benchmarks.md, "Kore".)
   const double interior = mesh.size > 0 ? mesh.size : 0.125 * d;
-  mesh.wall_layer = layers ? std::min(kLayersThickness * layer, interior / 2) : 0;
+  mesh.wall_layer = std::min(kLayersThickness * layer, interior / 2);
   if (mesh.wall_layer <= mesh.wall_size) mesh.wall_layer = 0;
   if (mesh.wall_size > kMaxWallSizePerLayer * layer)
     throw std::runtime_error(fmt::format("--wall-size {:g} does not resolve the Ekman layer at Ek = {:g} (thickness "
@@ -189,29 +190,12 @@ geometry::MeshOptions viscous_mesh_defaults(const geometry::ShapeSpec& shape, do
   return mesh;
 }
 
-ModeTable compute_viscous_table(const geometry::ShapeSpec& shape, const ViscousTableSettings& settings,
-                                const ModeTable& ideal, const std::function<void(const std::string&)>& report,
-                                ModeFields* fields) {
-  ViscousTableSettings s = settings;
-  s.solve.keep_vector = fields != nullptr;
-  s.solve.keep_block = true;  // the table's /galerkin matrices
-  const auto start = std::chrono::steady_clock::now();
-  const auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
-  geometry::MeshOptions mesh = viscous_mesh_defaults(shape, s.ekman, s.mesh);
-  std::vector<double> targets = ideal.lambda, energies = ideal.E;
-  if (targets.empty()) throw std::runtime_error("the ideal table has no mode to continue");
+namespace {
 
-  Progress lines(report);  // at least every 5 s, with the time left (progress.hpp)
-  auto progress = [&](const char* what) {
-    return [&, what](std::size_t done, std::size_t total) {
-      lines.step(fmt::format("{} mode {}/{}", what, done, total), done, total);
-    };
-  };
-  Solved fine = solve_targets(shape, mesh, ideal.centroid_z, s, targets, energies, progress("viscous"));
-  drop_repeats(fine, targets, energies, report);
-
+// The ideal table's frozen-fluid data with the damped modes as its rows (residues as complex couplings).
+ModeTable viscous_rows(const ModeTable& ideal, const Solved& fine, double ekman, const geometry::MeshOptions& mesh) {
   ModeTable t = ideal;
-  t.ekman = s.ekman;
+  t.ekman = ekman;
   t.fe_order = mesh.order;
   t.mesh_h = mesh.size;
   t.mesh_h_radial = 0;
@@ -239,16 +223,75 @@ ModeTable compute_viscous_table(const geometry::ShapeSpec& shape, const ViscousT
   t.normalisation = "rho = 1, omega0 = 1; each mode x is normalised to x^T M x = 1 (complex symmetric, unconjugated), "
                     "a + i a_imag = (e1 x r, V) / (i sqrt(2 pi)) and E + i E_imag = 2 (a + i a_imag)^2: the residue of "
                     "the fluid's response at lambda + i decay (docs/viscous.md)";
+  return t;
+}
+
+std::string viscous_solver_text(const geometry::MeshOptions& mesh, const std::string& ideal_solver) {
   const std::string wall = mesh.wall_layer > 0
                                ? fmt::format("anisotropic wall layers (first {:.3g}, ratio {:g}, {:.3g} thick)",
                                              mesh.wall_size, 1 + mesh.wall_growth, mesh.wall_layer)
                                : fmt::format("isotropic wall grading (wall {:.3g}, growth {:g})", mesh.wall_size,
                                              mesh.wall_growth);
-  t.solver = fmt::format("Taylor-Hood P{}/P{}, interior size {:.3g}, {}; real 2x2 block form, SLEPc Krylov-Schur "
-                         "shift-and-invert (MUMPS LU) at each ideal mode's lambda; ideal targets: {}",
-                         mesh.order, mesh.order - 1, mesh.size, wall, ideal.solver);
-  t.tolerance = s.solve.tolerance;
+  return fmt::format("Taylor-Hood P{}/P{}, interior size {:.3g}, {}; real 2x2 block form, SLEPc Krylov-Schur "
+                     "shift-and-invert (MUMPS LU) at each ideal mode's lambda; ideal targets: {}",
+                     mesh.order, mesh.order - 1, mesh.size, wall, ideal_solver);
+}
 
+// Each row against the same target's mode on the mesh with interior and wall sizes doubled.
+void add_viscous_convergence(ModeTable& t, const Solved& fine, const Solved& ref, const geometry::MeshOptions& coarse,
+                             double tolerance) {
+  t.convergence_reference = fmt::format("order {} with the interior and wall sizes doubled (h = {:.3g}, wall {:.3g})",
+                                        coarse.order, coarse.size, coarse.wall_size);
+  t.convergence_tolerance = tolerance;
+  for (std::size_t i = 0; i < fine.rows.size(); ++i) {
+    const double dl = relative(ref.rows[i].lambda, fine.rows[i].lambda);
+    const double dE = relative(ref.rows[i].residue, fine.rows[i].residue);
+    t.dlambda.push_back(dl);
+    t.dE.push_back(dE);
+    t.converged.push_back(dl <= tolerance && dE <= tolerance ? 1 : 0);
+  }
+}
+
+// The solved modes' fields in the rows' order after sort_by_energy (a stable sort by E descending).
+void fields_in_row_order(Solved& fine, ModeFields& fields) {
+  std::vector<std::size_t> order(fine.rows.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t i, std::size_t j) { return fine.rows[i].residue.real() > fine.rows[j].residue.real(); });
+  std::vector<ModeFields::Mode> modes = std::move(fine.fields.modes);
+  fields = std::move(fine.fields);
+  fields.modes.clear();
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    fields.modes.push_back(std::move(modes[order[k]]));
+    fields.modes.back().row = k;
+  }
+}
+
+}  // namespace
+
+ModeTable compute_viscous_table(const geometry::ShapeSpec& shape, const ViscousTableSettings& settings,
+                                const ModeTable& ideal, const std::function<void(const std::string&)>& report,
+                                ModeFields* fields) {
+  ViscousTableSettings s = settings;
+  s.solve.keep_vector = fields != nullptr;
+  s.solve.keep_block = true;  // the table's /galerkin matrices
+  const auto start = std::chrono::steady_clock::now();
+  geometry::MeshOptions mesh = viscous_mesh_defaults(shape, s.ekman, s.mesh);
+  std::vector<double> targets = ideal.lambda, energies = ideal.E;
+  if (targets.empty()) throw std::runtime_error("the ideal table has no mode to continue");
+
+  Progress lines(report);  // at least every 5 s, with the time left (progress.hpp)
+  auto progress = [&](const char* what) {
+    return [&, what](std::size_t done, std::size_t total) {
+      lines.step(fmt::format("{} mode {}/{}", what, done, total), done, total);
+    };
+  };
+  Solved fine = solve_targets(shape, mesh, ideal.centroid_z, s, targets, energies, progress("viscous"));
+  drop_repeats(fine, targets, energies, report);
+
+  ModeTable t = viscous_rows(ideal, fine, s.ekman, mesh);
+  t.solver = viscous_solver_text(mesh, ideal.solver);
+  t.tolerance = s.solve.tolerance;
   if (s.check_convergence) {
     geometry::MeshOptions coarse = mesh;
     coarse.size *= 2;
@@ -257,34 +300,12 @@ ModeTable compute_viscous_table(const geometry::ShapeSpec& shape, const ViscousT
     check.solve.keep_vector = false;
     check.solve.keep_block = false;
     const Solved ref = solve_targets(shape, coarse, ideal.centroid_z, check, targets, energies,
-                                    progress("convergence check"));
-    t.convergence_reference = fmt::format("order {} with the interior and wall sizes doubled (h = {:.3g}, wall {:.3g})",
-                                          coarse.order, coarse.size, coarse.wall_size);
-    t.convergence_tolerance = s.convergence_tolerance;
-    for (std::size_t i = 0; i < fine.rows.size(); ++i) {
-      const double dl = relative(ref.rows[i].lambda, fine.rows[i].lambda);
-      const double dE = relative(ref.rows[i].residue, fine.rows[i].residue);
-      t.dlambda.push_back(dl);
-      t.dE.push_back(dE);
-      t.converged.push_back(dl <= s.convergence_tolerance && dE <= s.convergence_tolerance ? 1 : 0);
-    }
+                                     progress("convergence check"));
+    add_viscous_convergence(t, fine, ref, coarse, s.convergence_tolerance);
   }
-  if (fields && is_root_rank()) {
-    // The rows' order after sort_by_energy (a stable sort by E descending), for the fields.
-    std::vector<std::size_t> order(fine.rows.size());
-    std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(),
-                     [&](std::size_t i, std::size_t j) { return fine.rows[i].residue.real() > fine.rows[j].residue.real(); });
-    std::vector<ModeFields::Mode> modes = std::move(fine.fields.modes);
-    *fields = std::move(fine.fields);
-    fields->modes.clear();
-    for (std::size_t k = 0; k < order.size(); ++k) {
-      fields->modes.push_back(std::move(modes[order[k]]));
-      fields->modes.back().row = k;
-    }
-  }
+  if (fields && is_root_rank()) fields_in_row_order(fine, *fields);
   t.sort_by_energy();
-  t.wall_seconds = seconds();
+  t.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return t;
 }
 

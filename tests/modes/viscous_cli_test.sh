@@ -66,6 +66,20 @@ expect_error "--krylov on a mode table" "belong to 'cavity-modes response" "$BIN
 expect_error "--fit on a CSV response" "belongs to" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:9 --fit -o out.csv
 expect_error "--krylov with --galerkin" "exclude each other" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:9 --krylov --galerkin -o out.h5
 expect_error "Krylov response table with too few samples" "Krylov response table needs --sigma" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:5 --krylov -o out.h5
+expect_error "--target without --ekman" "applies with --ekman only" "$BIN" sphere --radius 1 --target 1.0 -o out.h5
+expect_error "--target with --modes" "drop --modes" "$BIN" sphere --radius 1 --ekman 1e-3 --target 1.0 --modes 1 -o out.h5
+expect_error "--target outside (-2, 2)" "real frequency in (-2, 2)" "$BIN" sphere --radius 1 --ekman 1e-3 --target 2.5 -o out.h5
+expect_error "--target on a response" "does not take --target" "$BIN" response sphere --radius 1 --ekman 1e-3 --sigma 0.5:1.5:9 --target 1.0 -o out.h5
+# --target: the damped mode nearest the given frequency, without the ideal survey: the same mode as the survey's.
+if "$BIN" sphere --radius 1 --ekman 1e-3 "${small[@]}" --modes 1 -o surveyed.h5 > /dev/null 2>&1 &&
+   "$BIN" sphere --radius 1 --ekman 1e-3 "${small[@]}" --target 1.0 -o targeted.h5 > targeted.txt 2>&1 &&
+   grep -q "given targets" targeted.txt && /usr/bin/python3 -c '
+import h5py
+a, b = h5py.File("surveyed.h5")["modes"], h5py.File("targeted.h5")["modes"]
+d = max(abs(a[n][0] - b[n][0]) / abs(a[n][0]) for n in ("lambda", "decay", "E"))
+print("--target 1.0: the spin-over mode of the survey to %.1e" % d)
+assert len(b["lambda"]) == 1 and d < 1e-8
+'; then ok "--target gives the survey's damped mode"; else bad "--target: $(tail -2 targeted.txt)"; fi
 expect_error "--exact-at with --fit" "belongs to a Krylov response table" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:9 --fit --exact-at 0.7-0.01i -o out.h5
 expect_error "--exact-at on a CSV response" "belongs to a Krylov response table" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:9 --exact-at 0.7 -o out.csv
 expect_error "--exact-at malformed" "0.7-x" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:9 --exact-at 0.7-x -o out.h5
