@@ -14,7 +14,8 @@
 2. The recipe's Krylov response table (docs/viscous.md), at --max-fit-error 1e-5, at 800, 1500, 2000 and 3000 rad/s,
    each at its own Ekman number on the same P3 mesh: every root of its spectrum is the confirmed one to 1e-6
    relative (at the recipe's 1e-4 they were 9e-7 to 3.9e-6 apart); after `confirm --refine-tables` (the table remade
-   with R exact at those roots) `spectrum`'s roots are the confirmed ones to 1e-9. A response fit is refused.
+   with R exact at those roots; at 800 and 3000 rad/s) `spectrum`'s roots are the confirmed ones to 1e-9. A response
+   fit is refused.
 3. Two tanks (two served processes) finish."""
 import json, os, re, shlex, subprocess, sys
 
@@ -112,8 +113,12 @@ for spin in (800, 1500, 2000, 3000):
     kr = json.loads(p.stdout)["roots"]
     d = max(abs(complex(*r["table"]) - complex(*r["confirmed"])) / abs(complex(*r["confirmed"])) for r in kr)
     worst_k = max(worst_k, d)
-    # --refine-tables: the table remade with R exact at those roots; spectrum (a separate process reading the new
-    # file) must then give the confirmed roots themselves.
+    # --refine-tables (at the lowest and the highest spin, to keep the test short): the table remade with R exact at
+    # those roots; spectrum (a separate process reading the new file) must then give the confirmed roots themselves.
+    if spin not in (800, 3000):
+        print("  %4d rad/s (Ek %.4g): %s; table roots to %.1e of the confirmed" % (
+            spin, ek, ", ".join("%s %.6f%+.6fi" % (r["owner"], *r["confirmed"]) for r in kr), d))
+        continue
     p = subprocess.run([rom, "confirm", "k%d.toml" % spin, "--json", "--refine-tables", "--cavity-modes", modes],
                        capture_output=True, text=True)
     assert p.returncode == 0, p.stderr
