@@ -11,7 +11,6 @@
 #include <cmath>
 #include <fstream>
 #include <map>
-#include <numeric>
 #include <sstream>
 #include <stdexcept>
 #include <unordered_map>
@@ -294,41 +293,14 @@ GmshMesh mesh_section(const ShapeSpec& shape, const MeshOptions& options) {
 // ---------------------------------------------------------------------------------------------
 // Plain C++ side: compact numbering and checks.
 
-// gmsh numbers the same mesh differently from run to run (its element and node order follow heap addresses: the
-// viscous meshes' wall layers came out in another order in about one run of three, so the assembled sums, and the
-// table, differed at 1e-13). The triangles are therefore taken in the order of their vertex centroids (z, then r; the
-// coordinates are the same to the bit), each with gmsh's local node order, and the wall edges in the order of their
-// end points: the same mesh, the same numbering, the same table.
-std::vector<std::size_t> canonical_order(const std::vector<std::size_t>& tags, std::size_t per_item, std::size_t corners,
-                                         const GmshMesh& g) {
-  const std::size_t count = tags.size() / per_item;
-  std::vector<std::array<double, 2>> key(count, {0.0, 0.0});
-  for (std::size_t e = 0; e < count; ++e)
-    for (std::size_t a = 0; a < corners; ++a) {
-      const auto& p = g.coords.at(tags[e * per_item + a]);
-      key[e][0] += p[1];
-      key[e][1] += p[0];
-    }
-  std::vector<std::size_t> order(count);
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return key[i] < key[j]; });
-  return order;
-}
-
-// Nodes numbered 0.. in order of first use by the triangles (good locality for assembly), the triangles in
-// canonical_order.
+// Nodes numbered 0.. in order of first use by the triangles (good locality for assembly).
 MeridianMesh compact(const GmshMesh& g, std::unordered_map<std::size_t, int>& index, const std::string& where) {
   MeridianMesh m;
   m.order = g.order;
   m.nodes_per_element = nodes_per_triangle(g.order);
   m.size = g.size;
   const double tol = kAxisTolerance * g.extent;
-  const std::size_t npe = static_cast<std::size_t>(m.nodes_per_element);
-  std::vector<std::size_t> tags;
-  tags.reserve(g.triangles.size());
-  for (const std::size_t t : canonical_order(g.triangles, npe, 3, g))
-    tags.insert(tags.end(), g.triangles.begin() + t * npe, g.triangles.begin() + (t + 1) * npe);
-  for (std::size_t tag : tags) {
+  for (std::size_t tag : g.triangles) {
     auto [it, is_new] = index.try_emplace(tag, static_cast<int>(m.nodes.size()));
     if (is_new) {
       auto p = g.coords.at(tag);
@@ -432,8 +404,7 @@ void add_wall(MeridianMesh& m, const GmshMesh& g, const std::unordered_map<std::
     for (int i = 0; i < 3; ++i) directed[{v[i], v[(i + 1) % 3]}] = true;
   }
   const std::size_t npe = g.order + 1;
-  for (const std::size_t w : canonical_order(g.wall_edges, npe, 2, g)) {
-    const std::size_t e = w * npe;
+  for (std::size_t e = 0; e < g.wall_edges.size(); e += npe) {
     std::vector<int> edge;
     for (std::size_t a = 0; a < npe; ++a) edge.push_back(mapped(index, g.wall_edges[e + a], "wall", where));
     if (!directed.count({edge[0], edge[1]})) {
