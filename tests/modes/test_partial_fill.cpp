@@ -6,6 +6,7 @@
 #include "closed_forms.hpp"
 #include "free_surface_radial.hpp"
 #include "partial_fill_closed_form.hpp"
+#include "partial_fill_cylinder.hpp"
 
 #include <gtest/gtest.h>
 
@@ -121,4 +122,31 @@ TEST(PartialFill, ReferenceFileIsTheClosedForm) {
   std::printf("%d rows of the reference file against the closed form: worst %.1e\n", rows, worst);
   EXPECT_EQ(rows, 170);
   EXPECT_LT(worst, 1e-13);
+}
+
+// The free surface's coupling (docs/physics.md §2, "Partially filled tanks: coupling to the body"): over every
+// eigenpair of the separated partially filled cylinder, Σ E equals ‖U_O‖² = A_f(O) + K(O) − J_D(O), the sum rule,
+// about the liquid's centroid and about two points off it (which weighs the offset coupling t of every pair). J_D is
+// a separate potential solve, so the sum rule checks the coupling formula, the surface energy's weight and the
+// completeness of the pairs together.
+TEST(PartialFillCoupling, SumRuleAboutTheCentroidAndOffIt) {
+  for (const double fill : {0.9, 0.5}) {
+    const double height = 2, b = exact::partial_fill_surface_radius(1.0, fill);
+    const auto grid = SeparableGrid::graded(1.0, height, 8, 6, 12, 2, b);
+    const PartialFillSpectrum s = solve_partially_filled_cylinder(1.0, height, fill, grid);
+    double worst_residual = 0;
+    for (const auto& p : s.pairs) worst_residual = std::max(worst_residual, p.residual);
+    std::printf("fill %.2f (b = %.4f, %d x %d dofs, %zu pairs, worst residual %.1e): A_f %.10f K2 %.10f J_D %.10f\n",
+                fill, b, s.radial_dofs, s.axial_dofs, s.pairs.size(), worst_residual, s.fluid.A_f, s.K2, s.J_D);
+    for (const double c : {0.0, 0.7, -1.3}) {
+      double sum = 0;
+      for (const auto& p : s.pairs) sum += coupling_about(p.coupling, c);
+      const double rule = s.sum_rule_about(c), err = std::abs(sum - rule) / rule;
+      std::printf("  about c = %+.1f: sum E = %.14f, A_f + K - J_D = %.14f, relative %.2e\n", c, sum, rule, err);
+      EXPECT_LT(err, 1e-9);  // measured ≤ 2.4e-10: the rounding of the non-symmetric companion solve
+    }
+    for (int i = 0; i < 6; ++i)
+      std::printf("  lambda %+.12f E %.10f t %+.8f axial %d\n", s.pairs[i].lambda, s.pairs[i].coupling.E,
+                  s.pairs[i].coupling.t, s.pairs[i].axial);
+  }
 }
