@@ -205,6 +205,35 @@ void validate_galerkin(const ModeTable& t) {
   }
 }
 
+// /free_surface: the partially filled tank's attributes and its per-mode offset coupling t.
+void write_free_surface(hid_t root, const ModeTable::FreeSurface& f) {
+  Hid g(H5Gcreate2(root, "free_surface", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+  put_double(g.get(), "fill", f.fill);
+  put_double(g.get(), "radius", f.radius);
+  put_double(g.get(), "K0", f.K0);
+  put_double(g.get(), "K1", f.K1);
+  put_double(g.get(), "K2", f.K2);
+  put_double(g.get(), "J1", f.J1);
+  put_double(g.get(), "J2", f.J2);
+  put_vector(g.get(), "t", f.t, H5T_NATIVE_DOUBLE);
+}
+
+ModeTable::FreeSurface read_free_surface(hid_t root) {
+  Hid g(H5Gopen2(root, "free_surface", H5P_DEFAULT), H5Gclose);
+  if (!g.ok()) throw std::runtime_error("cannot open /free_surface");
+  ModeTable::FreeSurface f;
+  f.fill = get_double(g.get(), "fill");
+  f.radius = get_double(g.get(), "radius");
+  if (!(f.radius > 0)) throw std::runtime_error("/free_surface: radius must be positive");
+  f.K0 = get_double(g.get(), "K0");
+  f.K1 = get_double(g.get(), "K1");
+  f.K2 = get_double(g.get(), "K2");
+  f.J1 = get_double(g.get(), "J1");
+  f.J2 = get_double(g.get(), "J2");
+  f.t = get_vector<double>(g.get(), "t", H5T_NATIVE_DOUBLE, true);
+  return f;
+}
+
 }  // namespace
 
 void ModeTable::validate() const {
@@ -227,6 +256,16 @@ void ModeTable::validate() const {
   check(decay, "decay", !viscous());
   check(E_imag, "E_imag", !viscous());
   check(a_imag, "a_imag", !viscous());
+  check(free_surface.t, "t (/free_surface)", !free_surface.present());
+  if (free_surface.present()) {
+    const FreeSurface& f = free_surface;
+    for (double x : {f.fill, f.radius, f.K0, f.K1, f.K2, f.J1, f.J2})
+      if (!std::isfinite(x)) throw std::runtime_error("/free_surface holds a non-finite attribute");
+    if (!(f.fill > 0 && f.fill < 1) || !(f.K0 > 0) || !(f.K2 >= 0) || !(f.J2 >= 0))
+      throw std::runtime_error("/free_surface: fill outside (0, 1), or K0, K2, J2 not positive");
+  } else if (!free_surface.t.empty()) {
+    throw std::runtime_error("/free_surface/t in a table without a free surface");
+  }
   if (!viscous() && !(decay.empty() && E_imag.empty() && a_imag.empty()))
     throw std::runtime_error("/modes/decay, E_imag or a_imag in a table whose ekman is not positive");
   if (!std::isfinite(ekman) || ekman < 0) throw std::runtime_error("root attribute ekman must be >= 0 and finite");
@@ -261,20 +300,28 @@ void ModeTable::check_identities() const {
   if (some && (dlambda.empty() || dE.empty() || converged.empty()))
     fail("/modes/dlambda, dE and converged come together (the convergence check), one of them is missing");
   if (!(volume > 0)) fail("volume > 0");
-  if (std::abs(sum_rule - (A_f - J_zh)) > 1e-9 * std::max({std::abs(A_f), std::abs(J_zh), 1e-300}))
-    fail(formatted("sum_rule = A_f - J_zh (%.12g against %.12g)", sum_rule, A_f - J_zh));
+  const double K2 = free_surface.present() ? free_surface.K2 : 0.0;
+  if (std::abs(sum_rule - (A_f + K2 - J_zh)) > 1e-9 * std::max({std::abs(A_f), std::abs(J_zh), 1e-300}))
+    fail(formatted(free_surface.present() ? "sum_rule = A_f + K2 - J_zh (%.12g against %.12g)"
+                                          : "sum_rule = A_f - J_zh (%.12g against %.12g)", sum_rule, A_f + K2 - J_zh));
   const double tiny = 1e-12 * std::max(std::abs(sum_rule), 1e-300);
   for (std::size_t i = 0; i < E.size(); ++i) {
     if (lambda[i] == 0) fail(formatted("lambda != 0 (row %zu)", i + 1));
     if (std::abs(kappa[i] * lambda[i] - 2) > 1e-9) fail(formatted("kappa = 2/lambda (row %zu: kappa %.9g, lambda %.9g)", i + 1, kappa[i], lambda[i]));
     if (!(N2[i] > 0)) fail(formatted("N2 > 0 (row %zu: %.9g)", i + 1, N2[i]));
-    if (!viscous() && std::abs(lambda[i]) > 2 * (1 + 1e-9))
+    if (!viscous() && !free_surface.present() && std::abs(lambda[i]) > 2 * (1 + 1e-9))
       fail(formatted("|lambda| <= 2 for an ideal fluid (row %zu: %.9g)", i + 1, lambda[i]));
     if (!viscous() && a[i] < 0) fail(formatted("a >= 0, the normalisation a = sqrt(E N2/2) (row %zu: %.9g)", i + 1, a[i]));
     const std::complex<double> a_c(a[i], viscous() ? a_imag[i] : 0.0), E_c(E[i], viscous() ? E_imag[i] : 0.0);
     if (std::abs(E_c - 2.0 * a_c * a_c / N2[i]) > 1e-8 * std::abs(E_c) + tiny)
       fail(formatted("E = 2 a^2/N2 (row %zu: E %.9g, a %.9g, N2 %.9g)", i + 1, E[i], a[i], N2[i]));
   }
+}
+
+double ModeTable::sum_rule_about(double c) const {
+  if (!free_surface.present()) return sum_rule;
+  const FreeSurface& f = free_surface;
+  return A_f + volume * c * c + f.K(c) - (J_zh + 2 * c * f.J1 + c * c * f.J2);
 }
 
 std::string cavity_difference(const ModeTable& a, const ModeTable& b) {
@@ -302,6 +349,7 @@ void ModeTable::sort_by_energy() {
   permute(spread); permute(members); permute(dlambda); permute(dE); permute(converged);
   permute(decay); permute(E_imag); permute(a_imag);
   permute(galerkin.coupling_re); permute(galerkin.coupling_im);
+  permute(free_surface.t);
   const std::size_t n = idx.size();
   for (auto* m : {&galerkin.gram_re, &galerkin.gram_im, &galerkin.viscous_re, &galerkin.viscous_im}) {
     if (m->size() != n * n) continue;
@@ -333,7 +381,7 @@ void write_mode_table(const ModeTable& t, const std::filesystem::path& path, con
       if (!file.ok()) throw std::runtime_error("cannot create " + path.string());
       hid_t root = file.get();
       put_string(root, "format", kModeTableFormat);
-      put_long(root, "version", kModeTableVersion);
+      put_long(root, "version", t.free_surface.present() ? kFreeSurfaceTableVersion : kModeTableVersion);
       put_string(root, "shape", t.shape);
       std::string dims;
       for (const auto& [k, v] : t.dimensions) {
@@ -404,6 +452,7 @@ void write_mode_table(const ModeTable& t, const std::filesystem::path& path, con
           put_vector(gal.get(), "coupling_im", t.galerkin.coupling_im, H5T_NATIVE_DOUBLE);
         }
       }
+      if (t.free_surface.present()) write_free_surface(root, t.free_surface);
       if (!t.geometry_source.empty() || !t.command_line.empty()) {
         Hid prov(H5Gcreate2(root, "provenance", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
         put_text(prov.get(), "geometry_source", t.geometry_source);
@@ -447,7 +496,7 @@ ModeTable read_mode_table(const std::filesystem::path& path) {
     if (!has_attr(root, "format") || get_string(root, "format") != kModeTableFormat)
       throw std::runtime_error("not a mode table (root attribute format != \"cavity-mode-table\")");
     ModeTable t;
-    if (get_long(root, "version") > kModeTableVersion)
+    if (get_long(root, "version") > kFreeSurfaceTableVersion)
       throw std::runtime_error("mode table version is newer than this program understands");
     t.shape = get_string(root, "shape");
     if (has_attr(root, "dimension_names")) {
@@ -522,6 +571,7 @@ ModeTable read_mode_table(const std::filesystem::path& path) {
       if (has_attr(gal.get(), "dissipation_mismatch"))
         t.galerkin.dissipation_mismatch = get_double(gal.get(), "dissipation_mismatch");
     }
+    if (H5Lexists(root, "free_surface", H5P_DEFAULT) > 0) t.free_surface = read_free_surface(root);
     if (H5Lexists(root, "provenance", H5P_DEFAULT) > 0) {
       Hid prov(H5Gopen2(root, "provenance", H5P_DEFAULT), H5Gclose);
       t.geometry_source = get_text(prov.get(), "geometry_source");

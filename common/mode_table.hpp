@@ -12,8 +12,10 @@ namespace rc {
 
 inline constexpr const char* kModeTableFormat = "cavity-mode-table";
 // Version 2 added the viscous fields (ekman, mesh_h_wall, /modes/decay, E_imag, a_imag); version 1 tables read as
-// ideal tables (ekman = 0).
+// ideal tables (ekman = 0). Version 3 is written only for a partially filled tank's table (/free_surface), so that
+// a reader that does not know the free surface refuses it instead of reading it as a filled tank's.
 inline constexpr int kModeTableVersion = 2;
+inline constexpr int kFreeSurfaceTableVersion = 3;
 
 struct ModeTable {
   // --- root attributes -------------------------------------------------------------------
@@ -80,6 +82,24 @@ struct ModeTable {
     bool empty() const { return gram_re.empty(); }
   } galerkin;
   bool has_galerkin() const { return !galerkin.empty(); }
+
+  // --- /free_surface (partially filled tanks, optional; docs/physics.md §2, "Partially filled tanks"): the liquid
+  // fills the cavity's part r ≥ radius, its free surface the cylinder r = radius (rapid spin). The modes' a and E
+  // are then about the liquid's centroid and include the surface's share; about a point O at height −c below the
+  // centroid (c in the table's length unit) a mode couples with a + c·t and E(c) = 2(a + c t)²/N2, the tank's
+  // static inertia gains K(c) = K2 + 2c K1 + c² K0 and Zhukovsky's inertia (free surface at zero potential) is
+  // J_zh + 2c J1 + c² J2 about O (A_f + volume c² for the frozen liquid). sum_rule = A_f + K2 − J_zh.
+  struct FreeSurface {
+    double fill = 1;      // the liquid's volume fraction of the cavity
+    double radius = 0;    // b > 0 marks a partially filled tank's table
+    double K0 = 0, K1 = 0, K2 = 0;
+    double J1 = 0, J2 = 0;
+    std::vector<double> t;  // per mode, with the /modes rows
+    bool present() const { return radius > 0; }
+    double K(double c) const { return K2 + 2 * c * K1 + c * c * K0; }
+  } free_surface;
+  // The sum over every mode of E about O (= E for a filled tank, whatever c): A_f(O) + K(O) − J_zh(O).
+  double sum_rule_about(double c) const;
 
   // --- /bands: the spectral weight in λ-bands covering (−2, 2) (optional) ---------------------
   struct Bands {

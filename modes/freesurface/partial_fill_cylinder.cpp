@@ -10,17 +10,19 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <memory>
 #include <string>
 
 namespace rc::modes {
 
-struct PartialFillSpectrum::Projections {
+namespace {
+
+// What the radial problems share: the radial forms and the axial vectors' projections.
+struct Projections {
   RadialForms radial;
   double b = 0;
   Eigen::VectorXd mu, s, t, w;  // per axial vector: μ, ∫ z′ψ, ∫ ψ′, ∫ ψ (Bz-orthonormal ψ)
 };
-
-namespace {
 
 constexpr double kPi = std::numbers::pi;
 
@@ -34,7 +36,7 @@ Eigen::VectorXd real_vector(const Eigen::VectorXcd& z, int n) {
 }
 
 // Every eigenpair of one axial vector's radial quartic (header) with its coupling.
-std::vector<PartialFillPair> radial_pairs(const PartialFillSpectrum::Projections& P, int k) {
+std::vector<PartialFillPair> radial_pairs(const Projections& P, int k) {
   const RadialForms& f = P.radial;
   const double mu = P.mu(k), b = P.b;
   const int n = static_cast<int>(f.A.rows()), m = n + 1;
@@ -93,26 +95,24 @@ std::vector<PartialFillPair> radial_pairs(const PartialFillSpectrum::Projections
   return out;
 }
 
-}  // namespace
 
-double PartialFillSpectrum::zhukovsky_about(double c) const {
-  const Projections& P = *projections;
+// Zhukovsky's potential with the free surface at zero potential (the radial dof at r = b left out): for each axial
+// vector ∫∫ ∇χ·∇q = ∫∫ (e1 × r_O)·∇q, whose data r + c q is linear in the offset c; J(c) = π Σ (r + cq)ᵀA⁻¹(r + cq).
+void zhukovsky_dirichlet(const Projections& P, PartialFillSpectrum& out) {
   const RadialForms& f = P.radial;
   const int n = static_cast<int>(f.A.rows());
-  // ∫∫ ∇χ·∇q = ∫∫ (e1 × r_O)·∇q for every q vanishing on the free surface: the radial dof at r = b left out.
-  double J = 0;
   for (Eigen::Index k = 0; k < P.mu.size(); ++k) {
-    const Eigen::VectorXd rhs = (f.g1 * (P.s(k) + c * P.w(k)) - f.g2 * P.t(k)).tail(n - 1);
+    const Eigen::VectorXd r = (f.g1 * P.s(k) - f.g2 * P.t(k)).tail(n - 1), q = (f.g1 * P.w(k)).tail(n - 1);
     Eigen::LLT<Eigen::MatrixXd> llt((f.A + P.mu(k) * f.B).bottomRightCorner(n - 1, n - 1));
     if (llt.info() != Eigen::Success) throw std::runtime_error("partially filled cylinder: Zhukovsky factorisation failed");
-    J += kPi * rhs.dot(llt.solve(rhs));
+    const Eigen::VectorXd Ar = llt.solve(r);
+    out.J_D += kPi * r.dot(Ar);
+    out.J_D1 += kPi * q.dot(Ar);
+    out.J_D2 += kPi * q.dot(llt.solve(q));
   }
-  return J;
 }
 
-double PartialFillSpectrum::sum_rule_about(double c) const {
-  return fluid.A_f + fluid.volume * c * c + K2 + 2 * c * K1 + c * c * K0 - zhukovsky_about(c);
-}
+}  // namespace
 
 PartialFillSpectrum solve_partially_filled_cylinder(double radius, double height, double fill,
                                                     const SeparableGrid& grid) {
@@ -141,7 +141,10 @@ PartialFillSpectrum solve_partially_filled_cylinder(double radius, double height
   out.radial_dofs = R.ndof();
   out.axial_dofs = Z.ndof();
 
-  auto P = std::make_shared<PartialFillSpectrum::Projections>();
+  out.order = grid.order;
+  out.radial_elements = grid.radial_elements();
+  out.axial_elements = grid.axial_elements();
+  auto P = std::make_unique<Projections>();
   P->radial = radial_forms(R);
   P->b = b;
   const AxialForms af = axial_forms(Z, zc);
@@ -152,8 +155,7 @@ PartialFillSpectrum solve_partially_filled_cylinder(double radius, double height
   P->s = axial.eigenvectors().transpose() * af.s;
   P->t = axial.eigenvectors().transpose() * af.t;
   P->w = axial.eigenvectors().transpose() * w1;
-  out.projections = P;
-  out.J_D = out.zhukovsky_about(0);
+  zhukovsky_dirichlet(*P, out);
   out.sum_rule = out.fluid.A_f + out.K2 - out.J_D;
 
   // Every axial vector that U_c or T sees (s, t or w above rounding; the constant one through w only).

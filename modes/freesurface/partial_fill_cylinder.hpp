@@ -18,7 +18,6 @@
 #include "poincare_forms.hpp"
 #include "separable_cylinder.hpp"
 
-#include <memory>
 #include <vector>
 
 namespace rc::modes {
@@ -34,20 +33,20 @@ struct PartialFillSpectrum {
   double surface_radius = 0;  // b
   FluidIntegrals fluid;       // of the liquid annulus
   double K0 = 0, K1 = 0, K2 = 0;  // π b² ∫ z′ᵏ dz over the free surface: K(O) = K2 + 2c K1 + c² K0
-  double J_D = 0;             // Zhukovsky's inertia about the centroid, free surface at zero potential
+  // Zhukovsky's inertia with the free surface at zero potential, about a point O at height −c below the centroid:
+  // J_D(c) = J_D + 2c J_D1 + c² J_D2 (the potential problem's data is linear in c).
+  double J_D = 0, J_D1 = 0, J_D2 = 0;
   double sum_rule = 0;        // A_f + K2 − J_D: what Σ E over every pair must give
   double sum_E = 0;           // Σ E over every pair
   int radial_dofs = 0, axial_dofs = 0;
+  int order = 0, radial_elements = 0, axial_elements = 0;
   std::vector<PartialFillPair> pairs;  // every eigenpair of every coupled axial vector, E descending
 
-  // J_D about a point O at height −c below the centroid (the potential problem solved again for U_O's data).
-  double zhukovsky_about(double c) const;
+  double zhukovsky_about(double c) const { return J_D + 2 * c * J_D1 + c * c * J_D2; }
   // A_f(O) + K(O) − J_D(O): the sum over every pair of coupling_about(pair, c).
-  double sum_rule_about(double c) const;
-
-  // What zhukovsky_about needs again: the radial forms and the axial projections.
-  struct Projections;
-  std::shared_ptr<const Projections> projections;
+  double sum_rule_about(double c) const {
+    return fluid.A_f + fluid.volume * c * c + K2 + 2 * c * K1 + c * c * K0 - zhukovsky_about(c);
+  }
 };
 
 // The liquid fills the fraction `fill` (0 < fill < 1) of the cylinder of radius `radius` and height `height`;

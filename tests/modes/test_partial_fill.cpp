@@ -150,3 +150,33 @@ TEST(PartialFillCoupling, SumRuleAboutTheCentroidAndOffIt) {
                   s.pairs[i].coupling.t, s.pairs[i].axial);
   }
 }
+
+// Fill → 1: the partially filled cylinder's heaviest mode becomes the filled cylinder's (Stewartson's λ and E by
+// quadrature, closed_forms.hpp), Zhukovsky's inertia with the free surface at zero potential becomes the filled one's
+// series, and the surface's static inertia K2 = π b² ∫ z′² dz vanishes like b² = 1 − fill. (The lighter modes
+// converge too, but like 20 (1 − fill) in λ — the thin core of vanishing radius is a singular perturbation — so
+// that at 1 − fill = 1e-2 a nearest-λ match still pairs them with other modes; PartialFill.FullLimitIsTheFilledCylinder
+// follows their λ by the closed form.)
+TEST(PartialFillCoupling, FullLimitIsTheFilledCylinder) {
+  const auto full = exact::cylinder_modes(1.0, 2.0, 2, 30.0);
+  const double J_full = exact::cylinder_zhukovsky(1.0, 2.0);
+  std::vector<double> errors;
+  for (const double gap : {1e-2, 1e-3, 1e-4}) {
+    const double b = exact::partial_fill_surface_radius(1.0, 1 - gap);
+    const auto grid = SeparableGrid::graded(1.0, 2.0, 8, 6, 12, 3, b);
+    const PartialFillSpectrum s = solve_partially_filled_cylinder(1.0, 2.0, 1 - gap, grid);
+    const PartialFillPair& heaviest = s.pairs.front();
+    const double dl = std::abs(heaviest.lambda - full[0].lambda) / full[0].lambda;
+    const double dE = std::abs(heaviest.coupling.E - full[0].E) / full[0].E;
+    const double dJ = std::abs(s.J_D - J_full) / J_full;
+    std::printf("fill 1 - %.0e: heaviest mode λ %.10f (filled %.10f, %.1e), E %.10f (filled %.10f, %.1e); J_D %.10f "
+                "(filled %.10f, %.1e); K2 %.2e\n", gap, heaviest.lambda, full[0].lambda, dl, heaviest.coupling.E,
+                full[0].E, dE, s.J_D, J_full, dJ, s.K2);
+    EXPECT_LT(dl, gap);
+    EXPECT_LT(dE, 0.1 * gap);
+    EXPECT_LT(dJ, gap);
+    EXPECT_NEAR(s.K2, std::numbers::pi * gap * 2.0 / 3.0, 1e-12);  // π b² ∫_{-1}^{1} z² dz
+    errors.push_back(dE);
+  }
+  for (std::size_t i = 1; i < errors.size(); ++i) EXPECT_LT(errors[i], errors[i - 1]);
+}
