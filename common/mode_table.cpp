@@ -331,6 +331,9 @@ std::string cavity_difference(const ModeTable& a, const ModeTable& b) {
     const auto it = b.dimensions.find(k);
     if (it == b.dimensions.end() || std::abs(it->second - v) > 1e-12 * std::abs(v)) return "their dimension " + k + " differs";
   }
+  if (a.free_surface.present() != b.free_surface.present() ||
+      std::abs(a.free_surface.fill - b.free_surface.fill) > 1e-12)
+    return "their fills differ (" + formatted("%g", a.free_surface.fill) + " and " + formatted("%g", b.free_surface.fill) + ")";
   if (!a.geometry_text.empty() && !b.geometry_text.empty() && a.geometry_text != b.geometry_text)
     return "different section files (their stored texts differ; cavity-modes info FILE --geometry prints each)";
   return {};

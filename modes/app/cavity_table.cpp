@@ -6,6 +6,7 @@
 #include "progress.hpp"
 #include "discretisation.hpp"
 #include "lanczos_refinement.hpp"
+#include "partial_fill_table.hpp"
 #include "separable_table.hpp"
 #include "slice_refinement.hpp"
 #include "table_assembly.hpp"
@@ -143,6 +144,9 @@ ModeTable compute_mode_table(const TableRequest& req, const ProgressFn& progress
   auto report = [&](const std::string& what) { progress_lines.step(what); };
   if (!req.targets.empty()) return target_table(req, progress_lines);
 
+  if (req.fill < 1)
+    return partially_filled_cylinder_table({req.shape, req.mesh, req.fill, req.selection, req.convergence_tolerance,
+                                            req.check_convergence}, report);
   if (req.method == TableMethod::separable) {
     if (fields) throw std::runtime_error("--fields needs --method mesh (the separable solver keeps no 2-D mesh)");
     return separable_cylinder_table({req.shape, req.mesh, req.selection, req.convergence_tolerance,

@@ -32,6 +32,9 @@ struct TableRequest {
   // holds the frozen-fluid integrals and J_zh, and one row per target with E = 0 (no survey, no clusters): the
   // viscous continuation then takes the damped mode nearest each (viscous_table.hpp).
   std::vector<double> targets;
+  // The liquid's volume fraction (cavity-modes --fill): below 1 a partially filled tank, its free surface the coaxial
+  // cylinder of rapid spin (docs/physics.md §2, "Partially filled tanks"); so far the cylinder by the separable method.
+  double fill = 1;
 };
 
 // The mesh method's element size where the request leaves it 0: geometry's default (1/8 of the smallest

@@ -37,6 +37,11 @@ namespace {
 
 using rc::modes::TableRequest;
 
+// A request the command line cannot make (exit code 2, as CLI11's parse errors), found after parsing.
+struct CommandLineError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 // --ekman and --wall-size: the viscous table (docs/viscous.md); --sigma, --sigma-imag: `cavity-modes response`.
 struct ViscousOptions {
   double ekman = 0;
@@ -137,6 +142,18 @@ void add_table_options(CLI::App* cmd, TableRequest& req, bool& fields, std::stri
                               number(req.convergence_tolerance)));
   cmd->add_flag("--no-convergence-check", [&req](std::int64_t) { req.check_convergence = false; },
                 "skip the per-cluster comparison with a coarser discretisation");
+  cmd->add_option("--fill", req.fill,
+                  "the liquid's volume fraction, in (0, 1] (default 1): below 1 a partially filled tank whose free "
+                  "surface is the coaxial cylinder of rapid spin (docs/physics.md §2, \"Partially filled tanks\"); so "
+                  "far the cylinder by the separable method, ideal fluid")
+      ->check([](const std::string& v) -> std::string {
+        try {
+          const double f = std::stod(v);
+          if (f > 0 && f <= 1) return {};
+        } catch (const std::exception&) {
+        }
+        return "the liquid's volume fraction must be in (0, 1], not " + v;
+      });
   cmd->add_flag("--fields", fields, "also store the mesh and each mode's p and V in /fields, with an XDMF companion "
                                     "FILE.xdmf for ParaView (docs/modes.md, Fields)");
 }
@@ -269,6 +286,19 @@ void check_response_options(const CLI::App& cmd, const ViscousOptions& viscous, 
   if (cmd.count("--exact-at") > 0 && (!ends_with(output, ".h5") || viscous.galerkin || viscous.fit))
     throw std::runtime_error("--exact-at belongs to a Krylov response table: 'cavity-modes response SHAPE --ekman Ek "
                              "--sigma ... -o FILE.h5' without --fit or --galerkin");
+}
+
+// --fill below 1: what a partially filled tank's table can be made with so far (docs/modes.md, "Partially filled
+// tanks"); each refusal one line, exit code 2.
+void check_fill(const TableRequest& req, bool is_viscous, bool fields, const std::string& method) {
+  if (!(req.fill < 1)) return;
+  if (req.shape.kind != "cylinder" || req.shape.dims.count("inner_radius"))
+    throw CommandLineError("--fill: so far a plain cylinder only (" +
+                           std::string(req.shape.kind == "cylinder" ? "not with --inner-radius" : req.shape.kind + ": not yet") +
+                           "; docs/modes.md, \"Partially filled tanks\")");
+  if (is_viscous) throw CommandLineError("--fill: so far the ideal fluid only (not with --ekman)");
+  if (fields || method == "mesh")
+    throw CommandLineError("--fill: so far the separable method only (not --method mesh or --fields)");
 }
 
 // The table's report, then the plain line on what converged (empty when everything did).
@@ -512,6 +542,7 @@ int run(int argc, char** argv) {
   req.clusters.method = cluster_method == "slices" ? rc::modes::ClusterMethod::slices : rc::modes::ClusterMethod::lanczos;
   const bool is_viscous = table_command->count("--ekman") > 0;
   const auto viscous_settings = resolve_viscous(*table_command, response, is_viscous, viscous, output, req);
+  if (!response) check_fill(req, is_viscous, fields, method);
   choose_method(*table_command, method, fields, req);
 
   int petsc_argc = static_cast<int>(args.petsc.size());
@@ -529,6 +560,9 @@ int run(int argc, char** argv) {
 int main(int argc, char** argv) {
   try {
     return run(argc, argv);
+  } catch (const CommandLineError& e) {
+    if (rc::modes::is_root_rank()) std::cerr << "cavity-modes: error: " << e.what() << "\n";
+    return 2;
   } catch (const std::exception& e) {
     // Under mpirun every rank fails alike: one line, from rank 0.
     if (rc::modes::is_root_rank()) std::cerr << "cavity-modes: error: " << e.what() << "\n";

@@ -13,11 +13,19 @@ std::string table_text(const ModeTable& t) {
   std::string s = fmt::format(
       "{}{}: order {}, h = {:g}{}, {} dofs, m = {}\n"
       "volume {:.12g}  centroid_z {:.6g}  A_f {:.12g}  C_f {:.12g}\n"
-      "J_zh {:.12g}  sum rule A_f - J_zh {:.12g}  coverage {:.10f}\n"
+      "J_zh {:.12g}  sum rule {} {:.12g}  coverage {:.10f}\n"
       "solver: {} (tol {:g}), {:.2f} s\n",
       t.shape, dims, t.fe_order, t.mesh_h,
-      t.mesh_h_radial > 0 ? fmt::format(" (axial; structured, radial h = {:g})", t.mesh_h_radial) : std::string(), t.ndof, t.m, t.volume, t.centroid_z, t.A_f, t.C_f, t.J_zh, t.sum_rule,
-      t.coverage, t.solver, t.tolerance, t.wall_seconds);
+      t.mesh_h_radial > 0 ? fmt::format(" (axial; structured, radial h = {:g})", t.mesh_h_radial) : std::string(), t.ndof, t.m, t.volume, t.centroid_z, t.A_f, t.C_f, t.J_zh,
+      t.free_surface.present() ? "A_f + K2 - J_zh" : "A_f - J_zh", t.sum_rule, t.coverage, t.solver, t.tolerance,
+      t.wall_seconds);
+  if (t.free_surface.present())
+    s += fmt::format("partially filled: fill {:g}, free surface r = {:.12g} (rapid spin: the coaxial cylinder on which the "
+                     "rigid rotation's pressure is constant, gravity neglected); the frozen liquid above is that "
+                     "annulus; K0 {:.12g} K1 {:.12g} K2 {:.12g}, J1 {:.12g} J2 {:.12g}; about a point at height -c "
+                     "below the centroid a mode couples with a + c t (docs/physics.md §2, \"Partially filled tanks\")\n",
+                     t.free_surface.fill, t.free_surface.radius, t.free_surface.K0, t.free_surface.K1,
+                     t.free_surface.K2, t.free_surface.J1, t.free_surface.J2);
   if (t.viscous())
     s += fmt::format("viscous: Ekman number {:g}, wall element {:g}; each mode decays as exp(-decay t), its coupling "
                      "residue is E + i E_imag (docs/viscous.md)\n", t.ekman, t.mesh_h_wall);
@@ -43,12 +51,14 @@ std::string table_text(const ModeTable& t) {
   s += fmt::format("{:>4} {:>18} {:>18} {:>18} {:>10} {:>10} {:>4}", "#", "kappa", "lambda", "E", "spread",
                    "residual", "n");
   if (t.viscous()) s += fmt::format(" {:>14} {:>11}", "decay", "E_imag");
+  if (t.free_surface.present()) s += fmt::format(" {:>13}", "t");
   s += conv ? fmt::format(" {:>9} {:>9} {:>5}\n", "dlambda", "dE", "conv") : "\n";
   for (std::size_t i = 0; i < t.size(); ++i) {
     s += fmt::format("{:>4} {:>18.12f} {:>18.12f} {:>18.12e} {:>10.2e} {:>10.2e} {:>4}", i + 1, t.kappa[i],
                      t.lambda[i], t.E[i], t.spread.empty() ? 0.0 : t.spread[i], t.residual[i],
                      t.members.empty() ? 1 : t.members[i]);
     if (t.viscous()) s += fmt::format(" {:>14.8e} {:>11.3e}", t.decay[i], t.E_imag[i]);
+    if (t.free_surface.present()) s += fmt::format(" {:>13.6e}", t.free_surface.t[i]);
     s += conv ? fmt::format(" {:>9.1e} {:>9.1e} {:>5}\n", t.dlambda[i], t.dE[i], t.converged[i] ? "yes" : "NO")
               : "\n";
   }
@@ -72,7 +82,7 @@ std::string convergence_note(const ModeTable& t) {
 std::string table_json(const ModeTable& t) {
   nlohmann::json j;
   j["format"] = kModeTableFormat;
-  j["version"] = kModeTableVersion;
+  j["version"] = t.free_surface.present() ? kFreeSurfaceTableVersion : kModeTableVersion;
   j["shape"] = t.shape;
   for (const auto& [k, v] : t.dimensions) j[k] = v;
   j["fe_order"] = t.fe_order;
@@ -102,6 +112,11 @@ std::string table_json(const ModeTable& t) {
     j["galerkin"] = {{"gram_re", t.galerkin.gram_re}, {"gram_im", t.galerkin.gram_im},
                      {"viscous_re", t.galerkin.viscous_re}, {"viscous_im", t.galerkin.viscous_im},
                      {"dissipation_mismatch", t.galerkin.dissipation_mismatch}};
+  if (t.free_surface.present()) {
+    const auto& f = t.free_surface;
+    j["free_surface"] = {{"fill", f.fill}, {"radius", f.radius}, {"K0", f.K0}, {"K1", f.K1}, {"K2", f.K2},
+                         {"J1", f.J1}, {"J2", f.J2}, {"t", f.t}};
+  }
   if (!t.geometry_source.empty() || !t.command_line.empty())
     j["provenance"] = {{"geometry_source", t.geometry_source}, {"geometry_text", t.geometry_text},
                        {"command_line", t.command_line}};

@@ -341,32 +341,38 @@ std::string verdict_with_dissipation(const ChainModel& m, const Spectrum& sp) {
   return os.str();
 }
 
+// One body's line of the spectrum's header: its totals, then what its tank is and how its table stands.
+static void print_body_line(std::ostream& os, const ChainModel& m, const Spectrum& sp, int k) {
+  const BodyModel& b = m.bodies[k];
+  os << "  body " << k + 1 << ": m = " << b.m << " kg, A' = " << m.M(k, k) << ", C = " << b.C
+     << ", a = " << m.a[k] << ", spin = " << b.omega << " rad/s";
+  if (b.has_fluid)
+    os << ", fluid " << b.m_f << " kg, A_f = " << b.A_f << ", J_zh = " << b.J_zh
+       << ", kept sum E = " << b.E_kept << " (coverage " << b.coverage << ")"
+       << (b.E_rem > 0 ? ", static correction " + std::to_string(b.E_rem) : std::string());
+  if (b.free_surface)
+    os << ", partially filled (free surface; its static inertia K = " << b.K_free_surface << " in A', couplings about "
+       << "the joint)";
+  if (b.ekman > 0) os << ", viscous (Ek = " << b.ekman << ", kept Im sum E = " << b.E_kept_imag << ")";
+  if (b.galerkin) os << ", Galerkin reduction (its E the Galerkin residues)";
+  if (b.unconverged > 0)
+    os << ", " << b.unconverged << " kept clusters not converged (their roots marked *: docs/cones.md)";
+  if (b.fit_hi > b.fit_lo) {
+    os << ", modes of a response fit on s in [" << b.fit_lo << ", " << b.fit_hi << "] (error " << b.fit_error << ")";
+    const FitPassivity& p = sp.passivity[k];
+    if (p.passive())
+      os << ", passive on it (Im R >= " << p.scan.min_im << " max|R|)";
+    else
+      os << ", NOT passive: Im R = " << p.scan.min_im << " max|R| at s = " << p.scan.at
+         << " (the fit can feed the chain energy: docs/rom.md, \"Viscous tanks\")";
+  }
+  os << "\n";
+}
+
 void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp, bool all) {
   os << (m.free_chain ? "free" : "fixed") << " chain, " << m.n << " bodies, " << m.n_modes()
      << " fluid modes\n";
-  for (int k = 0; k < m.n; ++k) {
-    const BodyModel& b = m.bodies[k];
-    os << "  body " << k + 1 << ": m = " << b.m << " kg, A' = " << m.M(k, k) << ", C = " << b.C
-       << ", a = " << m.a[k] << ", spin = " << b.omega << " rad/s";
-    if (b.has_fluid)
-      os << ", fluid " << b.m_f << " kg, A_f = " << b.A_f << ", J_zh = " << b.J_zh
-         << ", kept sum E = " << b.E_kept << " (coverage " << b.coverage << ")"
-         << (b.E_rem > 0 ? ", static correction " + std::to_string(b.E_rem) : std::string());
-    if (b.ekman > 0) os << ", viscous (Ek = " << b.ekman << ", kept Im sum E = " << b.E_kept_imag << ")";
-    if (b.galerkin) os << ", Galerkin reduction (its E the Galerkin residues)";
-    if (b.unconverged > 0)
-      os << ", " << b.unconverged << " kept clusters not converged (their roots marked *: docs/cones.md)";
-    if (b.fit_hi > b.fit_lo) {
-      os << ", modes of a response fit on s in [" << b.fit_lo << ", " << b.fit_hi << "] (error " << b.fit_error << ")";
-      const FitPassivity& p = sp.passivity[k];
-      if (p.passive())
-        os << ", passive on it (Im R >= " << p.scan.min_im << " max|R|)";
-      else
-        os << ", NOT passive: Im R = " << p.scan.min_im << " max|R| at s = " << p.scan.at
-           << " (the fit can feed the chain energy: docs/rom.md, \"Viscous tanks\")";
-    }
-    os << "\n";
-  }
+  for (int k = 0; k < m.n; ++k) print_body_line(os, m, sp, k);
   print_roots(os, m, sp, all);
   os << std::setprecision(6);
   if (!m.dissipative()) {

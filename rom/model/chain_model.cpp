@@ -66,12 +66,29 @@ void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
   if (!(b.m_f > 0) || b.A_f < 0 || b.C_f < 0 || b.J_zh < 0)
     fail(scene, w + ".table", "non-physical table (volume, A_f, C_f or J_zh not positive)");
 
+  // A partially filled tank couples about its joint O_k: a mode's a + c t with c = O_k -> centroid in the table's unit.
+  const double c = b.fluid_center / L;
+  if (t.free_surface.present()) {
+    b.free_surface = true;
+    b.K_free_surface = rho * L5 * t.free_surface.K(c);
+    b.sum_rule = rho * L5 * t.sum_rule_about(c);
+  }
+  const auto row_E = [&](std::size_t l) {
+    if (!t.free_surface.present()) return t.E[l];
+    const double a = t.a[l] + c * t.free_surface.t[l];
+    return 2 * a * a / t.N2[l];
+  };
+  const auto row_a = [&](std::size_t l) { return t.free_surface.present() ? t.a[l] + c * t.free_surface.t[l] : t.a[l]; };
+
   // Modes with E = 0 do not couple (e.g. a spheroid's table beyond its single mode): left out.
   std::vector<int> idx;
-  const double tiny = 1e-14 * std::max(t.A_f - t.J_zh, 1e-300);
+  const double tiny = 1e-14 * std::max(b.sum_rule / (rho * L5), 1e-300);
   // A viscous mode's residue may have a negative real part (docs/viscous.md section 5): kept by its modulus.
   for (std::size_t l = 0; l < t.size(); ++l)
-    if (t.viscous() ? std::hypot(t.E[l], t.E_imag[l]) > tiny : t.E[l] > tiny) idx.push_back(static_cast<int>(l));
+    if (t.viscous() ? std::hypot(t.E[l], t.E_imag[l]) > tiny : row_E(l) > tiny) idx.push_back(static_cast<int>(l));
+  // About O_k a free-surface table's rows weigh otherwise than about its centroid, where they are sorted.
+  if (t.free_surface.present())
+    std::stable_sort(idx.begin(), idx.end(), [&](int i, int j) { return row_E(i) > row_E(j); });
   std::size_t keep = idx.size();
   if (cav.modes) {
     if (static_cast<std::size_t>(*cav.modes) > idx.size())
@@ -80,14 +97,13 @@ void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
                                     std::to_string(idx.size()) + " coupling modes");
     keep = *cav.modes;
   } else if (cav.coverage) {
-    const double target = *cav.coverage * (t.A_f - t.J_zh);
+    const double target = *cav.coverage * b.sum_rule / (rho * L5);
     double acc = 0;
     keep = 0;
-    while (keep < idx.size() && acc < target * (1 - 1e-12)) acc += t.E[idx[keep++]];
+    while (keep < idx.size() && acc < target * (1 - 1e-12)) acc += row_E(idx[keep++]);
     if (acc < target * (1 - 1e-12)) {
       std::ostringstream os;
-      os << "coverage " << *cav.coverage << " not reachable: the table's modes cover "
-         << acc / (t.A_f - t.J_zh);
+      os << "coverage " << *cav.coverage << " not reachable: the table's modes cover " << acc / (b.sum_rule / (rho * L5));
       fail(scene, w + ".coverage", os.str());
     }
   }
@@ -114,12 +130,12 @@ void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
     FluidMode m;
     m.body = k;
     m.table_index = l;
-    m.E = rho * L5 * t.E[l];
+    m.E = rho * L5 * row_E(l);
     m.lambda_table = t.lambda[l];
     m.lambda = b.omega * t.lambda[l];  // lambda_kl = 2 omega_k0 / kappa_kl (Kononov (21))
     m.nu = b.omega - m.lambda;
     // a ~ rho L^4, N^2 ~ rho L^3 (N^2 carries rho so that E = 2a^2/N^2 ~ rho L^5): a/N^2 ~ L.
-    m.a_over_N2 = (t.N2[l] != 0) ? L * t.a[l] / t.N2[l] : 0.0;
+    m.a_over_N2 = (t.N2[l] != 0) ? L * row_a(l) / t.N2[l] : 0.0;
     if (!t.converged.empty()) m.converged = t.converged[l];
     if (m.converged == 0) ++b.unconverged;
     if (t.viscous()) {
@@ -215,6 +231,15 @@ ChainModel build_model(const Scene& scene, TableCache* tables, bool linear_keys_
       m += b.m_f;
       first += b.m_f * d;
       A += b.A_f + b.m_f * d * d;  // parallel-axis theorem: fluid inertia about O_k
+      // A partially filled tank's surface re-centres on the tilted spin axis: inertia K(O_k) more (docs/physics.md §2).
+      A += b.K_free_surface;
+      if (b.free_surface && (k > 0 || scene.free_chain))
+        fail(scene, "body[" + std::to_string(k + 1) + "].cavity.table",
+             "a partially filled tank's liquid follows the translation of its body's joint, which the chain does not "
+             "model yet: only the first body of a fixed chain may carry one (docs/rom.md, \"Partially filled tanks\")");
+      if (b.free_surface && !linear_keys_only)
+        fail(scene, "body[" + std::to_string(k + 1) + "].cavity.table",
+             "the nonlinear chain does not take a partially filled tank yet (the linear model (26) does)");
       C += b.C_f;
     }
     b.m = m;

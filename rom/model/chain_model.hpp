@@ -39,6 +39,10 @@ struct BodyModel {
   bool has_fluid = false;
   double m_f = 0, A_f = 0, C_f = 0, J_zh = 0, sum_rule = 0;  // scaled fluid data (A_f, J_zh about the centroid)
   double fluid_center = 0;  // O_k -> the fluid's centroid along the axis (m): the scene's center, or origin + L·z_c
+  // A partially filled tank (the table's /free_surface): its static inertia K(O_k) (kg m², in A above) and its modes'
+  // couplings are about O_k (docs/physics.md §2, "Partially filled tanks").
+  bool free_surface = false;
+  double K_free_surface = 0;
   double E_kept = 0;         // sum of the kept E_kl
   double E_rem = 0;          // static-correction inertia (0 unless static_correction)
   double E_kept_imag = 0, E_rem_imag = 0;  // imaginary parts of the two (viscous tables); E_rem_imag = -E_kept_imag

@@ -1,0 +1,131 @@
+#include "partial_fill_table.hpp"
+
+#include "convergence.hpp"
+#include "line_space.hpp"
+#include "partial_fill_closed_form.hpp"
+#include "partial_fill_cylinder.hpp"
+#include "separable_table.hpp"
+#include "table_assembly.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+namespace rc::modes {
+namespace {
+
+// A pair as a selection item: its weight is its largest E about a point within one height H of the centroid.
+struct Candidate {
+  const PartialFillPair* pair = nullptr;
+  double E = 0;  // the selection's weight (cluster_selection.hpp sorts and sums by E)
+};
+
+double weight(const PartialFillPair& p, double height) {
+  return 2 * std::pow(std::abs(p.coupling.a) + height * std::abs(p.coupling.t), 2);
+}
+
+// A row of the table (E about the centroid) or, with `height`, the pair as the convergence check compares it: by λ
+// and by its weight, which unlike E about the centroid is positive for every kept pair.
+Cluster as_cluster(const PartialFillPair& p, double height = 0) {
+  Cluster c;
+  c.lambda = p.lambda;
+  c.E = height > 0 ? weight(p, height) : p.coupling.E;
+  c.residual = p.residual;
+  c.members = 1;
+  return c;
+}
+
+// Each kept pair against the coarse grid's pair of the same axial vector nearest in λ among those of like weight
+// (within a factor 10: a pair of another family near the same λ is not its match).
+ConvergenceCheck check_against(const PartialFillSpectrum& coarse, const std::vector<Candidate>& kept, double height,
+                               std::string reference, double tolerance) {
+  ConvergenceCheck check;
+  check.reference = std::move(reference);
+  for (const Candidate& k : kept) {
+    const PartialFillPair* best = nullptr;
+    for (const auto& p : coarse.pairs) {
+      const double w = weight(p, height);
+      if (p.axial != k.pair->axial || w < 0.1 * k.E || w > 10 * k.E) continue;
+      if (!best || std::abs(p.lambda - k.pair->lambda) < std::abs(best->lambda - k.pair->lambda)) best = &p;
+    }
+    check.changes.push_back(
+        cluster_change(as_cluster(*k.pair, height), best ? as_cluster(*best, height) : Cluster{}, tolerance));
+  }
+  return check;
+}
+
+SeparableGrid annulus_grid(const PartialFillTableSettings& req, double b) {
+  geometry::ShapeSpec annulus = req.shape;
+  annulus.dims["inner_radius"] = b;
+  return separable_grid(annulus, req.grid);
+}
+
+}  // namespace
+
+ModeTable partially_filled_cylinder_table(const PartialFillTableSettings& req,
+                                          const std::function<void(const std::string&)>& report) {
+  const auto start = std::chrono::steady_clock::now();
+  if (req.shape.kind != "cylinder" || req.shape.dims.count("inner_radius"))
+    throw std::runtime_error("--fill: so far a plain cylinder only (docs/modes.md, \"Partially filled tanks\")");
+  if (!(req.fill > 0 && req.fill < 1)) throw std::runtime_error("--fill must be in (0, 1) for a partially filled tank");
+  const double R = req.shape.dims.at("radius"), H = req.shape.dims.at("height");
+  const double b = exact::partial_fill_surface_radius(R, req.fill);
+  const SeparableGrid grid = annulus_grid(req, b);
+  if (report) report(fmt::format("partially filled cylinder: free surface r = {:.10g}, {} x {} elements of order {}", b,
+                                 grid.radial_elements(), grid.axial_elements(), grid.order));
+  const PartialFillSpectrum s = solve_partially_filled_cylinder(R, H, req.fill, grid);
+
+  const double sum_rule_wide = std::max({s.sum_rule_about(0), s.sum_rule_about(H), s.sum_rule_about(-H)});
+  std::vector<Candidate> candidates;
+  for (const auto& p : s.pairs) {
+    const double w = weight(p, H);
+    if (std::abs(p.lambda) >= req.selection.geostrophic_cutoff && w > 0) candidates.push_back({&p, w});
+  }
+  const std::vector<Candidate> kept = select_clusters(std::move(candidates), req.selection, sum_rule_wide);
+
+  ModeTable t = start_table(req.shape, s.fluid, s.J_D);
+  t.sum_rule = s.sum_rule;
+  t.fe_order = grid.order;
+  t.mesh_h = longest_element(grid.axial);
+  t.mesh_h_radial = longest_element(grid.radial);
+  t.ndof = static_cast<long>(s.radial_dofs) * s.axial_dofs;
+  t.normalisation = "rho = 1, omega0 = 1; each mode's state (V, eta) is normalised to N2 = |V|^2 + b |eta|^2 = 1, "
+                    "a = <U_c, W> about the liquid's centroid with the free surface's share, so E = 2 a^2 / N2; about "
+                    "a point at height -c below the centroid a + c t (docs/physics.md §2, \"Partially filled tanks\")";
+  t.solver = fmt::format(
+      "separable, free surface r = b: tensor-product P{} Lagrange elements ({} radial x {} axial) over b < r < a, one "
+      "radial quartic per axial eigenvector made a symmetric quadratic by the surface unknown, each solved completely "
+      "by a dense eigensolver (Eigen) of its companion form; sum of E over all pairs - (A_f + K2 - J_zh) = {:.1e} "
+      "(relative)", grid.order, grid.radial_elements(), grid.axial_elements(), (s.sum_E - s.sum_rule) / s.sum_rule);
+  t.tolerance = std::numeric_limits<double>::epsilon();
+  t.free_surface.fill = req.fill;
+  t.free_surface.radius = b;
+  t.free_surface.K0 = s.K0;
+  t.free_surface.K1 = s.K1;
+  t.free_surface.K2 = s.K2;
+  t.free_surface.J1 = s.J_D1;
+  t.free_surface.J2 = s.J_D2;
+  if (req.check_convergence) {
+    const SeparableGrid c = coarser(grid);
+    if (report) report("convergence check on a coarser grid");
+    add_convergence(t, check_against(solve_partially_filled_cylinder(R, H, req.fill, c), kept, H,
+                                     fmt::format("order {} with every two neighbouring elements merged ({} radial x {} "
+                                                 "axial), pairs matched by axial vector and nearest lambda", c.order,
+                                                 c.radial_elements(), c.axial_elements()),
+                                     req.convergence_tolerance),
+                    req.convergence_tolerance);
+  }
+  std::vector<Cluster> clusters;
+  for (const Candidate& k : kept) clusters.push_back(as_cluster(*k.pair));
+  add_modes(t, clusters);
+  // add_modes writes a = sqrt(E/2) ≥ 0: the offset coupling t takes the same sign change.
+  for (const Candidate& k : kept) t.free_surface.t.push_back(k.pair->coupling.a < 0 ? -k.pair->coupling.t : k.pair->coupling.t);
+  t.sort_by_energy();
+  t.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return t;
+}
+
+}  // namespace rc::modes
