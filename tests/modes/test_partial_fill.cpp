@@ -7,6 +7,11 @@
 #include "free_surface_radial.hpp"
 #include "partial_fill_closed_form.hpp"
 #include "partial_fill_cylinder.hpp"
+#include "line_space.hpp"
+#include "separable_forms.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <complex>
 
 #include <gtest/gtest.h>
 
@@ -179,4 +184,62 @@ TEST(PartialFillCoupling, FullLimitIsTheFilledCylinder) {
     errors.push_back(dE);
   }
   for (std::size_t i = 1; i < errors.size(); ++i) EXPECT_LT(errors[i], errors[i - 1]);
+}
+
+// The moment of the wall pressure against the modal model (docs/physics.md §2, "Partially filled tanks: coupling to
+// the body", 5-8): the body turns about a point O at height −c below the liquid's centroid with Ω_c = Ω_x − iΩ_y =
+// e^{ist}; the forced liquid's pressure p = Π − χ (χ = z_O r, z_O = z′ + c; Q(s)Π = s[(s² + 2s) f1 + D f2 + s D f3]
+// with z_O in f1 and f3, D = 4 − s², one radial solve per axial vector) has on the walls the moment about O
+// M_c = −iπ (f1 − f2 + f3)(p) (the divergence theorem over the liquid, less the free surface). The modal model says
+// M_c = −[is A_f(O) − i(A_f(O) − C_f)] − i(s − 1)[K(O) − s Σ_l E_l(O)/(s − λ_l)]: the frozen liquid's reaction, the
+// re-centring inertia K and the modes with their E about O (R(s) = Σ E/(s − λ) as for a filled cavity, docs/viscous.md
+// section 6). The two share nothing but the forms: the first never uses the energy, the modes or K, the second never
+// the wall pressure.
+TEST(PartialFillCoupling, WallPressureMomentIsTheModalModel) {
+  using cd = std::complex<double>;
+  const double fill = 0.9, height = 2, b = exact::partial_fill_surface_radius(1.0, fill);
+  const auto grid = SeparableGrid::graded(1.0, height, 8, 6, 12, 2, b);
+  const PartialFillSpectrum modal = solve_partially_filled_cylinder(1.0, height, fill, grid);
+  const LineSpace R(grid.radial, grid.order, false), Z(grid.axial, grid.order, false);
+  const RadialForms rf = radial_forms(R);
+  const AxialForms af = axial_forms(Z, 0.0);
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> axial(af.A, af.B);
+  const Eigen::VectorXd mu = axial.eigenvalues().cwiseMax(0.0);
+  const Eigen::VectorXd w1 = Z.linear([](double, double v, double) { return v; });
+  const Eigen::VectorXd s_k = axial.eigenvectors().transpose() * af.s, t_k = axial.eigenvectors().transpose() * af.t,
+                        w_k = axial.eigenvectors().transpose() * w1;
+  const int n = R.ndof();
+  Eigen::VectorXd e = Eigen::VectorXd::Zero(n);
+  e(0) = 1;
+  const Eigen::MatrixXd S = e * e.transpose();
+  const double r1 = R.integral([](double r) { return r; }), r3 = R.integral([](double r) { return r * r * r; });
+  double worst = 0;
+  for (const double c : {0.0, 0.8}) {
+    // (f1 − f2 + f3)(χ) for χ = z_O r: 2∫∫ z_O² r − ∫∫ r³ + b² ∫ z_O², a real constant.
+    const double zz = Z.integral([&](double z) { return (z + c) * (z + c); }), z0 = Z.integral([](double) { return 1.0; });
+    const double chi_term = 2 * zz * r1 - r3 * z0 + b * b * zz;
+    for (const cd s : {cd(0.3, 0.2), cd(-0.7, 0.1), cd(1.4, -0.3), cd(2.6, 0.05), cd(0.05, 0.5)}) {
+      const cd D = 4.0 - s * s;
+      cd functional = 0;
+      for (Eigen::Index k = 0; k < mu.size(); ++k) {
+        const double sO = s_k(k) + c * w_k(k);  // ∫ z_O ψ
+        const Eigen::MatrixXcd Q = (-s * s * s * s) * S.cast<cd>() + (s * s) * (rf.A + mu(k) * rf.B + 4 * S).cast<cd>() +
+                                   (2.0 * s) * rf.C.cast<cd>() - (4.0 * mu(k)) * rf.B.cast<cd>();
+        const Eigen::VectorXcd rhs = s * ((s * s + 2.0 * s) * sO * rf.g1.cast<cd>() + D * t_k(k) * rf.g2.cast<cd>() +
+                                          s * D * b * sO * e.cast<cd>());
+        const Eigen::VectorXcd Pi = Q.partialPivLu().solve(rhs);
+        functional += sO * rf.g1.cast<cd>().dot(Pi) - t_k(k) * rf.g2.cast<cd>().dot(Pi) + b * sO * Pi(0);
+      }
+      const cd wall = cd(0, -std::numbers::pi) * (functional - chi_term);
+      cd modes = 0;
+      for (const auto& p : modal.pairs) modes += coupling_about(p.coupling, c) / (s - p.lambda);
+      const double A_O = modal.fluid.A_f + modal.fluid.volume * c * c, K_O = modal.K2 + 2 * c * modal.K1 + c * c * modal.K0;
+      const cd model = -(cd(0, 1) * s * A_O - cd(0, 1) * (A_O - modal.fluid.C_f)) - cd(0, 1) * (s - 1.0) * (K_O - s * modes);
+      const double err = std::abs(wall - model) / std::abs(model);
+      std::printf("c = %.1f, s = %+.2f%+.2fi: wall moment %+.12f%+.12fi, modal model %+.12f%+.12fi, relative %.2e\n", c,
+                  s.real(), s.imag(), wall.real(), wall.imag(), model.real(), model.imag(), err);
+      worst = std::max(worst, err);
+    }
+  }
+  EXPECT_LT(worst, 1e-9);
 }
