@@ -79,7 +79,10 @@ SeparableGrid separable_grid(const geometry::ShapeSpec& shape, const geometry::M
   // Radially the heavy modes oscillate like J1(ξ r/a), and ξ of the 20 largest grows only from 28 (2h/a = 2)
   // to 50 (2h/a = 0.25) and 53 (2h/a = 0.1): the radial size follows d down to a/2, not further (an annulus
   // keeps the full cylinder's element size over its narrower span).
-  const int radial = elements(R - b, mesh.radial_size > 0 ? mesh.radial_size : std::max(d, R / 2) / 8);
+  // An annulus keeps at least 4 elements across, however thin (a partially filled tank's thin liquid layer: the
+  // graded corner layers at both of its walls need 2, its modes vary across it).
+  int radial = elements(R - b, mesh.radial_size > 0 ? mesh.radial_size : std::max(d, R / 2) / 8);
+  if (b > 0) radial = std::max(radial, 4);
   const int axial = elements(H, mesh.size > 0 ? mesh.size : 3 * d / 8);
   const SeparableGrid g = SeparableGrid::graded(R, H, mesh.order > 0 ? mesh.order : kDefaultOrder, radial,
                                                 axial + axial % 2, kCornerLayers, b);
