@@ -3,6 +3,7 @@
 #include "galerkin_fluid.hpp"
 #include "mode_table.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -35,25 +36,40 @@ void check_viscosity(const Scene& scene, const std::string& w, const CavitySpec&
   }
 }
 
-// Fluid of body k: mass, frozen inertia, centre of mass, kept modes (docs/physics.md §4 scaling).
-void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
-               std::vector<FluidMode>& modes, TableCache* tables) {
-  const std::string w = "body[" + std::to_string(k + 1) + "].cavity";
-  rc::ModeTable own;
-  const rc::ModeTable* tp = &own;
+// The table of body k's cavity: from the cache when there is one, else read here into `own`.
+const rc::ModeTable& cavity_table(const Scene& scene, const std::string& w, const CavitySpec& cav, TableCache* tables,
+                                  rc::ModeTable& own) {
   try {
-    if (tables) tp = &tables->get(cav.table);
-    else own = rc::read_mode_table(cav.table);
+    if (tables) return tables->get(cav.table);
+    own = rc::read_mode_table(cav.table);
+    return own;
   } catch (const std::exception& e) {
     fail(scene, w + ".table", e.what());
   }
-  const rc::ModeTable& t = *tp;
-  if (t.m != 1) fail(scene, w + ".table", cav.table.string() + " holds m = " + std::to_string(t.m) +
-                                 " modes; only m = 1 modes couple to the tilt");
-  check_viscosity(scene, w, cav, t, b.omega);
-  const double rho = cav.density, L = cav.scale;
-  const double L3 = L * L * L, L5 = L3 * L * L;
-  // docs/physics.md §4: mass ~ rho L^3, A_f, C_f, J_zh, E ~ rho L^5; lambda/omega0 scale-free.
+}
+
+// Each row's coupling about the body's joint O_k (docs/physics.md §2): the table's for a filled tank, a + c t for a
+// partially filled one (c = O_k -> centroid in the table's unit).
+struct RowCoupling {
+  const rc::ModeTable& t;
+  double c = 0;
+  double a(std::size_t l) const { return t.free_surface.present() ? t.a[l] + c * t.free_surface.t[l] : t.a[l]; }
+  double E(std::size_t l) const { return t.free_surface.present() ? 2 * a(l) * a(l) / t.N2[l] : t.E[l]; }
+  // Σ E over every mode about O_k, in table units
+  double sum_rule() const { return t.free_surface.present() ? t.sum_rule_about(c) : t.A_f - t.J_zh; }
+};
+
+// ρL⁵: a table's inertias and E to the scene's (docs/physics.md §4), multiplied out as L³·L·L.
+double inertia_unit(const CavitySpec& cav) {
+  const double L = cav.scale, L3 = L * L * L;
+  return cav.density * (L3 * L * L);
+}
+
+// The frozen fluid of body k in chain units (docs/physics.md §4: mass ~ ρL³, A_f, C_f, J_zh, E ~ ρL⁵), its centroid
+// from O_k and, for a partially filled tank, its re-centring inertia and the sum rule about O_k.
+void set_frozen_fluid(const Scene& scene, const std::string& w, const CavitySpec& cav, const rc::ModeTable& t,
+                      BodyModel& b) {
+  const double rho = cav.density, L = cav.scale, L3 = L * L * L, L5 = L3 * L * L;  // rho L5 as before the split
   b.has_fluid = true;
   b.table = cav.table.string();
   b.m_f = rho * L3 * t.volume;
@@ -65,30 +81,27 @@ void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
   b.fluid_center = cav.origin ? *cav.origin + L * t.centroid_z : cav.center;
   if (!(b.m_f > 0) || b.A_f < 0 || b.C_f < 0 || b.J_zh < 0)
     fail(scene, w + ".table", "non-physical table (volume, A_f, C_f or J_zh not positive)");
-
-  // A partially filled tank couples about its joint O_k: a mode's a + c t with c = O_k -> centroid in the table's unit.
-  const double c = b.fluid_center / L;
   if (t.free_surface.present()) {
+    const double c = b.fluid_center / L;
     b.free_surface = true;
     b.K_free_surface = rho * L5 * t.free_surface.K(c);
     b.sum_rule = rho * L5 * t.sum_rule_about(c);
   }
-  const auto row_E = [&](std::size_t l) {
-    if (!t.free_surface.present()) return t.E[l];
-    const double a = t.a[l] + c * t.free_surface.t[l];
-    return 2 * a * a / t.N2[l];
-  };
-  const auto row_a = [&](std::size_t l) { return t.free_surface.present() ? t.a[l] + c * t.free_surface.t[l] : t.a[l]; };
+}
 
-  // Modes with E = 0 do not couple (e.g. a spheroid's table beyond its single mode): left out.
+// The rows the scene keeps, heaviest first about O_k: every coupling one (E = 0 rows, e.g. a spheroid's beyond its
+// single mode, are left out), or the first `modes`, or as many as reach `coverage` of the sum rule.
+std::vector<int> kept_rows(const Scene& scene, const std::string& w, const CavitySpec& cav, const rc::ModeTable& t,
+                           const RowCoupling& rc) {
+  const double sum_rule = rc.sum_rule();
   std::vector<int> idx;
-  const double tiny = 1e-14 * std::max(b.sum_rule / (rho * L5), 1e-300);
+  const double tiny = 1e-14 * std::max(sum_rule, 1e-300);
   // A viscous mode's residue may have a negative real part (docs/viscous.md section 5): kept by its modulus.
   for (std::size_t l = 0; l < t.size(); ++l)
-    if (t.viscous() ? std::hypot(t.E[l], t.E_imag[l]) > tiny : row_E(l) > tiny) idx.push_back(static_cast<int>(l));
+    if (t.viscous() ? std::hypot(t.E[l], t.E_imag[l]) > tiny : rc.E(l) > tiny) idx.push_back(static_cast<int>(l));
   // About O_k a free-surface table's rows weigh otherwise than about its centroid, where they are sorted.
   if (t.free_surface.present())
-    std::stable_sort(idx.begin(), idx.end(), [&](int i, int j) { return row_E(i) > row_E(j); });
+    std::stable_sort(idx.begin(), idx.end(), [&](int i, int j) { return rc.E(i) > rc.E(j); });
   std::size_t keep = idx.size();
   if (cav.modes) {
     if (static_cast<std::size_t>(*cav.modes) > idx.size())
@@ -97,17 +110,70 @@ void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
                                     std::to_string(idx.size()) + " coupling modes");
     keep = *cav.modes;
   } else if (cav.coverage) {
-    const double target = *cav.coverage * b.sum_rule / (rho * L5);
+    const double target = *cav.coverage * sum_rule;
     double acc = 0;
     keep = 0;
-    while (keep < idx.size() && acc < target * (1 - 1e-12)) acc += row_E(idx[keep++]);
+    while (keep < idx.size() && acc < target * (1 - 1e-12)) acc += rc.E(idx[keep++]);
     if (acc < target * (1 - 1e-12)) {
       std::ostringstream os;
-      os << "coverage " << *cav.coverage << " not reachable: the table's modes cover " << acc / (b.sum_rule / (rho * L5));
+      os << "coverage " << *cav.coverage << " not reachable: the table's modes cover " << acc / sum_rule;
       fail(scene, w + ".coverage", os.str());
     }
   }
-  const std::vector<int> rows(idx.begin(), idx.begin() + static_cast<std::ptrdiff_t>(keep));
+  idx.resize(keep);
+  return idx;
+}
+
+// One kept row as a chain mode of body k (λ_kl = ω_k0 λ_l, Kononov (21)), scaled to the body's spin and scale.
+FluidMode chain_mode(int k, int l, const rc::ModeTable& t, const RowCoupling& rc, const CavitySpec& cav,
+                     double omega) {
+  const double L = cav.scale, L5 = inertia_unit(cav);
+  FluidMode m;
+  m.body = k;
+  m.table_index = l;
+  m.E = L5 * rc.E(l);
+  m.lambda_table = t.lambda[l];
+  m.lambda = omega * t.lambda[l];
+  m.nu = omega - m.lambda;
+  // a ~ rho L^4, N^2 ~ rho L^3 (N^2 carries rho so that E = 2a^2/N^2 ~ rho L^5): a/N^2 ~ L.
+  m.a_over_N2 = (t.N2[l] != 0) ? L * rc.a(l) / t.N2[l] : 0.0;
+  if (!t.converged.empty()) m.converged = t.converged[l];
+  if (t.viscous()) {
+    // Spin -omega mirrors the flow (phi -> -phi) and conjugates it: lambda_c -> -conj(lambda_c), so the
+    // decay scales with |omega| and E_c -> conj(E_c) (docs/rom.md, "Viscous tanks"; derived, no test yet).
+    m.decay = std::abs(omega) * t.decay[l];
+    m.E_imag = (omega < 0 ? -1 : 1) * L5 * t.E_imag[l];
+  }
+  return m;
+}
+
+// A Galerkin tank's fluid energy and dissipation forms in chain units; spin -omega conjugates the flow, the forms
+// too. Energy ~ rho L^5, dissipation ~ rho L^5 |omega|.
+void set_galerkin_forms(const GalerkinFluid& gf, const CavitySpec& cav, BodyModel& b) {
+  const double L5 = inertia_unit(cav);
+  const auto chain_units = [&](const Eigen::MatrixXcd& a, double factor) -> Eigen::MatrixXcd {
+    return L5 * factor * (b.omega < 0 ? a.conjugate().eval() : a);
+  };
+  b.galerkin = cav.galerkin;
+  if (gf.energy.size() > 0) {
+    b.fluid_energy = chain_units(gf.energy, 1.0);
+    b.fluid_dissipation = chain_units(gf.dissipation, std::abs(b.omega));
+  }
+}
+
+// Fluid of body k: mass, frozen inertia, centre of mass, kept modes (docs/physics.md §4 scaling).
+void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
+               std::vector<FluidMode>& modes, TableCache* tables) {
+  const std::string w = "body[" + std::to_string(k + 1) + "].cavity";
+  rc::ModeTable own;
+  const rc::ModeTable& t = cavity_table(scene, w, cav, tables, own);
+  if (t.m != 1) fail(scene, w + ".table", cav.table.string() + " holds m = " + std::to_string(t.m) +
+                                 " modes; only m = 1 modes couple to the tilt");
+  check_viscosity(scene, w, cav, t, b.omega);
+  set_frozen_fluid(scene, w, cav, t, b);
+  const double L5 = inertia_unit(cav);
+  const RowCoupling rc{t, b.fluid_center / cav.scale};
+  const std::vector<int> rows = kept_rows(scene, w, cav, t, rc);
   GalerkinFluid gf;
   if (cav.galerkin) {
     try {
@@ -116,37 +182,13 @@ void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
       fail(scene, w + ".reduction", cav.table.filename().string() + ": " + e.what());
     }
   }
-  // Spin -omega conjugates the flow (below): the forms too. Energy ~ rho L^5, dissipation ~ rho L^5 |omega|.
-  const auto chain_units = [&](const Eigen::MatrixXcd& a, double factor) -> Eigen::MatrixXcd {
-    return rho * L5 * factor * (b.omega < 0 ? a.conjugate().eval() : a);
-  };
-  b.galerkin = cav.galerkin;
-  if (gf.energy.size() > 0) {
-    b.fluid_energy = chain_units(gf.energy, 1.0);
-    b.fluid_dissipation = chain_units(gf.dissipation, std::abs(b.omega));
-  }
-  for (std::size_t j = 0; j < keep; ++j) {
-    const int l = idx[j];
-    FluidMode m;
-    m.body = k;
-    m.table_index = l;
-    m.E = rho * L5 * row_E(l);
-    m.lambda_table = t.lambda[l];
-    m.lambda = b.omega * t.lambda[l];  // lambda_kl = 2 omega_k0 / kappa_kl (Kononov (21))
-    m.nu = b.omega - m.lambda;
-    // a ~ rho L^4, N^2 ~ rho L^3 (N^2 carries rho so that E = 2a^2/N^2 ~ rho L^5): a/N^2 ~ L.
-    m.a_over_N2 = (t.N2[l] != 0) ? L * row_a(l) / t.N2[l] : 0.0;
-    if (!t.converged.empty()) m.converged = t.converged[l];
+  set_galerkin_forms(gf, cav, b);
+  for (std::size_t j = 0; j < rows.size(); ++j) {
+    FluidMode m = chain_mode(k, rows[j], t, rc, cav, b.omega);
     if (m.converged == 0) ++b.unconverged;
-    if (t.viscous()) {
-      // Spin -omega mirrors the flow (phi -> -phi) and conjugates it: lambda_c -> -conj(lambda_c), so the
-      // decay scales with |omega| and E_c -> conj(E_c) (docs/rom.md, "Viscous tanks"; derived, no test yet).
-      m.decay = std::abs(b.omega) * t.decay[l];
-      m.E_imag = (b.omega < 0 ? -1 : 1) * rho * L5 * t.E_imag[l];
-    }
     if (cav.galerkin) {  // the Galerkin residue in place of the modal one (galerkin_fluid.hpp)
-      m.E = rho * L5 * gf.residue[static_cast<Eigen::Index>(j)].real();
-      m.E_imag = (b.omega < 0 ? -1 : 1) * rho * L5 * gf.residue[static_cast<Eigen::Index>(j)].imag();
+      m.E = L5 * gf.residue[static_cast<Eigen::Index>(j)].real();
+      m.E_imag = (b.omega < 0 ? -1 : 1) * L5 * gf.residue[static_cast<Eigen::Index>(j)].imag();
     }
     b.E_kept += m.E;
     b.E_kept_imag += m.E_imag;
