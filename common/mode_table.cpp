@@ -234,6 +234,191 @@ ModeTable::FreeSurface read_free_surface(hid_t root) {
   return f;
 }
 
+// The root attributes (docs/physics.md §4).
+void write_root_attributes(hid_t root, const ModeTable& t) {
+  put_string(root, "format", kModeTableFormat);
+  put_long(root, "version", t.free_surface.present() ? kFreeSurfaceTableVersion : kModeTableVersion);
+  put_string(root, "shape", t.shape);
+  std::string dims;
+  for (const auto& [k, v] : t.dimensions) {
+    put_double(root, k, v);
+    dims += (dims.empty() ? "" : ",") + k;
+  }
+  put_string(root, "dimension_names", dims);
+  put_long(root, "fe_order", t.fe_order);
+  put_double(root, "mesh_h", t.mesh_h);
+  if (t.mesh_h_radial > 0) put_double(root, "mesh_h_radial", t.mesh_h_radial);
+  put_long(root, "ndof", t.ndof);
+  put_long(root, "m", t.m);
+  put_double(root, "volume", t.volume);
+  put_double(root, "centroid_z", t.centroid_z);
+  put_double(root, "A_f", t.A_f);
+  put_double(root, "C_f", t.C_f);
+  put_double(root, "J_zh", t.J_zh);
+  put_double(root, "sum_rule", t.sum_rule);
+  put_double(root, "coverage", t.coverage);
+  put_string(root, "solver", t.solver);
+  put_double(root, "tolerance", t.tolerance);
+  put_double(root, "wall_seconds", t.wall_seconds);
+  put_string(root, "normalisation", t.normalisation);
+  put_double(root, "ekman", t.ekman);
+  if (t.mesh_h_wall > 0) put_double(root, "mesh_h_wall", t.mesh_h_wall);
+  if (t.response_fit()) {
+    put_double(root, "fit_lo", t.fit_lo);
+    put_double(root, "fit_hi", t.fit_hi);
+    put_double(root, "fit_error", t.fit_error);
+  }
+  if (!t.convergence_reference.empty()) {
+    put_string(root, "convergence_reference", t.convergence_reference);
+    put_double(root, "convergence_tolerance", t.convergence_tolerance);
+  }
+}
+
+// /modes: one entry per row.
+void write_modes_group(hid_t root, const ModeTable& t) {
+  Hid modes(H5Gcreate2(root, "modes", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+  put_vector(modes.get(), "kappa", t.kappa, H5T_NATIVE_DOUBLE);
+  put_vector(modes.get(), "lambda", t.lambda, H5T_NATIVE_DOUBLE);
+  put_vector(modes.get(), "E", t.E, H5T_NATIVE_DOUBLE);
+  put_vector(modes.get(), "a", t.a, H5T_NATIVE_DOUBLE);
+  put_vector(modes.get(), "N2", t.N2, H5T_NATIVE_DOUBLE);
+  put_vector(modes.get(), "residual", t.residual, H5T_NATIVE_DOUBLE);
+  if (!t.spread.empty()) put_vector(modes.get(), "spread", t.spread, H5T_NATIVE_DOUBLE);
+  if (!t.members.empty()) put_vector(modes.get(), "members", t.members, H5T_NATIVE_INT);
+  if (!t.dlambda.empty()) put_vector(modes.get(), "dlambda", t.dlambda, H5T_NATIVE_DOUBLE);
+  if (!t.dE.empty()) put_vector(modes.get(), "dE", t.dE, H5T_NATIVE_DOUBLE);
+  if (!t.converged.empty()) put_vector(modes.get(), "converged", t.converged, H5T_NATIVE_INT);
+  if (t.viscous()) {
+    put_vector(modes.get(), "decay", t.decay, H5T_NATIVE_DOUBLE);
+    put_vector(modes.get(), "E_imag", t.E_imag, H5T_NATIVE_DOUBLE);
+    put_vector(modes.get(), "a_imag", t.a_imag, H5T_NATIVE_DOUBLE);
+  }
+}
+
+// /bands, /galerkin, /free_surface, /provenance where the table has them.
+void write_optional_groups(hid_t root, const ModeTable& t) {
+  if (t.bands.size() > 0) {
+    Hid bands(H5Gcreate2(root, "bands", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+    put_vector(bands.get(), "lo", t.bands.lo, H5T_NATIVE_DOUBLE);
+    put_vector(bands.get(), "hi", t.bands.hi, H5T_NATIVE_DOUBLE);
+    put_vector(bands.get(), "E", t.bands.E, H5T_NATIVE_DOUBLE);
+    put_vector(bands.get(), "lambda_mean", t.bands.lambda_mean, H5T_NATIVE_DOUBLE);
+  }
+  if (t.has_galerkin()) {
+    Hid gal(H5Gcreate2(root, "galerkin", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+    put_vector(gal.get(), "gram_re", t.galerkin.gram_re, H5T_NATIVE_DOUBLE);
+    put_vector(gal.get(), "gram_im", t.galerkin.gram_im, H5T_NATIVE_DOUBLE);
+    put_vector(gal.get(), "viscous_re", t.galerkin.viscous_re, H5T_NATIVE_DOUBLE);
+    put_vector(gal.get(), "viscous_im", t.galerkin.viscous_im, H5T_NATIVE_DOUBLE);
+    put_double(gal.get(), "dissipation_mismatch", t.galerkin.dissipation_mismatch);
+    if (!t.galerkin.coupling_re.empty()) {
+      put_vector(gal.get(), "coupling_re", t.galerkin.coupling_re, H5T_NATIVE_DOUBLE);
+      put_vector(gal.get(), "coupling_im", t.galerkin.coupling_im, H5T_NATIVE_DOUBLE);
+    }
+  }
+  if (t.free_surface.present()) write_free_surface(root, t.free_surface);
+  if (!t.geometry_source.empty() || !t.command_line.empty()) {
+    Hid prov(H5Gcreate2(root, "provenance", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+    put_text(prov.get(), "geometry_source", t.geometry_source);
+    put_text(prov.get(), "geometry_text", t.geometry_text);
+    put_text(prov.get(), "command_line", t.command_line);
+  }
+}
+
+// The root attributes (docs/physics.md §4); every one checked for its class and for one element (get_double, ...).
+void read_root_attributes(hid_t root, ModeTable& t) {
+  if (get_long(root, "version") > kFreeSurfaceTableVersion)
+    throw std::runtime_error("mode table version is newer than this program understands");
+  t.shape = get_string(root, "shape");
+  if (has_attr(root, "dimension_names")) {
+    std::string names = get_string(root, "dimension_names");
+    std::size_t pos = 0;
+    while (pos < names.size()) {
+      std::size_t end = names.find(',', pos);
+      if (end == std::string::npos) end = names.size();
+      std::string k = names.substr(pos, end - pos);
+      if (!k.empty()) t.dimensions[k] = get_double(root, k);
+      pos = end + 1;
+    }
+  }
+  t.fe_order = static_cast<int>(get_long(root, "fe_order"));
+  t.mesh_h = get_double(root, "mesh_h");
+  if (has_attr(root, "mesh_h_radial")) t.mesh_h_radial = get_double(root, "mesh_h_radial");
+  t.ndof = get_long(root, "ndof");
+  t.m = static_cast<int>(get_long(root, "m"));
+  t.volume = get_double(root, "volume");
+  t.centroid_z = get_double(root, "centroid_z");
+  t.A_f = get_double(root, "A_f");
+  t.C_f = get_double(root, "C_f");
+  t.J_zh = get_double(root, "J_zh");
+  t.sum_rule = get_double(root, "sum_rule");
+  t.coverage = get_double(root, "coverage");
+  t.solver = get_string(root, "solver");
+  t.tolerance = get_double(root, "tolerance");
+  t.wall_seconds = get_double(root, "wall_seconds");
+  if (has_attr(root, "normalisation")) t.normalisation = get_string(root, "normalisation");
+  if (has_attr(root, "ekman")) t.ekman = get_double(root, "ekman");
+  if (has_attr(root, "mesh_h_wall")) t.mesh_h_wall = get_double(root, "mesh_h_wall");
+  if (has_attr(root, "fit_lo") || has_attr(root, "fit_hi") || has_attr(root, "fit_error")) {
+    t.fit_lo = get_double(root, "fit_lo");
+    t.fit_hi = get_double(root, "fit_hi");
+    t.fit_error = get_double(root, "fit_error");
+  }
+  if (has_attr(root, "convergence_reference")) {
+    t.convergence_reference = get_string(root, "convergence_reference");
+    t.convergence_tolerance = get_double(root, "convergence_tolerance");
+  }
+}
+
+// /modes: the required columns and the optional ones.
+void read_modes_group(hid_t root, ModeTable& t) {
+  if (H5Lexists(root, "modes", H5P_DEFAULT) <= 0) throw std::runtime_error("missing group /modes");
+  Hid modes(H5Gopen2(root, "modes", H5P_DEFAULT), H5Gclose);
+  t.kappa = get_vector<double>(modes.get(), "kappa", H5T_NATIVE_DOUBLE, true);
+  t.lambda = get_vector<double>(modes.get(), "lambda", H5T_NATIVE_DOUBLE, true);
+  t.E = get_vector<double>(modes.get(), "E", H5T_NATIVE_DOUBLE, true);
+  t.a = get_vector<double>(modes.get(), "a", H5T_NATIVE_DOUBLE, true);
+  t.N2 = get_vector<double>(modes.get(), "N2", H5T_NATIVE_DOUBLE, true);
+  t.residual = get_vector<double>(modes.get(), "residual", H5T_NATIVE_DOUBLE, true);
+  t.spread = get_vector<double>(modes.get(), "spread", H5T_NATIVE_DOUBLE, false);
+  t.members = get_vector<int>(modes.get(), "members", H5T_NATIVE_INT, false);
+  t.dlambda = get_vector<double>(modes.get(), "dlambda", H5T_NATIVE_DOUBLE, false);
+  t.dE = get_vector<double>(modes.get(), "dE", H5T_NATIVE_DOUBLE, false);
+  t.converged = get_vector<int>(modes.get(), "converged", H5T_NATIVE_INT, false);
+  t.decay = get_vector<double>(modes.get(), "decay", H5T_NATIVE_DOUBLE, false);
+  t.E_imag = get_vector<double>(modes.get(), "E_imag", H5T_NATIVE_DOUBLE, false);
+  t.a_imag = get_vector<double>(modes.get(), "a_imag", H5T_NATIVE_DOUBLE, false);
+}
+
+// /bands, /galerkin, /free_surface, /provenance where the file has them.
+void read_optional_groups(hid_t root, ModeTable& t) {
+  if (H5Lexists(root, "bands", H5P_DEFAULT) > 0) {
+    Hid bands(H5Gopen2(root, "bands", H5P_DEFAULT), H5Gclose);
+    t.bands.lo = get_vector<double>(bands.get(), "lo", H5T_NATIVE_DOUBLE, true);
+    t.bands.hi = get_vector<double>(bands.get(), "hi", H5T_NATIVE_DOUBLE, true);
+    t.bands.E = get_vector<double>(bands.get(), "E", H5T_NATIVE_DOUBLE, true);
+    t.bands.lambda_mean = get_vector<double>(bands.get(), "lambda_mean", H5T_NATIVE_DOUBLE, true);
+  }
+  if (H5Lexists(root, "galerkin", H5P_DEFAULT) > 0) {
+    Hid gal(H5Gopen2(root, "galerkin", H5P_DEFAULT), H5Gclose);
+    t.galerkin.gram_re = get_vector<double>(gal.get(), "gram_re", H5T_NATIVE_DOUBLE, true);
+    t.galerkin.gram_im = get_vector<double>(gal.get(), "gram_im", H5T_NATIVE_DOUBLE, true);
+    t.galerkin.viscous_re = get_vector<double>(gal.get(), "viscous_re", H5T_NATIVE_DOUBLE, true);
+    t.galerkin.viscous_im = get_vector<double>(gal.get(), "viscous_im", H5T_NATIVE_DOUBLE, true);
+    t.galerkin.coupling_re = get_vector<double>(gal.get(), "coupling_re", H5T_NATIVE_DOUBLE, false);
+    t.galerkin.coupling_im = get_vector<double>(gal.get(), "coupling_im", H5T_NATIVE_DOUBLE, false);
+    if (has_attr(gal.get(), "dissipation_mismatch"))
+      t.galerkin.dissipation_mismatch = get_double(gal.get(), "dissipation_mismatch");
+  }
+  if (H5Lexists(root, "free_surface", H5P_DEFAULT) > 0) t.free_surface = read_free_surface(root);
+  if (H5Lexists(root, "provenance", H5P_DEFAULT) > 0) {
+    Hid prov(H5Gopen2(root, "provenance", H5P_DEFAULT), H5Gclose);
+    t.geometry_source = get_text(prov.get(), "geometry_source");
+    t.geometry_text = get_text(prov.get(), "geometry_text");
+    t.command_line = get_text(prov.get(), "command_line");
+  }
+}
+
 }  // namespace
 
 void ModeTable::validate() const {
@@ -383,85 +568,9 @@ void write_mode_table(const ModeTable& t, const std::filesystem::path& path, con
       Hid file(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()), H5Fclose);
       if (!file.ok()) throw std::runtime_error("cannot create " + path.string());
       hid_t root = file.get();
-      put_string(root, "format", kModeTableFormat);
-      put_long(root, "version", t.free_surface.present() ? kFreeSurfaceTableVersion : kModeTableVersion);
-      put_string(root, "shape", t.shape);
-      std::string dims;
-      for (const auto& [k, v] : t.dimensions) {
-        put_double(root, k, v);
-        dims += (dims.empty() ? "" : ",") + k;
-      }
-      put_string(root, "dimension_names", dims);
-      put_long(root, "fe_order", t.fe_order);
-      put_double(root, "mesh_h", t.mesh_h);
-      if (t.mesh_h_radial > 0) put_double(root, "mesh_h_radial", t.mesh_h_radial);
-      put_long(root, "ndof", t.ndof);
-      put_long(root, "m", t.m);
-      put_double(root, "volume", t.volume);
-      put_double(root, "centroid_z", t.centroid_z);
-      put_double(root, "A_f", t.A_f);
-      put_double(root, "C_f", t.C_f);
-      put_double(root, "J_zh", t.J_zh);
-      put_double(root, "sum_rule", t.sum_rule);
-      put_double(root, "coverage", t.coverage);
-      put_string(root, "solver", t.solver);
-      put_double(root, "tolerance", t.tolerance);
-      put_double(root, "wall_seconds", t.wall_seconds);
-      put_string(root, "normalisation", t.normalisation);
-      put_double(root, "ekman", t.ekman);
-      if (t.mesh_h_wall > 0) put_double(root, "mesh_h_wall", t.mesh_h_wall);
-      if (t.response_fit()) {
-        put_double(root, "fit_lo", t.fit_lo);
-        put_double(root, "fit_hi", t.fit_hi);
-        put_double(root, "fit_error", t.fit_error);
-      }
-      Hid modes(H5Gcreate2(root, "modes", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
-      put_vector(modes.get(), "kappa", t.kappa, H5T_NATIVE_DOUBLE);
-      put_vector(modes.get(), "lambda", t.lambda, H5T_NATIVE_DOUBLE);
-      put_vector(modes.get(), "E", t.E, H5T_NATIVE_DOUBLE);
-      put_vector(modes.get(), "a", t.a, H5T_NATIVE_DOUBLE);
-      put_vector(modes.get(), "N2", t.N2, H5T_NATIVE_DOUBLE);
-      put_vector(modes.get(), "residual", t.residual, H5T_NATIVE_DOUBLE);
-      if (!t.spread.empty()) put_vector(modes.get(), "spread", t.spread, H5T_NATIVE_DOUBLE);
-      if (!t.members.empty()) put_vector(modes.get(), "members", t.members, H5T_NATIVE_INT);
-      if (!t.dlambda.empty()) put_vector(modes.get(), "dlambda", t.dlambda, H5T_NATIVE_DOUBLE);
-      if (!t.dE.empty()) put_vector(modes.get(), "dE", t.dE, H5T_NATIVE_DOUBLE);
-      if (!t.converged.empty()) put_vector(modes.get(), "converged", t.converged, H5T_NATIVE_INT);
-      if (t.viscous()) {
-        put_vector(modes.get(), "decay", t.decay, H5T_NATIVE_DOUBLE);
-        put_vector(modes.get(), "E_imag", t.E_imag, H5T_NATIVE_DOUBLE);
-        put_vector(modes.get(), "a_imag", t.a_imag, H5T_NATIVE_DOUBLE);
-      }
-      if (!t.convergence_reference.empty()) {
-        put_string(root, "convergence_reference", t.convergence_reference);
-        put_double(root, "convergence_tolerance", t.convergence_tolerance);
-      }
-      if (t.bands.size() > 0) {
-        Hid bands(H5Gcreate2(root, "bands", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
-        put_vector(bands.get(), "lo", t.bands.lo, H5T_NATIVE_DOUBLE);
-        put_vector(bands.get(), "hi", t.bands.hi, H5T_NATIVE_DOUBLE);
-        put_vector(bands.get(), "E", t.bands.E, H5T_NATIVE_DOUBLE);
-        put_vector(bands.get(), "lambda_mean", t.bands.lambda_mean, H5T_NATIVE_DOUBLE);
-      }
-      if (t.has_galerkin()) {
-        Hid gal(H5Gcreate2(root, "galerkin", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
-        put_vector(gal.get(), "gram_re", t.galerkin.gram_re, H5T_NATIVE_DOUBLE);
-        put_vector(gal.get(), "gram_im", t.galerkin.gram_im, H5T_NATIVE_DOUBLE);
-        put_vector(gal.get(), "viscous_re", t.galerkin.viscous_re, H5T_NATIVE_DOUBLE);
-        put_vector(gal.get(), "viscous_im", t.galerkin.viscous_im, H5T_NATIVE_DOUBLE);
-        put_double(gal.get(), "dissipation_mismatch", t.galerkin.dissipation_mismatch);
-        if (!t.galerkin.coupling_re.empty()) {
-          put_vector(gal.get(), "coupling_re", t.galerkin.coupling_re, H5T_NATIVE_DOUBLE);
-          put_vector(gal.get(), "coupling_im", t.galerkin.coupling_im, H5T_NATIVE_DOUBLE);
-        }
-      }
-      if (t.free_surface.present()) write_free_surface(root, t.free_surface);
-      if (!t.geometry_source.empty() || !t.command_line.empty()) {
-        Hid prov(H5Gcreate2(root, "provenance", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
-        put_text(prov.get(), "geometry_source", t.geometry_source);
-        put_text(prov.get(), "geometry_text", t.geometry_text);
-        put_text(prov.get(), "command_line", t.command_line);
-      }
+      write_root_attributes(root, t);
+      write_modes_group(root, t);
+      write_optional_groups(root, t);
       if (fields) write_fields_group(root, *fields);
     }
     // The companion names the table by its final name, relative to their common folder.
@@ -499,88 +608,9 @@ ModeTable read_mode_table(const std::filesystem::path& path) {
     if (!has_attr(root, "format") || get_string(root, "format") != kModeTableFormat)
       throw std::runtime_error("not a mode table (root attribute format != \"cavity-mode-table\")");
     ModeTable t;
-    if (get_long(root, "version") > kFreeSurfaceTableVersion)
-      throw std::runtime_error("mode table version is newer than this program understands");
-    t.shape = get_string(root, "shape");
-    if (has_attr(root, "dimension_names")) {
-      std::string names = get_string(root, "dimension_names");
-      std::size_t pos = 0;
-      while (pos < names.size()) {
-        std::size_t end = names.find(',', pos);
-        if (end == std::string::npos) end = names.size();
-        std::string k = names.substr(pos, end - pos);
-        if (!k.empty()) t.dimensions[k] = get_double(root, k);
-        pos = end + 1;
-      }
-    }
-    t.fe_order = static_cast<int>(get_long(root, "fe_order"));
-    t.mesh_h = get_double(root, "mesh_h");
-    if (has_attr(root, "mesh_h_radial")) t.mesh_h_radial = get_double(root, "mesh_h_radial");
-    t.ndof = get_long(root, "ndof");
-    t.m = static_cast<int>(get_long(root, "m"));
-    t.volume = get_double(root, "volume");
-    t.centroid_z = get_double(root, "centroid_z");
-    t.A_f = get_double(root, "A_f");
-    t.C_f = get_double(root, "C_f");
-    t.J_zh = get_double(root, "J_zh");
-    t.sum_rule = get_double(root, "sum_rule");
-    t.coverage = get_double(root, "coverage");
-    t.solver = get_string(root, "solver");
-    t.tolerance = get_double(root, "tolerance");
-    t.wall_seconds = get_double(root, "wall_seconds");
-    if (has_attr(root, "normalisation")) t.normalisation = get_string(root, "normalisation");
-    if (has_attr(root, "ekman")) t.ekman = get_double(root, "ekman");
-    if (has_attr(root, "mesh_h_wall")) t.mesh_h_wall = get_double(root, "mesh_h_wall");
-    if (has_attr(root, "fit_lo") || has_attr(root, "fit_hi") || has_attr(root, "fit_error")) {
-      t.fit_lo = get_double(root, "fit_lo");
-      t.fit_hi = get_double(root, "fit_hi");
-      t.fit_error = get_double(root, "fit_error");
-    }
-    if (H5Lexists(root, "modes", H5P_DEFAULT) <= 0) throw std::runtime_error("missing group /modes");
-    Hid modes(H5Gopen2(root, "modes", H5P_DEFAULT), H5Gclose);
-    t.kappa = get_vector<double>(modes.get(), "kappa", H5T_NATIVE_DOUBLE, true);
-    t.lambda = get_vector<double>(modes.get(), "lambda", H5T_NATIVE_DOUBLE, true);
-    t.E = get_vector<double>(modes.get(), "E", H5T_NATIVE_DOUBLE, true);
-    t.a = get_vector<double>(modes.get(), "a", H5T_NATIVE_DOUBLE, true);
-    t.N2 = get_vector<double>(modes.get(), "N2", H5T_NATIVE_DOUBLE, true);
-    t.residual = get_vector<double>(modes.get(), "residual", H5T_NATIVE_DOUBLE, true);
-    t.spread = get_vector<double>(modes.get(), "spread", H5T_NATIVE_DOUBLE, false);
-    t.members = get_vector<int>(modes.get(), "members", H5T_NATIVE_INT, false);
-    t.dlambda = get_vector<double>(modes.get(), "dlambda", H5T_NATIVE_DOUBLE, false);
-    t.dE = get_vector<double>(modes.get(), "dE", H5T_NATIVE_DOUBLE, false);
-    t.converged = get_vector<int>(modes.get(), "converged", H5T_NATIVE_INT, false);
-    t.decay = get_vector<double>(modes.get(), "decay", H5T_NATIVE_DOUBLE, false);
-    t.E_imag = get_vector<double>(modes.get(), "E_imag", H5T_NATIVE_DOUBLE, false);
-    t.a_imag = get_vector<double>(modes.get(), "a_imag", H5T_NATIVE_DOUBLE, false);
-    if (has_attr(root, "convergence_reference")) {
-      t.convergence_reference = get_string(root, "convergence_reference");
-      t.convergence_tolerance = get_double(root, "convergence_tolerance");
-    }
-    if (H5Lexists(root, "bands", H5P_DEFAULT) > 0) {
-      Hid bands(H5Gopen2(root, "bands", H5P_DEFAULT), H5Gclose);
-      t.bands.lo = get_vector<double>(bands.get(), "lo", H5T_NATIVE_DOUBLE, true);
-      t.bands.hi = get_vector<double>(bands.get(), "hi", H5T_NATIVE_DOUBLE, true);
-      t.bands.E = get_vector<double>(bands.get(), "E", H5T_NATIVE_DOUBLE, true);
-      t.bands.lambda_mean = get_vector<double>(bands.get(), "lambda_mean", H5T_NATIVE_DOUBLE, true);
-    }
-    if (H5Lexists(root, "galerkin", H5P_DEFAULT) > 0) {
-      Hid gal(H5Gopen2(root, "galerkin", H5P_DEFAULT), H5Gclose);
-      t.galerkin.gram_re = get_vector<double>(gal.get(), "gram_re", H5T_NATIVE_DOUBLE, true);
-      t.galerkin.gram_im = get_vector<double>(gal.get(), "gram_im", H5T_NATIVE_DOUBLE, true);
-      t.galerkin.viscous_re = get_vector<double>(gal.get(), "viscous_re", H5T_NATIVE_DOUBLE, true);
-      t.galerkin.viscous_im = get_vector<double>(gal.get(), "viscous_im", H5T_NATIVE_DOUBLE, true);
-      t.galerkin.coupling_re = get_vector<double>(gal.get(), "coupling_re", H5T_NATIVE_DOUBLE, false);
-      t.galerkin.coupling_im = get_vector<double>(gal.get(), "coupling_im", H5T_NATIVE_DOUBLE, false);
-      if (has_attr(gal.get(), "dissipation_mismatch"))
-        t.galerkin.dissipation_mismatch = get_double(gal.get(), "dissipation_mismatch");
-    }
-    if (H5Lexists(root, "free_surface", H5P_DEFAULT) > 0) t.free_surface = read_free_surface(root);
-    if (H5Lexists(root, "provenance", H5P_DEFAULT) > 0) {
-      Hid prov(H5Gopen2(root, "provenance", H5P_DEFAULT), H5Gclose);
-      t.geometry_source = get_text(prov.get(), "geometry_source");
-      t.geometry_text = get_text(prov.get(), "geometry_text");
-      t.command_line = get_text(prov.get(), "command_line");
-    }
+    read_root_attributes(root, t);
+    read_modes_group(root, t);
+    read_optional_groups(root, t);
     t.validate();
     t.checksummed = checksummed;
     return t;

@@ -254,45 +254,45 @@ void check_modes_finite(const Scene& scene, const std::vector<FluidMode>& modes)
 }
 }  // namespace
 
-ChainModel build_model(const Scene& scene, TableCache* tables, bool linear_keys_only) {
-  if (linear_keys_only) require_linear_scene(scene);
-  ChainModel cm;
-  const int n = static_cast<int>(scene.size());
-  cm.n = n;
-  cm.free_chain = scene.free_chain;
-  cm.g = scene.gravity;
-  for (int k = 0; k < n; ++k) {
-    const BodySpec& bs = scene.bodies[k];
-    BodyModel b;
-    b.omega = bs.spin;
-    b.s = (k + 1 < n) ? bs.next_joint : 0.0;
-    double m = bs.mass, first = bs.mass * bs.com, A = bs.A, C = bs.C;
-    if (bs.cavity) {
-      add_fluid(scene, k, *bs.cavity, b, cm.modes, tables);
-      const double d = b.fluid_center;
-      m += b.m_f;
-      first += b.m_f * d;
-      A += b.A_f + b.m_f * d * d;  // parallel-axis theorem: fluid inertia about O_k
-      // A partially filled tank's surface re-centres on the tilted spin axis: inertia K(O_k) more (docs/physics.md §2).
-      A += b.K_free_surface;
-      if (b.free_surface && (k > 0 || scene.free_chain))
-        fail(scene, "body[" + std::to_string(k + 1) + "].cavity.table",
-             "a partially filled tank's liquid follows the translation of its body's joint, which the chain does not "
-             "model yet: only the first body of a fixed chain may carry one (docs/rom.md, \"Partially filled tanks\")");
-      if (b.free_surface && !linear_keys_only)
-        fail(scene, "body[" + std::to_string(k + 1) + "].cavity.table",
-             "the nonlinear chain does not take a partially filled tank yet (the linear model (26) does)");
-      C += b.C_f;
-    }
-    b.m = m;
-    b.c = (m > 0) ? first / m : 0.0;
-    b.A = A;
-    b.C = C;
-    cm.bodies.push_back(b);
-  }
+namespace {
 
-  // Fixed chain, Kononov after (10) and (26): A'_k = A_k + s_k^2 sum_{i>k} m_i,
-  // a_k = m_k c_k + s_k sum_{i>k} m_i, M_ki = a_k s_i (i<k), M_ki = s_k a_i (i>k).
+// Body k with its frozen fluid (docs/physics.md §3: m_k, A_k, C_k include it; A_k about O_k) and its tank's modes.
+BodyModel body_model(const Scene& scene, int k, TableCache* tables, bool linear_keys_only,
+                     std::vector<FluidMode>& modes) {
+  const int n = static_cast<int>(scene.size());
+  const BodySpec& bs = scene.bodies[k];
+  BodyModel b;
+  b.omega = bs.spin;
+  b.s = (k + 1 < n) ? bs.next_joint : 0.0;
+  double m = bs.mass, first = bs.mass * bs.com, A = bs.A, C = bs.C;
+  if (bs.cavity) {
+    add_fluid(scene, k, *bs.cavity, b, modes, tables);
+    const double d = b.fluid_center;
+    m += b.m_f;
+    first += b.m_f * d;
+    A += b.A_f + b.m_f * d * d;  // parallel-axis theorem: fluid inertia about O_k
+    // A partially filled tank's surface re-centres on the tilted spin axis: inertia K(O_k) more (docs/physics.md §2).
+    A += b.K_free_surface;
+    if (b.free_surface && (k > 0 || scene.free_chain))
+      fail(scene, "body[" + std::to_string(k + 1) + "].cavity.table",
+           "a partially filled tank's liquid follows the translation of its body's joint, which the chain does not "
+           "model yet: only the first body of a fixed chain may carry one (docs/rom.md, \"Partially filled tanks\")");
+    if (b.free_surface && !linear_keys_only)
+      fail(scene, "body[" + std::to_string(k + 1) + "].cavity.table",
+           "the nonlinear chain does not take a partially filled tank yet (the linear model (26) does)");
+    C += b.C_f;
+  }
+  b.m = m;
+  b.c = (m > 0) ? first / m : 0.0;
+  b.A = A;
+  b.C = C;
+  return b;
+}
+
+// Fixed chain, Kononov after (10) and (26): A'_k = A_k + s_k^2 sum_{i>k} m_i,
+// a_k = m_k c_k + s_k sum_{i>k} m_i, M_ki = a_k s_i (i<k), M_ki = s_k a_i (i>k); a free chain's M less a aᵀ/m.
+void set_inertia(const Scene& scene, ChainModel& cm) {
+  const int n = cm.n;
   cm.a.resize(n);
   cm.M.setZero(n, n);
   double tail = 0;  // sum_{i>k} m_i
@@ -311,7 +311,11 @@ ChainModel build_model(const Scene& scene, TableCache* tables, bool linear_keys_
     if (!(mtot > 0)) fail(scene, "body", "a free chain needs a positive total mass");
     cm.M -= cm.a * cm.a.transpose() / mtot;
   }
+}
 
+// Gravity and the joints' stiffness (Kononov (27)) and friction (Batyr (43)); the gyroscopic C_k ω_k0.
+void set_stiffness_friction_gyro(const Scene& scene, ChainModel& cm) {
+  const int n = cm.n;
   cm.K.setZero(n, n);
   if (!scene.free_chain)  // gravity: - a_k g u_k in (26); a free chain falls freely (no torque)
     for (int k = 0; k < n; ++k) cm.K(k, k) -= cm.a[k] * scene.gravity;
@@ -331,13 +335,11 @@ ChainModel build_model(const Scene& scene, TableCache* tables, bool linear_keys_
   }
   cm.G.resize(n);
   for (int k = 0; k < n; ++k) cm.G[k] = cm.bodies[k].C * cm.bodies[k].omega;
+}
 
-  // Scene values that are each in range can still overflow together (mass 1e308 times com times g): the
-  // matrices of (26) must be finite before any solver sees them.
-  if (!cm.M.allFinite() || !cm.K.allFinite() || !cm.D.allFinite() || !cm.G.allFinite())
-    fail(scene, "body", "the chain's inertia, stiffness, friction or gyroscopic terms overflow double precision "
-                        "(masses, inertias, lengths, spins or gravity too large together)");
-  check_modes_finite(scene, cm.modes);
+// M_eff = M − diag(Σ E + E_rem), which must stay positive definite: the shells must carry inertia of their own.
+void set_effective_inertia(const Scene& scene, ChainModel& cm) {
+  const int n = cm.n;
   cm.M_eff = cm.M;
   cm.M_eff_imag.setZero(n);
   for (int k = 0; k < n; ++k) {
@@ -357,6 +359,26 @@ ChainModel build_model(const Scene& scene, TableCache* tables, bool linear_keys_
        << lo << " kg m^2): the shell carries no inertia beyond what the fluid modes take";
     fail(scene, "body", os.str());
   }
+}
+
+}  // namespace
+
+ChainModel build_model(const Scene& scene, TableCache* tables, bool linear_keys_only) {
+  if (linear_keys_only) require_linear_scene(scene);
+  ChainModel cm;
+  cm.n = static_cast<int>(scene.size());
+  cm.free_chain = scene.free_chain;
+  cm.g = scene.gravity;
+  for (int k = 0; k < cm.n; ++k) cm.bodies.push_back(body_model(scene, k, tables, linear_keys_only, cm.modes));
+  set_inertia(scene, cm);
+  set_stiffness_friction_gyro(scene, cm);
+  // Scene values that are each in range can still overflow together (mass 1e308 times com times g): the
+  // matrices of (26) must be finite before any solver sees them.
+  if (!cm.M.allFinite() || !cm.K.allFinite() || !cm.D.allFinite() || !cm.G.allFinite())
+    fail(scene, "body", "the chain's inertia, stiffness, friction or gyroscopic terms overflow double precision "
+                        "(masses, inertias, lengths, spins or gravity too large together)");
+  check_modes_finite(scene, cm.modes);
+  set_effective_inertia(scene, cm);
   return cm;
 }
 
