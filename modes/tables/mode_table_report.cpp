@@ -79,6 +79,34 @@ std::string convergence_note(const ModeTable& t) {
                      failed, t.size(), t.convergence_tolerance, t.convergence_reference, trusted);
 }
 
+namespace {
+
+// /modes as JSON: one array per column.
+nlohmann::json modes_json(const ModeTable& t) {
+  nlohmann::json m;
+  m["kappa"] = t.kappa;
+  m["lambda"] = t.lambda;
+  m["E"] = t.E;
+  m["a"] = t.a;
+  m["N2"] = t.N2;
+  m["residual"] = t.residual;
+  if (!t.spread.empty()) m["spread"] = t.spread;
+  if (t.viscous()) {
+    m["decay"] = t.decay;
+    m["E_imag"] = t.E_imag;
+    m["a_imag"] = t.a_imag;
+  }
+  if (!t.members.empty()) m["members"] = t.members;
+  if (!t.converged.empty()) {
+    m["dlambda"] = t.dlambda;
+    m["dE"] = t.dE;
+    m["converged"] = t.converged;
+  }
+  return m;
+}
+
+}  // namespace
+
 std::string table_json(const ModeTable& t) {
   nlohmann::json j;
   j["format"] = kModeTableFormat;
@@ -120,29 +148,13 @@ std::string table_json(const ModeTable& t) {
   if (!t.geometry_source.empty() || !t.command_line.empty())
     j["provenance"] = {{"geometry_source", t.geometry_source}, {"geometry_text", t.geometry_text},
                        {"command_line", t.command_line}};
-  nlohmann::json m;
-  m["kappa"] = t.kappa;
-  m["lambda"] = t.lambda;
-  m["E"] = t.E;
-  m["a"] = t.a;
-  m["N2"] = t.N2;
-  m["residual"] = t.residual;
-  if (!t.spread.empty()) m["spread"] = t.spread;
-  if (t.viscous()) {
-    m["decay"] = t.decay;
-    m["E_imag"] = t.E_imag;
-    m["a_imag"] = t.a_imag;
-  }
-  if (!t.members.empty()) m["members"] = t.members;
   if (!t.converged.empty()) {
     j["convergence_reference"] = t.convergence_reference;
     j["convergence_tolerance"] = t.convergence_tolerance;
-    m["dlambda"] = t.dlambda;
-    m["dE"] = t.dE;
-    m["converged"] = t.converged;
   }
   if (t.bands.size() > 0)
     j["bands"] = {{"lo", t.bands.lo}, {"hi", t.bands.hi}, {"E", t.bands.E}, {"lambda_mean", t.bands.lambda_mean}};
+  const nlohmann::json m = modes_json(t);
   j["modes"] = m;
   return j.dump(2) + "\n";
 }
