@@ -63,6 +63,19 @@ SeparableGrid annulus_grid(const PartialFillTableSettings& req, double b) {
   return separable_grid(annulus, req.grid);
 }
 
+// /free_surface's attributes (its per-row t is added with the rows).
+ModeTable::FreeSurface free_surface_attributes(const PartialFillSpectrum& s, double fill) {
+  ModeTable::FreeSurface f;
+  f.fill = fill;
+  f.radius = s.surface_radius;
+  f.K0 = s.K0;
+  f.K1 = s.K1;
+  f.K2 = s.K2;
+  f.J1 = s.J_D1;
+  f.J2 = s.J_D2;
+  return f;
+}
+
 }  // namespace
 
 ModeTable partially_filled_cylinder_table(const PartialFillTableSettings& req,
@@ -101,13 +114,7 @@ ModeTable partially_filled_cylinder_table(const PartialFillTableSettings& req,
       "by a dense eigensolver (Eigen) of its companion form; sum of E over all pairs - (A_f + K2 - J_zh) = {:.1e} "
       "(relative)", grid.order, grid.radial_elements(), grid.axial_elements(), (s.sum_E - s.sum_rule) / s.sum_rule);
   t.tolerance = std::numeric_limits<double>::epsilon();
-  t.free_surface.fill = req.fill;
-  t.free_surface.radius = b;
-  t.free_surface.K0 = s.K0;
-  t.free_surface.K1 = s.K1;
-  t.free_surface.K2 = s.K2;
-  t.free_surface.J1 = s.J_D1;
-  t.free_surface.J2 = s.J_D2;
+  t.free_surface = free_surface_attributes(s, req.fill);
   if (req.check_convergence) {
     const SeparableGrid c = coarser(grid);
     if (report) report("convergence check on a coarser grid");
