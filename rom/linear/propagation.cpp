@@ -92,168 +92,216 @@ double estimate_integrator_steps(const std::string& method, double rho, const Ru
   return 0.0;
 }
 
+namespace {
+
+// The initial state of (26) in first-order form: the scene's tilts and rates, the fluid at rest relative to its
+// body unless the scene says otherwise.
+Eigen::VectorXcd initial_state(const ChainModel& m, const Scene& scene, const FirstOrderSystem& f) {
+  const int n = m.n, nm = m.n_modes();
+  Eigen::VectorXcd u0(n), v0(n);
+  for (int k = 0; k < n; ++k) {
+    u0[k] = scene.tilt[k];
+    v0[k] = scene.rate[k];
+  }
+  return f.to_state(m, u0, v0, initial_fluid(scene, nm));
+}
+
+// The integrators' cost before any work: refused, with why, when the scene is too stiff for them.
+double checked_spectral_radius(const FirstOrderSystem& f, const Scene& scene) {
+  const std::string& method = scene.run.method;
+  if (method != "gauss" && method != "rk45") return -1;
+  const double rho = spectral_radius_of(f);
+  const double est = estimate_integrator_steps(method, rho, scene.run);
+  if (!(est <= kMaxIntegratorSteps))
+    throw std::runtime_error(scene.file.string() + ": run.method: " + method + " would need about " + sci(est) +
+                             " steps (fastest root |sigma| = " + sci(rho) + " rad/s, t_end = " +
+                             sci(scene.run.t_end) + " s, tolerance = " + sci(scene.run.tolerance) +
+                             "; limit " + sci(kMaxIntegratorSteps) +
+                             "): the scene is too stiff for it, use method = \"exact\"");
+  return rho;
+}
+
+// Writes the states of a run into its History: tilts, fluid amplitudes relative to their bodies, the energy and,
+// with viscous tanks, the frozen chain's budget (energy_budget.hpp) and, with Galerkin tanks, the fluid's energy
+// balance (galerkin_energy.hpp).
+class Recorder {
+ public:
+  Recorder(const ChainModel& m, const FirstOrderSystem& f, double h, long steps, History& hist)
+      : m_(m), f_(f), h_(h), n_(m.n), nm_(m.n_modes()), hist_(hist), meter_(m) {
+    hist.t.resize(steps + 1);
+    hist.u.resize(steps + 1, n_);
+    hist.z.resize(steps + 1, nm_);
+    hist.H.resize(steps + 1);
+    hist.H_scale.resize(steps + 1);
+    if (m.viscous) {
+      budget_meter_.emplace(m, f);
+      budget_.resize(steps + 1);
+    }
+    if (m.viscous && galerkin_energy_unavailable(m).empty()) {
+      balance_meter_.emplace(m);
+      balance_.resize(steps + 1);
+    }
+  }
+
+  void store(long j, const Eigen::VectorXcd& y) {
+    if (budget_meter_) budget_[j] = (*budget_meter_)(y);
+    if (balance_meter_) measure_balance(j, y);
+    Eigen::VectorXcd u, v, w;
+    f_.from_state(m_, y, u, v, w);
+    hist_.t[j] = j * h_;
+    hist_.u.row(j) = u.transpose();
+    for (int l = 0; l < nm_; ++l) hist_.z(j, l) = w[l] - v[m_.modes[l].body];
+    const Energy e = meter_(u, v, w);
+    hist_.H[j] = e.total();
+    hist_.H_scale[j] = e.scale();
+  }
+
+  // Columns of re + i*im are the states at j0, j0 + 1, ... (exact propagation's blocks).
+  void store_block(long j0, const Eigen::Ref<const Eigen::MatrixXd>& re, const Eigen::Ref<const Eigen::MatrixXd>& im) {
+    const long cols = re.cols();
+    const double is = 1.0 / f_.s;
+    for (long i = 0; i < cols; ++i) {
+      const long j = j0 + i;
+      hist_.t[j] = j * h_;
+      for (int k = 0; k < n_; ++k) hist_.u(j, k) = cd(re(k, i) * is, im(k, i) * is);
+      for (int l = 0; l < nm_; ++l) {
+        const int v = n_ + m_.modes[l].body;  // z = w - u-dot of the mode's body
+        hist_.z(j, l) = cd(re(2 * n_ + l, i) - re(v, i), im(2 * n_ + l, i) - im(v, i));
+      }
+    }
+    if (budget_meter_)
+      for (long i = 0; i < cols; ++i) budget_[j0 + i] = (*budget_meter_)(re.col(i).cast<cd>() + cd(0, 1) * im.col(i).cast<cd>());
+    if (balance_meter_)
+      for (long i = 0; i < cols; ++i) measure_balance(j0 + i, re.col(i).cast<cd>() + cd(0, 1) * im.col(i).cast<cd>());
+    meter_.block(re.topRows(n_) * is, im.topRows(n_) * is, re.middleRows(n_, n_), im.middleRows(n_, n_),
+                 re.bottomRows(nm_), im.bottomRows(nm_), &hist_.H[j0], &hist_.H_scale[j0]);
+  }
+
+  // The energy's drift (no H with viscous tanks: the budget and the balance instead).
+  void finish(long steps) {
+    const double H0 = hist_.H[0], S0 = std::max(hist_.H_scale[0], 1e-300);
+    if (m_.viscous) {
+      hist_.max_energy_drift = std::numeric_limits<double>::quiet_NaN();  // no H (energy.cpp)
+      hist_.budget = energy_budget(budget_, h_);
+      if (balance_meter_) hist_.balance = energy_balance(balance_, h_);
+      return;
+    }
+    for (long j = 1; j <= steps; ++j) {
+      if (m_.has_friction()) hist_.max_energy_drift = std::max(hist_.max_energy_drift, (hist_.H[j] - hist_.H[j - 1]) / S0);
+      else hist_.max_energy_drift = std::max(hist_.max_energy_drift, std::abs(hist_.H[j] - H0) / S0);
+    }
+  }
+
+ private:
+  void measure_balance(long j, const Eigen::VectorXcd& y) {
+    Eigen::VectorXcd u, v, w;
+    f_.from_state(m_, y, u, v, w);
+    Eigen::VectorXcd z(nm_);
+    for (int l = 0; l < nm_; ++l) z[l] = w[l] - v[m_.modes[l].body];
+    balance_[j] = (*balance_meter_)(u, v, z);
+  }
+
+  const ChainModel& m_;
+  const FirstOrderSystem& f_;
+  const double h_;
+  const int n_, nm_;
+  History& hist_;
+  const EnergyMeter meter_;
+  std::optional<BudgetMeter> budget_meter_;
+  std::vector<BudgetSample> budget_;
+  std::optional<GalerkinEnergyMeter> balance_meter_;
+  std::vector<EnergySample> balance_;
+};
+
+// method = "exact": the eigen-decomposition, or the step's matrix exponential where its eigenvectors are
+// ill-conditioned.
+void run_exact(const ChainModel& m, const FirstOrderSystem& f, const Eigen::VectorXcd& y0, double h, long steps,
+               Recorder& rec, History& hist) {
+  ModalForm mf = modal_form(f, !m.dissipative(), kRealTolerance);
+  hist.eigvec_condition = mf.condition;
+  hist.integrator_steps = steps;
+  if (mf.usable) {
+    // Undamped and stable: the roots are real; drop their rounding-level imaginary parts so that
+    // |e^{i sigma t}| = 1 exactly and the energy cannot drift over long runs (the real form has
+    // exactly real roots already).
+    const bool snap = mf.undamped_real;
+    if (snap && !mf.real) snap_to_imaginary_axis(mf);
+    modal_states(mf, y0, h, steps,
+                 [&](long j0, const Eigen::Ref<const Eigen::MatrixXd>& re, const Eigen::Ref<const Eigen::MatrixXd>& im) {
+                   rec.store_block(j0, re, im);
+                 });
+    hist.method_used = snap ? "exact (eigen-decomposition, real roots)" : "exact (eigen-decomposition)";
+    return;
+  }
+  const Eigen::MatrixXcd Phi = (f.B * cd(h)).exp();
+  Eigen::VectorXcd y = y0;
+  rec.store(0, y);
+  for (long j = 1; j <= steps; ++j) {
+    y = Phi * y;
+    rec.store(j, y);
+  }
+  hist.method_used = "exact (matrix exponential of the step; eigenvectors ill-conditioned)";
+}
+
+// method = "gauss": (2,2) Pade = 2-stage Gauss-Legendre; global error ~ t_end rho^5 hs^4 / 4320 <= tol.
+void run_gauss(const FirstOrderSystem& f, const Eigen::VectorXcd& y0, double h, long steps, double rho,
+               const RunSpec& run, Recorder& rec, History& hist) {
+  long sub = 1;
+  if (rho > 0) {
+    const double hs = std::pow(4320.0 * run.tolerance / (run.t_end * std::pow(rho, 5)), 0.25);
+    sub = std::max(1L, static_cast<long>(std::ceil(h / hs)));
+  }
+  if (sub * steps > 200000000L) throw std::runtime_error("run.tolerance: gauss needs more than 2e8 steps");
+  const double hs = h / sub;
+  const Eigen::MatrixXcd P = gauss_step_matrix(f.B, hs);
+  Eigen::VectorXcd y = y0;
+  rec.store(0, y);
+  for (long j = 1; j <= steps; ++j) {
+    for (long s = 0; s < sub; ++s) y = P * y;
+    rec.store(j, y);
+  }
+  hist.method_used = "gauss (" + std::to_string(sub) + " substeps per output step)";
+  hist.integrator_steps = sub * steps;
+}
+
+// method = "rk45": Dormand-Prince with its own step control, stopping at every output time.
+void run_rk45(const FirstOrderSystem& f, const Eigen::VectorXcd& y0, double h, long steps, const RunSpec& run,
+              Recorder& rec, History& hist) {
+  Eigen::VectorXcd y = y0;
+  rec.store(0, y);
+  double hh = h;
+  long nsteps = 0;
+  for (long j = 1; j <= steps; ++j) {
+    rk45_advance(f.B, y, (j - 1) * h, j * h, run.tolerance, hh, nsteps);
+    rec.store(j, y);
+  }
+  hist.method_used = "rk45 (" + std::to_string(nsteps) + " steps)";
+  hist.integrator_steps = nsteps;
+}
+
+}  // namespace
+
 History propagate(const ChainModel& m, const Scene& scene) {
   if (!scene.run.present) throw std::runtime_error(scene.file.string() + ": run: missing [run] section");
   const auto start = std::chrono::steady_clock::now();
   timespec cpu0{};
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &cpu0);
   const FirstOrderSystem f = build_first_order(m);
-  const int n = m.n, nm = m.n_modes();
-  Eigen::VectorXcd u0(n), v0(n), z0 = Eigen::VectorXcd::Zero(nm);
-  for (int k = 0; k < n; ++k) {
-    u0[k] = scene.tilt[k];
-    v0[k] = scene.rate[k];
-  }
-  z0 = initial_fluid(scene, nm);  // at rest relative to its body unless the scene says otherwise
-  const Eigen::VectorXcd y0 = f.to_state(m, u0, v0, z0);
+  const Eigen::VectorXcd y0 = initial_state(m, scene, f);
   const double h = scene.run.output_step;
   const long steps = static_cast<long>(std::floor(scene.run.t_end / h + 1e-9));
   if (steps > 50000000L) throw std::runtime_error("run.output_step: more than 5e7 output steps");
   const std::string& method = scene.run.method;
-  double rho = -1;  // fastest |sigma|, computed once for the integrators
-  if (method == "gauss" || method == "rk45") {
-    rho = spectral_radius_of(f);
-    const double est = estimate_integrator_steps(method, rho, scene.run);
-    if (!(est <= kMaxIntegratorSteps))
-      throw std::runtime_error(scene.file.string() + ": run.method: " + method + " would need about " + sci(est) +
-                               " steps (fastest root |sigma| = " + sci(rho) + " rad/s, t_end = " +
-                               sci(scene.run.t_end) + " s, tolerance = " + sci(scene.run.tolerance) +
-                               "; limit " + sci(kMaxIntegratorSteps) +
-                               "): the scene is too stiff for it, use method = \"exact\"");
-  }
+  if (method != "exact" && method != "gauss" && method != "rk45")
+    throw std::runtime_error("run.method: unknown method " + method);
+  const double rho = checked_spectral_radius(f, scene);  // fastest |sigma|, for the integrators
 
   History hist;
-  hist.t.resize(steps + 1);
-  hist.u.resize(steps + 1, n);
-  hist.z.resize(steps + 1, nm);
-  hist.H.resize(steps + 1);
-  hist.H_scale.resize(steps + 1);
-  const EnergyMeter meter(m);
-  // With viscous tanks (no energy integral) the frozen chain's budget instead (energy_budget.hpp).
-  std::optional<BudgetMeter> budget_meter;
-  std::vector<BudgetSample> budget;
-  if (m.viscous) {
-    budget_meter.emplace(m, f);
-    budget.resize(steps + 1);
-  }
-  // With Galerkin tanks the fluid holds an energy: H and its balance with the dissipation (galerkin_energy.hpp).
-  std::optional<GalerkinEnergyMeter> balance_meter;
-  std::vector<EnergySample> balance;
-  if (m.viscous && galerkin_energy_unavailable(m).empty()) {
-    balance_meter.emplace(m);
-    balance.resize(steps + 1);
-  }
-  auto measure_balance = [&](long j, const Eigen::VectorXcd& y) {
-    Eigen::VectorXcd u, v, w;
-    f.from_state(m, y, u, v, w);
-    Eigen::VectorXcd z(nm);
-    for (int l = 0; l < nm; ++l) z[l] = w[l] - v[m.modes[l].body];
-    balance[j] = (*balance_meter)(u, v, z);
-  };
-  auto store = [&](long j, const Eigen::VectorXcd& y) {
-    if (budget_meter) budget[j] = (*budget_meter)(y);
-    if (balance_meter) measure_balance(j, y);
-    Eigen::VectorXcd u, v, w;
-    f.from_state(m, y, u, v, w);
-    hist.t[j] = j * h;
-    hist.u.row(j) = u.transpose();
-    for (int l = 0; l < nm; ++l) hist.z(j, l) = w[l] - v[m.modes[l].body];
-    const Energy e = meter(u, v, w);
-    hist.H[j] = e.total();
-    hist.H_scale[j] = e.scale();
-  };
-  // Columns of re + i*im are the states at j0, j0 + 1, ... (exact propagation's blocks).
-  auto store_block = [&](long j0, const Eigen::Ref<const Eigen::MatrixXd>& re,
-                         const Eigen::Ref<const Eigen::MatrixXd>& im) {
-    const long cols = re.cols();
-    const double is = 1.0 / f.s;
-    for (long i = 0; i < cols; ++i) {
-      const long j = j0 + i;
-      hist.t[j] = j * h;
-      for (int k = 0; k < n; ++k) hist.u(j, k) = cd(re(k, i) * is, im(k, i) * is);
-      for (int l = 0; l < nm; ++l) {
-        const int v = n + m.modes[l].body;  // z = w - u-dot of the mode's body
-        hist.z(j, l) = cd(re(2 * n + l, i) - re(v, i), im(2 * n + l, i) - im(v, i));
-      }
-    }
-    if (budget_meter)
-      for (long i = 0; i < cols; ++i) budget[j0 + i] = (*budget_meter)(re.col(i).cast<cd>() + cd(0, 1) * im.col(i).cast<cd>());
-    if (balance_meter)
-      for (long i = 0; i < cols; ++i) measure_balance(j0 + i, re.col(i).cast<cd>() + cd(0, 1) * im.col(i).cast<cd>());
-    meter.block(re.topRows(n) * is, im.topRows(n) * is, re.middleRows(n, n), im.middleRows(n, n),
-                re.bottomRows(nm), im.bottomRows(nm), &hist.H[j0], &hist.H_scale[j0]);
-  };
-
-  bool done = false;
-  if (method == "exact") {
-    ModalForm mf = modal_form(f, !m.dissipative(), kRealTolerance);
-    hist.eigvec_condition = mf.condition;
-    if (mf.usable) {
-      // Undamped and stable: the roots are real; drop their rounding-level imaginary parts so that
-      // |e^{i sigma t}| = 1 exactly and the energy cannot drift over long runs (the real form has
-      // exactly real roots already).
-      const bool snap = mf.undamped_real;
-      if (snap && !mf.real) snap_to_imaginary_axis(mf);
-      modal_states(mf, y0, h, steps, store_block);
-      hist.method_used = snap ? "exact (eigen-decomposition, real roots)" : "exact (eigen-decomposition)";
-      hist.integrator_steps = steps;
-      done = true;
-    } else {
-      const Eigen::MatrixXcd Phi = (f.B * cd(h)).exp();
-      Eigen::VectorXcd y = y0;
-      store(0, y);
-      for (long j = 1; j <= steps; ++j) {
-        y = Phi * y;
-        store(j, y);
-      }
-      hist.method_used = "exact (matrix exponential of the step; eigenvectors ill-conditioned)";
-      hist.integrator_steps = steps;
-      done = true;
-    }
-  } else if (method == "gauss") {
-    // (2,2) Pade = 2-stage Gauss-Legendre; global error ~ t_end rho^5 hs^4 / 4320 <= tol.
-    long sub = 1;
-    if (rho > 0) {
-      const double hs = std::pow(4320.0 * scene.run.tolerance / (scene.run.t_end * std::pow(rho, 5)), 0.25);
-      sub = std::max(1L, static_cast<long>(std::ceil(h / hs)));
-    }
-    if (sub * steps > 200000000L) throw std::runtime_error("run.tolerance: gauss needs more than 2e8 steps");
-    const double hs = h / sub;
-    const Eigen::MatrixXcd P = gauss_step_matrix(f.B, hs);
-    Eigen::VectorXcd y = y0;
-    store(0, y);
-    for (long j = 1; j <= steps; ++j) {
-      for (long s = 0; s < sub; ++s) y = P * y;
-      store(j, y);
-    }
-    hist.method_used = "gauss (" + std::to_string(sub) + " substeps per output step)";
-    hist.integrator_steps = sub * steps;
-    done = true;
-  } else if (method == "rk45") {
-    Eigen::VectorXcd y = y0;
-    store(0, y);
-    double hh = h;
-    long nsteps = 0;
-    for (long j = 1; j <= steps; ++j) {
-      rk45_advance(f.B, y, (j - 1) * h, j * h, scene.run.tolerance, hh, nsteps);
-      store(j, y);
-    }
-    hist.method_used = "rk45 (" + std::to_string(nsteps) + " steps)";
-    hist.integrator_steps = nsteps;
-    done = true;
-  }
-  if (!done) throw std::runtime_error("run.method: unknown method " + method);
-
-  const double H0 = hist.H[0], S0 = std::max(hist.H_scale[0], 1e-300);
-  if (m.viscous) {
-    hist.max_energy_drift = std::numeric_limits<double>::quiet_NaN();  // no H (energy.cpp)
-    hist.budget = energy_budget(budget, h);
-    if (balance_meter) hist.balance = energy_balance(balance, h);
-  }
-  else for (long j = 1; j <= steps; ++j) {
-    if (m.has_friction()) hist.max_energy_drift = std::max(hist.max_energy_drift, (hist.H[j] - hist.H[j - 1]) / S0);
-    else hist.max_energy_drift = std::max(hist.max_energy_drift, std::abs(hist.H[j] - H0) / S0);
-  }
+  Recorder rec(m, f, h, steps, hist);
+  if (method == "exact") run_exact(m, f, y0, h, steps, rec, hist);
+  else if (method == "gauss") run_gauss(f, y0, h, steps, rho, scene.run, rec, hist);
+  else run_rk45(f, y0, h, steps, scene.run, rec, hist);
+  rec.finish(steps);
   hist.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   timespec cpu1{};
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &cpu1);
