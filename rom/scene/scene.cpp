@@ -144,21 +144,10 @@ CavitySpec parse_cavity(const Ctx& c, const toml::table& t, const std::string& w
 
 }  // namespace
 
-Scene parse_scene_text(const std::string& text, const std::filesystem::path& base,
-                       const std::string& name) {
-  Ctx c{name};
-  toml::table root;
-  try {
-    root = toml::parse(text, name);
-  } catch (const toml::parse_error& e) {
-    std::ostringstream os;
-    os << name << ": TOML syntax error at line " << e.source().begin.line << ": " << e.description();
-    throw SceneError(os.str());
-  }
-  check_keys(c, root, "", {"system", "body", "joint", "support", "initial", "run"});
-  Scene s;
-  s.file = name;
+namespace {
 
+// [system]: kind ("fixed" or "free") and gravity.
+void parse_system(Ctx& c, const toml::table& root, Scene& s) {
   const toml::table* sys = sub_table(c, root, "system", "system");
   if (!sys) c.fail("system", "missing");
   check_keys(c, *sys, "system", {"kind", "gravity"});
@@ -171,42 +160,40 @@ Scene parse_scene_text(const std::string& text, const std::filesystem::path& bas
     c.fail("system.kind", "missing");
   }
   s.gravity = get_number(c, *sys, "gravity", "system.gravity", Sign::nonneg, false).value_or(0.0);
+}
 
-  const toml::node* bodies = root.get("body");
-  if (!bodies) c.fail("body", "missing: a chain needs at least one [[body]]");
-  const toml::array* barr = bodies->as_array();
-  if (!barr || !barr->is_array_of_tables() || barr->empty())
-    c.fail("body", "must be an array of tables [[body]]");
-  const std::size_t n = barr->size();
-  for (std::size_t k = 0; k < n; ++k) {
-    const toml::table& bt = *(*barr)[k].as_table();
-    std::string w = "body[" + std::to_string(k + 1) + "]";
-    check_keys(c, bt, w, {"mass", "A", "B", "C", "com", "next_joint", "spin", "cavity", "moment"});
-    BodySpec b;
-    b.mass = *get_number(c, bt, "mass", w + ".mass", Sign::nonneg, true);
-    b.A = *get_number(c, bt, "A", w + ".A", Sign::nonneg, true);
-    b.B = get_number(c, bt, "B", w + ".B", Sign::nonneg, false);
-    b.C = *get_number(c, bt, "C", w + ".C", Sign::nonneg, true);
-    b.com = *get_number(c, bt, "com", w + ".com", Sign::any, true);
-    auto nj = get_number(c, bt, "next_joint", w + ".next_joint", Sign::any, k + 1 < n);
-    b.next_joint = nj.value_or(0.0);
-    b.spin = get_number(c, bt, "spin", w + ".spin", Sign::any, false).value_or(0.0);
-    if (const toml::table* ct = sub_table(c, bt, "cavity", w + ".cavity"))
-      b.cavity = parse_cavity(c, *ct, w + ".cavity", base);
-    if (const toml::table* mt = sub_table(c, bt, "moment", w + ".moment")) {
-      const std::string wm = w + ".moment";
-      check_keys(c, *mt, wm, {"axial", "space", "harmonic", "frequency"});
-      MomentSpec m;
-      m.axial = get_number(c, *mt, "axial", wm + ".axial", Sign::any, false).value_or(0.0);
-      m.space = get_vector3(c, *mt, "space", wm + ".space");
-      m.harmonic = get_vector3(c, *mt, "harmonic", wm + ".harmonic");
-      m.frequency = get_number(c, *mt, "frequency", wm + ".frequency", Sign::nonneg, false).value_or(0.0);
-      if (mt->get("harmonic") && !mt->get("frequency")) c.fail(wm + ".frequency", "missing: a harmonic moment needs it (Hz)");
-      b.moment = m;
-    }
-    s.bodies.push_back(b);
-  }
+// [body.moment]: the external moments of the nonlinear model.
+MomentSpec parse_moment(Ctx& c, const toml::table& mt, const std::string& wm) {
+  check_keys(c, mt, wm, {"axial", "space", "harmonic", "frequency"});
+  MomentSpec m;
+  m.axial = get_number(c, mt, "axial", wm + ".axial", Sign::any, false).value_or(0.0);
+  m.space = get_vector3(c, mt, "space", wm + ".space");
+  m.harmonic = get_vector3(c, mt, "harmonic", wm + ".harmonic");
+  m.frequency = get_number(c, mt, "frequency", wm + ".frequency", Sign::nonneg, false).value_or(0.0);
+  if (mt.get("harmonic") && !mt.get("frequency")) c.fail(wm + ".frequency", "missing: a harmonic moment needs it (Hz)");
+  return m;
+}
 
+// [[body]] k of n (0-based): its inertias, spin, cavity and moments.
+BodySpec parse_body(Ctx& c, const toml::table& bt, std::size_t k, std::size_t n, const std::filesystem::path& base) {
+  const std::string w = "body[" + std::to_string(k + 1) + "]";
+  check_keys(c, bt, w, {"mass", "A", "B", "C", "com", "next_joint", "spin", "cavity", "moment"});
+  BodySpec b;
+  b.mass = *get_number(c, bt, "mass", w + ".mass", Sign::nonneg, true);
+  b.A = *get_number(c, bt, "A", w + ".A", Sign::nonneg, true);
+  b.B = get_number(c, bt, "B", w + ".B", Sign::nonneg, false);
+  b.C = *get_number(c, bt, "C", w + ".C", Sign::nonneg, true);
+  b.com = *get_number(c, bt, "com", w + ".com", Sign::any, true);
+  auto nj = get_number(c, bt, "next_joint", w + ".next_joint", Sign::any, k + 1 < n);
+  b.next_joint = nj.value_or(0.0);
+  b.spin = get_number(c, bt, "spin", w + ".spin", Sign::any, false).value_or(0.0);
+  if (const toml::table* ct = sub_table(c, bt, "cavity", w + ".cavity")) b.cavity = parse_cavity(c, *ct, w + ".cavity", base);
+  if (const toml::table* mt = sub_table(c, bt, "moment", w + ".moment")) b.moment = parse_moment(c, *mt, w + ".moment");
+  return b;
+}
+
+// [[joint]]: one fewer than the bodies.
+void parse_joints(Ctx& c, const toml::table& root, std::size_t n, Scene& s) {
   if (const toml::node* joints = root.get("joint")) {
     const toml::array* jarr = joints->as_array();
     if (!jarr || !jarr->is_array_of_tables()) c.fail("joint", "must be an array of tables [[joint]]");
@@ -225,56 +212,93 @@ Scene parse_scene_text(const std::string& text, const std::filesystem::path& bas
     c.fail("joint", "the chain has " + std::to_string(n) + " bodies and needs " +
                         std::to_string(n - 1) + " [[joint]] entries, got " +
                         std::to_string(s.joints.size()));
+}
 
-  if (const toml::table* sup = sub_table(c, root, "support", "support")) {
-    check_keys(c, *sup, "support", {"friction", "axial_friction"});
-    s.support_friction =
-        get_number(c, *sup, "friction", "support.friction", Sign::nonneg, false).value_or(0.0);
-    s.support_axial_friction =
-        get_number(c, *sup, "axial_friction", "support.axial_friction", Sign::nonneg, false).value_or(0.0);
-    if (s.free_chain && s.support_friction != 0)
-      c.fail("support.friction", "a free chain has no support (must be 0 or absent)");
-    if (s.free_chain && s.support_axial_friction != 0)
-      c.fail("support.axial_friction", "a free chain has no support (must be 0 or absent)");
-  }
+// [support]: the fixed chain's friction at O_1.
+void parse_support(Ctx& c, const toml::table& root, Scene& s) {
+  const toml::table* sup = sub_table(c, root, "support", "support");
+  if (!sup) return;
+  check_keys(c, *sup, "support", {"friction", "axial_friction"});
+  s.support_friction = get_number(c, *sup, "friction", "support.friction", Sign::nonneg, false).value_or(0.0);
+  s.support_axial_friction =
+      get_number(c, *sup, "axial_friction", "support.axial_friction", Sign::nonneg, false).value_or(0.0);
+  if (s.free_chain && s.support_friction != 0)
+    c.fail("support.friction", "a free chain has no support (must be 0 or absent)");
+  if (s.free_chain && s.support_axial_friction != 0)
+    c.fail("support.axial_friction", "a free chain has no support (must be 0 or absent)");
+}
 
+// [initial]: tilts, rates and the fluid's state.
+void parse_initial(Ctx& c, const toml::table& root, std::size_t n, Scene& s) {
   s.tilt.assign(n, 0.0);
   s.rate.assign(n, 0.0);
-  if (const toml::table* ini = sub_table(c, root, "initial", "initial")) {
-    check_keys(c, *ini, "initial", {"tilt", "rate", "fluid"});
-    s.tilt = get_complex_array(c, *ini, "tilt", "initial.tilt", n);
-    s.rate = get_complex_array(c, *ini, "rate", "initial.rate", n);
-    // The fluid's initial state, one pair per kept mode (its count is known once the tables are read: checked there).
-    if (const toml::node* fl = ini->get("fluid")) {
-      const toml::array* arr = fl->as_array();
-      if (!arr) c.fail("initial.fluid", "must be an array of [re, im] pairs, one per kept fluid mode");
-      s.fluid = get_complex_array(c, *ini, "fluid", "initial.fluid", arr->size());
-    }
+  const toml::table* ini = sub_table(c, root, "initial", "initial");
+  if (!ini) return;
+  check_keys(c, *ini, "initial", {"tilt", "rate", "fluid"});
+  s.tilt = get_complex_array(c, *ini, "tilt", "initial.tilt", n);
+  s.rate = get_complex_array(c, *ini, "rate", "initial.rate", n);
+  // The fluid's initial state, one pair per kept mode (its count is known once the tables are read: checked there).
+  if (const toml::node* fl = ini->get("fluid")) {
+    const toml::array* arr = fl->as_array();
+    if (!arr) c.fail("initial.fluid", "must be an array of [re, im] pairs, one per kept fluid mode");
+    s.fluid = get_complex_array(c, *ini, "fluid", "initial.fluid", arr->size());
   }
+}
 
-  if (const toml::table* run = sub_table(c, root, "run", "run")) {
-    check_keys(c, *run, "run", {"t_end", "output_step", "method", "tolerance", "model"});
-    if (const toml::node* m = run->get("model")) {
-      if (!m->is_string()) c.fail("run.model", "must be \"linear\" or \"nonlinear\"");
-      s.run.model = m->as_string()->get();
-      if (s.run.model != "linear" && s.run.model != "nonlinear")
-        c.fail("run.model", "must be \"linear\" or \"nonlinear\" (got \"" + s.run.model + "\")");
-      if (s.run.nonlinear() && run->get("method"))
-        c.fail("run.method", "applies to the linear model only (the nonlinear one has its own integrator)");
-    }
-    s.run.present = true;
-    s.run.t_end = *get_number(c, *run, "t_end", "run.t_end", Sign::pos, true);
-    s.run.output_step = *get_number(c, *run, "output_step", "run.output_step", Sign::pos, true);
-    if (s.run.output_step > s.run.t_end) c.fail("run.output_step", "must not exceed run.t_end");
-    if (const toml::node* m = run->get("method")) {
-      if (!m->is_string()) c.fail("run.method", "must be \"exact\", \"gauss\" or \"rk45\"");
-      s.run.method = m->as_string()->get();
-      if (s.run.method != "exact" && s.run.method != "gauss" && s.run.method != "rk45")
-        c.fail("run.method", "must be \"exact\", \"gauss\" or \"rk45\" (got \"" + s.run.method + "\")");
-    }
-    s.run.tolerance =
-        get_number(c, *run, "tolerance", "run.tolerance", Sign::pos, false).value_or(1e-10);
+// [run]: the model, the time span and step, the linear model's method and tolerance.
+void parse_run(Ctx& c, const toml::table& root, Scene& s) {
+  const toml::table* run = sub_table(c, root, "run", "run");
+  if (!run) return;
+  check_keys(c, *run, "run", {"t_end", "output_step", "method", "tolerance", "model"});
+  if (const toml::node* m = run->get("model")) {
+    if (!m->is_string()) c.fail("run.model", "must be \"linear\" or \"nonlinear\"");
+    s.run.model = m->as_string()->get();
+    if (s.run.model != "linear" && s.run.model != "nonlinear")
+      c.fail("run.model", "must be \"linear\" or \"nonlinear\" (got \"" + s.run.model + "\")");
+    if (s.run.nonlinear() && run->get("method"))
+      c.fail("run.method", "applies to the linear model only (the nonlinear one has its own integrator)");
   }
+  s.run.present = true;
+  s.run.t_end = *get_number(c, *run, "t_end", "run.t_end", Sign::pos, true);
+  s.run.output_step = *get_number(c, *run, "output_step", "run.output_step", Sign::pos, true);
+  if (s.run.output_step > s.run.t_end) c.fail("run.output_step", "must not exceed run.t_end");
+  if (const toml::node* m = run->get("method")) {
+    if (!m->is_string()) c.fail("run.method", "must be \"exact\", \"gauss\" or \"rk45\"");
+    s.run.method = m->as_string()->get();
+    if (s.run.method != "exact" && s.run.method != "gauss" && s.run.method != "rk45")
+      c.fail("run.method", "must be \"exact\", \"gauss\" or \"rk45\" (got \"" + s.run.method + "\")");
+  }
+  s.run.tolerance = get_number(c, *run, "tolerance", "run.tolerance", Sign::pos, false).value_or(1e-10);
+}
+
+}  // namespace
+
+Scene parse_scene_text(const std::string& text, const std::filesystem::path& base,
+                       const std::string& name) {
+  Ctx c{name};
+  toml::table root;
+  try {
+    root = toml::parse(text, name);
+  } catch (const toml::parse_error& e) {
+    std::ostringstream os;
+    os << name << ": TOML syntax error at line " << e.source().begin.line << ": " << e.description();
+    throw SceneError(os.str());
+  }
+  check_keys(c, root, "", {"system", "body", "joint", "support", "initial", "run"});
+  Scene s;
+  s.file = name;
+  parse_system(c, root, s);
+  const toml::node* bodies = root.get("body");
+  if (!bodies) c.fail("body", "missing: a chain needs at least one [[body]]");
+  const toml::array* barr = bodies->as_array();
+  if (!barr || !barr->is_array_of_tables() || barr->empty())
+    c.fail("body", "must be an array of tables [[body]]");
+  const std::size_t n = barr->size();
+  for (std::size_t k = 0; k < n; ++k) s.bodies.push_back(parse_body(c, *(*barr)[k].as_table(), k, n, base));
+  parse_joints(c, root, n, s);
+  parse_support(c, root, s);
+  parse_initial(c, root, n, s);
+  parse_run(c, root, s);
   return s;
 }
 
