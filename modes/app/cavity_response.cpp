@@ -290,6 +290,152 @@ std::string fit_failure(double lo, double hi, double err, double max_error, int 
 
 }  // namespace
 
+namespace {
+
+// The fit of R on the window and its samples, refined where it errs or dips below Im R = 0 (docs/viscous.md, "Response
+// fit"). Fitted on every other window sample and the tail, judged on the rest: the error is that of the fit between
+// its data. Where it is too large, samples are added halfway to the neighbours of each point that erred, and the fit
+// is made again (at most kMaxRefinements times, up to kMaxSamplesFactor times the samples given): R is resolved where
+// it varies fast (the peaks of weakly damped modes) without sampling the whole window that finely.
+class WindowRefinement {
+ public:
+  WindowRefinement(const ResponseRequest& req, const ViscousForms& forms, ResponseSamples& kept, bool split,
+                   const CavityResponse& R, const std::vector<double>& tail, double max_error)
+      : req_(req), forms_(forms), kept_(kept), split_(split), tail_(tail), max_error_(max_error),
+        cap_(std::max<std::size_t>(kMaxSamplesFactor * req.sigmas.size(), 400)),
+        lines_([](const std::string& line) { if (is_root_rank()) std::cerr << line << "\n"; }) {  // runs over 1 s
+    const auto n = static_cast<long>(req.sigmas.size());
+    window_R = {R.R.begin(), R.R.begin() + n};
+    tail_R_ = {R.R.begin() + n, R.R.end()};
+    for (const auto& sigma : req.sigmas) window_s.push_back(sigma.real());
+    w = fit_window(window_s, window_R, tail_, tail_R_, max_error_);
+  }
+
+  void refine_by_error() {
+    while (!(w.error <= max_error_) && refinements < kMaxRefinements && window_s.size() < cap_ && !w.erring.empty())
+      refine(around_erring(), "error");
+  }
+
+  // R itself is passive (Im R >= 0, common/passivity_scan.hpp); where the fit dips below 0 between samples it misses
+  // a narrow feature of R that the held-out samples did not catch: R is solved there and halfway to its neighbours,
+  // the fit made again (and refined by its error again if the new samples raise it), a few rounds at most. A fit
+  // that is passive after the error's refinement is left as it is; if the rounds end with the error above the
+  // allowed one, the last fit within it is taken back (its dip is then reported by the caller).
+  void refine_for_passivity() {
+    if (!(w.error <= max_error_)) return;
+    State passing{window_s, window_R, w};
+    const double lo = req_.sigmas.front().real(), hi = req_.sigmas.back().real();
+    for (int round = 0; round < kMaxPassivityRounds && window_s.size() < cap_; ++round) {
+      if (w.error <= max_error_) {
+        passing = State{window_s, window_R, w};
+        const PassivityScan scan = scan_passivity(w.fit.poles, w.fit.residues, lo, hi);
+        if (scan.passive()) break;
+        refine(around(scan.at), "passivity");
+      } else {
+        if (w.erring.empty()) break;
+        refine(around_erring(), "error");
+      }
+    }
+    if (!(w.error <= max_error_)) {
+      window_s = std::move(passing.s);
+      window_R = std::move(passing.R);
+      w = std::move(passing.w);
+    }
+  }
+
+  std::vector<double> window_s;
+  std::vector<std::complex<double>> window_R;
+  WindowFit w;
+  int refinements = 0;
+
+ private:
+  struct State {
+    std::vector<double> s;
+    std::vector<std::complex<double>> R;
+    WindowFit w;
+  };
+
+  // Solves R at `added` (sorted, unique, cut to the cap), merges the samples and fits again.
+  void refine(std::vector<double> added, const char* why) {
+    std::sort(added.begin(), added.end());
+    added.erase(std::unique(added.begin(), added.end()), added.end());
+    if (window_s.size() + added.size() > cap_) added.resize(cap_ - window_s.size());
+    ResponseRequest more = req_;
+    more.sigmas.assign(added.begin(), added.end());
+    const CavityResponse extra = viscous_cavity_response(more, forms_, &kept_, split_);
+    merge_samples(window_s, window_R, added, extra.R);
+    ++refinements;
+    w = fit_window(window_s, window_R, tail_, tail_R_, max_error_);
+    lines_.step(fmt::format("response fit: refinement {} ({}): {} samples on the window, error between them {:.2g}",
+                            refinements, why, window_s.size(), w.error));
+  }
+  void halfway_around(std::size_t k, std::vector<double>& added) const {
+    if (k > 0) added.push_back(0.5 * (window_s[k - 1] + window_s[k]));
+    if (k + 1 < window_s.size()) added.push_back(0.5 * (window_s[k] + window_s[k + 1]));
+  }
+  std::vector<double> around_erring() const {
+    std::vector<double> added;
+    for (const std::size_t k : w.erring) halfway_around(k, added);
+    return added;
+  }
+  // s itself (unless a sample) and halfway to its neighbouring samples.
+  std::vector<double> around(double s) const {
+    std::vector<double> added;
+    const auto k = static_cast<std::size_t>(std::lower_bound(window_s.begin(), window_s.end(), s) - window_s.begin());
+    if (k == window_s.size() || window_s[k] != s) added.push_back(s);
+    if (k > 0) added.push_back(0.5 * (window_s[k - 1] + s));
+    if (k < window_s.size()) added.push_back(0.5 * (s + window_s[k]));
+    return added;
+  }
+
+  const ResponseRequest& req_;
+  const ViscousForms& forms_;
+  ResponseSamples& kept_;
+  const bool split_;
+  const std::vector<double>& tail_;
+  std::vector<std::complex<double>> tail_R_;
+  const double max_error_;
+  const std::size_t cap_;
+  Progress lines_;
+};
+
+// The fit's poles and residues as the table's pseudo-modes (a + i a_imag = sqrt(residue/2), N2 = 1); returns the sum
+// of the residues.
+std::complex<double> add_pseudo_modes(ModeTable& t, const RationalFit& fit, double err) {
+  std::complex<double> sum = 0;
+  for (std::size_t j = 0; j < fit.poles.size(); ++j) {
+    const auto p = fit.poles[j], r = fit.residues[j];
+    const std::complex<double> a = std::sqrt(r / 2.0);
+    t.lambda.push_back(p.real());
+    t.kappa.push_back(2 / p.real());
+    t.decay.push_back(p.imag());
+    t.E.push_back(r.real());
+    t.E_imag.push_back(r.imag());
+    t.a.push_back(a.real());
+    t.a_imag.push_back(a.imag());
+    t.N2.push_back(1.0);
+    t.residual.push_back(std::max(err, std::numeric_limits<double>::epsilon()));  // the fit's error stands for it
+    sum += r;
+  }
+  return sum;
+}
+
+// The fluid is passive, Im R >= 0 on the real axis (common/passivity_scan.hpp); the fit only to its accuracy, and
+// between samples it can dip where R has a narrow feature. Reported (a warning and the returned phrase), not enforced.
+std::string passivity_phrase(const RationalFit& fit, double lo, double hi) {
+  const PassivityScan passivity = scan_passivity(fit.poles, fit.residues, lo, hi);
+  const std::string passive =
+      passivity.passive()
+          ? fmt::format("passive on the window (min Im R = {:.2g} max|R|)", passivity.min_im)
+          : fmt::format("NOT passive on the window: Im R = {:.2g} max|R| at s = {:.6g}", passivity.min_im, passivity.at);
+  if (!passivity.passive() && is_root_rank())
+    std::cerr << "cavity-modes: warning: the fit is " << passive
+              << " (R itself has Im R >= 0): more samples there (--sigma) or a smaller --max-fit-error\n";
+  return passive;
+}
+
+}  // namespace
+
 ModeTable response_fit_table(const ResponseRequest& req, double max_error) {
   const auto start = std::chrono::steady_clock::now();
   check_response_window(req, "a response-fit table");
@@ -311,119 +457,29 @@ ModeTable response_fit_table(const ResponseRequest& req, double max_error) {
   ResponseSamples kept = kept_samples(req, forms);
   const auto solve_start = std::chrono::steady_clock::now();
   const CavityResponse R = viscous_cavity_response(all, forms, &kept, split);
-  std::vector<double> window_s;
-  std::vector<std::complex<double>> window_R(R.R.begin(), R.R.begin() + static_cast<long>(n)), tail_R(R.R.begin() + static_cast<long>(n), R.R.end());
-  for (const auto& sigma : req.sigmas) window_s.push_back(sigma.real());
-
-  // Fitted on every other window sample and the tail, judged on the rest: the error is that of the fit between its
-  // data. Where it is too large, samples are added halfway to the neighbours of each point that erred, and the fit
-  // is made again (at most kMaxRefinements times, up to kMaxSamplesFactor times the samples given): R is resolved
-  // where it varies fast (the peaks of weakly damped modes) without sampling the whole window that finely.
-  WindowFit w = fit_window(window_s, window_R, tail, tail_R, max_error);
-  int refinements = 0;
-  Progress lines([](const std::string& line) { if (is_root_rank()) std::cerr << line << "\n"; });  // runs over 1 s
-  const std::size_t cap = std::max<std::size_t>(kMaxSamplesFactor * n, 400);
-  // Solves R at `added` (sorted, unique, cut to the cap), merges the samples and fits again.
-  const auto refine = [&](std::vector<double> added, const char* why) {
-    std::sort(added.begin(), added.end());
-    added.erase(std::unique(added.begin(), added.end()), added.end());
-    if (window_s.size() + added.size() > cap) added.resize(cap - window_s.size());
-    ResponseRequest more = req;
-    more.sigmas.assign(added.begin(), added.end());
-    const CavityResponse extra = viscous_cavity_response(more, forms, &kept, split);
-    merge_samples(window_s, window_R, added, extra.R);
-    ++refinements;
-    w = fit_window(window_s, window_R, tail, tail_R, max_error);
-    lines.step(fmt::format("response fit: refinement {} ({}): {} samples on the window, error between them {:.2g}",
-                           refinements, why, window_s.size(), w.error));
-  };
-  const auto halfway_around = [&](std::size_t k, std::vector<double>& added) {
-    if (k > 0) added.push_back(0.5 * (window_s[k - 1] + window_s[k]));
-    if (k + 1 < window_s.size()) added.push_back(0.5 * (window_s[k] + window_s[k + 1]));
-  };
-  while (!(w.error <= max_error) && refinements < kMaxRefinements && window_s.size() < cap && !w.erring.empty()) {
-    std::vector<double> added;
-    for (const std::size_t k : w.erring) halfway_around(k, added);
-    refine(added, "error");
-  }
-  // R itself is passive (Im R >= 0, common/passivity_scan.hpp); where the fit dips below 0 between samples it misses
-  // a narrow feature of R that the held-out samples did not catch: R is solved there and halfway to its neighbours,
-  // the fit made again (and refined by its error again if the new samples raise it), a few rounds at most. A fit
-  // that is passive after the loop above is left as it is; if the rounds end with the error above the allowed one,
-  // the last fit within it is taken back (its dip is then reported below).
-  if (w.error <= max_error) {
-    struct State {
-      std::vector<double> s;
-      std::vector<std::complex<double>> R;
-      WindowFit w;
-    } passing{window_s, window_R, w};
-    for (int round = 0; round < kMaxPassivityRounds && window_s.size() < cap; ++round) {
-      std::vector<double> added;
-      if (w.error <= max_error) {
-        passing = State{window_s, window_R, w};
-        const PassivityScan scan = scan_passivity(w.fit.poles, w.fit.residues, lo, hi);
-        if (scan.passive()) break;
-        const auto k = static_cast<std::size_t>(std::lower_bound(window_s.begin(), window_s.end(), scan.at) -
-                                                window_s.begin());
-        if (k == window_s.size() || window_s[k] != scan.at) added.push_back(scan.at);
-        if (k > 0) added.push_back(0.5 * (window_s[k - 1] + scan.at));
-        if (k < window_s.size()) added.push_back(0.5 * (scan.at + window_s[k]));
-        refine(added, "passivity");
-      } else {
-        if (w.erring.empty()) break;
-        for (const std::size_t k : w.erring) halfway_around(k, added);
-        refine(added, "error");
-      }
-    }
-    if (!(w.error <= max_error)) {
-      window_s = std::move(passing.s);
-      window_R = std::move(passing.R);
-      w = std::move(passing.w);
-    }
-  }
-  const RationalFit& fit = w.fit;
-  const double err = w.error;
+  WindowRefinement refinement(req, forms, kept, split, R, tail, max_error);
+  refinement.refine_by_error();
+  refinement.refine_for_passivity();
+  const RationalFit& fit = refinement.w.fit;
+  const double err = refinement.w.error;
+  const std::size_t samples = refinement.window_s.size();
   if (!(err <= max_error))
-    throw std::runtime_error(fit_failure(lo, hi, err, max_error, refinements, window_s.size() + tail.size(),
-                                         window_s.size(), kept, solve_start));
+    throw std::runtime_error(fit_failure(lo, hi, err, max_error, refinement.refinements, samples + tail.size(),
+                                         samples, kept, solve_start));
 
   ModeTable t = response_table_start(req, R.unknowns);
   t.fit_error = err;
-  std::complex<double> sum = 0;
-  for (std::size_t j = 0; j < fit.poles.size(); ++j) {
-    const auto p = fit.poles[j], r = fit.residues[j];
-    const std::complex<double> a = std::sqrt(r / 2.0);
-    t.lambda.push_back(p.real());
-    t.kappa.push_back(2 / p.real());
-    t.decay.push_back(p.imag());
-    t.E.push_back(r.real());
-    t.E_imag.push_back(r.imag());
-    t.a.push_back(a.real());
-    t.a_imag.push_back(a.imag());
-    t.N2.push_back(1.0);
-    t.residual.push_back(std::max(err, std::numeric_limits<double>::epsilon()));  // the fit's error stands for it
-    sum += r;
-  }
+  const std::complex<double> sum = add_pseudo_modes(t, fit, err);
   t.coverage = t.sum_rule > 0 ? sum.real() / t.sum_rule : 1.0;
   t.normalisation = "pseudo-modes of a rational fit: lambda + i decay a pole of R(s), E + i E_imag its residue, "
                     "a + i a_imag = sqrt((E + i E_imag)/2), N2 = 1 (docs/viscous.md, \"Response fit\")";
-  // The fluid is passive, Im R >= 0 on the real axis (common/passivity_scan.hpp); the fit only to its accuracy, and
-  // between samples it can dip where R has a narrow feature. Reported, not enforced.
-  const PassivityScan passivity = scan_passivity(fit.poles, fit.residues, lo, hi);
-  const std::string passive =
-      passivity.passive()
-          ? fmt::format("passive on the window (min Im R = {:.2g} max|R|)", passivity.min_im)
-          : fmt::format("NOT passive on the window: Im R = {:.2g} max|R| at s = {:.6g}", passivity.min_im, passivity.at);
-  if (!passivity.passive() && is_root_rank())
-    std::cerr << "cavity-modes: warning: the fit is " << passive
-              << " (R itself has Im R >= 0): more samples there (--sigma) or a smaller --max-fit-error\n";
   t.solver = fmt::format("AAA rational fit of R(s) (degree {}, {} poles kept, {} dropped) on every other of {} real "
                          "samples in [{:g}, {:g}] ({} given, {} refinements where the fit erred) and {} beyond it up to |s| = {:.3g}, max error between the window's samples {:.2g}; "
                          "{}; sum of residues {:.9g}{:+.9g}i, s R(s) at s = {:.3g}: {:.9g}, A_f - J_zh = {:.9g}; R by {}",
-                         fit.aaa_degree, fit.poles.size(), fit.dropped_poles, window_s.size(), lo, hi, n, refinements,
-                         tail.size(), std::abs(tail.back()),
-                         err, passive, sum.real(), sum.imag(), tail.back(), (tail.back() * R.R.back()).real(), t.sum_rule,
-                         R.method);
+                         fit.aaa_degree, fit.poles.size(), fit.dropped_poles, samples, lo, hi, n,
+                         refinement.refinements, tail.size(), std::abs(tail.back()), err,
+                         passivity_phrase(fit, lo, hi), sum.real(), sum.imag(), tail.back(),
+                         (tail.back() * R.R.back()).real(), t.sum_rule, R.method);
   if (kept.read() > 0) t.solver += fmt::format(" ({} forced solves were at hand from an earlier run's kept samples)",
                                                kept.read());
   t.tolerance = 1e-10;
