@@ -146,45 +146,101 @@ Eigen::VectorXcd nonlinear_tilts(const ChainState& state) {
   return u;
 }
 
+namespace {
+
+// Writes each output sample of a nonlinear run: tilts, energy and its drift, angular momentum and its drift,
+// attitudes, spins, the viscous tanks' spin change and the fluid's amplitudes.
+class NonlinearRecorder {
+ public:
+  NonlinearRecorder(const NonlinearChain& chain, const ChainState& initial, long samples, NonlinearHistory& out)
+      : chain_(chain), out_(out), h_(out.base), n_(chain.size()),
+        H0_(chain_energy(chain, initial)), H_scale_(energy_scale(chain, initial)),
+        L0_(chain_angular_momentum(chain, initial)),
+        damped_(std::any_of(chain.joints.begin(), chain.joints.end(),
+                            [](const ChainJoint& j) { return j.friction > 0 || j.axial_friction > 0; })),
+        previous_H_(H0_) {
+    h_.method_used = "nonlinear-rkmk-dp54";
+    h_.u.resize(samples, n_);
+    h_.z.resize(samples, 0);
+  }
+
+  void operator()(long j, double t, const ChainState& s) {
+    h_.t.push_back(t);
+    h_.u.row(j) = nonlinear_tilts(s).transpose();
+    const double H = chain_energy(chain_, s);
+    h_.H.push_back(H);
+    h_.H_scale.push_back(H_scale_);
+    h_.max_energy_drift =
+        std::max(h_.max_energy_drift, damped_ ? (H - previous_H_) / H_scale_ : std::abs(H - H0_) / H_scale_);
+    previous_H_ = H;
+    const Vector3d L = chain_angular_momentum(chain_, s);
+    // Conserved: the whole vector for the free chain, its vertical component about O_1 for the fixed one.
+    const double change = chain_.free_chain ? (L - L0_).norm() : std::abs(L.z() - L0_.z());
+    if (L0_.norm() > 0) out_.max_momentum_drift = std::max(out_.max_momentum_drift, change / L0_.norm());
+    for (int k = 0; k < n_; ++k) {
+      const auto& q = s.q[k];
+      out_.quaternions.insert(out_.quaternions.end(), {q.w(), q.x(), q.y(), q.z()});
+      out_.spins.push_back((q * s.omega[k]).dot(q * Vector3d::UnitZ()));
+    }
+    for (int k = 0; k < n_; ++k)
+      if (chain_.bodies[k].table_spin != 0)
+        out_.viscous_spin_change = std::max(out_.viscous_spin_change,
+                                            std::abs(s.omega[k].z() / chain_.bodies[k].table_spin - 1));
+    out_.momentum.insert(out_.momentum.end(), {L.x(), L.y(), L.z()});
+    out_.zeta.insert(out_.zeta.end(), s.zeta.begin(), s.zeta.end());
+  }
+
+ private:
+  const NonlinearChain& chain_;
+  NonlinearHistory& out_;
+  History& h_;
+  const int n_;
+  const double H0_, H_scale_;
+  const Vector3d L0_;
+  const bool damped_;
+  double previous_H_;
+};
+
+// Advances s from t to t_out by Dormand-Prince steps on the chain's Lie group (chain_step_dp), each accepted when its
+// error is within run.tolerance; `step` is the next trial step, carried from call to call.
+void advance_to(const NonlinearChain& chain, ChainState& s, ChainRates& rates, double& t, double t_out, double& step,
+                const RunSpec& run, NonlinearHistory& out) {
+  while (t < t_out) {
+    const double hh = std::min(step, t_out - t);
+    if (hh < 1e-13 * std::max(1.0, t_out))
+      throw std::runtime_error("nonlinear run: the step fell below 1e-13 s at t = " + std::to_string(t) +
+                               ": run.tolerance " + std::to_string(run.tolerance) + " cannot be met in double "
+                               "precision; raise it");
+    const ChainStepDP dp = chain_step_dp(chain, s, rates, hh);
+    double rate_scale = 1;
+    for (const auto& w : dp.next.omega) rate_scale = std::max(rate_scale, w.norm());
+    const double err = std::max(dp.attitude_error, dp.rate_error / rate_scale);
+    if (++out.base.integrator_steps > kMaxIntegratorSteps)
+      throw std::runtime_error("nonlinear run: more than " + std::to_string(long(kMaxIntegratorSteps)) +
+                               " steps for run.tolerance " + std::to_string(run.tolerance) +
+                               "; raise the tolerance or shorten t_end");
+    if (!std::isfinite(err)) throw std::runtime_error("nonlinear run: the state is not finite at t = " + std::to_string(t));
+    const double factor = err > 0 ? 0.9 * std::pow(run.tolerance / err, 0.2) : 4.0;
+    if (err <= run.tolerance) {
+      s = dp.next;
+      rates = dp.next_rates;  // first same as last
+      t += hh;
+      if (hh == step) step *= std::clamp(factor, 0.2, 5.0);  // a step cut short by the output grid says nothing
+    } else {
+      ++out.rejected_steps;
+      step = hh * std::clamp(factor, 0.1, 0.9);
+    }
+  }
+}
+
+}  // namespace
+
 NonlinearHistory integrate_nonlinear(const NonlinearChain& chain, const ChainState& initial, const RunSpec& run) {
   const auto wall0 = std::chrono::steady_clock::now();
   const std::clock_t cpu0 = std::clock();
-  const int n = chain.size();
   const long samples = std::lround(run.t_end / run.output_step) + 1;
   NonlinearHistory out;
-  History& h = out.base;
-  h.method_used = "nonlinear-rkmk-dp54";
-  h.u.resize(samples, n);
-  h.z.resize(samples, 0);
-  const double H0 = chain_energy(chain, initial), H_scale = energy_scale(chain, initial);
-  const Vector3d L0 = chain_angular_momentum(chain, initial);
-  const bool damped = std::any_of(chain.joints.begin(), chain.joints.end(),
-                                  [](const ChainJoint& j) { return j.friction > 0 || j.axial_friction > 0; });
-  double previous_H = H0;
-  const auto record = [&](long j, double t, const ChainState& s) {
-    h.t.push_back(t);
-    h.u.row(j) = nonlinear_tilts(s).transpose();
-    const double H = chain_energy(chain, s);
-    h.H.push_back(H);
-    h.H_scale.push_back(H_scale);
-    h.max_energy_drift = std::max(h.max_energy_drift, damped ? (H - previous_H) / H_scale : std::abs(H - H0) / H_scale);
-    previous_H = H;
-    const Vector3d L = chain_angular_momentum(chain, s);
-    // Conserved: the whole vector for the free chain, its vertical component about O_1 for the fixed one.
-    const double change = chain.free_chain ? (L - L0).norm() : std::abs(L.z() - L0.z());
-    if (L0.norm() > 0) out.max_momentum_drift = std::max(out.max_momentum_drift, change / L0.norm());
-    for (int k = 0; k < n; ++k) {
-      const auto& q = s.q[k];
-      out.quaternions.insert(out.quaternions.end(), {q.w(), q.x(), q.y(), q.z()});
-      out.spins.push_back((q * s.omega[k]).dot(q * Vector3d::UnitZ()));
-    }
-    for (int k = 0; k < n; ++k)
-      if (chain.bodies[k].table_spin != 0)
-        out.viscous_spin_change = std::max(out.viscous_spin_change,
-                                           std::abs(s.omega[k].z() / chain.bodies[k].table_spin - 1));
-    out.momentum.insert(out.momentum.end(), {L.x(), L.y(), L.z()});
-    out.zeta.insert(out.zeta.end(), s.zeta.begin(), s.zeta.end());
-  };
+  NonlinearRecorder record(chain, initial, samples, out);
   out.fluid_modes = chain.fluid_modes();
   out.integrals_valid = out.fluid_modes == 0;
   out.viscous_tanks = std::any_of(chain.bodies.begin(), chain.bodies.end(), [](const ChainBody& b) { return b.table_spin != 0; });
@@ -198,39 +254,14 @@ NonlinearHistory integrate_nonlinear(const NonlinearChain& chain, const ChainSta
   ChainRates rates = chain_rates(chain, s);
   for (long j = 1; j < samples; ++j) {
     const double t_out = std::min(run.t_end, j * run.output_step);
-    while (t < t_out) {
-      const double hh = std::min(step, t_out - t);
-      if (hh < 1e-13 * std::max(1.0, t_out))
-        throw std::runtime_error("nonlinear run: the step fell below 1e-13 s at t = " + std::to_string(t) +
-                                 ": run.tolerance " + std::to_string(run.tolerance) + " cannot be met in double "
-                                 "precision; raise it");
-      const ChainStepDP dp = chain_step_dp(chain, s, rates, hh);
-      double rate_scale = 1;
-      for (const auto& w : dp.next.omega) rate_scale = std::max(rate_scale, w.norm());
-      const double err = std::max(dp.attitude_error, dp.rate_error / rate_scale);
-      if (++h.integrator_steps > kMaxIntegratorSteps)
-        throw std::runtime_error("nonlinear run: more than " + std::to_string(long(kMaxIntegratorSteps)) +
-                                 " steps for run.tolerance " + std::to_string(run.tolerance) +
-                                 "; raise the tolerance or shorten t_end");
-      if (!std::isfinite(err)) throw std::runtime_error("nonlinear run: the state is not finite at t = " + std::to_string(t));
-      const double factor = err > 0 ? 0.9 * std::pow(run.tolerance / err, 0.2) : 4.0;
-      if (err <= run.tolerance) {
-        s = dp.next;
-        rates = dp.next_rates;  // first same as last
-        t += hh;
-        if (hh == step) step *= std::clamp(factor, 0.2, 5.0);  // a step cut short by the output grid says nothing
-      } else {
-        ++out.rejected_steps;
-        step = hh * std::clamp(factor, 0.1, 0.9);
-      }
-    }
+    advance_to(chain, s, rates, t, t_out, step, run, out);
     t = t_out;
     s.t = t_out;  // no rounding drift in the time the moments see
     if (!finite(s)) throw std::runtime_error("nonlinear run: the state is not finite at t = " + std::to_string(t));
     record(j, t, s);
   }
-  h.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-  h.cpu_seconds = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
+  out.base.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  out.base.cpu_seconds = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
   return out;
 }
 
