@@ -81,49 +81,45 @@ Eigen::VectorXcd verdict_roots(const ChainModel& m) {
 
 Verdict compute_verdict(const ChainModel& m) { return verdict_from_roots(m, verdict_roots(m)); }
 
-Spectrum compute_spectrum(const ChainModel& m) {
+namespace {
+
+// Root j of the first-order system with its owner (the largest share of the eigenvector's kinetic measure), its
+// residual in (22) and how far Newton on det Φ moves it.
+Root root_of(const ChainModel& m, const ComplexEigen& es, int j, double radius, Spectrum& sp) {
   using cd = std::complex<double>;
-  const FirstOrderSystem f = build_first_order(m);
-  const ComplexEigen es = complex_eigen(f.B, true);
-  const int n = m.n, D = f.dim();
-  Spectrum sp;
-  const Verdict v = verdict_from_roots(m, cd(0, -1) * es.values);
-  const double radius = v.radius;
-  sp.tolerance = v.tolerance;
-  for (int j = 0; j < D; ++j) {
-    Root r;
-    r.sigma = cd(0, -1) * es.values[j];  // y ~ e^{mu t} = e^{i sigma t}
-    const Eigen::VectorXcd y = es.vectors.col(j);
-    // Owner: the largest share of the eigenvector's kinetic measure.
-    double best = -1;
-    for (int k = 0; k < n; ++k) {
-      const double wgt = m.M_eff(k, k) * (std::norm(y[k]) + std::norm(y[n + k]));
-      if (wgt > best) { best = wgt; r.owner = "body " + std::to_string(k + 1); }
-    }
-    std::vector<int> count(n, 0);
-    for (int l = 0; l < m.n_modes(); ++l) {
-      const FluidMode& md = m.modes[l];
-      ++count[md.body];
-      const double wgt = std::abs(md.E_c()) * std::norm(y[2 * n + l] - y[n + md.body]);
-      if (wgt > best) {
-        best = wgt;
-        r.owner = "fluid " + std::to_string(md.body + 1) + "." + std::to_string(count[md.body]);
-        r.unconverged_owner = md.converged == 0;
-      }
-    }
-    r.residual = characteristic_residual(m, r.sigma, std::max(radius, 1e-300));
-    r.newton_shift = std::numeric_limits<double>::quiet_NaN();
-    if (!std::isnan(r.residual)) {
-      const NewtonRoot nr = newton_root(m, r.sigma, std::max(radius, 1e-300));
-      if (nr.converged) r.newton_shift = std::abs(nr.sigma - r.sigma) / std::max(radius, 1e-300);
-      else ++sp.newton_failed;
-    }
-    sp.roots.push_back(r);
+  const int n = m.n;
+  Root r;
+  r.sigma = cd(0, -1) * es.values[j];  // y ~ e^{mu t} = e^{i sigma t}
+  const Eigen::VectorXcd y = es.vectors.col(j);
+  double best = -1;
+  for (int k = 0; k < n; ++k) {
+    const double wgt = m.M_eff(k, k) * (std::norm(y[k]) + std::norm(y[n + k]));
+    if (wgt > best) { best = wgt; r.owner = "body " + std::to_string(k + 1); }
   }
-  std::sort(sp.roots.begin(), sp.roots.end(), [](const Root& a, const Root& b) {
-    if (a.sigma.real() != b.sigma.real()) return a.sigma.real() < b.sigma.real();
-    return a.sigma.imag() < b.sigma.imag();
-  });
+  std::vector<int> count(n, 0);
+  for (int l = 0; l < m.n_modes(); ++l) {
+    const FluidMode& md = m.modes[l];
+    ++count[md.body];
+    const double wgt = std::abs(md.E_c()) * std::norm(y[2 * n + l] - y[n + md.body]);
+    if (wgt > best) {
+      best = wgt;
+      r.owner = "fluid " + std::to_string(md.body + 1) + "." + std::to_string(count[md.body]);
+      r.unconverged_owner = md.converged == 0;
+    }
+  }
+  r.residual = characteristic_residual(m, r.sigma, std::max(radius, 1e-300));
+  r.newton_shift = std::numeric_limits<double>::quiet_NaN();
+  if (!std::isnan(r.residual)) {
+    const NewtonRoot nr = newton_root(m, r.sigma, std::max(radius, 1e-300));
+    if (nr.converged) r.newton_shift = std::abs(nr.sigma - r.sigma) / std::max(radius, 1e-300);
+    else ++sp.newton_failed;
+  }
+  return r;
+}
+
+// The spectrum's tallies over its (sorted) roots: residuals, Newton's agreement, unconverged owners and the roots
+// outside a response fit's window.
+void tally_roots(const ChainModel& m, Spectrum& sp) {
   for (Root& r : sp.roots) {
     if (std::isnan(r.residual)) ++sp.unchecked;
     else sp.det_residual = std::max(sp.det_residual, r.residual);
@@ -139,6 +135,10 @@ Spectrum compute_spectrum(const ChainModel& m) {
         }
       }
   }
+}
+
+// The verdict's numbers, the fits' passivity and the certificate of real roots.
+void set_verdict(const ChainModel& m, const Verdict& v, Spectrum& sp) {
   sp.margin = v.margin;
   sp.growth = v.growth;
   sp.noise = v.noise;
@@ -146,7 +146,7 @@ Spectrum compute_spectrum(const ChainModel& m) {
   sp.at_zero = v.at_zero;
   sp.nonreal = v.nonreal;
   sp.stable = v.stable;
-  for (int k = 0; k < n; ++k) {
+  for (int k = 0; k < m.n; ++k) {
     sp.passivity.push_back(fit_passivity(m, k));
     if (!sp.passivity.back().passive()) ++sp.fits_not_passive;
   }
@@ -156,6 +156,24 @@ Spectrum compute_spectrum(const ChainModel& m) {
     sp.certificate_roots = c.roots;
     sp.roots_at_zero = c.at_zero;
   }
+}
+
+}  // namespace
+
+Spectrum compute_spectrum(const ChainModel& m) {
+  using cd = std::complex<double>;
+  const FirstOrderSystem f = build_first_order(m);
+  const ComplexEigen es = complex_eigen(f.B, true);
+  Spectrum sp;
+  const Verdict v = verdict_from_roots(m, cd(0, -1) * es.values);
+  sp.tolerance = v.tolerance;
+  for (int j = 0; j < f.dim(); ++j) sp.roots.push_back(root_of(m, es, j, v.radius, sp));
+  std::sort(sp.roots.begin(), sp.roots.end(), [](const Root& a, const Root& b) {
+    if (a.sigma.real() != b.sigma.real()) return a.sigma.real() < b.sigma.real();
+    return a.sigma.imag() < b.sigma.imag();
+  });
+  tally_roots(m, sp);
+  set_verdict(m, v, sp);
   return sp;
 }
 
