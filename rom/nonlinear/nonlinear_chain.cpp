@@ -99,6 +99,42 @@ std::vector<Vector3d> chain_axes(const ChainState& s) {
   return n;
 }
 
+namespace {
+
+// Solves M x = rhs in place. M is symmetric positive definite for any attitude (a kinetic energy): Cholesky, which also
+// says when it is not. A viscous tank without its static correction adds a skew part (fluid_inertia): then LU.
+void solve_mass_system(const NonlinearChain& c, const Eigen::MatrixXd& M, Eigen::VectorXd& rhs) {
+  bool symmetric = true;
+  for (const auto& b : c.bodies) symmetric = symmetric && b.fluid_E_total.imag() == 0;
+  if (symmetric) {
+    thread_local Eigen::LLT<Eigen::MatrixXd> llt;
+    llt.compute(M);
+    if (llt.info() != Eigen::Success)
+      throw std::runtime_error("nonlinear chain: the mass matrix is not positive definite (a body without inertia?)");
+    llt.solveInPlace(rhs);
+  } else {
+    thread_local Eigen::PartialPivLU<Eigen::MatrixXd> lu;
+    lu.compute(M);
+    if (!(std::abs(lu.determinant()) > 0))
+      throw std::runtime_error("nonlinear chain: the mass matrix is singular (a body without inertia?)");
+    rhs = lu.solve(rhs);
+  }
+}
+
+// ζ̇ = i λ ζ − i Ṗ, Ṗ = ṗ − i q̇ the body-frame transverse angular acceleration, for every kept mode.
+void add_fluid_rates(const NonlinearChain& c, const ChainState& s, const std::vector<int>& first_mode, ChainRates& out) {
+  for (int k = 0; k < c.size(); ++k) {
+    const std::complex<double> P_dot(out.omega_dot[k].x(), -out.omega_dot[k].y());
+    const double spin = s.omega[k].z();
+    for (int l = 0; l < static_cast<int>(c.bodies[k].fluid.size()); ++l) {
+      const std::complex<double> lambda = mode_lambda(c.bodies[k].fluid[l], spin);
+      out.zeta_dot.push_back(std::complex<double>(0, 1) * (lambda * s.zeta[first_mode[k] + l] - P_dot));
+    }
+  }
+}
+
+}  // namespace
+
 ChainRates chain_rates(const NonlinearChain& c, const ChainState& s) {
   const int n = c.size(), dim = 3 * n + (c.free_chain ? 3 : 0);
   const Frames f = frames(c, s);
@@ -145,36 +181,12 @@ ChainRates chain_rates(const NonlinearChain& c, const ChainState& s) {
     for (int j = 0; j < n; ++j) r -= c.bodies[j].mass * d[j];
     rhs.segment<3>(3 * n) = r;
   }
-  // Symmetric positive definite for any attitude (a kinetic energy): Cholesky, which also says when it is not. A
-  // viscous tank without its static correction adds a skew part (fluid_inertia): then LU.
-  bool symmetric = true;
-  for (const auto& b : c.bodies) symmetric = symmetric && b.fluid_E_total.imag() == 0;
-  if (symmetric) {
-    thread_local Eigen::LLT<Eigen::MatrixXd> llt;
-    llt.compute(M);
-    if (llt.info() != Eigen::Success)
-      throw std::runtime_error("nonlinear chain: the mass matrix is not positive definite (a body without inertia?)");
-    llt.solveInPlace(rhs);
-  } else {
-    thread_local Eigen::PartialPivLU<Eigen::MatrixXd> lu;
-    lu.compute(M);
-    if (!(std::abs(lu.determinant()) > 0))
-      throw std::runtime_error("nonlinear chain: the mass matrix is singular (a body without inertia?)");
-    rhs = lu.solve(rhs);
-  }
+  solve_mass_system(c, M, rhs);
   const Eigen::VectorXd& x = rhs;
   ChainRates out;
   for (int k = 0; k < n; ++k) out.omega_dot.push_back(f.R[k].transpose() * x.segment<3>(3 * k));
   if (c.free_chain) out.a1 = x.segment<3>(3 * n);
-  // ζ̇ = i λ ζ − i Ṗ, Ṗ = ṗ − i q̇ the body-frame transverse angular acceleration.
-  for (int k = 0; k < n; ++k) {
-    const std::complex<double> P_dot(out.omega_dot[k].x(), -out.omega_dot[k].y());
-    const double spin = s.omega[k].z();
-    for (int l = 0; l < static_cast<int>(c.bodies[k].fluid.size()); ++l) {
-      const std::complex<double> lambda = mode_lambda(c.bodies[k].fluid[l], spin);
-      out.zeta_dot.push_back(std::complex<double>(0, 1) * (lambda * s.zeta[first_mode[k] + l] - P_dot));
-    }
-  }
+  add_fluid_rates(c, s, first_mode, out);
   return out;
 }
 
@@ -223,29 +235,41 @@ Vector3d chain_angular_momentum(const NonlinearChain& c, const ChainState& s) {
   return L;
 }
 
+namespace {
+
+using Vs = std::vector<Vector3d>;
+
+// The vector-space part of the state (ω, O_1, its velocity, the fluid), advanced by classical RK4 in chain_step; the
+// attitudes by rotation vectors θ (RKMK4).
+struct Flat {
+  Vs omega;
+  Vector3d r, v;
+  std::vector<std::complex<double>> zeta;
+};
+struct Stage {
+  Vs dtheta;
+  Flat d;
+};
+
+Flat axpy(const Flat& x, const Flat& dx, double w) {
+  Flat y = x;
+  for (std::size_t k = 0; k < y.omega.size(); ++k) y.omega[k] += w * dx.omega[k];
+  y.r += w * dx.r;
+  y.v += w * dx.v;
+  for (std::size_t l = 0; l < y.zeta.size(); ++l) y.zeta[l] += w * dx.zeta[l];
+  return y;
+}
+
+Vs turn(const Vs& a, const Vs& b, double w) {
+  Vs out(a);
+  for (std::size_t k = 0; k < out.size(); ++k) out[k] += w * b[k];
+  return out;
+}
+
+}  // namespace
+
 ChainState chain_step(const NonlinearChain& c, const ChainState& s, double h) {
   const int n = c.size();
-  using Vs = std::vector<Vector3d>;
-  using Cs = std::vector<std::complex<double>>;
-  // The vector-space part of the state (ω, O_1, its velocity, the fluid), advanced by classical RK4; the attitudes
-  // by rotation vectors θ (RKMK4).
-  struct Flat {
-    Vs omega;
-    Vector3d r, v;
-    Cs zeta;
-  };
-  struct Stage {
-    Vs dtheta;
-    Flat d;
-  };
-  const auto axpy = [&](const Flat& x, const Flat& dx, double w) {
-    Flat y = x;
-    for (int k = 0; k < n; ++k) y.omega[k] += w * dx.omega[k];
-    y.r += w * dx.r;
-    y.v += w * dx.v;
-    for (std::size_t l = 0; l < y.zeta.size(); ++l) y.zeta[l] += w * dx.zeta[l];
-    return y;
-  };
   const auto stage = [&](double t, const Vs& theta, const Flat& y) {
     ChainState x;
     x.t = t;
@@ -261,11 +285,6 @@ ChainState chain_step(const NonlinearChain& c, const ChainState& s, double h) {
     ChainRates r = chain_rates(c, x);
     st.d = {std::move(r.omega_dot), y.v, r.a1, std::move(r.zeta_dot)};
     return st;
-  };
-  const auto turn = [&](const Vs& a, const Vs& b, double w) {
-    Vs out(a);
-    for (int k = 0; k < n; ++k) out[k] += w * b[k];
-    return out;
   };
   const Vs zero(n, Vector3d::Zero());
   const Flat y0{s.omega, s.r1, s.v1, s.zeta};
@@ -307,59 +326,43 @@ constexpr double kB4[7] = {5179.0 / 57600, 0, 7571.0 / 16695, 393.0 / 640, -9209
 
 }  // namespace
 
-ChainStepDP chain_step_dp(const NonlinearChain& c, const ChainState& s, const ChainRates& rates0, double h) {
-  const int n = c.size();
-  const std::size_t nz = s.zeta.size();
-  // Stage derivatives: θ̇ (dexp⁻¹), ω̇, ζ̇, ṙ_1, v̇_1.
-  struct K {
-    std::vector<Vector3d> dtheta, domega;
-    std::vector<std::complex<double>> dzeta;
-    Vector3d dr, dv;
-  };
-  std::vector<K> k(7);
-  ChainState x = s;
-  ChainRates r = rates0;
-  for (int i = 0; i < 7; ++i) {
-    if (i > 0) {
-      x.t = s.t + kC[i] * h;
-      x.r1 = s.r1;
-      x.v1 = s.v1;
-      for (int j = 0; j < i; ++j) {
-        x.r1 += h * kA[i][j] * k[j].dr;
-        x.v1 += h * kA[i][j] * k[j].dv;
-      }
-      for (int b = 0; b < n; ++b) {
-        Vector3d theta = Vector3d::Zero(), omega = s.omega[b];
-        for (int j = 0; j < i; ++j) {
-          theta += h * kA[i][j] * k[j].dtheta[b];
-          omega += h * kA[i][j] * k[j].domega[b];
-        }
-        x.q[b] = rotated(s.q[b], theta);
-        x.omega[b] = omega;
-      }
-      for (std::size_t l = 0; l < nz; ++l) {
-        std::complex<double> z = s.zeta[l];
-        for (int j = 0; j < i; ++j) z += h * kA[i][j] * k[j].dzeta[l];
-        x.zeta[l] = z;
-      }
-      r = chain_rates(c, x);
-    }
-    // θ of this stage, for dexp⁻¹.
-    K& ki = k[i];
-    for (int b = 0; b < n; ++b) {
-      Vector3d theta = Vector3d::Zero();
-      for (int j = 0; j < i; ++j) theta += h * kA[i][j] * k[j].dtheta[b];
-      ki.dtheta.push_back(dexpinv5(theta, x.omega[b]));
-    }
-    ki.domega = r.omega_dot;
-    ki.dzeta = r.zeta_dot;
-    ki.dr = x.v1;
-    ki.dv = r.a1;
+namespace {
+
+// One Dormand-Prince stage's derivatives: θ̇ (dexp⁻¹), ω̇, ζ̇, ṙ_1, v̇_1.
+struct StageRates {
+  std::vector<Vector3d> dtheta, domega;
+  std::vector<std::complex<double>> dzeta;
+  Vector3d dr, dv;
+};
+
+// The state of stage i: s advanced by h Σ_{j<i} a_ij k_j (attitudes on the group by their θ).
+void stage_state(const ChainState& s, const std::vector<StageRates>& k, int i, double h, ChainState& x) {
+  x.t = s.t + kC[i] * h;
+  x.r1 = s.r1;
+  x.v1 = s.v1;
+  for (int j = 0; j < i; ++j) {
+    x.r1 += h * kA[i][j] * k[j].dr;
+    x.v1 += h * kA[i][j] * k[j].dv;
   }
-  ChainStepDP out;
-  out.next = x;  // stage 7 is the order-5 solution (its row of A is b)
-  out.next.t = s.t + h;
-  out.next_rates = r;
+  for (std::size_t b = 0; b < s.q.size(); ++b) {
+    Vector3d theta = Vector3d::Zero(), omega = s.omega[b];
+    for (int j = 0; j < i; ++j) {
+      theta += h * kA[i][j] * k[j].dtheta[b];
+      omega += h * kA[i][j] * k[j].domega[b];
+    }
+    x.q[b] = rotated(s.q[b], theta);
+    x.omega[b] = omega;
+  }
+  for (std::size_t l = 0; l < s.zeta.size(); ++l) {
+    std::complex<double> z = s.zeta[l];
+    for (int j = 0; j < i; ++j) z += h * kA[i][j] * k[j].dzeta[l];
+    x.zeta[l] = z;
+  }
+}
+
+// The embedded order-4 solution's distance from the order-5 one: attitudes, rates and (into the rate error) the
+// fluid's amplitudes.
+void step_errors(const std::vector<StageRates>& k, int n, std::size_t nz, double h, ChainStepDP& out) {
   for (int b = 0; b < n; ++b) {
     Vector3d dtheta = Vector3d::Zero(), domega = Vector3d::Zero();
     for (int j = 0; j < 7; ++j) {
@@ -377,6 +380,37 @@ ChainStepDP chain_step_dp(const NonlinearChain& c, const ChainState& s, const Ch
     zeta_error2 = std::max(zeta_error2, std::norm(dz));
   }
   out.rate_error = std::max(out.rate_error, std::sqrt(zeta_error2));
+}
+
+}  // namespace
+
+ChainStepDP chain_step_dp(const NonlinearChain& c, const ChainState& s, const ChainRates& rates0, double h) {
+  const int n = c.size();
+  std::vector<StageRates> k(7);
+  ChainState x = s;
+  ChainRates r = rates0;
+  for (int i = 0; i < 7; ++i) {
+    if (i > 0) {
+      stage_state(s, k, i, h, x);
+      r = chain_rates(c, x);
+    }
+    // θ of this stage, for dexp⁻¹.
+    StageRates& ki = k[i];
+    for (int b = 0; b < n; ++b) {
+      Vector3d theta = Vector3d::Zero();
+      for (int j = 0; j < i; ++j) theta += h * kA[i][j] * k[j].dtheta[b];
+      ki.dtheta.push_back(dexpinv5(theta, x.omega[b]));
+    }
+    ki.domega = r.omega_dot;
+    ki.dzeta = r.zeta_dot;
+    ki.dr = x.v1;
+    ki.dv = r.a1;
+  }
+  ChainStepDP out;
+  out.next = x;  // stage 7 is the order-5 solution (its row of A is b)
+  out.next.t = s.t + h;
+  out.next_rates = r;
+  step_errors(k, n, s.zeta.size(), h, out);
   return out;
 }
 
