@@ -364,15 +364,84 @@ class ThrottledProgress {
 
 }  // namespace
 
+namespace {
+
+// A body's spin and system.spin_factor both scale the spins: they cannot be the two axes of one map.
+void check_axes(const SweepAxis& a1, const std::optional<SweepAxis>& a2) {
+  const auto body_spin = [](const ParamKey& k) { return k.where == ParamKey::Where::body && k.field == "spin"; };
+  if (a2 && ((a1.key.is_spin_factor() && body_spin(a2->key)) || (body_spin(a1.key) && a2->key.is_spin_factor())))
+    throw SweepError("--param2 " + a2->key.text + ": a body's spin and system.spin_factor cannot be swept together");
+}
+
+// Walks the map's lines of points, each on its private copy of the scene, the first line before the others (the
+// rows start from its end states), the rest shared out to `threads` workers.
+class SweepWalk {
+ public:
+  SweepWalk(const Scene& base, TableCache& tables, const SweepAxis& a1, const std::optional<SweepAxis>& a2, bool track,
+            SweepResult& r, ThrottledProgress& report)
+      : base_(base), tables_(tables), a1_(a1), a2_(a2), n2_(a2 ? a2->steps : 1), track_(track), r_(r),
+        report_(report), end_state_(r.points.size()) {}
+
+  void run(int threads) {
+    plan_lines(a1_.steps, n2_, threads, track_, first_, lines_);
+    if (!first_.points.empty()) walk(first_);
+    std::vector<std::thread> pool;
+    for (int t = 1; t < threads; ++t) pool.emplace_back([this] { work(); });
+    work();
+    for (auto& th : pool) th.join();
+  }
+
+ private:
+  void work() {
+    for (long l; (l = next_.fetch_add(1)) < static_cast<long>(lines_.size());) walk(lines_[l]);
+  }
+  void walk(const Line& line) {
+    Scene s = base_;  // private copy: only the swept values change
+    LineState st = line.start_from >= 0 ? end_state_[line.start_from] : LineState{};
+    std::string why;
+    const long total = static_cast<long>(r_.points.size());
+    for (const long p : line.points) {
+      SweepPoint& pt = r_.points[p];
+      pt.v1 = a1_.value(static_cast<int>(p / n2_));
+      set_param(s, a1_.key, pt.v1);
+      if (a2_) {
+        pt.v2 = a2_->value(static_cast<int>(p % n2_));
+        set_param(s, a2_->key, pt.v2);
+      }
+      evaluate_point(s, tables_, track_, pt, st, why);
+      if (&line == &first_) end_state_[p] = st;
+      report_.done(++done_, total);
+    }
+    if (!why.empty()) {
+      std::lock_guard<std::mutex> lock(fallback_mutex_);
+      if (r_.first_fallback.empty()) r_.first_fallback = why;
+    }
+  }
+
+  const Scene& base_;
+  TableCache& tables_;
+  const SweepAxis& a1_;
+  const std::optional<SweepAxis>& a2_;
+  const int n2_;
+  const bool track_;
+  SweepResult& r_;
+  ThrottledProgress& report_;
+  Line first_;
+  std::vector<Line> lines_;
+  // The roots the first line's points ended with: the rows start from them once the first line is done.
+  std::vector<LineState> end_state_;
+  std::atomic<long> next_{0}, done_{0};
+  std::mutex fallback_mutex_;
+};
+
+}  // namespace
+
 SweepResult run_sweep(const Scene& base, TableCache& tables, const SweepAxis& a1,
                       const std::optional<SweepAxis>& a2, int threads, const SweepProgress& progress, bool track) {
   using clock = std::chrono::steady_clock;
   const auto t0 = clock::now();
-  const auto body_spin = [](const ParamKey& k) { return k.where == ParamKey::Where::body && k.field == "spin"; };
-  if (a2 && ((a1.key.is_spin_factor() && body_spin(a2->key)) || (body_spin(a1.key) && a2->key.is_spin_factor())))
-    throw SweepError("--param2 " + a2->key.text + ": a body's spin and system.spin_factor cannot be swept together");
-  const int n2 = a2 ? a2->steps : 1;
-  const long total = static_cast<long>(a1.steps) * n2;
+  check_axes(a1, a2);
+  const long total = static_cast<long>(a1.steps) * (a2 ? a2->steps : 1);
   SweepResult r;
   r.points.resize(total);
   if (threads <= 0) threads = std::max(1u, std::thread::hardware_concurrency());
@@ -380,45 +449,9 @@ SweepResult run_sweep(const Scene& base, TableCache& tables, const SweepAxis& a1
   r.threads = threads;
   // A family of tables changes the poles themselves from point to point: nothing to track.
   track = track && !a1.key.is_table() && !(a2 && a2->key.is_table());
-  Line first;
-  std::vector<Line> lines;
-  plan_lines(a1.steps, n2, threads, track, first, lines);
-  // The roots the first line's points ended with: the rows start from them once the first line is done.
-  std::vector<LineState> end_state(total);
-  std::atomic<long> next{0}, done{0};
-  std::mutex fallback_mutex;
   ThrottledProgress report(progress, t0);
-
-  auto walk = [&](const Line& line) {
-    Scene s = base;  // private copy: only the swept values change
-    LineState st = line.start_from >= 0 ? end_state[line.start_from] : LineState{};
-    std::string why;
-    for (const long p : line.points) {
-      SweepPoint& pt = r.points[p];
-      pt.v1 = a1.value(static_cast<int>(p / n2));
-      set_param(s, a1.key, pt.v1);
-      if (a2) {
-        pt.v2 = a2->value(static_cast<int>(p % n2));
-        set_param(s, a2->key, pt.v2);
-      }
-      evaluate_point(s, tables, track, pt, st, why);
-      if (&line == &first) end_state[p] = st;
-      report.done(++done, total);
-    }
-    if (!why.empty()) {
-      std::lock_guard<std::mutex> lock(fallback_mutex);
-      if (r.first_fallback.empty()) r.first_fallback = why;
-    }
-  };
-  auto worker = [&]() {
-    for (long l; (l = next.fetch_add(1)) < static_cast<long>(lines.size());) walk(lines[l]);
-  };
   load_tables(base, tables, a1, a2);
-  if (!first.points.empty()) walk(first);
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& th : pool) th.join();
+  SweepWalk(base, tables, a1, a2, track, r, report).run(threads);
   for (const auto& pt : r.points) {
     r.failed += pt.ok ? 0 : 1;
     r.tracked += pt.tracked ? 1 : 0;
