@@ -140,6 +140,48 @@ void sweep_rk45(const WorkSetup& w, const Scene& scene, const BenchOptions& opt,
   }
 }
 
+// H is conserved without friction (docs/rom.md, "Energy"): its change from y0 to the reference's final state,
+// relative to the size of its parts, as a row beside the reference's.
+void add_energy_drift_row(const WorkSetup& w, const BenchRow& reference, BenchResult& out,
+                          const std::function<void(const BenchRow&)>& progress) {
+  const EnergyMeter meter(w.m);
+  Eigen::VectorXcd u, v, wv;
+  w.f.from_state(w.m, w.y0, u, v, wv);
+  const Energy e0 = meter(u, v, wv);
+  w.f.from_state(w.m, w.ref, u, v, wv);
+  const Energy e1 = meter(u, v, wv);
+  BenchRow re = reference;
+  re.parameter = "energy_drift";
+  re.error = std::abs(e1.total() - e0.total()) / std::max(e0.scale(), 1e-300);
+  re.wall_seconds = re.cpu_seconds = BenchRow::nan;
+  out.rows.push_back(re);
+  if (progress) progress(re);
+}
+
+// exact in double: eigen-decomposition (real form when it applies) + the state at t_end.
+void add_exact_row(const WorkSetup& w, const BenchOptions& opt, BenchResult& out,
+                   const std::function<void(const BenchRow&)>& progress) {
+  Eigen::VectorXcd y;
+  const Timing te = time_runs([&] {
+    ModalForm mf = modal_form(w.f, !w.m.dissipative(), kRealTolerance);
+    if (mf.usable) {
+      if (mf.undamped_real && !mf.real) snap_to_imaginary_axis(mf);
+      y = modal_state_at(mf, w.y0, w.T);
+    } else {
+      y = (w.f.B * cd(w.T)).exp() * w.y0;  // defective spectrum: the exponential itself
+    }
+  }, opt.min_seconds);
+  BenchRow rx;
+  rx.part = "work";
+  rx.method = "exact";
+  rx.parameter = "none";
+  rx.wall_seconds = te.wall;
+  rx.cpu_seconds = te.cpu;
+  rx.error = relative_error(y, w.ref);
+  out.rows.push_back(rx);
+  if (progress) progress(rx);
+}
+
 void work_precision(const ChainModel& m, const Scene& scene, const BenchOptions& opt, BenchResult& out,
                     const std::function<void(const BenchRow&)>& progress) {
   WorkSetup w{m, build_first_order(m), {}, {}, scene.run.t_end, 0};
@@ -164,45 +206,8 @@ void work_precision(const ChainModel& m, const Scene& scene, const BenchOptions&
   out.reference_mantissa_bits = ref.mantissa_bits;
   const BenchRow r = add_work_row(out.rows, progress, "reference", "method_difference", BenchRow{}.value,
                                   BenchRow{}.steps, tr, ref.method_difference);
-  if (!m.dissipative()) {
-    // H is conserved without friction (docs/rom.md, "Energy"): its change from y0 to the reference's
-    // final state, relative to the size of its parts.
-    const EnergyMeter meter(m);
-    Eigen::VectorXcd u, v, wv;
-    w.f.from_state(m, w.y0, u, v, wv);
-    const Energy e0 = meter(u, v, wv);
-    w.f.from_state(m, w.ref, u, v, wv);
-    const Energy e1 = meter(u, v, wv);
-    BenchRow re = r;
-    re.parameter = "energy_drift";
-    re.error = std::abs(e1.total() - e0.total()) / std::max(e0.scale(), 1e-300);
-    re.wall_seconds = re.cpu_seconds = BenchRow::nan;
-    out.rows.push_back(re);
-    if (progress) progress(re);
-  }
-
-  // exact in double: eigen-decomposition (real form when it applies) + the state at t_end.
-  Eigen::VectorXcd y;
-  std::string how;
-  const Timing te = time_runs([&] {
-    ModalForm mf = modal_form(w.f, !m.dissipative(), kRealTolerance);
-    if (mf.usable) {
-      if (mf.undamped_real && !mf.real) snap_to_imaginary_axis(mf);
-      y = modal_state_at(mf, w.y0, w.T);
-    } else {
-      y = (w.f.B * cd(w.T)).exp() * w.y0;  // defective spectrum: the exponential itself
-    }
-  }, opt.min_seconds);
-  BenchRow rx;
-  rx.part = "work";
-  rx.method = "exact";
-  rx.parameter = "none";
-  rx.wall_seconds = te.wall;
-  rx.cpu_seconds = te.cpu;
-  rx.error = relative_error(y, w.ref);
-  out.rows.push_back(rx);
-  if (progress) progress(rx);
-
+  if (!m.dissipative()) add_energy_drift_row(w, r, out, progress);
+  add_exact_row(w, opt, out, progress);
   sweep_gauss(w, opt, out.rows, progress);
   sweep_rk45(w, scene, opt, out.rows, progress);
 }
