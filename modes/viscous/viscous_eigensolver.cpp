@@ -196,22 +196,10 @@ bool is_wanted_pair_structure(Vec Xr, Vec Xi) {
 
 }  // namespace
 
-std::vector<ViscousMode> viscous_modes_near(const ViscousForms& forms, std::complex<double> target,
-                                            const ViscousSolveSettings& settings) {
-  MPI_Comm comm = PetscObjectComm(reinterpret_cast<PetscObject>(forms.A.get()));
-  ShiftInvert op;
-  op.forms = &forms;
-  factorise(op, target, comm);
-  PetscInt local = 0, global = 0;
-  petsc_check(MatGetLocalSize(forms.A, &local, nullptr), "MatGetLocalSize");
-  petsc_check(MatGetSize(forms.A, &global, nullptr), "MatGetSize");
-  PMat T;
-  petsc_check(MatCreateShell(comm, local, local, global, global, &op, T.out()), "MatCreateShell");
-  petsc_check(MatShellSetOperation(T, MATOP_MULT, reinterpret_cast<void (*)(void)>(apply_shift_invert)),
-              "MatShellSetOperation");
+namespace {
 
-  PEPS eps;
-  petsc_check(EPSCreate(comm, eps.out()), "EPSCreate");
+// SLEPc's Krylov-Schur on the shell operator T = (A − target 𝓜)⁻¹𝓜, asked for `pairs` wanted θ and their conjugates.
+void solve_shift_invert(EPS eps, Mat T, const ViscousSolveSettings& settings) {
   petsc_check(EPSSetOptionsPrefix(eps, "viscous_"), "EPSSetOptionsPrefix");
   petsc_check(EPSSetOperators(eps, T, nullptr), "EPSSetOperators");
   petsc_check(EPSSetProblemType(eps, EPS_NHEP), "EPSSetProblemType");
@@ -223,14 +211,11 @@ std::vector<ViscousMode> viscous_modes_near(const ViscousForms& forms, std::comp
   petsc_check(EPSSetFromOptions(eps), "EPSSetFromOptions");
   petsc_check(EPSMonitorSet(eps, tick_monitor, nullptr, nullptr), "EPSMonitorSet");
   petsc_check(EPSSolve(eps), "EPSSolve (shift-and-invert of the viscous pencil)");
-  EPSConvergedReason reason;
-  petsc_check(EPSGetConvergedReason(eps, &reason), "EPSGetConvergedReason");
-  PetscInt converged = 0;
-  petsc_check(EPSGetConverged(eps, &converged), "EPSGetConverged");
-  const std::string near = "near lambda = " + std::to_string(target.real()) + " + " + std::to_string(target.imag()) + "i";
-  if (reason < 0 && converged == 0)
-    throw std::runtime_error("SLEPc did not converge " + near + " (reason " + std::to_string(reason) + ")");
+}
 
+// The converged pairs of the wanted problem as damped modes (λ = target + 1/θ with Im λ > 0), with their residues.
+std::vector<ViscousMode> damped_modes(EPS eps, PetscInt converged, const ViscousForms& forms,
+                                      std::complex<double> target, const ViscousSolveSettings& settings) {
   PVec Xr, Xi, minusXi;
   petsc_check(MatCreateVecs(forms.A, Xr.out(), nullptr), "MatCreateVecs");
   petsc_check(VecDuplicate(Xr, Xi.out()), "VecDuplicate");
@@ -257,6 +242,35 @@ std::vector<ViscousMode> viscous_modes_near(const ViscousForms& forms, std::comp
     m.residual = block_residual(forms, Xr, imag_part, m.lambda);
     modes.push_back(m);
   }
+  return modes;
+}
+
+}  // namespace
+
+std::vector<ViscousMode> viscous_modes_near(const ViscousForms& forms, std::complex<double> target,
+                                            const ViscousSolveSettings& settings) {
+  MPI_Comm comm = PetscObjectComm(reinterpret_cast<PetscObject>(forms.A.get()));
+  ShiftInvert op;
+  op.forms = &forms;
+  factorise(op, target, comm);
+  PetscInt local = 0, global = 0;
+  petsc_check(MatGetLocalSize(forms.A, &local, nullptr), "MatGetLocalSize");
+  petsc_check(MatGetSize(forms.A, &global, nullptr), "MatGetSize");
+  PMat T;
+  petsc_check(MatCreateShell(comm, local, local, global, global, &op, T.out()), "MatCreateShell");
+  petsc_check(MatShellSetOperation(T, MATOP_MULT, reinterpret_cast<void (*)(void)>(apply_shift_invert)),
+              "MatShellSetOperation");
+  PEPS eps;
+  petsc_check(EPSCreate(comm, eps.out()), "EPSCreate");
+  solve_shift_invert(eps, T, settings);
+  EPSConvergedReason reason;
+  petsc_check(EPSGetConvergedReason(eps, &reason), "EPSGetConvergedReason");
+  PetscInt converged = 0;
+  petsc_check(EPSGetConverged(eps, &converged), "EPSGetConverged");
+  const std::string near = "near lambda = " + std::to_string(target.real()) + " + " + std::to_string(target.imag()) + "i";
+  if (reason < 0 && converged == 0)
+    throw std::runtime_error("SLEPc did not converge " + near + " (reason " + std::to_string(reason) + ")");
+  std::vector<ViscousMode> modes = damped_modes(eps, converged, forms, target, settings);
   if (modes.empty())
     throw std::runtime_error("SLEPc found no damped mode " + near + " (" + std::to_string(converged) +
                              " eigenpairs converged)");
