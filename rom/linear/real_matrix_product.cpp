@@ -12,6 +12,40 @@ namespace {
 // X = W C, W: m x k (leading dimension ldw), C: k x n (ldc), X: m x n (ldx), column-major. Blocks of
 // 8 rows x 4 columns of X are held in eight AVX registers while k runs (one W column load of 8 values,
 // four broadcasts of C and eight fused multiply-adds per k); leftover rows and columns are scalar.
+// The rows i0..m of four columns that the 8-row blocks leave over (compiled for the same target as the kernel, so that
+// its arithmetic, FMA contraction included, is the kernel's).
+__attribute__((target("avx2,fma"))) void leftover_rows(const double* W, long ldw, const double* c0, long ldc, double* X,
+                                                       long ldx, long i0, long m, long k) {
+  const double* c1 = c0 + ldc;
+  const double* c2 = c1 + ldc;
+  const double* c3 = c2 + ldc;
+  for (long i = i0; i < m; ++i) {
+    double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+    for (long q = 0; q < k; ++q) {
+      const double wq = W[q * ldw + i];
+      s0 += wq * c0[q];
+      s1 += wq * c1[q];
+      s2 += wq * c2[q];
+      s3 += wq * c3[q];
+    }
+    X[i] = s0;
+    X[ldx + i] = s1;
+    X[2 * ldx + i] = s2;
+    X[3 * ldx + i] = s3;
+  }
+}
+
+// The columns j0..n that the 4-column blocks leave over.
+__attribute__((target("avx2,fma"))) void leftover_columns(const double* W, long ldw, const double* C, long ldc,
+                                                          double* X, long ldx, long m, long k, long j0, long n) {
+  for (long j = j0; j < n; ++j)
+    for (long i = 0; i < m; ++i) {
+      double s = 0;
+      for (long q = 0; q < k; ++q) s += W[q * ldw + i] * C[j * ldc + q];
+      X[j * ldx + i] = s;
+    }
+}
+
 __attribute__((target("avx2,fma"))) void product_avx2(const double* W, long ldw, const double* C, long ldc,
                                                       double* X, long ldx, long m, long k, long n) {
   long j = 0;
@@ -52,27 +86,9 @@ __attribute__((target("avx2,fma"))) void product_avx2(const double* W, long ldw,
       _mm256_storeu_pd(x, a3);
       _mm256_storeu_pd(x + 4, b3);
     }
-    for (; i < m; ++i) {
-      double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
-      for (long q = 0; q < k; ++q) {
-        const double wq = W[q * ldw + i];
-        s0 += wq * c0[q];
-        s1 += wq * c1[q];
-        s2 += wq * c2[q];
-        s3 += wq * c3[q];
-      }
-      X[j * ldx + i] = s0;
-      X[(j + 1) * ldx + i] = s1;
-      X[(j + 2) * ldx + i] = s2;
-      X[(j + 3) * ldx + i] = s3;
-    }
+    leftover_rows(W, ldw, C + j * ldc, ldc, X + j * ldx, ldx, i, m, k);
   }
-  for (; j < n; ++j)
-    for (long i = 0; i < m; ++i) {
-      double s = 0;
-      for (long q = 0; q < k; ++q) s += W[q * ldw + i] * C[j * ldc + q];
-      X[j * ldx + i] = s;
-    }
+  leftover_columns(W, ldw, C, ldc, X, ldx, m, k, j, n);
 }
 
 bool cpu_has_avx2_fma() {
