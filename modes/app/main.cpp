@@ -478,7 +478,7 @@ void check_command_name(CLI::App& app, const std::vector<std::string>& ours) {
   });
   if (ours.size() > 1 && ours[1][0] != '-' && !known)
     throw std::runtime_error("unknown shape or command '" + ours[1] +
-                             "' (expected sphere, spheroid, cylinder, cone, section, info or compare)");
+                             "' (expected sphere, spheroid, cylinder, cone, section, response, info or compare)");
 }
 
 // Parses; returns -1 when parsed, else the exit code (help printed, or a command-line error: 2).
@@ -527,6 +527,9 @@ int run(int argc, char** argv) {
     else add_table_options(s.app, req, fields, cluster_method);
     add_output_option(s.app, response, output);
   }
+  // `response` is taken off the command line before parsing (run's start): listed here for --help only.
+  app.add_subcommand("response", "SHAPE ... --sigma LIST -o R.csv | FILE.h5: the fluid's moment response R(sigma), or "
+                                 "a response table for chain-rom (cavity-modes response SHAPE --help; docs/viscous.md)");
   InfoRequest info_request;
   CompareRequest compare_request;
   CLI::App* info = add_info_command(app, info_request);

@@ -11,7 +11,8 @@
    of chain-rom's model: |F| at the roots must be rounding against its terms;
 4. the same table read as if filled (t and K dropped) gives other roots: the free surface's terms matter;
 5. what is not modelled yet is refused in one line, no file written: a free chain and the nonlinear model with this
-   tank (chain-rom), --fill on a sphere, with --ekman, with --method mesh and outside (0, 1] (cavity-modes, exit 2).
+   tank (chain-rom), --fill on a sphere, with --ekman, with --method mesh and outside (0, 1] (cavity-modes, exit 2),
+   and a section with a 'free' group, which would otherwise be meshed as a wall (exit 1).
 usage: stewartson_scene_check.py CAVITY_MODES CHAIN_ROM SCENE WORKDIR
 """
 import json, os, re, subprocess, sys
@@ -78,6 +79,8 @@ if not filled > 1e-3:
 
 def refused(command, code, phrase, output=None):
     global failed
+    if output and os.path.exists(output):
+        os.remove(output)  # a stale file of an earlier run must not count against this one
     r = subprocess.run(command, capture_output=True, text=True)
     lines = r.stderr.strip().splitlines()
     ok = (r.returncode == code if code else r.returncode != 0) and len(lines) == 1 and phrase in lines[0]
@@ -101,4 +104,9 @@ refused([modes_bin, "cylinder", "--radius", "1", "--height", "2", "--fill", "0.5
 for bad in ("0", "1.5", "-0.2", "abc"):
     refused([modes_bin, "cylinder", "--radius", "1", "--height", "2", "--fill", bad, "-o", x], 2,
             "volume fraction must be in (0, 1]", x)
+annulus = open(os.path.join(os.path.dirname(scene), "..", "sections", "annulus.geo")).read()
+free_geo = os.path.join(work, "annulus_free.geo")
+open(free_geo, "w").write(annulus.replace('Physical Curve("wall") = {1, 2, 3, 4};',
+                                          'Physical Curve("wall") = {1, 2, 3};\nPhysical Curve("free") = {4};'))
+refused([modes_bin, "section", free_geo, "--modes", "3", "-o", x], 1, "'free' (a free surface) is not read yet", x)
 sys.exit(1 if failed else 0)
