@@ -37,9 +37,14 @@ def draw_growth(fig, ax, np, SymLogNorm, keys, data, stable, growth):
     ax.set_facecolor("0.75")  # nan: not evaluated
     if finite.size and finite.max() > 0:
         top = finite.max()
+        linthresh = top * 1e-3
         im = ax.pcolormesh(x, y, G, cmap="RdBu_r", shading="nearest",
-                           norm=SymLogNorm(linthresh=top * 1e-3, vmin=-top, vmax=top, base=10))
-        fig.colorbar(im, ax=ax, label="largest growth rate −Im σ (1/s): red grows, blue decays")
+                           norm=SymLogNorm(linthresh=linthresh, vmin=-top, vmax=top, base=10))
+        # Ticks at 0 and at the decades at least ten times the linear range's edge: matplotlib's own put ±linthresh
+        # beside 0, their labels overlapping.
+        decades = [10.0 ** k for k in range(int(np.ceil(np.log10(10 * linthresh))), int(np.floor(np.log10(top))) + 1)]
+        ticks = sorted([-d for d in decades] + [0.0] + decades)
+        fig.colorbar(im, ax=ax, ticks=ticks, label="largest growth rate −Im σ (1/s): red grows, blue decays")
     S = stable.reshape(len(x), len(y)).T
     if len(x) > 1 and len(y) > 1 and np.nanmin(S) < 1 <= np.nanmax(S):  # growth within the tolerance is stable
         ax.contour(x, y, np.nan_to_num(S, nan=0.5), levels=[0.5], colors="k", linewidths=1.2)

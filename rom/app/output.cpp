@@ -373,7 +373,8 @@ void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp, b
   os << (m.free_chain ? "free" : "fixed") << " chain, " << m.n << " bodies, " << m.n_modes()
      << " fluid modes\n";
   for (int k = 0; k < m.n; ++k) print_body_line(os, m, sp, k);
-  print_roots(os, m, sp, all);
+  // The verdict first, what a user reads; then the roots it rests on and the checks.
+  const auto precision = os.precision();
   os << std::setprecision(6);
   if (!m.dissipative()) {
     os << "stable: " << (sp.stable ? "yes" : "no") << " (|Im sigma| <= " << sp.tolerance << " counts as real)\n";
@@ -381,6 +382,9 @@ void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp, b
   } else {
     os << verdict_with_dissipation(m, sp) << "\n";
   }
+  os << std::setprecision(static_cast<int>(precision));
+  print_roots(os, m, sp, all);
+  os << std::setprecision(6);
   os << "Newton on det Phi = 0 from every root: worst shift " << sp.root_agreement << " of the spectral radius";
   if (sp.newton_failed) os << ", " << sp.newton_failed << " roots where Newton did not converge";
   os << "\n";
