@@ -7,6 +7,7 @@
 #include "free_surface_radial.hpp"
 #include "partial_fill_closed_form.hpp"
 #include "partial_fill_cylinder.hpp"
+#include "partial_fill_table.hpp"
 #include "line_space.hpp"
 #include "separable_forms.hpp"
 
@@ -242,4 +243,34 @@ TEST(PartialFillCoupling, WallPressureMomentIsTheModalModel) {
     }
   }
   EXPECT_LT(worst, 1e-9);
+}
+
+// A partially filled cylinder's table (cavity-modes cylinder --fill F, its defaults) against the closed form: each row
+// with |λ| > 0.45 of the first axial wave is one of Stewartson's partially filled modes to 1e-9 (the frequencies of
+// docs/physics.md §2's table, data/reference/partial_fill/cylinder_frequencies.csv), for three fills and aspects.
+TEST(PartialFillTable, RowsAreTheClosedFormsModes) {
+  for (const auto& [fill, height] : std::vector<std::pair<double, double>>{{0.8, 1.0}, {0.9, 2.0}, {0.98, 3.0}}) {
+    PartialFillTableSettings req;
+    req.shape.kind = "cylinder";
+    req.shape.dims = {{"radius", 1.0}, {"height", height}};
+    req.grid.order = 0;  // the separable method's defaults, as the command line gives them
+    req.fill = fill;
+    req.check_convergence = false;
+    const rc::ModeTable t = partially_filled_cylinder_table(req, {});
+    const auto exact_modes = exact::partially_filled_cylinder_modes(1.0, height, fill, 1);
+    int compared = 0;
+    double worst = 0;
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      if (std::abs(t.lambda[i]) < 0.45 || t.E[i] < 1e-12) continue;  // the first axial wave's long modes only
+      double d = 1e300;
+      for (const auto& m : exact_modes) d = std::min(d, std::abs(m.lambda - t.lambda[i]) / std::abs(m.lambda));
+      if (d > 1e-3) continue;  // a row of another axial wave
+      worst = std::max(worst, d);
+      ++compared;
+    }
+    std::printf("fill %.2f, 2h/a = %.0f: %zu rows, %d of them the first axial wave's modes with |lambda| > 0.45, to %.1e "
+                "of the closed form\n", fill, height, t.size(), compared, worst);
+    EXPECT_GE(compared, 2);
+    EXPECT_LT(worst, 1e-9);
+  }
 }
