@@ -333,6 +333,12 @@ rc::modes::ViscousTableSettings resolve_viscous(const CLI::App& cmd, bool respon
   return {};
 }
 
+// `response` is taken off the command line before parsing (run's start): listed as a subcommand for --help only.
+void list_response_command(CLI::App& app) {
+  app.add_subcommand("response", "SHAPE ... --sigma LIST -o R.csv | FILE.h5: the fluid's moment response R(sigma), or "
+                                 "a response table for chain-rom (cavity-modes response SHAPE --help; docs/viscous.md)");
+}
+
 // `cavity-modes info FILE`: the table's report, its JSON, or its stored section text.
 struct InfoRequest {
   std::string file;
@@ -527,9 +533,7 @@ int run(int argc, char** argv) {
     else add_table_options(s.app, req, fields, cluster_method);
     add_output_option(s.app, response, output);
   }
-  // `response` is taken off the command line before parsing (run's start): listed here for --help only.
-  app.add_subcommand("response", "SHAPE ... --sigma LIST -o R.csv | FILE.h5: the fluid's moment response R(sigma), or "
-                                 "a response table for chain-rom (cavity-modes response SHAPE --help; docs/viscous.md)");
+  list_response_command(app);
   InfoRequest info_request;
   CompareRequest compare_request;
   CLI::App* info = add_info_command(app, info_request);
