@@ -19,4 +19,9 @@ struct ComplexEigen {
 ComplexEigen complex_eigen(const Eigen::MatrixXcd& A, bool vectors,
                            const char* what = "the first-order matrix of (26)");
 
+// The same for a dense real matrix (LAPACK's dgeev, else Eigen's EigenSolver): complex values and vectors, a
+// complex pair's vectors unpacked from LAPACK's real storage. Used for the companion form of a partially filled
+// tank's quartic (modes/freesurface/free_surface_mesh.hpp).
+ComplexEigen real_eigen(const Eigen::MatrixXd& A, bool vectors, const char* what);
+
 }  // namespace rc

@@ -59,7 +59,7 @@ struct GmshMesh {
   int order = 0;
   double size = 0;
   std::unordered_map<std::size_t, std::array<double, 2>> coords;  // node tag -> (r, z)
-  std::vector<std::size_t> triangles, wall_edges, axis_nodes;
+  std::vector<std::size_t> triangles, wall_edges, axis_nodes, free_edges;
   std::vector<double> local_nodes;  // (u, v) of the triangle's local nodes
   double extent = 1;                // largest |coordinate| of the model, for tolerances
 };
@@ -216,6 +216,13 @@ void read_wall_and_axis(GmshMesh& m, const std::string& where) {
     throw std::runtime_error(where + ": 'wall' elements are not lines of the triangles' order " +
                              std::to_string(m.order));
   m.wall_edges = element_nodes(type, wall);
+  // A partially filled tank's free surface (built-in shapes with a free_radius).
+  if (const int free = find_physical_tag(1, "free"); free >= 0) {
+    const auto entities = group_entities(1, free);
+    if (single_element_type(1, entities, "free", where) != type)
+      throw std::runtime_error(where + ": 'free' elements are not lines of the triangles' order");
+    m.free_edges = element_nodes(type, entities);
+  }
   // A ring-shaped section (annulus, torus) has no axis: its wall is its whole boundary (checked by add_axis).
   const int axis = find_physical_tag(1, "axis");
   if (axis < 0) return;
@@ -400,27 +407,44 @@ void check_jacobians(const MeridianMesh& m, const std::string& where) {
   }
 }
 
-// Wall edges run counter-clockwise around the fluid (fluid on the left), like the triangles'
-// own edges; a reversed gmsh line [v0, v1, e1..e(p-1)] is [v1, v0, e(p-1)..e1].
-void add_wall(MeridianMesh& m, const GmshMesh& g, const std::unordered_map<std::size_t, int>& index,
-              const std::string& where) {
+// Boundary edges (wall or free surface) run counter-clockwise around the fluid (fluid on the left), like the
+// triangles' own edges; a reversed gmsh line [v0, v1, e1..e(p-1)] is [v1, v0, e(p-1)..e1].
+std::vector<int> oriented_edges(const MeridianMesh& m, const GmshMesh& g, const std::vector<std::size_t>& raw,
+                                const char* group, const std::unordered_map<std::size_t, int>& index,
+                                const std::string& where) {
   std::map<std::pair<int, int>, bool> directed;  // vertex edges of the (counter-clockwise) triangles
   for (std::size_t t = 0; t < m.num_triangles(); ++t) {
     const int* v = &m.triangles[t * m.nodes_per_element];
     for (int i = 0; i < 3; ++i) directed[{v[i], v[(i + 1) % 3]}] = true;
   }
   const std::size_t npe = g.order + 1;
-  for (std::size_t e = 0; e < g.wall_edges.size(); e += npe) {
+  std::vector<int> out;
+  for (std::size_t e = 0; e < raw.size(); e += npe) {
     std::vector<int> edge;
-    for (std::size_t a = 0; a < npe; ++a) edge.push_back(mapped(index, g.wall_edges[e + a], "wall", where));
+    for (std::size_t a = 0; a < npe; ++a) edge.push_back(mapped(index, raw[e + a], group, where));
     if (!directed.count({edge[0], edge[1]})) {
       if (!directed.count({edge[1], edge[0]}))
-        throw std::runtime_error(where + ": a 'wall' edge is not a side of a 'fluid' triangle");
+        throw std::runtime_error(where + ": a '" + group + "' edge is not a side of a 'fluid' triangle");
       std::swap(edge[0], edge[1]);
       std::reverse(edge.begin() + 2, edge.end());
     }
-    m.wall_edges.insert(m.wall_edges.end(), edge.begin(), edge.end());
+    out.insert(out.end(), edge.begin(), edge.end());
   }
+  return out;
+}
+
+// The free surface must be one coaxial cylinder r = b (docs/physics.md §2): its nodes are snapped to b.
+void add_free_surface(MeridianMesh& m, const GmshMesh& g, const std::unordered_map<std::size_t, int>& index,
+                      const std::string& where) {
+  if (g.free_edges.empty()) return;
+  m.free_edges = oriented_edges(m, g, g.free_edges, "free", index, where);
+  double lo = m.nodes[m.free_edges.front()][0], hi = lo;
+  for (int n : m.free_edges) lo = std::min(lo, m.nodes[n][0]), hi = std::max(hi, m.nodes[n][0]);
+  if (hi - lo > 1e-9 * g.extent)
+    throw std::runtime_error(where + ": the free surface 'free' is not one coaxial cylinder (r from " + number(lo) +
+                             " to " + number(hi) + ")");
+  m.free_radius = 0.5 * (lo + hi);
+  for (int n : m.free_edges) m.nodes[n][0] = m.free_radius;
 }
 
 }  // namespace
@@ -451,7 +475,8 @@ MeridianMesh mesh_meridian(const ShapeSpec& shape, const MeshOptions& options) {
   add_axis(m, g, index, where);
   orient_triangles(m, g.local_nodes);
   check_jacobians(m, where);
-  add_wall(m, g, index, where);
+  m.wall_edges = oriented_edges(m, g, g.wall_edges, "wall", index, where);
+  add_free_surface(m, g, index, where);
   return m;
 }
 

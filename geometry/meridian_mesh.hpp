@@ -47,6 +47,8 @@ struct MeridianMesh {
   std::vector<int> triangles;                   // nodes_per_element node indices per triangle, gmsh local order
   std::vector<int> axis_nodes;                  // nodes on r = 0 (sorted, unique)
   std::vector<int> wall_edges;                  // (order+1) node indices per wall edge, gmsh local order
+  std::vector<int> free_edges;                  // the same for the free surface r = free_radius (partial fill)
+  double free_radius = 0.0;                     // > 0 only with free edges
   double size = 0.0;                            // element size actually requested
   std::size_t num_triangles() const { return triangles.size() / nodes_per_element; }
 };

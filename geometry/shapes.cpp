@@ -25,9 +25,14 @@ const std::map<std::string, std::vector<std::string>>& required_dims() {
   return dims;
 }
 
-// Dimensions a shape may take besides its required ones: the cylinder's coaxial rod (an annular cavity, no axis).
+// Dimensions a shape may take besides its required ones: the cylinder's coaxial rod (an annular cavity, no axis),
+// and the free surface r = free_radius of a partially filled tank (geometry/free_surface.hpp; the liquid is the part
+// of the cavity with r >= free_radius).
 const std::map<std::string, std::vector<std::string>>& optional_dims() {
-  static const std::map<std::string, std::vector<std::string>> dims = {{"cylinder", {"inner_radius"}}};
+  static const std::map<std::string, std::vector<std::string>> dims = {{"cylinder", {"inner_radius", "free_radius"}},
+                                                                       {"sphere", {"free_radius"}},
+                                                                       {"spheroid", {"free_radius"}},
+                                                                       {"cone", {"free_radius"}}};
   return dims;
 }
 
@@ -46,38 +51,46 @@ std::string number(double v) {
 
 double dim(const ShapeSpec& shape, const std::string& name) { return shape.dims.at(name); }
 
-// Physical groups as the solver expects them: the fluid surfaces, wall curves, axis curves.
-void add_groups(const std::vector<int>& fluid, const std::vector<int>& wall, const std::vector<int>& axis) {
+// Physical groups as the solver expects them: the fluid surfaces, wall curves, axis curves, free-surface curves.
+void add_groups(const std::vector<int>& fluid, const std::vector<int>& wall, const std::vector<int>& axis,
+                const std::vector<int>& free = {}) {
   geo::synchronize();
   gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, fluid), "fluid");
   gmsh::model::setPhysicalName(1, gmsh::model::addPhysicalGroup(1, wall), "wall");
   if (!axis.empty()) gmsh::model::setPhysicalName(1, gmsh::model::addPhysicalGroup(1, axis), "axis");
+  if (!free.empty()) gmsh::model::setPhysicalName(1, gmsh::model::addPhysicalGroup(1, free), "free");
 }
 
 // Counter-clockwise loop of curves -> plane surface (positively oriented triangles).
 int surface(const std::vector<int>& curves) { return geo::addPlaneSurface({geo::addCurveLoop(curves)}); }
 
-// Two quarter arcs of the ellipse r²/a² + z²/c² = 1 from the south to the north pole (circle
-// arcs when a == c: gmsh's ellipse needs distinct axes), then the axis back down.
-void build_ellipse(double a, double c, double h) {
+// Two arcs of the ellipse r²/a² + z²/c² = 1 from the south to the north pole (circle arcs when a == c: gmsh's
+// ellipse needs distinct axes), then the axis back down. free > 0: the arcs start and end on the free surface
+// r = free, z = ±c √(1 − free²/a²), and its line closes the section instead of the axis.
+void build_ellipse(double a, double c, double h, double free) {
   const int centre = geo::addPoint(0, 0, 0, h);
-  const int south = geo::addPoint(0, -c, 0, h), equator = geo::addPoint(a, 0, 0, h),
-            north = geo::addPoint(0, c, 0, h);
+  const double zf = c * std::sqrt(std::max(0.0, 1 - free * free / (a * a)));
+  const int south = geo::addPoint(free, -zf, 0, h), equator = geo::addPoint(a, 0, 0, h),
+            north = geo::addPoint(free, zf, 0, h);
   int lower, upper;
   if (a == c) {
     lower = geo::addCircleArc(south, centre, equator);
     upper = geo::addCircleArc(equator, centre, north);
   } else {
-    const int major = a > c ? equator : north;  // any point on the major axis
+    // Any point on the major axis (with a free surface the pole is no point of the section).
+    const int major = a > c ? equator : free > 0 ? geo::addPoint(0, c, 0, h) : north;
     lower = geo::addEllipseArc(south, centre, major, equator);
     upper = geo::addEllipseArc(equator, centre, major, north);
   }
-  const int axis = geo::addLine(north, south);
-  add_groups({surface({lower, upper, axis})}, {lower, upper}, {axis});
+  const int closing = geo::addLine(north, south);
+  if (free > 0) add_groups({surface({lower, upper, closing})}, {lower, upper}, {}, {closing});
+  else add_groups({surface({lower, upper, closing})}, {lower, upper}, {closing});
 }
 
 // inner > 0: the liquid around a coaxial rod of that radius; the rod's line is wall and there is no axis.
-void build_cylinder(double radius, double height, double h, double radial_size, double inner) {
+// free > 0: the liquid outside the free surface r = free (beyond any rod), whose line is "free".
+void build_cylinder(double radius, double height, double h, double radial_size, double rod, double free) {
+  const double inner = std::max(rod, free);
   const double z0 = -0.5 * height, z1 = 0.5 * height;
   const int p0 = geo::addPoint(inner, z0, 0, h), p1 = geo::addPoint(radius, z0, 0, h),
             p2 = geo::addPoint(radius, z1, 0, h), p3 = geo::addPoint(inner, z1, 0, h);
@@ -93,15 +106,18 @@ void build_cylinder(double radius, double height, double h, double radial_size, 
     for (int c : {side, axis}) geo::mesh::setTransfiniteCurve(c, nz + 1);
     geo::mesh::setTransfiniteSurface(fluid, "Alternate");
   }
-  if (inner > 0) add_groups({fluid}, {bottom, side, top, axis}, {});
+  if (free > 0) add_groups({fluid}, {bottom, side, top}, {}, {axis});
+  else if (inner > 0) add_groups({fluid}, {bottom, side, top, axis}, {});
   else add_groups({fluid}, {bottom, side, top}, {axis});
 }
 
-void build_cone(double radius, double height, double h) {
-  const int apex = geo::addPoint(0, 0, 0, h), rim = geo::addPoint(radius, height, 0, h),
-            centre = geo::addPoint(0, height, 0, h);
-  const int slant = geo::addLine(apex, rim), lid = geo::addLine(rim, centre), axis = geo::addLine(centre, apex);
-  add_groups({surface({slant, lid, axis})}, {slant, lid}, {axis});
+// free > 0: the liquid outside the free surface r = free, which meets the slant at z = free·height/radius.
+void build_cone(double radius, double height, double h, double free) {
+  const int apex = geo::addPoint(free, free * height / radius, 0, h), rim = geo::addPoint(radius, height, 0, h),
+            centre = geo::addPoint(free, height, 0, h);
+  const int slant = geo::addLine(apex, rim), lid = geo::addLine(rim, centre), closing = geo::addLine(centre, apex);
+  if (free > 0) add_groups({surface({slant, lid, closing})}, {slant, lid}, {}, {closing});
+  else add_groups({surface({slant, lid, closing})}, {slant, lid}, {closing});
 }
 
 // Nodes across a wall layer of thickness t whose cells start at `first` and grow by `ratio`: the smallest count
@@ -176,34 +192,45 @@ void validate_shape(const ShapeSpec& shape) {
   if (shape.dims.count("inner_radius") && !(shape.dims.at("inner_radius") < shape.dims.at("radius")))
     throw std::runtime_error(shape.kind + ": inner radius " + number(shape.dims.at("inner_radius")) +
                              " must be below the radius " + number(shape.dims.at("radius")));
+  if (shape.dims.count("free_radius")) {
+    const double b = shape.dims.at("free_radius"), outer = shape.kind == "spheroid" ? dim(shape, "a") : dim(shape, "radius");
+    const double inner = shape.dims.count("inner_radius") ? dim(shape, "inner_radius") : 0.0;
+    if (!(b > inner && b < outer))
+      throw std::runtime_error(shape.kind + ": free surface radius " + number(b) + " must lie between " +
+                               number(inner) + " and " + number(outer));
+  }
   if (shape.kind == "section" && shape.file.empty())
     throw std::runtime_error("section: no file given (a .geo or .msh meridian section)");
 }
 
 double smallest_dimension(const ShapeSpec& shape) {
-  if (shape.kind == "sphere") return dim(shape, "radius");
-  if (shape.kind == "spheroid") return std::min(dim(shape, "a"), dim(shape, "c"));
-  const double inner = shape.dims.count("inner_radius") ? dim(shape, "inner_radius") : 0.0;
+  const double free = shape.dims.count("free_radius") ? dim(shape, "free_radius") : 0.0;
+  if (shape.kind == "sphere") return dim(shape, "radius") - free;
+  if (shape.kind == "spheroid") return std::min(dim(shape, "a") - free, dim(shape, "c"));
+  const double inner = std::max(free, shape.dims.count("inner_radius") ? dim(shape, "inner_radius") : 0.0);
   return std::min(dim(shape, "radius") - inner, dim(shape, "height"));
 }
 
 bool build_shape(const ShapeSpec& shape, double size, double radial_size, const MeshOptions* layers) {
   if (radial_size > 0 && shape.kind != "cylinder")
     throw std::runtime_error(shape.kind + ": a radial mesh size (structured mesh) is only available for the cylinder");
+  const double free = shape.dims.count("free_radius") ? dim(shape, "free_radius") : 0.0;
   if (shape.kind == "sphere") {
     const double r = dim(shape, "radius");
-    build_ellipse(r, r, size);
+    build_ellipse(r, r, size, free);
   } else if (shape.kind == "spheroid") {
-    build_ellipse(dim(shape, "a"), dim(shape, "c"), size);
+    build_ellipse(dim(shape, "a"), dim(shape, "c"), size, free);
   } else if (shape.kind == "cylinder") {
     build_cylinder(dim(shape, "radius"), dim(shape, "height"), size, radial_size,
-                   shape.dims.count("inner_radius") ? dim(shape, "inner_radius") : 0.0);
+                   shape.dims.count("inner_radius") ? dim(shape, "inner_radius") : 0.0, free);
   } else if (shape.kind == "cone") {
+    if (free > 0 && layers && layers->wall_size > 0)
+      throw std::runtime_error("cone: wall layers with a free surface are not built yet");
     if (layers && layers->wall_size > 0 && layers->wall_layer > layers->wall_size) {
       build_layered_cone(dim(shape, "radius"), dim(shape, "height"), size, *layers);
       return true;
     }
-    build_cone(dim(shape, "radius"), dim(shape, "height"), size);
+    build_cone(dim(shape, "radius"), dim(shape, "height"), size, free);
   } else {
     throw std::logic_error("build_shape: not a built-in shape: " + shape.kind);
   }

@@ -39,6 +39,7 @@ geometry::MeridianMesh mesh_on_root(const std::function<geometry::MeridianMesh()
   m.order = header[0];
   m.nodes_per_element = header[1];
   MPI_Bcast(&m.size, 1, MPI_DOUBLE, 0, comm);
+  MPI_Bcast(&m.free_radius, 1, MPI_DOUBLE, 0, comm);
   std::vector<double> xy;
   for (const auto& p : m.nodes) xy.insert(xy.end(), {p[0], p[1]});
   broadcast_vector(xy, MPI_DOUBLE, comm);
@@ -47,6 +48,7 @@ geometry::MeridianMesh mesh_on_root(const std::function<geometry::MeridianMesh()
   broadcast_vector(m.triangles, MPI_INT, comm);
   broadcast_vector(m.axis_nodes, MPI_INT, comm);
   broadcast_vector(m.wall_edges, MPI_INT, comm);
+  broadcast_vector(m.free_edges, MPI_INT, comm);
   return m;
 }
 
