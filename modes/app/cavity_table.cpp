@@ -144,9 +144,12 @@ ModeTable compute_mode_table(const TableRequest& req, const ProgressFn& progress
   auto report = [&](const std::string& what) { progress_lines.step(what); };
   if (!req.targets.empty()) return target_table(req, progress_lines);
 
-  if (req.fill < 1)
-    return partially_filled_cylinder_table({req.shape, req.mesh, req.fill, req.selection, req.convergence_tolerance,
-                                            req.check_convergence}, report);
+  if (req.fill < 1) {
+    const PartialFillTableSettings settings{req.shape, req.mesh, req.fill, req.selection, req.convergence_tolerance,
+                                            req.check_convergence};
+    return req.method == TableMethod::separable ? partially_filled_cylinder_table(settings, report)
+                                                : partially_filled_mesh_table(settings, report);
+  }
   if (req.method == TableMethod::separable) {
     if (fields) throw std::runtime_error("--fields needs --method mesh (the separable solver keeps no 2-D mesh)");
     return separable_cylinder_table({req.shape, req.mesh, req.selection, req.convergence_tolerance,

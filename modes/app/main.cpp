@@ -205,14 +205,20 @@ void refuse_extras(const CLI::App& cmd, bool response) {
 
 // Resolves --method and the order's default; refuses options that only the other method has.
 void choose_method(const CLI::App& cmd, const std::string& choice, bool fields, TableRequest& req) {
-  const bool separable = choice == "separable" || (choice == "auto" && req.shape.kind == "cylinder" && !fields);
+  // auto: a partially filled cylinder around a rod has no separable solver yet.
+  const bool rod_and_fill = req.fill < 1 && req.shape.dims.count("inner_radius") > 0;
+  const bool separable =
+      choice == "separable" || (choice == "auto" && req.shape.kind == "cylinder" && !fields && !rod_and_fill);
   req.method = separable ? rc::modes::TableMethod::separable : rc::modes::TableMethod::mesh;
   if (req.mesh.order == 0 && !separable) req.mesh.order = 6;  // separable: its own default (separable_table.hpp)
-  if (!separable) return;
+  if (!separable && !(req.fill < 1)) return;
+  // The separable solvers, and the free surface's mesh solver, compute every eigenpair: no cluster search.
   for (const char* mesh_only : {"--clusters", "--fill-gaps", "--lanczos-steps", "--survey-steps", "--tolerance"})
     if (cmd.get_option_no_throw(mesh_only) != nullptr && cmd.count(mesh_only) > 0)
-      throw std::runtime_error(std::string(mesh_only) + " applies to --method mesh only (the separable cylinder "
-                                                        "solver computes every eigenpair directly)");
+      throw std::runtime_error(std::string(mesh_only) + (separable ? " applies to --method mesh only (the separable "
+                                                                     "cylinder solver computes every eigenpair directly)"
+                                                                   : " does not apply with --fill (the free surface's "
+                                                                     "solver computes every eigenpair directly)"));
 }
 
 // The viscous mesh from the user's --order, --mesh-size, --wall-size; the ideal targets keep the method's own
@@ -292,13 +298,13 @@ void check_response_options(const CLI::App& cmd, const ViscousOptions& viscous, 
 // tanks"); each refusal one line, exit code 2.
 void check_fill(const TableRequest& req, bool is_viscous, bool fields, const std::string& method) {
   if (!(req.fill < 1)) return;
-  if (req.shape.kind != "cylinder" || req.shape.dims.count("inner_radius"))
-    throw CommandLineError("--fill: so far a plain cylinder only (" +
-                           std::string(req.shape.kind == "cylinder" ? "not with --inner-radius" : req.shape.kind + ": not yet") +
-                           "; docs/modes.md, \"Partially filled tanks\")");
+  if (req.shape.kind == "section")
+    throw CommandLineError("--fill: not on a section yet (the built-in sphere, spheroid, cylinder and cone take it; "
+                           "docs/modes.md, \"Partially filled tanks\")");
   if (is_viscous) throw CommandLineError("--fill: so far the ideal fluid only (not with --ekman)");
-  if (fields || method == "mesh")
-    throw CommandLineError("--fill: so far the separable method only (not --method mesh or --fields)");
+  if (fields) throw CommandLineError("--fill: not with --fields yet");
+  if (method == "separable" && (req.shape.kind != "cylinder" || req.shape.dims.count("inner_radius")))
+    throw CommandLineError("--fill --method separable: a plain cylinder only (--method mesh takes the others)");
 }
 
 // The table's report, then the plain line on what converged (empty when everything did).

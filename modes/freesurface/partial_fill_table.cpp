@@ -1,6 +1,9 @@
 #include "partial_fill_table.hpp"
 
 #include "convergence.hpp"
+#include "fe_space.hpp"
+#include "free_surface.hpp"
+#include "free_surface_mesh.hpp"
 #include "line_space.hpp"
 #include "partial_fill_closed_form.hpp"
 #include "partial_fill_cylinder.hpp"
@@ -17,7 +20,14 @@
 namespace rc::modes {
 namespace {
 
-// A pair as a selection item: its weight is its largest E about a point within one height H of the centroid.
+// The mesh method's default element size against a filled cavity's (geometry's 1/8 of the smallest dimension, here
+// of the liquid): the dense solver needs few dofs, and order 6 resolves the heavy modes on coarse meshes (docs/modes.md,
+// "Partially filled tanks").
+constexpr double kFreeSurfaceSizeFactor = 3.5;
+constexpr double kRoundingWeight = 1e-12;  // relative to the sum rule
+
+// A pair as a selection item: its weight is its largest E about a point within one height H of the centroid (for a
+// sphere or spheroid H is its polar diameter).
 struct Candidate {
   const PartialFillPair* pair = nullptr;
   double E = 0;  // the selection's weight (cluster_selection.hpp sorts and sums by E)
@@ -76,53 +86,33 @@ ModeTable::FreeSurface free_surface_attributes(const PartialFillSpectrum& s, dou
   return f;
 }
 
-}  // namespace
-
-ModeTable partially_filled_cylinder_table(const PartialFillTableSettings& req,
-                                          const std::function<void(const std::string&)>& report) {
-  const auto start = std::chrono::steady_clock::now();
-  if (req.shape.kind != "cylinder" || req.shape.dims.count("inner_radius"))
-    throw std::runtime_error("--fill: so far a plain cylinder only (docs/modes.md, \"Partially filled tanks\")");
-  if (!(req.fill > 0 && req.fill < 1)) throw std::runtime_error("--fill must be in (0, 1) for a partially filled tank");
-  const double R = req.shape.dims.at("radius"), H = req.shape.dims.at("height");
-  const double b = exact::partial_fill_surface_radius(R, req.fill);
-  const SeparableGrid grid = annulus_grid(req, b);
-  if (report) report(fmt::format("partially filled cylinder: free surface r = {:.10g}, {} x {} elements of order {}", b,
-                                 grid.radial_elements(), grid.axial_elements(), grid.order));
-  const PartialFillSpectrum s = solve_partially_filled_cylinder(R, H, req.fill, grid);
-
+// The table of one spectrum: rows by weight, the convergence check against `coarse` (solved only when checked), the
+// /free_surface attributes; the caller adds its discretisation's fields and solver line.
+ModeTable spectrum_table(const PartialFillTableSettings& req, const PartialFillSpectrum& s,
+                         const std::function<PartialFillSpectrum()>& coarse, const std::string& coarse_description,
+                         const std::function<void(const std::string&)>& report) {
+  const double H = req.shape.kind == "sphere" ? 2 * req.shape.dims.at("radius")
+                   : req.shape.kind == "spheroid" ? 2 * req.shape.dims.at("c") : req.shape.dims.at("height");
   const double sum_rule_wide = std::max({s.sum_rule_about(0), s.sum_rule_about(H), s.sum_rule_about(-H)});
   std::vector<Candidate> candidates;
   for (const auto& p : s.pairs) {
     const double w = weight(p, H);
-    if (std::abs(p.lambda) >= req.selection.geostrophic_cutoff && w > 0) candidates.push_back({&p, w});
+    // Weights at rounding level (a sphere's modes but one: measured 1e-22 of the sum rule) are no modes to keep.
+    if (std::abs(p.lambda) >= req.selection.geostrophic_cutoff && w > kRoundingWeight * sum_rule_wide)
+      candidates.push_back({&p, w});
   }
   const std::vector<Candidate> kept = select_clusters(std::move(candidates), req.selection, sum_rule_wide);
 
   ModeTable t = start_table(req.shape, s.fluid, s.J_D);
   t.sum_rule = s.sum_rule;
-  t.fe_order = grid.order;
-  t.mesh_h = longest_element(grid.axial);
-  t.mesh_h_radial = longest_element(grid.radial);
-  t.ndof = static_cast<long>(s.radial_dofs) * s.axial_dofs;
   t.normalisation = "rho = 1, omega0 = 1; each mode's state (V, eta) is normalised to N2 = |V|^2 + b |eta|^2 = 1, "
                     "a = <U_c, W> about the liquid's centroid with the free surface's share, so E = 2 a^2 / N2; about "
                     "a point at height -c below the centroid a + c t (docs/physics.md §2, \"Partially filled tanks\")";
-  t.solver = fmt::format(
-      "separable, free surface r = b: tensor-product P{} Lagrange elements ({} radial x {} axial) over b < r < a, one "
-      "radial quartic per axial eigenvector made a symmetric quadratic by the surface unknown, each solved completely "
-      "by a dense eigensolver (Eigen) of its companion form; sum of E over all pairs - (A_f + K2 - J_zh) = {:.1e} "
-      "(relative)", grid.order, grid.radial_elements(), grid.axial_elements(), (s.sum_E - s.sum_rule) / s.sum_rule);
   t.tolerance = std::numeric_limits<double>::epsilon();
   t.free_surface = free_surface_attributes(s, req.fill);
   if (req.check_convergence) {
-    const SeparableGrid c = coarser(grid);
-    if (report) report("convergence check on a coarser grid");
-    add_convergence(t, check_against(solve_partially_filled_cylinder(R, H, req.fill, c), kept, H,
-                                     fmt::format("order {} with every two neighbouring elements merged ({} radial x {} "
-                                                 "axial), pairs matched by axial vector and nearest lambda", c.order,
-                                                 c.radial_elements(), c.axial_elements()),
-                                     req.convergence_tolerance),
+    if (report) report("convergence check on a coarser discretisation");
+    add_convergence(t, check_against(coarse(), kept, H, coarse_description, req.convergence_tolerance),
                     req.convergence_tolerance);
   }
   std::vector<Cluster> clusters;
@@ -131,6 +121,69 @@ ModeTable partially_filled_cylinder_table(const PartialFillTableSettings& req,
   // add_modes writes a = sqrt(E/2) ≥ 0: the offset coupling t takes the same sign change.
   for (const Candidate& k : kept) t.free_surface.t.push_back(k.pair->coupling.a < 0 ? -k.pair->coupling.t : k.pair->coupling.t);
   t.sort_by_energy();
+  return t;
+}
+
+}  // namespace
+
+ModeTable partially_filled_cylinder_table(const PartialFillTableSettings& req,
+                                          const std::function<void(const std::string&)>& report) {
+  const auto start = std::chrono::steady_clock::now();
+  if (req.shape.kind != "cylinder" || req.shape.dims.count("inner_radius"))
+    throw std::runtime_error("--fill by the separable method: a plain cylinder only (--method mesh takes the others)");
+  if (!(req.fill > 0 && req.fill < 1)) throw std::runtime_error("--fill must be in (0, 1) for a partially filled tank");
+  const double R = req.shape.dims.at("radius"), H = req.shape.dims.at("height");
+  const double b = exact::partial_fill_surface_radius(R, req.fill);
+  const SeparableGrid grid = annulus_grid(req, b);
+  if (report) report(fmt::format("partially filled cylinder: free surface r = {:.10g}, {} x {} elements of order {}", b,
+                                 grid.radial_elements(), grid.axial_elements(), grid.order));
+  const PartialFillSpectrum s = solve_partially_filled_cylinder(R, H, req.fill, grid);
+  const SeparableGrid c = coarser(grid);
+  ModeTable t = spectrum_table(
+      req, s, [&] { return solve_partially_filled_cylinder(R, H, req.fill, c); },
+      fmt::format("order {} with every two neighbouring elements merged ({} radial x {} axial), pairs matched by axial "
+                  "vector and nearest lambda", c.order, c.radial_elements(), c.axial_elements()),
+      report);
+  t.fe_order = grid.order;
+  t.mesh_h = longest_element(grid.axial);
+  t.mesh_h_radial = longest_element(grid.radial);
+  t.ndof = static_cast<long>(s.radial_dofs) * s.axial_dofs;
+  t.solver = fmt::format(
+      "separable, free surface r = b: tensor-product P{} Lagrange elements ({} radial x {} axial) over b < r < a, one "
+      "radial quartic per axial eigenvector made a symmetric quadratic by the surface unknown, each solved completely "
+      "by a dense eigensolver (Eigen) of its companion form; sum of E over all pairs - (A_f + K2 - J_zh) = {:.1e} "
+      "(relative)", grid.order, grid.radial_elements(), grid.axial_elements(), (s.sum_E - s.sum_rule) / s.sum_rule);
+  t.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return t;
+}
+
+ModeTable partially_filled_mesh_table(const PartialFillTableSettings& req,
+                                      const std::function<void(const std::string&)>& report) {
+  const auto start = std::chrono::steady_clock::now();
+  const geometry::ShapeSpec liquid = geometry::partially_filled(req.shape, req.fill);
+  geometry::MeshOptions mesh = req.grid;
+  if (mesh.size == 0) mesh.size = geometry::default_mesh_size(liquid) * kFreeSurfaceSizeFactor;
+  const auto solve = [&](const geometry::MeshOptions& o) {
+    return solve_partially_filled_mesh(FESpace(geometry::mesh_meridian(liquid, o)), req.max_unknowns);
+  };
+  if (report) report(fmt::format("partially filled {}: free surface r = {:.10g}, order {}, mesh size {:g}",
+                                 req.shape.kind, liquid.dims.at("free_radius"), mesh.order, mesh.size));
+  const PartialFillSpectrum s = solve(mesh);
+  if (report) report(fmt::format("{} pairs of {} pressure dofs, sum of E - sum rule = {:.1e} (relative)",
+                                 s.pairs.size(), s.radial_dofs, (s.sum_E - s.sum_rule) / s.sum_rule));
+  std::string coarse_description;
+  const geometry::MeshOptions c = coarser(mesh, coarse_description);
+  ModeTable t = spectrum_table(req, s, [&] { return solve(c); }, coarse_description + ", pairs matched by nearest lambda",
+                               report);
+  t.fe_order = s.order;
+  t.mesh_h = mesh.size;
+  t.mesh_h_radial = mesh.radial_size;
+  t.ndof = s.radial_dofs;
+  t.solver = fmt::format(
+      "mesh, free surface r = b: P{} Lagrange triangles ({} pressure dofs), the quartic made a symmetric quadratic by "
+      "one unknown per surface dof, every eigenpair by a dense eigensolver (LAPACK) of its companion form; sum of E "
+      "over all pairs - (A_f + K2 - J_zh) = {:.1e} (relative)", s.order, s.radial_dofs,
+      (s.sum_E - s.sum_rule) / s.sum_rule);
   t.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return t;
 }

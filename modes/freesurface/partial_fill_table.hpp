@@ -1,5 +1,6 @@
-// A partially filled cylinder's mode table (docs/physics.md §2, "Partially filled tanks"; docs/modes.md, "Partially
-// filled tanks"): the separated problem's pairs (partial_fill_cylinder.hpp) as /modes rows with their offset
+// A partially filled tank's mode table (docs/physics.md §2, "Partially filled tanks"; docs/modes.md, "Partially
+// filled tanks"): the separated cylinder's pairs (partial_fill_cylinder.hpp) or a
+// mesh's (free_surface_mesh.hpp) as /modes rows with their offset
 // coupling in /free_surface, a convergence flag per row against a grid twice as coarse.
 #pragma once
 
@@ -14,12 +15,13 @@ namespace rc::modes {
 
 // What the table needs of a cavity-modes request (resolved by the driver, app/cavity_table.cpp).
 struct PartialFillTableSettings {
-  geometry::ShapeSpec shape;     // a cylinder without an inner rod
-  geometry::MeshOptions grid;    // as for the separable method (separable_table.hpp's defaults, over b < r < a)
+  geometry::ShapeSpec shape;     // separable: a cylinder without an inner rod; mesh: any built-in shape
+  geometry::MeshOptions grid;    // separable: separable_table.hpp's defaults over b < r < a; mesh: the gmsh mesh
   double fill = 1;               // 0 < fill < 1
   ModeSelection selection;       // already validated
   double convergence_tolerance = 1e-6;
   bool check_convergence = true;
+  int max_unknowns = 4000;       // mesh: the dense solver's limit (free_surface_mesh.hpp)
 };
 
 // Rows are chosen by their largest E about a point within one cavity height of the liquid's centroid,
@@ -27,5 +29,11 @@ struct PartialFillTableSettings {
 // fill outside (0, 1) or a shape that is not a plain cylinder.
 ModeTable partially_filled_cylinder_table(const PartialFillTableSettings& settings,
                                           const std::function<void(const std::string&)>& report);
+
+// The same by the mesh method (free_surface_mesh.hpp) for any built-in shape with its free surface
+// (geometry/free_surface.hpp), the convergence check on the mesh with its sizes doubled. An element size of 0 takes
+// 3.5 × geometry's default for the liquid's shape.
+ModeTable partially_filled_mesh_table(const PartialFillTableSettings& settings,
+                                      const std::function<void(const std::string&)>& report);
 
 }  // namespace rc::modes

@@ -84,3 +84,43 @@ TEST(FreeSurfaceMesh, CylinderIsStewartsonsClosedForm) {
     EXPECT_LT(std::abs(std::abs(got.coupling.t) - std::abs(ref.coupling.t)), 1e-9 * std::abs(ref.coupling.a));
   }
 }
+
+// A sphere's liquid may turn rigidly about a tilted axis, its free surface the cylinder r = b about that axis: an
+// exact steady solution whatever the fill, seen in the body frame at λ = 1. It is the only coupled mode: the walls
+// are invariant under the tilt, so Zhukovsky's potential vanishes (J_D = 0) and Σ E = A_f + K2 sits on it. A_f, K2 in
+// closed form for the liquid b < r, r² + z² < 1 (u = √(1 − b²)): A_f = π ∫∫ (r² + 2z²) r dr dz, K2 = (2/3)π b² u³.
+TEST(FreeSurfaceMesh, SphereTurnsRigidlyAboutATiltedAxis) {
+  const geometry::ShapeSpec sphere{"sphere", {{"radius", 1.0}}, {}};
+  for (const auto [fill, size] : {std::pair{0.4, 0.2}, std::pair{0.8, 0.3}}) {
+    const PartialFillSpectrum s = mesh_spectrum(sphere, fill, 6, size);
+    const double b = s.surface_radius, u = std::sqrt(1 - b * b), pi = std::acos(-1.0);
+    // ∫_{-u}^{u} ∫_b^{√(1−z²)} (r² + 2z²) r dr dz = ∫ [((1 − z²)² − b⁴)/4 + z²(1 − z² − b²)] dz.
+    const double A_f = pi * (0.5 * (u - 2 * u * u * u / 3 + u * u * u * u * u / 5) - 0.5 * b * b * b * b * u +
+                             2 * ((1 - b * b) * u * u * u / 3 - u * u * u * u * u / 5));
+    const double K2 = 2 * pi * b * b * u * u * u / 3;
+    const PartialFillPair& top = s.pairs.front();
+    std::printf("fill %.1f: b = %.10f, %d dofs; lambda %.14f (1: %.1e), E %.12g = A_f + K2 %.12g (%.1e), next E %.1e, "
+                "J_D %.1e, A_f %.12g (closed form %.1e)\n", fill, b, s.radial_dofs, top.lambda, std::abs(top.lambda - 1),
+                top.coupling.E, A_f + K2, relative(top.coupling.E, A_f + K2), s.pairs[1].coupling.E, s.J_D,
+                s.fluid.A_f, relative(s.fluid.A_f, A_f));
+    EXPECT_NEAR(top.lambda, 1.0, 1e-11);
+    EXPECT_LT(relative(top.coupling.E, A_f + K2), 1e-9);
+    EXPECT_LT(relative(s.K2, K2), 1e-12);
+    EXPECT_LT(s.pairs[1].coupling.E, 1e-9 * top.coupling.E);  // rounding of the dense solve: measured ≤ 1.5e-10
+    EXPECT_LT(std::abs(s.J_D), 1e-12);
+  }
+}
+
+// A cone (apex down) cut by its free surface: no closed form, so the complete spectrum's Σ E against the sum rule
+// about the centroid and two other points, which uses J_D(O) of a separate potential solve.
+TEST(FreeSurfaceMesh, ConeSumRuleAboutThreePoints) {
+  const geometry::ShapeSpec cone{"cone", {{"radius", 1.0}, {"height", 2.0}}, {}};
+  const PartialFillSpectrum s = mesh_spectrum(cone, 0.7, 5, 0.25);
+  for (const double c : {0.0, 0.9, -1.4}) {
+    double sum = 0;
+    for (const auto& p : s.pairs) sum += coupling_about(p.coupling, c);
+    std::printf("cone fill 0.7, %d dofs, about c = %+.1f: sum E = %.12g, A_f(O) + K(O) - J_D(O) = %.12g (%.1e)\n",
+                s.radial_dofs, c, sum, s.sum_rule_about(c), relative(sum, s.sum_rule_about(c)));
+    EXPECT_LT(relative(sum, s.sum_rule_about(c)), 1e-9);
+  }
+}
