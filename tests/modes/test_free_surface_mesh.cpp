@@ -124,3 +124,27 @@ TEST(FreeSurfaceMesh, ConeSumRuleAboutThreePoints) {
     EXPECT_LT(relative(sum, s.sum_rule_about(c)), 1e-9);
   }
 }
+
+// Stewartson's frequencies (docs/physics.md §2's table: the first axial wave's modes with |λ| > 0.45) among the mesh
+// method's eigenvalues at its defaults (order 6, 3.5 × geometry's default size), for two of the table's cases (fill 0.98,
+// 2h/a = 3, 1075 dofs, measured 1.1e-7: docs/modes.md, "Partially filled tanks").
+TEST(FreeSurfaceMesh, DefaultMeshGivesStewartsonsFrequencies) {
+  for (const auto [fill, height] : {std::pair{0.8, 1.0}, std::pair{0.9, 2.0}}) {
+    const geometry::ShapeSpec cylinder{"cylinder", {{"radius", 1.0}, {"height", height}}, {}};
+    const geometry::ShapeSpec liquid = geometry::partially_filled(cylinder, fill);
+    const PartialFillSpectrum s = mesh_spectrum(cylinder, fill, 6, 3.5 * geometry::default_mesh_size(liquid));
+    double worst = 0;
+    int count = 0;
+    for (const auto& m : exact::partially_filled_cylinder_modes(1.0, height, fill)) {
+      if (m.axial != 0 || std::abs(m.lambda) <= 0.45) continue;
+      double best = 1e300;
+      for (const auto& p : s.pairs) best = std::min(best, relative(p.lambda, m.lambda));
+      worst = std::max(worst, best);
+      ++count;
+    }
+    std::printf("fill %.2f, 2h/a = %.0f: %d dofs, %d closed-form frequencies, worst relative distance %.1e\n", fill,
+                height, s.radial_dofs, count, worst);
+    EXPECT_GT(count, 1);
+    EXPECT_LT(worst, 1e-8);
+  }
+}
