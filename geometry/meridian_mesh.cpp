@@ -283,11 +283,11 @@ GmshMesh mesh_section(const ShapeSpec& shape, const MeshOptions& options) {
     gmsh::open(path);
     session.throw_if_error(where);
     for (const auto& [dim, name] : {std::pair{2, "fluid"}, {1, "wall"}}) physical_tag(dim, name, where);
-    // A free surface would be meshed as a wall by everything downstream (the walls' condition is natural): refused
-    // until the mesh method reads it, rather than a filled tank's table given for a partially filled one.
+    // A section's own free surface: the table's fill (against the cavity's volume) would be unknown, and the filled
+    // solvers downstream would take it for a wall (its condition is natural) — refused until sections take --fill.
     if (find_physical_tag(1, "free") >= 0)
       throw std::runtime_error(where + ": a 1D physical group 'free' (a free surface) is not read yet: a section's "
-                               "boundary is 'wall' and 'axis'; a partially filled tank is so far the cylinder's "
+                               "boundary is 'wall' and 'axis'; a partially filled tank is so far a built-in shape's "
                                "--fill (docs/modes.md, \"Partially filled tanks\")");
     if (ext == ".msh") {
       GmshMesh m = read_mesh(where);
