@@ -148,3 +148,25 @@ TEST(FreeSurfaceMesh, DefaultMeshGivesStewartsonsFrequencies) {
     EXPECT_LT(worst, 1e-8);
   }
 }
+
+// A partly filled payload around a burster tube: the fill counts the volume between rod and wall, and the liquid
+// (b < r < a, b² = a² − F(a² − r_i²)) does not reach the rod. So the mesh method's table of the cylinder with a rod of
+// radius 0.3 filled to 0.95 is the plain cylinder's filled to 1 − b², here by the separated solver.
+TEST(FreeSurfaceMesh, RodBelowTheSurfaceTakesNoPart) {
+  const geometry::ShapeSpec rod{"cylinder", {{"radius", 1.0}, {"height", 2.0}, {"inner_radius", 0.3}}, {}};
+  const PartialFillSpectrum s = mesh_spectrum(rod, 0.95, 6, 0.5, 0.25);
+  const double b = s.surface_radius, plain_fill = 1 - b * b;
+  std::printf("rod 0.3, fill 0.95: b = %.12f (closed form %.12f); the plain cylinder's fill %.10f\n", b,
+              std::sqrt(1 - 0.95 * (1 - 0.09)), plain_fill);
+  EXPECT_NEAR(b, std::sqrt(1 - 0.95 * (1 - 0.09)), 1e-14);
+  const PartialFillSpectrum sep = solve_partially_filled_cylinder(
+      1.0, 2.0, plain_fill, SeparableGrid::graded(1.0, 2.0, 8, 6, 12, 2, exact::partial_fill_surface_radius(1.0, plain_fill)));
+  for (int k = 0; k < 3; ++k) {
+    const PartialFillPair& ref = sep.pairs[k];
+    const PartialFillPair& got = nearest(s, ref.lambda, 0.1 * ref.coupling.E);
+    std::printf("  lambda %.12f (plain cylinder %.12f, %.1e), E %.10g (%.10g, %.1e)\n", got.lambda, ref.lambda,
+                relative(got.lambda, ref.lambda), got.coupling.E, ref.coupling.E, relative(got.coupling.E, ref.coupling.E));
+    EXPECT_LT(relative(got.lambda, ref.lambda), 1e-9);
+    EXPECT_LT(relative(got.coupling.E, ref.coupling.E), 1e-6);
+  }
+}
