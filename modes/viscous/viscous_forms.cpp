@@ -1,6 +1,8 @@
 #include "viscous_forms.hpp"
 
 #include <algorithm>
+#include <array>
+#include <span>
 #include <stdexcept>
 #include <vector>
 
@@ -21,13 +23,39 @@ struct ElementMatrices {
   // Per pair of local velocity nodes: M0, K0, K1, K2; per (pressure node, velocity node): the three B rows.
   std::vector<double> m0, k0, k1, k2, bp, bm, bz;
   std::vector<double> fm, fz;  // coupling functional on u− and u_z
+  // With a free surface: the stress form's cross term (header), per (test component, field component) block.
+  std::vector<double> t;
 };
 
-void integrate_element(const TaylorHoodSpace& space, std::size_t e, double centroid_z, ElementQuadrature& eq,
-                       ElementMatrices& out) {
+// The cross term ∫∫ ∇V : (∇W̄)ᵀ r dr dz that turns the vector Laplacian's K into the stress form 2∫∫ D(V) : D(W̄)
+// (header), in circular components; its coefficients (derived with sympy from the cylindrical ∇V of an m = 1 field,
+// which also gives back K's) for field (j, its value or r-, z-derivative) and test (i, likewise):
+//   (+,+): u w/r² − (u w_r + u_r w)/(2r) + u_r w_r/4      (+,−): u+ w−_r/(2r) + u+_r w−_r/4   and its transpose
+//   (−,−): u_r w_r/4        (z,±): ∓ u_z w±_z/(2r) + u_z,r w±_z/2   and its transpose        (z,z): u_z,z w_z,z
+void add_stress_cross_term(int npe, double r, double w, const double* N, const double* Nr, const double* Nz,
+                           std::vector<double>& t) {
+  const auto at = [&](int ci, int cj, int a, int b) -> double& { return t[((ci * 3 + cj) * npe + a) * npe + b]; };
+  const double rw = r * w;
+  for (int a = 0; a < npe; ++a)      // test node
+    for (int b = 0; b < npe; ++b) {  // field node
+      at(kPlus, kPlus, a, b) += (N[b] * N[a] / (r * r) - (N[b] * Nr[a] + Nr[b] * N[a]) / (2 * r) + Nr[b] * Nr[a] / 4) * rw;
+      at(kMinus, kPlus, a, b) += (N[b] * Nr[a] / (2 * r) + Nr[b] * Nr[a] / 4) * rw;   // field +, test −
+      at(kPlus, kMinus, a, b) += (Nr[b] * N[a] / (2 * r) + Nr[b] * Nr[a] / 4) * rw;   // field −, test +
+      at(kMinus, kMinus, a, b) += Nr[b] * Nr[a] / 4 * rw;
+      at(kPlus, kAxial, a, b) += (-N[b] * Nz[a] / (2 * r) + Nr[b] * Nz[a] / 2) * rw;  // field z, test +
+      at(kMinus, kAxial, a, b) += (N[b] * Nz[a] / (2 * r) + Nr[b] * Nz[a] / 2) * rw;  // field z, test −
+      at(kAxial, kPlus, a, b) += (-Nz[b] * N[a] / (2 * r) + Nz[b] * Nr[a] / 2) * rw;  // field +, test z
+      at(kAxial, kMinus, a, b) += (Nz[b] * N[a] / (2 * r) + Nz[b] * Nr[a] / 2) * rw;  // field −, test z
+      at(kAxial, kAxial, a, b) += Nz[b] * Nz[a] * rw;
+    }
+}
+
+void integrate_element(const TaylorHoodSpace& space, std::size_t e, double centroid_z, bool stress_form,
+                       ElementQuadrature& eq, ElementMatrices& out) {
   const int npe = space.velocity_nodes_per_element(), npp = space.pressure_nodes_per_element();
   space.geometry().quadrature(e, eq);
   for (auto* v : {&out.m0, &out.k0, &out.k1, &out.k2}) v->assign(npe * npe, 0.0);
+  out.t.assign(stress_form ? 9 * npe * npe : 0, 0.0);
   for (auto* v : {&out.bp, &out.bm, &out.bz}) v->assign(npp * npe, 0.0);
   out.fm.assign(npe, 0.0);
   out.fz.assign(npe, 0.0);
@@ -37,6 +65,7 @@ void integrate_element(const TaylorHoodSpace& space, std::size_t e, double centr
     const double* N = &eq.N[q * npe];
     const double* Nr = &eq.dNr[q * npe];
     const double* Nz = &eq.dNz[q * npe];
+    if (stress_form) add_stress_cross_term(npe, r, w, N, Nr, Nz, out.t);
     for (int a = 0; a < npe; ++a) {
       out.fm[a] += -zp * N[a] * r * w;
       out.fz[a] += r * N[a] * r * w;
@@ -79,6 +108,14 @@ void scatter(const TaylorHoodSpace& space, std::size_t e, const ElementMatrices&
       ai.add(uz[a], uz[b], ekman * em.k1[ab]);
     }
   }
+  if (!em.t.empty()) {
+    const std::array<std::span<const int>, 3> dofs = {up, um, uz};
+    for (int ci = 0; ci < 3; ++ci)
+      for (int cj = 0; cj < 3; ++cj)
+        for (int a = 0; a < npe; ++a)
+          for (int b = 0; b < npe; ++b)
+            ai.add(dofs[ci][a], dofs[cj][b], ekman * em.t[((ci * 3 + cj) * npe + a) * npe + b]);
+  }
   for (int c = 0; c < npp; ++c)
     for (int b = 0; b < npe; ++b) {
       const int cb = c * npe + b;
@@ -87,6 +124,56 @@ void scatter(const TaylorHoodSpace& space, std::size_t e, const ElementMatrices&
         ar.add(cols[b], p[c], (*B)[cb]);
       }
     }
+}
+
+// The free surface r = b of a partially filled tank (header): one unknown η̃ = iη per velocity node of the surface off
+// the walls (the contact line is pinned by no-slip: η = 0 there), numbered from `first`. Adds on this rank the
+// surface's terms of Re A and 𝓜 and its coupling functional; returns the number of surface unknowns.
+int add_free_surface(const TaylorHoodSpace& space, double centroid_z, int first, bool this_rank, Triplets& ar,
+                     Triplets& mass, std::vector<double>& f) {
+  const auto& mesh = space.geometry().mesh();
+  if (mesh.free_edges.empty()) return 0;
+  const int npe = mesh.nodes_per_element, nn = mesh.order + 1;
+  std::vector<int> up(mesh.nodes.size(), -1), um(mesh.nodes.size(), -1), eta(mesh.nodes.size(), -1);
+  for (std::size_t e = 0; e < space.num_elements(); ++e)
+    for (int a = 0; a < npe; ++a) {
+      const int node = mesh.triangles[e * npe + a];
+      up[node] = space.velocity(e, kPlus)[a];
+      um[node] = space.velocity(e, kMinus)[a];
+    }
+  int count = 0;
+  for (int node : mesh.free_edges)
+    if (up[node] >= 0 && eta[node] < 0) eta[node] = first + count++;
+  f.resize(first + count, 0.0);
+  if (!this_rank) return count;
+  const double b = mesh.free_radius, b2 = b * b;
+  const geometry::ReferenceEdge edge = geometry::reference_edge(mesh.order, 2 * mesh.order + 2);
+  for (std::size_t e = 0; e < mesh.free_edges.size(); e += nn) {
+    const int* v = &mesh.free_edges[e];
+    for (std::size_t q = 0; q < edge.weights.size(); ++q) {
+      double z = 0, dz = 0;
+      for (int a = 0; a < nn; ++a) {
+        z += mesh.nodes[v[a]][1] * edge.N[q * nn + a];
+        dz += mesh.nodes[v[a]][1] * edge.dN[q * nn + a];
+      }
+      const double w = edge.weights[q] * std::abs(dz);
+      const double* N = &edge.N[q * nn];
+      for (int a = 0; a < nn; ++a) {
+        const int ea = eta[v[a]];
+        if (ea < 0) continue;
+        f[ea] += -b2 * (z - centroid_z) * N[a] * w;
+        for (int c = 0; c < nn; ++c) {
+          const double s = N[a] * N[c] * w;
+          mass.add(ea, eta[v[c]], b2 * s);
+          for (int u : {up[v[c]], um[v[c]]}) {  // V_r = (u+ + u−)/2
+            ar.add(u, ea, 0.5 * b2 * s);
+            ar.add(ea, u, 0.5 * b2 * s);
+          }
+        }
+      }
+    }
+  }
+  return count;
 }
 
 PMat create_block_matrix(MPI_Comm comm, int complex_size, std::vector<PetscInt>& i, std::vector<PetscInt>& j,
@@ -165,13 +252,15 @@ ViscousForms assemble_viscous_forms(const TaylorHoodSpace& space, double centroi
   const std::size_t ne = space.num_elements();
   const std::size_t first = ne * rank / ranks, last = ne * (rank + 1) / ranks;
 
-  const int n = space.size();
+  const bool free_surface = !space.geometry().mesh().free_edges.empty();
   Triplets ar, ai, mass;
-  std::vector<double> f(n, 0.0), f_all(n, 0.0);
+  std::vector<double> f(space.size(), 0.0);
+  const int n = space.size() + add_free_surface(space, centroid_z, space.size(), rank == 0, ar, mass, f);
+  std::vector<double> f_all(n, 0.0);
   ElementQuadrature eq;
   ElementMatrices em;
   for (std::size_t e = first; e < last; ++e) {
-    integrate_element(space, e, centroid_z, eq, em);
+    integrate_element(space, e, centroid_z, free_surface, eq, em);
     scatter(space, e, em, ekman, ar, ai, mass, f);
   }
   MPI_Allreduce(f.data(), f_all.data(), n, MPI_DOUBLE, MPI_SUM, comm);

@@ -12,6 +12,13 @@
 //   K = diag(½ K2, ½ K0, K1),            K_m = ∫∫ (v_r u_r + v_z u_z + m² v u / r²) r   (vector Laplacian:
 //                                        (ΔV)± = Δ_{1±1} u±, (ΔV)_z = Δ_1 u_z)
 //   B: q ↦ ∫∫ q [½ (r u+_r + 2 u+) + ½ r u−_r + r u_z,z]   (r div V for m = 1).
+// A partially filled tank (the mesh has free edges r = b; docs/viscous.md, "Partially filled tanks"): the free surface
+// is stress-free, so K becomes the stress form 2∫∫ D(V):D(W̄) = K + ∫∫ ∇V:(∇W̄)ᵀ (equal to K for no-slip walls in
+// the continuum, not on a free surface); its displacement η (outward along r, iλη = V_r) enters through the normal
+// stress −P + 2Ek ∂_n V_n = b η, as unknowns η̃ = iη after the pressure with
+//   A += b²/2 ∫ η̃ (w+ + w−) dz (and its transpose),   𝓜 += b² ∫ η̃ ζ dz,   f += −b² ∫ z' η̃ dz,
+// so that x̄ᵀ𝓜x = ∫∫|V|² r dr dz + b² ∫|η|² dz is the energy of docs/physics.md §2 ("Partially filled tanks") and
+// E = π (fᵀx)²/xᵀ𝓜x its coupling about the liquid's centroid.
 // Ideal limit: Ek = 0 gives a real symmetric pencil whose Rayleigh quotient −xᵀCx / xᵀMx lies in [−2, 2].
 // With Ek > 0, Im λ = Ek x̄ᵀKx / x̄ᵀMx > 0: every mode decays as e^{−Im λ t}.
 //
@@ -32,7 +39,7 @@ namespace rc::modes {
 // Each complex eigenvalue λ of (A, 𝓜) is an eigenvalue of (Â, M̂) with the eigenvector pairs (x_j, −i x_j);
 // its conjugate is the eigenvalue of the conjugate problem (growing, Im < 0), never physical.
 struct ViscousForms {
-  int complex_size = 0;    // unknowns of the complex problem (velocity and pressure)
+  int complex_size = 0;    // unknowns of the complex problem (velocity, pressure and any free surface's η̃)
   PMat A, M;               // Â, M̂ (distributed over the communicator's ranks)
   PMat iM;                 // the block form of i𝓜: [[0, −𝓜], [𝓜, 0]] pairwise (complex shifts σ𝓜 = Re σ M̂ + Im σ iM)
   PVec coupling;           // f on the real slots, 0 on the imaginary ones

@@ -1,0 +1,163 @@
+// The viscous partially filled tank (modes/viscous/viscous_forms.hpp with a free surface): the Taylor–Hood pencil with
+// the surface displacement as unknowns and the stress-free surface, against the ideal free-surface closed form
+// (Stewartson's partially filled cylinder) at Ek = 0, and its approach to the boundary-layer limit with the walls'
+// Ekman layers only. Every comparison prints its error.
+#include "fe_space.hpp"
+#include "free_surface.hpp"
+#include "taylor_hood_space.hpp"
+#include "viscous_eigensolver.hpp"
+#include "viscous_forms.hpp"
+#include "partial_fill_closed_form.hpp"
+#include "poincare_forms.hpp"
+#include "boundary_layer.hpp"
+#include "viscous_table.hpp"
+#include "meridian_mesh.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <complex>
+#include <cstdio>
+
+using namespace rc;
+using namespace rc::modes;
+using cd = std::complex<double>;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+const cd I(0, 1);
+
+// The damped mode nearest `target` of the cylinder (radius 1, height 2) filled to 0.9 at Ekman number ek, on the
+// viscous solver's default mesh for that Ek (wall layers along the no-slip walls, none along the free surface).
+// The interior elements are half the default's: the contact lines, where the no-slip lids meet the stress-free surface,
+// make λ converge slowly with the element size (measured at Ek = 1e-3, order 6: λ = 0.973377, 0.973225, 0.973161 at
+// sizes 0.125, 0.0625, 0.03125; docs/viscous.md, "Partially filled tanks").
+ViscousMode partially_filled_mode(double ek, cd target) {
+  const geometry::ShapeSpec cylinder{"cylinder", {{"radius", 1.0}, {"height", 2.0}}, {}};
+  const geometry::ShapeSpec liquid = geometry::partially_filled(cylinder, 0.9);
+  geometry::MeshOptions o;
+  o.order = 6;
+  o.size = 0.0625;
+  const TaylorHoodSpace space(geometry::mesh_meridian(liquid, viscous_mesh_defaults(liquid, ek, o)));
+  const double zc = integrate_fluid(space.geometry()).centroid_z;
+  const ViscousForms forms = assemble_viscous_forms(space, zc, ek, PETSC_COMM_SELF);
+  ViscousSolveSettings settings;
+  settings.pairs = 1;
+  return viscous_modes_near(forms, target, settings).front();
+}
+
+// Stewartson's heaviest mode of the fill 0.9 cylinder (2h/a = 2) in closed form: p = F(ξr) sin(kz), F = J1 + cY1,
+// k = π/2, ξ = k √(κ² − 1), c from the wall's r p_r + κ p = 0; V from p (e^{iλt}, m = 1, ω0 = 1):
+//   V_r = −i(λ p_r + 2p/r)/D,   V_φ = (λ p/r + 2 p_r)/D,   V_z = i p_z/λ,   D = 4 − λ²,
+// and the surface displacement η = V_r(b, z)/(iλ).
+struct PartialFillMode {
+  double lambda = 0, kappa = 0, xi = 0, k = kPi / 2, c = 0, b = 0;
+  double F(double x) const { return std::cyl_bessel_j(1, x) + c * std::cyl_neumann(1, x); }
+  double dF(double x) const {  // F′(x)
+    return std::cyl_bessel_j(0, x) - std::cyl_bessel_j(1, x) / x + c * (std::cyl_neumann(0, x) - std::cyl_neumann(1, x) / x);
+  }
+  std::array<cd, 3> operator()(double r, double z) const {
+    const double D = 4 - lambda * lambda, p = F(xi * r) * std::sin(k * z), pr = xi * dF(xi * r) * std::sin(k * z),
+                 pz = F(xi * r) * k * std::cos(k * z);
+    return {-I * (lambda * pr + 2 * p / r) / D, cd((lambda * p / r + 2 * pr) / D), I * pz / lambda};
+  }
+};
+
+PartialFillMode heaviest_mode() {
+  PartialFillMode m;
+  m.b = exact::partial_fill_surface_radius(1.0, 0.9);
+  for (const auto& e : exact::partially_filled_cylinder_modes(1.0, 2.0, 0.9))
+    if (e.axial == 0 && std::abs(e.lambda - 0.9829) < 1e-3) m.lambda = e.lambda;
+  m.kappa = 2 / m.lambda;
+  m.xi = m.k * std::sqrt(m.kappa * m.kappa - 1);
+  const auto g = [&](double x, double f, double df) { return x * df + m.kappa * f; };  // at r = a = 1
+  const double x = m.xi;
+  const double gJ = g(x, std::cyl_bessel_j(1, x), std::cyl_bessel_j(0, x) - std::cyl_bessel_j(1, x) / x);
+  const double gY = g(x, std::cyl_neumann(1, x), std::cyl_neumann(0, x) - std::cyl_neumann(1, x) / x);
+  m.c = -gJ / gY;
+  return m;
+}
+
+// Composite Gauss–Legendre points and weights on [lo, hi].
+std::vector<std::pair<double, double>> gauss(double lo, double hi, int panels) {
+  const geometry::ReferenceEdge e = geometry::reference_edge(1, 15);
+  std::vector<std::pair<double, double>> out;
+  for (int p = 0; p < panels; ++p)
+    for (std::size_t q = 0; q < e.points.size(); ++q)
+      out.push_back({lo + (hi - lo) * (p + e.points[q]) / panels, (hi - lo) * e.weights[q] / panels});
+  return out;
+}
+
+// The no-slip walls of the liquid annulus, fluid on the left: the bottom (r from b to 1), the side, the top.
+std::vector<WallPoint> annulus_walls(double b, int panels) {
+  std::vector<WallPoint> w;
+  for (const auto& [r, wt] : gauss(b, 1.0, panels)) w.push_back({r, -1.0, 1.0, 0.0, wt});
+  for (const auto& [z, wt] : gauss(-1.0, 1.0, panels)) w.push_back({1.0, z, 0.0, 1.0, wt});
+  for (const auto& [r, wt] : gauss(b, 1.0, panels)) w.push_back({r, 1.0, -1.0, 0.0, wt});
+  return w;
+}
+
+}  // namespace
+
+// The closed-form mode's coupling, with the energy and the coupling of its surface (docs/physics.md §2, "Partially
+// filled tanks"), gives back the separated solver's E = 2.08338940: the fields and the norm the boundary-layer limit
+// uses below are right.
+TEST(ViscousFreeSurface, ClosedFormModeHasStewartsonsCoupling) {
+  const PartialFillMode m = heaviest_mode();
+  const auto R = gauss(m.b, 1.0, 16), Z = gauss(-1.0, 1.0, 16);
+  double kinetic = 0, surface = 0;
+  cd coupling = 0;
+  for (const auto& [r, wr] : R)
+    for (const auto& [z, wz] : Z) {
+      const auto V = m(r, z);
+      kinetic += (std::norm(V[0]) + std::norm(V[1]) + std::norm(V[2])) * r * wr * wz;
+      coupling += I * kPi * (-z * (V[0] - I * V[1]) + r * V[2]) * r * wr * wz;
+    }
+  for (const auto& [z, wz] : Z) {
+    const cd eta = m(m.b, z)[0] / (I * m.lambda);
+    surface += std::norm(eta) * wz;
+    coupling += kPi * m.b * m.b * z * eta * wz;
+  }
+  const double norm2 = 2 * kPi * (kinetic + m.b * m.b * surface), E = 2 * std::norm(coupling) / norm2;
+  const double D = 4 - m.lambda * m.lambda;
+  const double surface_condition = m.b * m.xi * m.dF(m.xi * m.b) + (m.kappa - D) * m.F(m.xi * m.b);
+  std::printf("closed form: lambda %.12f, xi %.10f, c %.10f; free surface b p_r + (kappa - D) p = %.1e; E %.10f "
+              "(separated 2.0833893977, %.1e)\n", m.lambda, m.xi, m.c, surface_condition, E,
+              std::abs(E - 2.0833893977) / 2.0833893977);
+  EXPECT_LT(std::abs(surface_condition), 1e-9);
+  EXPECT_LT(std::abs(E - 2.0833893977) / 2.0833893977, 1e-8);
+}
+
+// The damped mode tends to the ideal one with the walls' Ekman layers only (the stress-free surface has none):
+// (λ − λ0)/Ek^{1/2} = λ1 + O(Ek^{1/2}), and one Richardson step on Ek = 1e-3 and 1e-4 must land on the boundary-layer
+// λ1 of the closed-form mode (boundary_layer.hpp) — as for the completely filled cylinder (test_viscous.cpp); here on
+// Ek = 1e-3 and 3e-4, to 3 % (docs/viscous.md, "Partially filled tanks", has 1e-4 on a finer mesh: 1.1 %).
+TEST(ViscousFreeSurface, HeaviestModeExtrapolatesToTheBoundaryLayerLimit) {
+  const PartialFillMode m = heaviest_mode();
+  double kinetic = 0, surface = 0;
+  const auto R = gauss(m.b, 1.0, 16), Z = gauss(-1.0, 1.0, 16);
+  for (const auto& [r, wr] : R)
+    for (const auto& [z, wz] : Z) {
+      const auto V = m(r, z);
+      kinetic += (std::norm(V[0]) + std::norm(V[1]) + std::norm(V[2])) * r * wr * wz;
+    }
+  for (const auto& [z, wz] : Z) surface += std::norm(m(m.b, z)[0] / m.lambda) * wz;
+  const double norm2 = 2 * kPi * (kinetic + m.b * m.b * surface);
+  const cd limit = boundary_layer_correction(m.lambda, annulus_walls(m.b, 100), m, norm2);
+  std::vector<cd> slope;
+  const std::vector<double> eks = {1e-3, 3e-4};
+  for (double ek : eks) {
+    const ViscousMode v = partially_filled_mode(ek, {m.lambda, 2 * std::sqrt(ek)});
+    slope.push_back((v.lambda - m.lambda) / std::sqrt(ek));
+    std::printf("Ek %.0e: lambda %.9f decay %.9f, (lambda - lambda0)/Ek^1/2 = %.5f%+.5fi, E %.6f%+.6fi\n", ek,
+                v.lambda.real(), v.lambda.imag(), slope.back().real(), slope.back().imag(), v.residue.real(),
+                v.residue.imag());
+  }
+  const double h1 = std::sqrt(eks[0]), h2 = std::sqrt(eks[1]);
+  const cd extrapolated = (slope[1] * h1 - slope[0] * h2) / (h1 - h2);
+  std::printf("extrapolated lambda1 = %.5f%+.5fi, boundary-layer formula (walls only) %.5f%+.5fi, difference %.1e "
+              "relative\n", extrapolated.real(), extrapolated.imag(), limit.real(), limit.imag(),
+              std::abs(extrapolated - limit) / std::abs(limit));
+  EXPECT_LE(std::abs(extrapolated - limit), 0.03 * std::abs(limit));
+}
