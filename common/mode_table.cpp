@@ -216,6 +216,7 @@ void write_free_surface(hid_t root, const ModeTable::FreeSurface& f) {
   put_double(g.get(), "J1", f.J1);
   put_double(g.get(), "J2", f.J2);
   put_vector(g.get(), "t", f.t, H5T_NATIVE_DOUBLE);
+  if (!f.t_imag.empty()) put_vector(g.get(), "t_imag", f.t_imag, H5T_NATIVE_DOUBLE);
 }
 
 ModeTable::FreeSurface read_free_surface(hid_t root) {
@@ -231,6 +232,7 @@ ModeTable::FreeSurface read_free_surface(hid_t root) {
   f.J1 = get_double(g.get(), "J1");
   f.J2 = get_double(g.get(), "J2");
   f.t = get_vector<double>(g.get(), "t", H5T_NATIVE_DOUBLE, true);
+  if (H5Lexists(g.get(), "t_imag", H5P_DEFAULT) > 0) f.t_imag = get_vector<double>(g.get(), "t_imag", H5T_NATIVE_DOUBLE, true);
   return f;
 }
 
@@ -442,6 +444,7 @@ void ModeTable::validate() const {
   check(E_imag, "E_imag", !viscous());
   check(a_imag, "a_imag", !viscous());
   check(free_surface.t, "t (/free_surface)", !free_surface.present());
+  check(free_surface.t_imag, "t_imag (/free_surface)", !(free_surface.present() && viscous()));
   if (free_surface.present()) {
     const FreeSurface& f = free_surface;
     for (double x : {f.fill, f.radius, f.K0, f.K1, f.K2, f.J1, f.J2})
@@ -451,6 +454,8 @@ void ModeTable::validate() const {
   } else if (!free_surface.t.empty()) {
     throw std::runtime_error("/free_surface/t in a table without a free surface");
   }
+  if (!viscous() && !free_surface.t_imag.empty())
+    throw std::runtime_error("/free_surface/t_imag in a table whose ekman is not positive");
   if (!viscous() && !(decay.empty() && E_imag.empty() && a_imag.empty()))
     throw std::runtime_error("/modes/decay, E_imag or a_imag in a table whose ekman is not positive");
   if (!std::isfinite(ekman) || ekman < 0) throw std::runtime_error("root attribute ekman must be >= 0 and finite");
@@ -538,6 +543,7 @@ void ModeTable::sort_by_energy() {
   permute(decay); permute(E_imag); permute(a_imag);
   permute(galerkin.coupling_re); permute(galerkin.coupling_im);
   permute(free_surface.t);
+  permute(free_surface.t_imag);
   const std::size_t n = idx.size();
   for (auto* m : {&galerkin.gram_re, &galerkin.gram_im, &galerkin.viscous_re, &galerkin.viscous_im}) {
     if (m->size() != n * n) continue;

@@ -94,7 +94,8 @@ struct ModeTable {
     double radius = 0;    // b > 0 marks a partially filled tank's table
     double K0 = 0, K1 = 0, K2 = 0;
     double J1 = 0, J2 = 0;
-    std::vector<double> t;  // per mode, with the /modes rows
+    std::vector<double> t;       // per mode, with the /modes rows
+    std::vector<double> t_imag;  // viscous tables: its imaginary part (a + c t complex as a is), else empty
     bool present() const { return radius > 0; }
     double K(double c) const { return K2 + 2 * c * K1 + c * c * K0; }
   } free_surface;

@@ -8,6 +8,7 @@
 //   cavity-modes response cylinder --radius 1 --height 2 --sigma 0.5+0.1i,1.2-0.05i -o R.csv   (ideal fluid)
 // PETSc/SLEPc options (-pep_type ..., -log_view) pass through.
 #include "cavity_table.hpp"
+#include "free_surface.hpp"
 #include "convergence.hpp"
 #include "command_line.hpp"
 #include "empty_argument.hpp"
@@ -261,7 +262,11 @@ rc::modes::ViscousTableSettings viscous_request(const ViscousOptions& v, TableRe
       throw std::runtime_error("--mesh-ekman must be at most --ekman (a mesh made for thicker layers does not resolve "
                                "the flow's)");
   }
-  s.mesh = rc::modes::viscous_mesh_defaults(req.shape, v.mesh_ekman > 0 ? v.mesh_ekman : v.ekman, s.mesh);
+  // A partially filled tank's mesh is the liquid's (its smallest dimension the layer outside the free surface); a
+  // section's --fill is refused later, with the other --fill checks (check_fill).
+  const auto liquid = req.fill < 1 && req.shape.kind != "section" ? rc::geometry::partially_filled(req.shape, req.fill)
+                                                                  : req.shape;
+  s.mesh = rc::modes::viscous_mesh_defaults(liquid, v.mesh_ekman > 0 ? v.mesh_ekman : v.ekman, s.mesh);
   req.mesh = {};
   req.mesh.order = 0;
   req.check_convergence = false;
@@ -296,13 +301,13 @@ void check_response_options(const CLI::App& cmd, const ViscousOptions& viscous, 
 
 // --fill below 1: what a partially filled tank's table can be made with so far (docs/modes.md, "Partially filled
 // tanks"); each refusal one line, exit code 2.
-void check_fill(const TableRequest& req, bool is_viscous, bool fields, const std::string& method) {
+void check_fill(const TableRequest& req, bool fields, const std::string& method) {
   if (!(req.fill < 1)) return;
   if (req.shape.kind == "section")
     throw CommandLineError("--fill: not on a section yet (the built-in sphere, spheroid, cylinder and cone take it; "
                            "docs/modes.md, \"Partially filled tanks\")");
-  if (is_viscous) throw CommandLineError("--fill: so far the ideal fluid only (not with --ekman)");
   if (fields) throw CommandLineError("--fill: not with --fields yet");
+  if (!req.targets.empty()) throw CommandLineError("--fill: not with --target (the targets are the free surface's modes)");
   if (method == "separable" && (req.shape.kind != "cylinder" || req.shape.dims.count("inner_radius")))
     throw CommandLineError("--fill --method separable: a plain cylinder only (--method mesh takes the others)");
 }
@@ -469,8 +474,10 @@ int run_table(const TableRequest& req, bool is_viscous, const rc::modes::Viscous
   const auto report = [root](const std::string& line) { if (root) std::cerr << line << "\n"; };
   // With --ekman the fields are the damped modes' (the ideal targets need none).
   auto table = rc::modes::compute_mode_table(req, report, fields && !is_viscous ? &mode_fields : nullptr);
+  // A partially filled tank's damped modes live in the liquid only: its free surface is part of the viscous mesh.
+  const auto liquid = req.fill < 1 ? rc::geometry::partially_filled(req.shape, req.fill) : req.shape;
   if (is_viscous)
-    table = rc::modes::compute_viscous_table(req.shape, viscous_settings, table, report, fields ? &mode_fields : nullptr);
+    table = rc::modes::compute_viscous_table(liquid, viscous_settings, table, report, fields ? &mode_fields : nullptr);
   if (!root) return 0;  // under mpirun: rank 0 writes the table
   rc::modes::record_provenance(table, req.shape, command_line);
   rc::write_mode_table(table, output, fields ? &mode_fields : nullptr);
@@ -555,7 +562,7 @@ int run(int argc, char** argv) {
   req.clusters.method = cluster_method == "slices" ? rc::modes::ClusterMethod::slices : rc::modes::ClusterMethod::lanczos;
   const bool is_viscous = table_command->count("--ekman") > 0;
   const auto viscous_settings = resolve_viscous(*table_command, response, is_viscous, viscous, output, req);
-  if (!response) check_fill(req, is_viscous, fields, method);
+  if (!response) check_fill(req, fields, method);
   choose_method(*table_command, method, fields, req);
 
   int petsc_argc = static_cast<int>(args.petsc.size());

@@ -84,6 +84,7 @@ void factorise(ShiftInvert& op, std::complex<double> target, MPI_Comm comm) {
 // x = a + ib on the real slots (the complex problem's unknowns): fᵀx and xᵀ𝓜x (unconjugated); E_c = π (fᵀx)² / xᵀ𝓜x.
 struct CouplingForms {
   std::complex<double> fx, xMx;
+  std::complex<double> gx;  // the offset functional's gᵀx (a free surface's only)
   double xbarMx = 0;  // x̄ᵀ𝓜x = ∫∫ |V|² r dr dz
   std::complex<double> residue() const { return std::numbers::pi * fx * fx / xMx; }
 };
@@ -97,6 +98,7 @@ CouplingForms coupling_forms(const ViscousForms& forms, Vec xr, Vec xi) {
   petsc_check(MatMult(forms.M, b, Mb), "MatMult");
   CouplingForms c;
   c.fx = {dot(forms.coupling, a), dot(forms.coupling, b)};
+  if (forms.offset_coupling.get() != nullptr) c.gx = {dot(forms.offset_coupling, a), dot(forms.offset_coupling, b)};
   c.xMx = {dot(a, Ma) - dot(b, Mb), 2 * dot(a, Mb)};
   c.xbarMx = dot(a, Ma) + dot(b, Mb);
   if (std::abs(c.xMx) == 0) throw std::runtime_error("viscous mode with zero kinetic-energy form");
@@ -237,6 +239,7 @@ std::vector<ViscousMode> damped_modes(EPS eps, PetscInt converged, const Viscous
     if (!(m.lambda.imag() > 0)) continue;  // not a damped mode of the wanted problem (none exists with Ek > 0)
     const CouplingForms c = coupling_forms(forms, Xr, imag_part);
     m.residue = c.residue();
+    if (forms.offset_coupling.get() != nullptr) m.offset = std::sqrt(std::numbers::pi / 2) * c.gx * table_scale(c);
     if (settings.keep_vector) m.vector = normalised_vector(Xr, imag_part, c, m.conjugate_norm);
     if (settings.keep_block) m.block = block_of(Xr, imag_part, table_scale(c));
     m.residual = block_residual(forms, Xr, imag_part, m.lambda);

@@ -21,6 +21,8 @@ struct ViscousMode {
   std::complex<double> lambda;    // e^{iλt}: Re λ the frequency in the rotating frame, Im λ = decay ≥ 0
   std::complex<double> residue;   // E_c = π (fᵀx)² / xᵀ𝓜x (bilinear, unconjugated): the coupling whose Ek → 0
                                   // limit is the ideal E (viscous_forms.hpp)
+  std::complex<double> offset;    // a partially filled tank's t: a = √(π/2) fᵀx and t = √(π/2) gᵀx for xᵀ𝓜x = 1 with
+                                  // Re a ≥ 0 (viscous_forms.hpp), so that a about the joint is a + c t
   double residual = 0;            // ‖A x − λ 𝓜 x‖ / (|λ| ‖x‖), computed from the matrices
   // With ViscousSolveSettings::keep_vector, on rank 0: the mode x (velocity u+, u−, u_z, then Q = iP, numbered as
   // the TaylorHoodSpace), normalised as the table (xᵀ𝓜x = 1, a = √(π/2) fᵀx with Re a ≥ 0). Empty otherwise.

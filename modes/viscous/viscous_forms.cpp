@@ -23,6 +23,7 @@ struct ElementMatrices {
   // Per pair of local velocity nodes: M0, K0, K1, K2; per (pressure node, velocity node): the three B rows.
   std::vector<double> m0, k0, k1, k2, bp, bm, bz;
   std::vector<double> fm, fz;  // coupling functional on u− and u_z
+  std::vector<double> gm;      // its part per unit offset of the joint below the centroid, on u− (header)
   // With a free surface: the stress form's cross term (header), per (test component, field component) block.
   std::vector<double> t;
 };
@@ -58,6 +59,7 @@ void integrate_element(const TaylorHoodSpace& space, std::size_t e, double centr
   out.t.assign(stress_form ? 9 * npe * npe : 0, 0.0);
   for (auto* v : {&out.bp, &out.bm, &out.bz}) v->assign(npp * npe, 0.0);
   out.fm.assign(npe, 0.0);
+  out.gm.assign(npe, 0.0);
   out.fz.assign(npe, 0.0);
   const auto& P = space.pressure_basis();
   for (std::size_t q = 0; q < eq.w.size(); ++q) {
@@ -68,6 +70,7 @@ void integrate_element(const TaylorHoodSpace& space, std::size_t e, double centr
     if (stress_form) add_stress_cross_term(npe, r, w, N, Nr, Nz, out.t);
     for (int a = 0; a < npe; ++a) {
       out.fm[a] += -zp * N[a] * r * w;
+      out.gm[a] += -N[a] * r * w;
       out.fz[a] += r * N[a] * r * w;
       for (int b = 0; b < npe; ++b) {
         const double grad = (Nr[a] * Nr[b] + Nz[a] * Nz[b]) * r * w, mass = N[a] * N[b] * r * w;
@@ -89,12 +92,13 @@ void integrate_element(const TaylorHoodSpace& space, std::size_t e, double centr
 
 // Scatters one element into the real, imaginary and mass triplets of the complex pencil.
 void scatter(const TaylorHoodSpace& space, std::size_t e, const ElementMatrices& em, double ekman, Triplets& ar,
-             Triplets& ai, Triplets& mass, std::vector<double>& f) {
+             Triplets& ai, Triplets& mass, std::vector<double>& f, std::vector<double>& g) {
   const int npe = space.velocity_nodes_per_element(), npp = space.pressure_nodes_per_element();
   const auto up = space.velocity(e, kPlus), um = space.velocity(e, kMinus), uz = space.velocity(e, kAxial);
   const auto p = space.pressure(e);
   for (int a = 0; a < npe; ++a) {
     if (um[a] >= 0) f[um[a]] += em.fm[a];
+    if (um[a] >= 0) g[um[a]] += em.gm[a];
     if (uz[a] >= 0) f[uz[a]] += em.fz[a];
     for (int b = 0; b < npe; ++b) {
       const int ab = a * npe + b;
@@ -130,7 +134,7 @@ void scatter(const TaylorHoodSpace& space, std::size_t e, const ElementMatrices&
 // the walls (the contact line is pinned by no-slip: η = 0 there), numbered from `first`. Adds on this rank the
 // surface's terms of Re A and 𝓜 and its coupling functional; returns the number of surface unknowns.
 int add_free_surface(const TaylorHoodSpace& space, double centroid_z, int first, bool this_rank, Triplets& ar,
-                     Triplets& mass, std::vector<double>& f) {
+                     Triplets& mass, std::vector<double>& f, std::vector<double>& g) {
   const auto& mesh = space.geometry().mesh();
   if (mesh.free_edges.empty()) return 0;
   const int npe = mesh.nodes_per_element, nn = mesh.order + 1;
@@ -145,6 +149,7 @@ int add_free_surface(const TaylorHoodSpace& space, double centroid_z, int first,
   for (int node : mesh.free_edges)
     if (up[node] >= 0 && eta[node] < 0) eta[node] = first + count++;
   f.resize(first + count, 0.0);
+  g.resize(first + count, 0.0);
   if (!this_rank) return count;
   const double b = mesh.free_radius, b2 = b * b;
   const geometry::ReferenceEdge edge = geometry::reference_edge(mesh.order, 2 * mesh.order + 2);
@@ -162,6 +167,7 @@ int add_free_surface(const TaylorHoodSpace& space, double centroid_z, int first,
         const int ea = eta[v[a]];
         if (ea < 0) continue;
         f[ea] += -b2 * (z - centroid_z) * N[a] * w;
+        g[ea] += -b2 * N[a] * w;
         for (int c = 0; c < nn; ++c) {
           const double s = N[a] * N[c] * w;
           mass.add(ea, eta[v[c]], b2 * s);
@@ -254,16 +260,17 @@ ViscousForms assemble_viscous_forms(const TaylorHoodSpace& space, double centroi
 
   const bool free_surface = !space.geometry().mesh().free_edges.empty();
   Triplets ar, ai, mass;
-  std::vector<double> f(space.size(), 0.0);
-  const int n = space.size() + add_free_surface(space, centroid_z, space.size(), rank == 0, ar, mass, f);
-  std::vector<double> f_all(n, 0.0);
+  std::vector<double> f(space.size(), 0.0), g(space.size(), 0.0);
+  const int n = space.size() + add_free_surface(space, centroid_z, space.size(), rank == 0, ar, mass, f, g);
+  std::vector<double> f_all(n, 0.0), g_all(n, 0.0);
   ElementQuadrature eq;
   ElementMatrices em;
   for (std::size_t e = first; e < last; ++e) {
     integrate_element(space, e, centroid_z, free_surface, eq, em);
-    scatter(space, e, em, ekman, ar, ai, mass, f);
+    scatter(space, e, em, ekman, ar, ai, mass, f, g);
   }
   MPI_Allreduce(f.data(), f_all.data(), n, MPI_DOUBLE, MPI_SUM, comm);
+  MPI_Allreduce(g.data(), g_all.data(), n, MPI_DOUBLE, MPI_SUM, comm);
 
   ViscousForms forms;
   forms.complex_size = n;
@@ -271,6 +278,7 @@ ViscousForms assemble_viscous_forms(const TaylorHoodSpace& space, double centroi
   forms.M = block_mass(comm, n, mass);
   forms.iM = block_imaginary_mass(comm, n, mass);
   forms.coupling = block_vector(forms.A, f_all);
+  if (free_surface) forms.offset_coupling = block_vector(forms.A, g_all);
   forms.real_slots = block_vector(forms.A, std::vector<double>(n, 1.0));
   petsc_check(MatCreateVecs(forms.M, forms.mass_diagonal.out(), nullptr), "MatCreateVecs");
   petsc_check(MatGetDiagonal(forms.M, forms.mass_diagonal), "MatGetDiagonal");

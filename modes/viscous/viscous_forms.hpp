@@ -43,6 +43,8 @@ struct ViscousForms {
   PMat A, M;               // Â, M̂ (distributed over the communicator's ranks)
   PMat iM;                 // the block form of i𝓜: [[0, −𝓜], [𝓜, 0]] pairwise (complex shifts σ𝓜 = Re σ M̂ + Im σ iM)
   PVec coupling;           // f on the real slots, 0 on the imaginary ones
+  PVec offset_coupling;    // with a free surface only: g, the coupling per unit height of the centroid above the
+                           // joint (a_O = a + c t, docs/physics.md §2): g(v) = −∫∫ v− r dr dz − b² ∫ η̃ dz
   PVec real_slots;         // 1 on the real slots, 0 on the imaginary ones
   PVec mass_diagonal;      // diagonal of M̂ (for scaling checks)
 };

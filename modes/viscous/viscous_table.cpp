@@ -23,12 +23,14 @@ constexpr double kMinEkman = 1e-8, kMaxEkman = 1e3;
 constexpr double kMaxWallSizePerLayer = 4.0;  // a wall element may span at most this many Ek^{1/2}
 constexpr double kLayersThickness = 10.0;     // anisotropic wall layers cover this many Ek^{1/2}
 
+// The liquid's: a partially filled tank's (its free_radius) is the layer outside its free surface.
 double smallest_dimension(const geometry::ShapeSpec& shape) {
-  if (shape.kind == "sphere") return shape.dims.at("radius");
-  if (shape.kind == "spheroid") return std::min(shape.dims.at("a"), shape.dims.at("c"));
+  const double free = shape.dims.count("free_radius") ? shape.dims.at("free_radius") : 0.0;
+  if (shape.kind == "sphere") return shape.dims.at("radius") - free;
+  if (shape.kind == "spheroid") return std::min(shape.dims.at("a") - free, shape.dims.at("c"));
   if (shape.kind == "cylinder" || shape.kind == "cone") {
-    const double inner = shape.dims.count("inner_radius") ? shape.dims.at("inner_radius") : 0.0;  // a rod's gap
-    return std::min(shape.dims.at("radius") - inner, shape.dims.at("height"));
+    const double rod = shape.dims.count("inner_radius") ? shape.dims.at("inner_radius") : 0.0;  // a rod's gap
+    return std::min(shape.dims.at("radius") - std::max(rod, free), shape.dims.at("height"));
   }
   return 8 * geometry::default_mesh_size(shape);  // section: the smallest side of its bounding box
 }
@@ -204,6 +206,8 @@ ModeTable viscous_rows(const ModeTable& ideal, const Solved& fine, double ekman,
   t.bands = {};
   t.kappa.clear(); t.lambda.clear(); t.E.clear(); t.a.clear(); t.N2.clear(); t.residual.clear();
   t.spread.clear(); t.members.clear(); t.dlambda.clear(); t.dE.clear(); t.converged.clear();
+  t.free_surface.t.clear();
+  t.free_surface.t_imag.clear();
   double kept = 0;
   for (const auto& m : fine.rows) {
     const std::complex<double> a = std::sqrt(m.residue / 2.0);
@@ -216,6 +220,10 @@ ModeTable viscous_rows(const ModeTable& ideal, const Solved& fine, double ekman,
     t.a_imag.push_back(a.imag());
     t.N2.push_back(1.0);
     t.residual.push_back(std::max(m.residual, std::numeric_limits<double>::epsilon()));  // as add_modes
+    if (t.free_surface.present()) {  // a + c t about a joint c below the centroid: t with a's branch (Re a ≥ 0)
+      t.free_surface.t.push_back(m.offset.real());
+      t.free_surface.t_imag.push_back(m.offset.imag());
+    }
     kept += m.residue.real();
   }
   t.coverage = t.sum_rule > 0 ? kept / t.sum_rule : 1.0;

@@ -81,6 +81,9 @@ void set_frozen_fluid(const Scene& scene, const std::string& w, const CavitySpec
   b.fluid_center = cav.origin ? *cav.origin + L * t.centroid_z : cav.center;
   if (!(b.m_f > 0) || b.A_f < 0 || b.C_f < 0 || b.J_zh < 0)
     fail(scene, w + ".table", "non-physical table (volume, A_f, C_f or J_zh not positive)");
+  if (t.free_surface.present() && t.viscous())
+    fail(scene, w + ".table", "a viscous partially filled tank's table (damped modes with a free surface) is not taken "
+                              "by the chain yet: use its ideal table (docs/rom.md, \"Partially filled tanks\")");
   if (t.free_surface.present()) {
     const double c = b.fluid_center / L;
     b.free_surface = true;

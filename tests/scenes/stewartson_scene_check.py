@@ -12,8 +12,8 @@ on its spin-test stand, data/scenes/spacecraft_spin_table.toml), and its roots a
    of chain-rom's model: |F| at the roots must be rounding against its terms;
 4. the same table read as if filled (t and K dropped) gives other roots: the free surface's terms matter;
 5. what is not modelled yet is refused in one line, no file written: a free chain and the nonlinear model with this
-   tank (chain-rom), --fill on a section, with --ekman, with --fields, separable around a rod and outside (0, 1]
-   (cavity-modes, exit 2), cluster options with --fill,
+   tank (chain-rom), --fill on a section, with --target, with --fields, separable around a rod and outside (0, 1]
+   (cavity-modes, exit 2), cluster options with --fill, a viscous partially filled table in the chain,
    and a section with a 'free' group, which would otherwise be meshed as a wall (exit 1) — with --refusals only.
 usage: stewartson_scene_check.py CAVITY_MODES CHAIN_ROM SCENE WORKDIR [--refusals]
 """
@@ -113,11 +113,27 @@ refused([modes_bin, "cylinder", "--radius", "1", "--height", "2", "--inner-radiu
 refused([modes_bin, "sphere", "--radius", "1", "--fill", "0.5", "--fields", "-o", x], 2, "not with --fields yet", x)
 refused([modes_bin, "sphere", "--radius", "1", "--fill", "0.5", "--clusters", "slices", "-o", x], 0,
         "does not apply with --fill", x)
-refused([modes_bin, "cylinder", "--radius", "1", "--height", "2", "--fill", "0.5", "--ekman", "1e-3", "-o", x], 2,
-        "the ideal fluid only", x)
+refused([modes_bin, "cylinder", "--radius", "1", "--height", "2", "--fill", "0.5", "--ekman", "1e-3", "--target", "0.5",
+         "-o", x], 2, "not with --target", x)
 for bad in ("0", "1.5", "-0.2", "abc"):
     refused([modes_bin, "cylinder", "--radius", "1", "--height", "2", "--fill", bad, "-o", x], 2,
             "volume fraction must be in (0, 1]", x)
+# A viscous partially filled table (damped modes with the free surface): made, read back, and refused by the chain.
+viscous = os.path.join(work, "viscous_fill.h5")
+r = subprocess.run([modes_bin, "cylinder", "--radius", "1", "--height", "2", "--fill", "0.62", "--ekman", "1e-3",
+                    "--modes", "1", "--no-convergence-check", "-o", viscous], capture_output=True, text=True)
+if r.returncode != 0:
+    print(f"FAILED: the viscous partially filled table: {r.stderr.strip()}"); failed += 1
+else:
+    with h5py.File(viscous) as h:
+        decay, t_imag = h["modes/decay"][0], h["free_surface/t_imag"][:]
+    print(f"viscous partially filled table: decay {decay:.6f}, /free_surface/t_imag of {len(t_imag)} row(s)")
+    if not decay > 0:
+        print("FAILED: the damped mode should decay"); failed += 1
+    vscene = os.path.join(work, "viscous.toml")
+    open(vscene, "w").write(re.sub(r'^table = ".*"$', f'table = "{viscous}"\nviscosity = {1e-3 * 400 * 0.05**2}',
+                                   open(local).read(), flags=re.M))
+    refused([rom_bin, "spectrum", vscene], 0, "not taken by the chain yet")
 annulus = open(os.path.join(os.path.dirname(scene), "..", "sections", "annulus.geo")).read()
 free_geo = os.path.join(work, "annulus_free.geo")
 open(free_geo, "w").write(annulus.replace('Physical Curve("wall") = {1, 2, 3, 4};',
