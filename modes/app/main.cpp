@@ -146,7 +146,7 @@ void add_table_options(CLI::App* cmd, TableRequest& req, bool& fields, std::stri
   cmd->add_option("--fill", req.fill,
                   "the liquid's volume fraction, in (0, 1] (default 1): below 1 a partially filled tank whose free "
                   "surface is the coaxial cylinder of rapid spin (docs/physics.md §2, \"Partially filled tanks\"); "
-                  "built-in shapes, ideal fluid")
+                  "built-in shapes, ideal or with --ekman")
       ->check([](const std::string& v) -> std::string {
         try {
           const double f = std::stod(v);
