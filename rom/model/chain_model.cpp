@@ -4,6 +4,7 @@
 #include "mode_table.hpp"
 
 #include <algorithm>
+#include <complex>
 #include <cmath>
 #include <sstream>
 
@@ -49,12 +50,18 @@ const rc::ModeTable& cavity_table(const Scene& scene, const std::string& w, cons
 }
 
 // Each row's coupling about the body's joint O_k (docs/physics.md §2): the table's for a filled tank, a + c t for a
-// partially filled one (c = O_k -> centroid in the table's unit).
+// partially filled one (c = O_k -> centroid in the table's unit); complex for a viscous table (a + i a_imag, t + i
+// t_imag: docs/viscous.md, "Partially filled tanks"), E_c = 2 (a + c t)² / N² then.
 struct RowCoupling {
   const rc::ModeTable& t;
   double c = 0;
   double a(std::size_t l) const { return t.free_surface.present() ? t.a[l] + c * t.free_surface.t[l] : t.a[l]; }
-  double E(std::size_t l) const { return t.free_surface.present() ? 2 * a(l) * a(l) / t.N2[l] : t.E[l]; }
+  std::complex<double> E_c(std::size_t l) const {
+    if (!t.free_surface.present()) return {t.E[l], t.viscous() ? t.E_imag[l] : 0.0};
+    const std::complex<double> ac(a(l), t.viscous() ? t.a_imag[l] + c * t.free_surface.t_imag[l] : 0.0);
+    return 2.0 * ac * ac / t.N2[l];
+  }
+  double E(std::size_t l) const { return E_c(l).real(); }
   // Σ E over every mode about O_k, in table units
   double sum_rule() const { return t.free_surface.present() ? t.sum_rule_about(c) : t.A_f - t.J_zh; }
 };
@@ -81,9 +88,6 @@ void set_frozen_fluid(const Scene& scene, const std::string& w, const CavitySpec
   b.fluid_center = cav.origin ? *cav.origin + L * t.centroid_z : cav.center;
   if (!(b.m_f > 0) || b.A_f < 0 || b.C_f < 0 || b.J_zh < 0)
     fail(scene, w + ".table", "non-physical table (volume, A_f, C_f or J_zh not positive)");
-  if (t.free_surface.present() && t.viscous())
-    fail(scene, w + ".table", "a viscous partially filled tank's table (damped modes with a free surface) is not taken "
-                              "by the chain yet: use its ideal table (docs/rom.md, \"Partially filled tanks\")");
   if (t.free_surface.present()) {
     const double c = b.fluid_center / L;
     b.free_surface = true;
@@ -101,7 +105,7 @@ std::vector<int> kept_rows(const Scene& scene, const std::string& w, const Cavit
   const double tiny = 1e-14 * std::max(sum_rule, 1e-300);
   // A viscous mode's residue may have a negative real part (docs/viscous.md section 5): kept by its modulus.
   for (std::size_t l = 0; l < t.size(); ++l)
-    if (t.viscous() ? std::hypot(t.E[l], t.E_imag[l]) > tiny : rc.E(l) > tiny) idx.push_back(static_cast<int>(l));
+    if (t.viscous() ? std::abs(rc.E_c(l)) > tiny : rc.E(l) > tiny) idx.push_back(static_cast<int>(l));
   // About O_k a free-surface table's rows weigh otherwise than about its centroid, where they are sorted.
   if (t.free_surface.present())
     std::stable_sort(idx.begin(), idx.end(), [&](int i, int j) { return rc.E(i) > rc.E(j); });
@@ -145,7 +149,7 @@ FluidMode chain_mode(int k, int l, const rc::ModeTable& t, const RowCoupling& rc
     // Spin -omega mirrors the flow (phi -> -phi) and conjugates it: lambda_c -> -conj(lambda_c), so the
     // decay scales with |omega| and E_c -> conj(E_c) (docs/rom.md, "Viscous tanks"; derived, no test yet).
     m.decay = std::abs(omega) * t.decay[l];
-    m.E_imag = (omega < 0 ? -1 : 1) * L5 * t.E_imag[l];
+    m.E_imag = (omega < 0 ? -1 : 1) * L5 * rc.E_c(l).imag();
   }
   return m;
 }
@@ -178,6 +182,8 @@ void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
   const RowCoupling rc{t, b.fluid_center / cav.scale};
   const std::vector<int> rows = kept_rows(scene, w, cav, t, rc);
   GalerkinFluid gf;
+  if (cav.galerkin && t.free_surface.present())  // its forms hold the couplings about the centroid only
+    fail(scene, w + ".reduction", "\"galerkin\" does not take a partially filled tank's table yet (the modal tank does)");
   if (cav.galerkin) {
     try {
       gf = galerkin_fluid(t, rows);
