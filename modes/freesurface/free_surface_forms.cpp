@@ -1,5 +1,7 @@
 #include "free_surface_forms.hpp"
 
+#include "surface_quadrature.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -46,26 +48,17 @@ FreeSurfaceForms assemble_free_surface_forms(const FESpace& space, double centro
   const geometry::ReferenceEdge edge = geometry::reference_edge(p, 2 * p + 2);
   std::vector<Eigen::Triplet<double>> entries;
   double z0 = 0, z1 = 0, z2 = 0;
-  for (std::size_t e = 0; e < mesh.free_edges.size(); e += nn) {
-    const int* v = &mesh.free_edges[e];
-    for (std::size_t q = 0; q < edge.weights.size(); ++q) {
-      double z = 0, dz = 0;
-      for (int a = 0; a < nn; ++a) {
-        z += mesh.nodes[v[a]][1] * edge.N[q * nn + a];
-        dz += mesh.nodes[v[a]][1] * edge.dN[q * nn + a];
-      }
-      const double w = edge.weights[q] * std::abs(dz), zp = z - centroid_z;  // dz along r = b
-      z0 += w; z1 += zp * w; z2 += zp * zp * w;
-      for (int a = 0; a < nn; ++a) {
-        const int i = dof[v[a]];
-        const double Na = edge.N[q * nn + a];
-        F.f3(i) += b * zp * Na * w;
-        F.e1(i) += b * Na * w;
-        for (int c = 0; c < nn; ++c) entries.emplace_back(i, dof[v[c]], Na * edge.N[q * nn + c] * w);
-      }
+  for (const SurfacePoint& q : free_surface_points(mesh, edge)) {
+    const double w = q.w, zp = q.z - centroid_z;
+    z0 += w; z1 += zp * w; z2 += zp * zp * w;
+    for (int a = 0; a < nn; ++a) {
+      const int i = dof[q.nodes[a]];
+      F.f3(i) += b * zp * q.N[a] * w;
+      F.e1(i) += b * q.N[a] * w;
+      for (int c = 0; c < nn; ++c) entries.emplace_back(i, dof[q.nodes[c]], q.N[a] * q.N[c] * w);
     }
-    for (int a = 0; a < nn; ++a) F.surface_dofs.push_back(dof[v[a]]);
   }
+  for (int node : mesh.free_edges) F.surface_dofs.push_back(dof[node]);
   F.S.resize(n, n);
   F.S.setFromTriplets(entries.begin(), entries.end());
   std::sort(F.surface_dofs.begin(), F.surface_dofs.end());

@@ -1,5 +1,7 @@
 #include "viscous_forms.hpp"
 
+#include "surface_quadrature.hpp"
+
 #include <algorithm>
 #include <array>
 #include <span>
@@ -153,28 +155,18 @@ int add_free_surface(const TaylorHoodSpace& space, double centroid_z, int first,
   if (!this_rank) return count;
   const double b = mesh.free_radius, b2 = b * b;
   const geometry::ReferenceEdge edge = geometry::reference_edge(mesh.order, 2 * mesh.order + 2);
-  for (std::size_t e = 0; e < mesh.free_edges.size(); e += nn) {
-    const int* v = &mesh.free_edges[e];
-    for (std::size_t q = 0; q < edge.weights.size(); ++q) {
-      double z = 0, dz = 0;
-      for (int a = 0; a < nn; ++a) {
-        z += mesh.nodes[v[a]][1] * edge.N[q * nn + a];
-        dz += mesh.nodes[v[a]][1] * edge.dN[q * nn + a];
-      }
-      const double w = edge.weights[q] * std::abs(dz);
-      const double* N = &edge.N[q * nn];
-      for (int a = 0; a < nn; ++a) {
-        const int ea = eta[v[a]];
-        if (ea < 0) continue;
-        f[ea] += -b2 * (z - centroid_z) * N[a] * w;
-        g[ea] += -b2 * N[a] * w;
-        for (int c = 0; c < nn; ++c) {
-          const double s = N[a] * N[c] * w;
-          mass.add(ea, eta[v[c]], b2 * s);
-          for (int u : {up[v[c]], um[v[c]]}) {  // V_r = (u+ + u−)/2
-            ar.add(u, ea, 0.5 * b2 * s);
-            ar.add(ea, u, 0.5 * b2 * s);
-          }
+  for (const SurfacePoint& q : free_surface_points(mesh, edge)) {
+    for (int a = 0; a < nn; ++a) {
+      const int ea = eta[q.nodes[a]];
+      if (ea < 0) continue;
+      f[ea] += -b2 * (q.z - centroid_z) * q.N[a] * q.w;
+      g[ea] += -b2 * q.N[a] * q.w;
+      for (int c = 0; c < nn; ++c) {
+        const double s = q.N[a] * q.N[c] * q.w;
+        mass.add(ea, eta[q.nodes[c]], b2 * s);
+        for (int u : {up[q.nodes[c]], um[q.nodes[c]]}) {  // V_r = (u+ + u−)/2
+          ar.add(u, ea, 0.5 * b2 * s);
+          ar.add(ea, u, 0.5 * b2 * s);
         }
       }
     }
