@@ -79,10 +79,42 @@ double model_smallest_side() {
 
 std::vector<int> group_entities(int dim, int tag);
 int physical_tag(int dim, const std::string& name, const std::string& where);
+int find_physical_tag(int dim, const std::string& name);
 
 // Anisotropic layers along the wall (gmsh BoundaryLayer field), or isotropic elements of size wall_size at the
 // wall growing linearly with the distance d from it, size(d) = wall_size + growth · (d − wall_size), up to `size`
 // (gmsh Distance + Threshold fields; the wall sampled finely enough that the distance is accurate there).
+// A partially filled tank's contact lines, where its free surface (the 'free' curves) meets a no-slip wall: the viscous
+// flow is singular there and the damped modes converged only like h^1.3 with the interior size h (docs/viscous.md,
+// "Partially filled tanks"). A Threshold field refines towards those points: size/8 within size/8 of them, growing to
+// `size` at 2 size. Returns the field, or -1 without a free surface.
+int contact_line_field(double size) {
+  const int free = find_physical_tag(1, "free");
+  if (free < 0) return -1;
+  gmsh::vectorpair curves, ends;
+  for (int c : group_entities(1, free)) curves.push_back({1, c});
+  gmsh::model::getBoundary(curves, ends, false, false, false);
+  std::vector<double> points;
+  for (const auto& [dim, tag] : ends) points.push_back(tag);
+  namespace field = gmsh::model::mesh::field;
+  const int distance = field::add("Distance");
+  field::setNumbers(distance, "PointsList", points);
+  const int threshold = field::add("Threshold");
+  field::setNumber(threshold, "InField", distance);
+  field::setNumber(threshold, "SizeMin", size / 8);
+  field::setNumber(threshold, "SizeMax", size);
+  field::setNumber(threshold, "DistMin", size / 8);
+  field::setNumber(threshold, "DistMax", 2 * size);
+  return threshold;
+}
+
+void use_as_background(int field_tag) {
+  gmsh::model::mesh::field::setAsBackgroundMesh(field_tag);
+  gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+}
+
 void grade_towards_wall(const MeshOptions& options, double size, const std::string& where) {
   if (options.wall_size <= 0 || options.wall_size >= size) return;
   const double extent = model_extent();
@@ -92,6 +124,7 @@ void grade_towards_wall(const MeshOptions& options, double size, const std::stri
   std::vector<double> curves;
   for (int c : group_entities(1, physical_tag(1, "wall", where))) curves.push_back(c);
   namespace field = gmsh::model::mesh::field;
+  const int contact = contact_line_field(size);
   if (options.wall_layer > 0) {
     const int layers = field::add("BoundaryLayer");
     field::setNumbers(layers, "EdgesList", curves);
@@ -101,6 +134,7 @@ void grade_towards_wall(const MeshOptions& options, double size, const std::stri
     field::setNumber(layers, "hfar", size);
     field::setNumber(layers, "Quads", 0);
     field::setAsBoundaryLayer(layers);
+    if (contact >= 0) use_as_background(contact);
     return;
   }
   const int distance = field::add("Distance");
@@ -112,10 +146,13 @@ void grade_towards_wall(const MeshOptions& options, double size, const std::stri
   field::setNumber(threshold, "SizeMax", size);
   field::setNumber(threshold, "DistMin", options.wall_size);
   field::setNumber(threshold, "DistMax", options.wall_size + (size - options.wall_size) / options.wall_growth);
-  field::setAsBackgroundMesh(threshold);
-  gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
-  gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
-  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+  if (contact < 0) {
+    use_as_background(threshold);
+    return;
+  }
+  const int finer = field::add("Min");
+  field::setNumbers(finer, "FieldsList", {static_cast<double>(threshold), static_cast<double>(contact)});
+  use_as_background(finer);
 }
 
 // `grading`: grade towards the wall with gmsh fields (none when the CAD model already holds the wall layers).
