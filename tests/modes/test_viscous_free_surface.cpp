@@ -35,12 +35,12 @@ const cd I(0, 1);
 // The interior elements are half the default's: the contact lines, where the no-slip lids meet the stress-free surface,
 // make λ converge slowly with the element size, even with the mesh refined towards them (docs/viscous.md, "Partially
 // filled tanks").
-ViscousMode partially_filled_mode(double ek, cd target) {
+ViscousMode partially_filled_mode(double ek, cd target, double size = 0.0625) {
   const geometry::ShapeSpec cylinder{"cylinder", {{"radius", 1.0}, {"height", 2.0}}, {}};
   const geometry::ShapeSpec liquid = geometry::partially_filled(cylinder, 0.9);
   geometry::MeshOptions o;
   o.order = 6;
-  o.size = 0.0625;
+  o.size = size;
   const TaylorHoodSpace space(geometry::mesh_meridian(liquid, viscous_mesh_defaults(liquid, ek, o)));
   const double zc = integrate_fluid(space.geometry()).centroid_z;
   const ViscousForms forms = assemble_viscous_forms(space, zc, ek, PETSC_COMM_SELF);
@@ -176,7 +176,7 @@ TEST(ViscousFreeSurface, SurfaceWaveOffsetCouplingTendsToTheIdeal) {
     if (p.lambda < -2 && (!wave || std::abs(p.coupling.t) > std::abs(wave->coupling.t))) wave = &p;
   ASSERT_NE(wave, nullptr);
   const double ek = 1e-3;
-  const ViscousMode v = partially_filled_mode(ek, {wave->lambda, 2 * std::sqrt(ek)});
+  const ViscousMode v = partially_filled_mode(ek, {wave->lambda, 2 * std::sqrt(ek)}, 0.125);
   const double dt = std::abs(std::abs(v.offset) - std::abs(wave->coupling.t)) / std::abs(wave->coupling.t);
   std::printf("surface wave: ideal lambda %.9f, t %.9f (a %.1e); Ek %.0e: lambda %.9f%+.9fi, t %.9f%+.9fi (|t| %.1e "
               "relative), |a| %.1e\n", wave->lambda, wave->coupling.t, wave->coupling.a, ek, v.lambda.real(),
