@@ -98,7 +98,9 @@ TEST(PartialFill, FullLimitIsTheFilledCylinder) {
     std::printf("fill 1 - %.0e: the filled cylinder's %d leading modes (j <= 3) to %.2e (%.1f x (1 - fill))\n", gap,
                 matched, worst, worst / gap);
     previous.push_back(worst);
-    if (gap < 1e-2) EXPECT_LT(worst, 25 * gap);
+    if (gap < 1e-2) {
+      EXPECT_LT(worst, 25 * gap);
+    }
   }
   for (std::size_t i = 1; i < previous.size(); ++i) EXPECT_LT(previous[i], previous[i - 1]);
 }
