@@ -127,8 +127,8 @@ PartialFillSpectrum solve_partially_filled_mesh(const FESpace& space, int max_un
   out.sum_rule = out.fluid.A_f + out.K2 - out.J_D;
 
   const ComplexEigen eig = real_eigen(companion(f), true, "the free surface's companion matrix");
-  const double norms[4] = {Eigen::MatrixXd(f.surface.S).norm(), Eigen::MatrixXd(f.M + 4 * f.surface.S).norm(),
-                           Eigen::MatrixXd(f.Gc).norm(), Eigen::MatrixXd(f.Kz).norm()};
+  const double norms[4] = {f.surface.S.norm(), Eigen::SparseMatrix<double>(f.M + 4 * f.surface.S).norm(), f.Gc.norm(),
+                           f.Kz.norm()};  // Frobenius norms of the sparse forms, for the residuals' scale
   for (Eigen::Index i = 0; i < eig.values.size(); ++i) {
     const std::complex<double> lc = eig.values(i);
     // λ = 0 is a defective eigenvalue of high multiplicity (the steady geostrophic motions, Kz p = 0): rounding
