@@ -3,7 +3,11 @@
 
     /usr/bin/python3 scripts/plot_sweep.py SWEEP.csv -o OUT.png [--title TEXT] [--growth]
 
-One swept value: the margin (largest |Im sigma|, rad/s) against the value, unstable points marked.
+One swept value: the distance to the threshold (rad/s) against the value: above zero the margin of an unstable
+point (largest |Im sigma|), below zero, on a stable point, minus half the gap between the closest real roots of
+opposite Krein signature (the CSV's `gap` column: the only roots that can meet and leave the axis). Half, because two
+roots s ± g/2 that meet leave as s ± i m: the curve is continuous through a collision and reaches zero where the
+verdict changes.
 Two: a map over both values, the margin in colour (log scale) on the unstable points, stable points
 white, the stability boundary drawn. Points the sweep could not evaluate (nan) are grey.
 --growth (chains with friction or viscous tanks, where the margin column is the largest growth rate -Im sigma,
@@ -53,6 +57,21 @@ def draw_growth(fig, ax, np, SymLogNorm, keys, data, stable, growth):
     ax.text(0.01, 0.01, "black: stability boundary (growth within the verdict's tolerance); grey: not evaluated", transform=ax.transAxes, fontsize=8, va="bottom")
 
 
+def draw_distance(ax, np, keys, x, stable, margin, gap):
+    """An undamped chain's distance to the threshold: +|Im σ| where unstable, −gap/2 where stable."""
+    uns = stable == 0
+    distance = np.where(uns, margin, -0.5 * gap)
+    ax.plot(x, distance, "-", color="0.3", lw=1)
+    ax.plot(x[uns], distance[uns], "o", ms=3, color="tab:red", label="unstable: largest |Im σ|")
+    ax.plot(x[stable == 1], distance[stable == 1], "o", ms=3, color="tab:green",
+            label="stable: −½ gap of the closest real roots of opposite Krein signature")
+    ax.axhline(0, color="k", lw=0.8)
+    ax.set_xlabel(keys[0])
+    ax.set_ylabel("distance to the threshold (rad/s)")
+    ax.legend(loc="best", fontsize=8)
+    ax.grid(alpha=0.3)
+
+
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("csv", help="CSV written by chain-rom sweep")
@@ -75,30 +94,24 @@ def main() -> int:
         with open(args.csv) as f:
             header = f.readline().strip().split(",")
         data = np.genfromtxt(args.csv, delimiter=",", skip_header=1, ndmin=2)
-        if header[-3:] != ["stable", "margin", "nonreal"] or len(header) not in (4, 5):
-            raise ValueError("not a chain-rom sweep CSV (header must end in stable,margin,nonreal)")
+        tail = 4 if header[-1:] == ["gap"] else 3  # older CSVs and confirmed sweeps have no gap column
+        if header[-tail:][:3] != ["stable", "margin", "nonreal"] or len(header) - tail not in (1, 2):
+            raise ValueError("not a chain-rom sweep CSV (header must end in stable,margin,nonreal[,gap])")
         if data.size == 0 or data.shape[1] != len(header):
             raise ValueError("no rows, or rows do not match the header")
     except (OSError, ValueError) as e:
         print(f"plot_sweep: error: {args.csv}: {e}", file=sys.stderr)
         return 1
 
-    keys = header[:-3]
-    stable, margin = data[:, -3], data[:, -2]
+    keys = header[:-tail]
+    stable, margin = data[:, -tail], data[:, 1 - tail]
+    gap = data[:, -1] if tail == 4 else np.full(len(data), np.nan)
     title = args.title or os.path.basename(args.csv)
     fig, ax = plt.subplots(figsize=(7, 5), dpi=110)
     if args.growth:
         draw_growth(fig, ax, np, SymLogNorm, keys, data, stable, margin)
     elif len(keys) == 1:
-        x = data[:, 0]
-        ax.plot(x, margin, "-", color="0.3", lw=1, label="margin")
-        uns = stable == 0
-        ax.plot(x[uns], margin[uns], "o", ms=3, color="tab:red", label="unstable")
-        ax.plot(x[stable == 1], margin[stable == 1], "o", ms=3, color="tab:green", label="stable")
-        ax.set_xlabel(keys[0])
-        ax.set_ylabel("margin: largest |Im σ| (rad/s)")
-        ax.legend(loc="best")
-        ax.grid(alpha=0.3)
+        draw_distance(ax, np, keys, data[:, 0], stable, margin, gap)
     else:
         x, y = np.unique(data[:, 0]), np.unique(data[:, 1])
         if len(x) * len(y) != len(data):

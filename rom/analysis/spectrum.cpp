@@ -156,6 +156,11 @@ void set_verdict(const ChainModel& m, const Verdict& v, Spectrum& sp) {
     sp.certificate_roots = c.roots;
     sp.roots_at_zero = c.at_zero;
   }
+  if (v.stable && !m.dissipative()) {
+    Eigen::VectorXcd sigma(sp.roots.size());
+    for (size_t j = 0; j < sp.roots.size(); ++j) sigma[static_cast<Eigen::Index>(j)] = sp.roots[j].sigma;
+    sp.krein = krein_gap(m, sigma, sp.tolerance);
+  }
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include "chain_model.hpp"
 #include "first_order_system.hpp"
 #include "fit_passivity.hpp"
+#include "krein_gap.hpp"
 
 #include <complex>
 #include <limits>
@@ -49,6 +50,8 @@ struct Spectrum {
   // The Sturm-type certificate of an undamped chain (real_root_certificate.hpp): real roots proven by sign changes,
   // out of certificate_roots (the roots away from σ = 0). Not applied (certificate_roots = -1) with dissipation.
   int certified_real = 0, certificate_roots = -1, roots_at_zero = 0;
+  // A stable undamped chain's distance to the threshold (krein_gap.hpp); not defined otherwise.
+  KreinGap krein;
   bool certificate_disagrees() const {
     if (certificate_roots < 0) return false;
     return stable != (certified_real == certificate_roots);

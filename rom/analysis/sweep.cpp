@@ -309,6 +309,10 @@ void evaluate_point(const Scene& s, TableCache& tables, bool track, SweepPoint& 
     }
     if (!pt.tracked) roots = verdict_roots(m);
     pt.verdict = verdict_from_roots(m, roots);
+    if (pt.verdict.stable && !m.dissipative()) {
+      const KreinGap g = krein_gap(m, roots, pt.verdict.tolerance);
+      if (g.defined) pt.gap = g.gap;
+    }
     pt.ok = true;
     st.before = pt.tracked ? std::move(st.last) : Eigen::VectorXcd();
     st.last = std::move(roots);
@@ -463,17 +467,17 @@ SweepResult run_sweep(const Scene& base, TableCache& tables, const SweepAxis& a1
 void write_sweep_csv(const SweepResult& r, const SweepAxis& a1, const std::optional<SweepAxis>& a2,
                      const fs::path& out) {
   write_text_atomically(out, [&](std::ostream& os) {
-    os << a1.key.text << (a2 ? "," + a2->key.text : std::string()) << ",stable,margin,nonreal\n";
-    char buf[64];
+    os << a1.key.text << (a2 ? "," + a2->key.text : std::string()) << ",stable,margin,nonreal,gap\n";
+    char buf[96];
     for (const SweepPoint& p : r.points) {
       os << fmt(p.v1);
       if (a2) os << "," << fmt(p.v2);
       if (p.ok) {
-        std::snprintf(buf, sizeof buf, ",%d,%.9e,%d\n", p.verdict.stable ? 1 : 0, p.verdict.margin,
-                      p.verdict.nonreal);
+        std::snprintf(buf, sizeof buf, ",%d,%.9e,%d,%.9e\n", p.verdict.stable ? 1 : 0, p.verdict.margin,
+                      p.verdict.nonreal, p.gap);
         os << buf;
       } else {
-        os << ",nan,nan,nan\n";
+        os << ",nan,nan,nan,nan\n";
       }
     }
   });

@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -60,6 +61,8 @@ struct SweepPoint {
   bool ok = false;    // false: the model could not be built or solved there (see error)
   bool tracked = false;  // roots tracked from the neighbouring point (root_tracking.hpp), not by the eigen-solver
   Verdict verdict;
+  // A stable undamped chain's distance to the threshold (rad/s, krein_gap.hpp); NaN otherwise.
+  double gap = std::numeric_limits<double>::quiet_NaN();
   std::string error;
 };
 
@@ -86,8 +89,8 @@ SweepResult run_sweep(const Scene& base, TableCache& tables, const SweepAxis& a1
                       const std::optional<SweepAxis>& a2, int threads = 0,
                       const SweepProgress& progress = {}, bool track = true);
 
-// CSV: header `<KEY1>[,<KEY2>],stable,margin,nonreal`, one row per point; points where the model
-// could not be built have stable, margin and nonreal = nan. Temporary name, then rename.
+// CSV: header `<KEY1>[,<KEY2>],stable,margin,nonreal,gap`, one row per point; points where the model
+// could not be built have stable, margin, nonreal and gap = nan; gap is nan where it is not defined. Temporary name, then rename.
 void write_sweep_csv(const SweepResult& r, const SweepAxis& a1, const std::optional<SweepAxis>& a2,
                      const std::filesystem::path& out);
 

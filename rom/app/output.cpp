@@ -237,6 +237,9 @@ std::string spectrum_json(const ChainModel& m, const Spectrum& sp) {
   j["outside_fit"] = sp.outside_fit;
   j["unconverged_owners"] = sp.unconverged_owners;
   j["fits_not_passive"] = sp.fits_not_passive;
+  // A stable undamped chain's distance to the threshold (rad/s; krein_gap.hpp), null otherwise.
+  if (sp.krein.defined) j["krein_gap"] = sp.krein.gap;
+  else j["krein_gap"] = nullptr;
   if (sp.certificate_roots >= 0) {
     j["certified_real"] = sp.certified_real;
     j["certificate_roots"] = sp.certificate_roots;
@@ -379,6 +382,10 @@ void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp, b
   if (!m.dissipative()) {
     os << "stable: " << (sp.stable ? "yes" : "no") << " (|Im sigma| <= " << sp.tolerance << " counts as real)\n";
     os << "margin (largest |Im sigma|): " << sp.margin << " rad/s\n";
+    if (sp.krein.defined)
+      os << "distance to the threshold: " << sp.krein.gap << " rad/s between the closest real roots of opposite "
+         << "Krein signature (" << sp.krein.left << " and " << sp.krein.right << " rad/s), the only ones that can "
+         << "meet and leave the real axis\n";
   } else {
     os << verdict_with_dissipation(m, sp) << "\n";
   }

@@ -121,7 +121,7 @@ TEST(Sweep, TwoDimensionalSweepHasKTimesK2RowsInOrder) {
   std::ifstream in(out);
   std::string line, header;
   std::getline(in, header);
-  EXPECT_EQ(header, "body[2].spin,joint[1].stiffness,stable,margin,nonreal");
+  EXPECT_EQ(header, "body[2].spin,joint[1].stiffness,stable,margin,nonreal,gap");
   int rows = 0;
   while (std::getline(in, line)) ++rows;
   EXPECT_EQ(rows, 35);
