@@ -58,19 +58,25 @@ CavityResponse mesh_response(const ResponseRequest& req) {
   return out;
 }
 
+// Progress lines go to stderr on rank 0 only.
+void stderr_on_root(const std::string& line) {
+  if (is_root_rank()) std::cerr << line << "\n";
+}
+
 int world_ranks() {
   int ranks = 1;
   MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
   return ranks;
 }
 
-// R at req.sigmas from forms assembled once (assemble_cavity_forms), with progress lines on stderr (rank 0). With
+// R at req.sigmas from forms assembled once (assemble_cavity_forms), a progress line per frequency through the run's
+// `lines` ("<label>: 3/40 frequencies"; `left_of` says what the time left is of when more counts follow). With
 // `kept`, the frequencies it holds are read from it and every new solve is added to it as soon as it is made. With
 // `split` (forms assembled on PETSC_COMM_SELF under mpirun) each rank solves every ranks-th frequency on its own
 // and the answers are summed over the ranks: the frequencies, not the matrices, are shared out.
-CavityResponse viscous_cavity_response(const ResponseRequest& req, const ViscousForms& forms,
+CavityResponse viscous_cavity_response(const ResponseRequest& req, const ViscousForms& forms, Progress& lines,
+                                       const std::string& label, const std::string& left_of = "",
                                        ResponseSamples* kept = nullptr, bool split = false) {
-  Progress lines([](const std::string& line) { if (is_root_rank()) std::cerr << line << "\n"; });
   CavityResponse out;
   out.R.resize(req.sigmas.size());
   std::vector<std::size_t> missing;
@@ -90,7 +96,7 @@ CavityResponse viscous_cavity_response(const ResponseRequest& req, const Viscous
       mine[2 * i] = R.real();
       mine[2 * i + 1] = R.imag();
       if (kept && !split) kept->add(req.sigmas[k], R);
-      lines.step(fmt::format("cavity-modes response: {}/{} frequencies", i + 1, missing.size()), i + 1, missing.size());
+      lines.step(fmt::format("{}: {}/{} frequencies", label, i + 1, missing.size()), i + 1, missing.size(), left_of);
     }
     if (split) MPI_Allreduce(mine.data(), all.data(), static_cast<int>(all.size()), MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD);
     else all = mine;
@@ -164,9 +170,10 @@ CavityResponse compute_cavity_response(const ResponseRequest& req) {
     if (!std::isfinite(s.real()) || !std::isfinite(s.imag())) throw std::runtime_error("every sigma must be finite");
   if (req.ekman > 0) {  // under mpirun the frequencies are shared out, as for a response table
     const bool split = world_ranks() > 1 && req.sigmas.size() > 1;
+    Progress lines(stderr_on_root);
     return viscous_cavity_response(
-        req, assemble_cavity_forms(req.shape, req.mesh, req.ekman, split ? PETSC_COMM_SELF : PETSC_COMM_WORLD), nullptr,
-        split);
+        req, assemble_cavity_forms(req.shape, req.mesh, req.ekman, split ? PETSC_COMM_SELF : PETSC_COMM_WORLD), lines,
+        "cavity-modes response", "", nullptr, split);
   }
   return req.separable ? separable_response(req) : mesh_response(req);
 }
@@ -300,10 +307,9 @@ namespace {
 class WindowRefinement {
  public:
   WindowRefinement(const ResponseRequest& req, const ViscousForms& forms, ResponseSamples& kept, bool split,
-                   const CavityResponse& R, const std::vector<double>& tail, double max_error)
+                   const CavityResponse& R, const std::vector<double>& tail, double max_error, Progress& lines)
       : req_(req), forms_(forms), kept_(kept), split_(split), tail_(tail), max_error_(max_error),
-        cap_(std::max<std::size_t>(kMaxSamplesFactor * req.sigmas.size(), 400)),
-        lines_([](const std::string& line) { if (is_root_rank()) std::cerr << line << "\n"; }) {  // runs over 1 s
+        cap_(std::max<std::size_t>(kMaxSamplesFactor * req.sigmas.size(), 400)), lines_(lines) {
     const auto n = static_cast<long>(req.sigmas.size());
     window_R = {R.R.begin(), R.R.begin() + n};
     tail_R_ = {R.R.begin() + n, R.R.end()};
@@ -362,11 +368,14 @@ class WindowRefinement {
     if (window_s.size() + added.size() > cap_) added.resize(cap_ - window_s.size());
     ResponseRequest more = req_;
     more.sigmas.assign(added.begin(), added.end());
-    const CavityResponse extra = viscous_cavity_response(more, forms_, &kept_, split_);
+    // The run's one clock: the time left is this round's, and the number of rounds is not known in advance.
+    const CavityResponse extra =
+        viscous_cavity_response(more, forms_, lines_, fmt::format("response fit: refinement {} ({})", refinements + 1, why),
+                                " in this round (more rounds may follow)", &kept_, split_);
     merge_samples(window_s, window_R, added, extra.R);
     ++refinements;
     w = fit_window(window_s, window_R, tail_, tail_R_, max_error_);
-    lines_.step(fmt::format("response fit: refinement {} ({}): {} samples on the window, error between them {:.2g}",
+    lines_.note(fmt::format("response fit: refinement {} ({}): {} samples on the window, error between them {:.2g}",
                             refinements, why, window_s.size(), w.error));
   }
   void halfway_around(std::size_t k, std::vector<double>& added) const {
@@ -396,7 +405,7 @@ class WindowRefinement {
   std::vector<std::complex<double>> tail_R_;
   const double max_error_;
   const std::size_t cap_;
-  Progress lines_;
+  Progress& lines_;
 };
 
 // The fit's poles and residues as the table's pseudo-modes (a + i a_imag = sqrt(residue/2), N2 = 1); returns the sum
@@ -451,13 +460,15 @@ ModeTable response_fit_table(const ResponseRequest& req, double max_error) {
   // Under mpirun the frequencies are shared out, each rank with the whole problem (a response table solves 100 and
   // more of them, which a distributed factorisation on 2 cores does not speed up).
   const bool split = world_ranks() > 1;
+  Progress lines(stderr_on_root);  // one clock for the whole fit: assembly, first samples, refinements
   const ViscousForms forms =  // once, for every refinement
       assemble_cavity_forms(req.shape, req.mesh, req.ekman, split ? PETSC_COMM_SELF : PETSC_COMM_WORLD);
   // Every forced solve is kept as it is made: a fit that misses its tolerance, or a stopped run, loses none of them.
   ResponseSamples kept = kept_samples(req, forms);
   const auto solve_start = std::chrono::steady_clock::now();
-  const CavityResponse R = viscous_cavity_response(all, forms, &kept, split);
-  WindowRefinement refinement(req, forms, kept, split, R, tail, max_error);
+  const CavityResponse R = viscous_cavity_response(all, forms, lines, "response fit: first samples",
+                                                   " for the first samples (refinements may follow)", &kept, split);
+  WindowRefinement refinement(req, forms, kept, split, R, tail, max_error, lines);
   refinement.refine_by_error();
   refinement.refine_for_passivity();
   const RationalFit& fit = refinement.w.fit;

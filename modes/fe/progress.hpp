@@ -22,8 +22,11 @@ class Progress {
   Progress& operator=(const Progress&) = delete;
 
   // A step of the work: printed if a second has passed since the last line. With total > 0, `done` of `total`
-  // items are finished, and the line (and later ticks) carry the time left at the rate since this count began.
-  void step(const std::string& what, std::size_t done = 0, std::size_t total = 0);
+  // items are finished, and the line (and later ticks) carry the time left at the rate since this count began;
+  // `left_of` says what that time is of when the count is not the whole run (" in this round": more may follow).
+  void step(const std::string& what, std::size_t done = 0, std::size_t total = 0, const std::string& left_of = "");
+  // A result the user should see (a round's outcome): always printed, on the run's clock; ends the current count.
+  void note(const std::string& what);
   // From an inner loop: a line if the interval has passed since the last one.
   void tick();
   double elapsed() const;
@@ -38,7 +41,7 @@ class Progress {
   double interval_;
   Clock::time_point start_ = Clock::now();
   double last_line_ = 0, last_step_ = 0, count_start_ = 0;
-  std::string what_;
+  std::string what_, left_of_;
   std::size_t done_ = 0, total_ = 0;
 };
 

@@ -54,3 +54,28 @@ TEST(Progress, TicksGoToTheInnermostProgressAndNowhereWithoutOne) {
   EXPECT_EQ(inner_lines.size(), 1u);
   EXPECT_EQ(outer_lines.size(), 1u);
 }
+
+// A run of several counts (a response fit's first samples, then its refinement rounds) keeps one clock: the
+// timestamps never go back between rounds, a round's time left says it is the round's, and a round's outcome
+// (note) is printed even right after another line.
+TEST(Progress, RoundsShareOneClockAndSayWhatTheTimeLeftIsOf) {
+  std::vector<std::string> lines;
+  Progress p([&](const std::string& l) { lines.push_back(l); }, 5.0);
+  wait(1.05);
+  p.step("first samples: 1/3 frequencies", 1, 3, " for the first samples");
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_NE(lines[0].find("left for the first samples"), std::string::npos) << lines[0];
+  p.note("refinement 1 (error): 6 samples");  // immediately after a line: printed all the same
+  ASSERT_EQ(lines.size(), 2u);
+  wait(1.05);
+  p.step("refinement 2: 1/4 frequencies", 1, 4, " in this round");
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_NE(lines[2].find("left in this round"), std::string::npos) << lines[2];
+  double last = -1;
+  for (const std::string& l : lines) {  // "[    1.1 s] ..."
+    const double t = std::stod(l.substr(1));
+    EXPECT_GE(t, last) << l;
+    last = t;
+  }
+  EXPECT_GT(last, 2.0);  // the second round's line is on the run's clock, not a new one from 0
+}
