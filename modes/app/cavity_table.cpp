@@ -147,8 +147,10 @@ ModeTable compute_mode_table(const TableRequest& req, const ProgressFn& progress
   if (req.fill < 1) {
     const PartialFillTableSettings settings{req.shape, req.mesh, req.fill, req.selection, req.convergence_tolerance,
                                             req.check_convergence};
+    if (req.method == TableMethod::separable && fields)
+      throw std::runtime_error("--fields needs --method mesh (the separable solver keeps no 2-D mesh)");
     return req.method == TableMethod::separable ? partially_filled_cylinder_table(settings, report)
-                                                : partially_filled_mesh_table(settings, report);
+                                                : partially_filled_mesh_table(settings, report, fields);
   }
   if (req.method == TableMethod::separable) {
     if (fields) throw std::runtime_error("--fields needs --method mesh (the separable solver keeps no 2-D mesh)");

@@ -301,12 +301,12 @@ void check_response_options(const CLI::App& cmd, const ViscousOptions& viscous, 
 
 // --fill below 1: what a partially filled tank's table can be made with so far (docs/modes.md, "Partially filled
 // tanks"); each refusal one line, exit code 2.
-void check_fill(const TableRequest& req, bool fields, const std::string& method) {
+void check_fill(const TableRequest& req, bool viscous_fields, const std::string& method) {
   if (!(req.fill < 1)) return;
   if (req.shape.kind == "section")
     throw CommandLineError("--fill: not on a section yet (the built-in sphere, spheroid, cylinder and cone take it; "
                            "docs/modes.md, \"Partially filled tanks\")");
-  if (fields) throw CommandLineError("--fill: not with --fields yet");
+  if (viscous_fields) throw CommandLineError("--fill --ekman: not with --fields yet (the ideal --fill table takes it)");
   if (!req.targets.empty()) throw CommandLineError("--fill: not with --target (the targets are the free surface's modes)");
   if (method == "separable" && (req.shape.kind != "cylinder" || req.shape.dims.count("inner_radius")))
     throw CommandLineError("--fill --method separable: a plain cylinder only (--method mesh takes the others)");
@@ -562,7 +562,7 @@ int run(int argc, char** argv) {
   req.clusters.method = cluster_method == "slices" ? rc::modes::ClusterMethod::slices : rc::modes::ClusterMethod::lanczos;
   const bool is_viscous = table_command->count("--ekman") > 0;
   const auto viscous_settings = resolve_viscous(*table_command, response, is_viscous, viscous, output, req);
-  if (!response) check_fill(req, fields, method);
+  if (!response) check_fill(req, fields && is_viscous, method);
   choose_method(*table_command, method, fields, req);
 
   int petsc_argc = static_cast<int>(args.petsc.size());

@@ -20,6 +20,7 @@ FreeSurfaceCoupling free_surface_coupling(double lambda, const FreeSurfaceFormVa
   c.a = centroid / std::sqrt(norm2);
   c.t = offset / std::sqrt(norm2);
   c.E = 2 * c.a * c.a;
+  c.norm = std::sqrt(norm2);
   return c;
 }
 

@@ -35,6 +35,7 @@ struct FreeSurfaceCoupling {
   double a = 0;  // ⟨U_c, W⟩ for ‖W‖ = 1: the coupling about the liquid's centroid
   double t = 0;  // ⟨T, W⟩ for ‖W‖ = 1: about a point O at height −c below the centroid, a_O = a + c t
   double E = 0;  // 2 a²
+  double norm = 0;  // ‖W̃‖ of the pressure as given: the normalised mode is W̃/‖W̃‖ (free_surface_fields.hpp)
 };
 
 // Throws std::runtime_error if the form values are not finite. A field of zero energy (λ = 0 with Kz p = 0, the

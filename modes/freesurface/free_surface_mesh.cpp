@@ -108,7 +108,7 @@ void zhukovsky_dirichlet(const MeshForms& f, PartialFillSpectrum& out) {
 
 }  // namespace
 
-PartialFillSpectrum solve_partially_filled_mesh(const FESpace& space, int max_unknowns) {
+PartialFillSpectrum solve_partially_filled_mesh(const FESpace& space, int max_unknowns, bool keep_pressure) {
   PartialFillSpectrum out;
   out.fluid = integrate_fluid(space);
   const MeshForms f = mesh_forms(space, out.fluid.centroid_z);
@@ -147,6 +147,7 @@ PartialFillSpectrum solve_partially_filled_mesh(const FESpace& space, int max_un
     const std::complex<double> phase = eig.vectors(big, i) / std::abs(eig.vectors(big, i));
     const Eigen::VectorXd x = (eig.vectors.col(i).head(n) / phase).real();
     out.pairs.push_back(mesh_pair(f, lc.real(), x, norms));
+    if (keep_pressure) out.pairs.back().pressure.assign(x.data(), x.data() + x.size());
   }
   std::sort(out.pairs.begin(), out.pairs.end(),
             [](const PartialFillPair& x, const PartialFillPair& y) { return x.coupling.E > y.coupling.E; });

@@ -17,6 +17,7 @@ namespace rc::modes {
 
 // Throws std::runtime_error for a mesh without a free surface or larger than max_unknowns, a failed dense solve, or
 // an eigenvalue that is not real (the problem is self-adjoint with positive energy: a complex one is a defect).
-PartialFillSpectrum solve_partially_filled_mesh(const FESpace& space, int max_unknowns);
+// With keep_pressure every pair keeps its eigenvector (for --fields).
+PartialFillSpectrum solve_partially_filled_mesh(const FESpace& space, int max_unknowns, bool keep_pressure = false);
 
 }  // namespace rc::modes

@@ -15,6 +15,7 @@ struct PartialFillPair {
   FreeSurfaceCoupling coupling;  // about the liquid's centroid (a, E) and per unit offset (t)
   double residual = 0;           // ‖Q(λ)x‖ / ((λ⁴‖S‖ + λ²‖Ar + μBr + 4S‖ + 2|λ|‖Cr‖ + 4μ‖Br‖)‖x‖)
   int axial = 0;                 // rank of the axial vector, μ ascending (0-based); 0 for the mesh method
+  std::vector<double> pressure;  // mesh method, when asked for: the eigenvector p at the pressure dofs
 };
 
 struct PartialFillSpectrum {

@@ -3,6 +3,7 @@
 #include "convergence.hpp"
 #include "fe_space.hpp"
 #include "free_surface.hpp"
+#include "free_surface_fields.hpp"
 #include "free_surface_mesh.hpp"
 #include "line_space.hpp"
 #include "partial_fill_closed_form.hpp"
@@ -158,7 +159,7 @@ ModeTable partially_filled_cylinder_table(const PartialFillTableSettings& req,
 }
 
 ModeTable partially_filled_mesh_table(const PartialFillTableSettings& req,
-                                      const std::function<void(const std::string&)>& report) {
+                                      const std::function<void(const std::string&)>& report, ModeFields* fields) {
   const auto start = std::chrono::steady_clock::now();
   const geometry::ShapeSpec liquid = geometry::partially_filled(req.shape, req.fill);
   geometry::MeshOptions mesh = req.grid;
@@ -168,7 +169,8 @@ ModeTable partially_filled_mesh_table(const PartialFillTableSettings& req,
   };
   if (report) report(fmt::format("partially filled {}: free surface r = {:.10g}, order {}, mesh size {:g}",
                                  req.shape.kind, liquid.dims.at("free_radius"), mesh.order, mesh.size));
-  const PartialFillSpectrum s = solve(mesh);
+  const FESpace space(geometry::mesh_meridian(liquid, mesh));
+  const PartialFillSpectrum s = solve_partially_filled_mesh(space, req.max_unknowns, fields != nullptr);
   if (report) report(fmt::format("{} pairs of {} pressure dofs, sum of E - sum rule = {:.1e} (relative)",
                                  s.pairs.size(), s.radial_dofs, (s.sum_E - s.sum_rule) / s.sum_rule));
   std::string coarse_description;
@@ -184,6 +186,7 @@ ModeTable partially_filled_mesh_table(const PartialFillTableSettings& req,
       "one unknown per surface dof, every eigenpair by a dense eigensolver (LAPACK) of its companion form; sum of E "
       "over all pairs - (A_f + K2 - J_zh) = {:.1e} (relative)", s.order, s.radial_dofs,
       (s.sum_E - s.sum_rule) / s.sum_rule);
+  if (fields) *fields = free_surface_fields(space, s, t);
   t.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return t;
 }

@@ -6,6 +6,7 @@
 
 #include "cluster_selection.hpp"
 #include "meridian_mesh.hpp"
+#include "mode_fields.hpp"
 #include "mode_table.hpp"
 
 #include <functional>
@@ -33,7 +34,9 @@ ModeTable partially_filled_cylinder_table(const PartialFillTableSettings& settin
 // The same by the mesh method (free_surface_mesh.hpp) for any built-in shape with its free surface
 // (geometry/free_surface.hpp), the convergence check on the mesh with its sizes doubled. An element size of 0 takes
 // 3.5 × geometry's default for the liquid's shape.
+// With `fields`, also each row's p, V and energy density at the mesh nodes (free_surface_fields.hpp).
 ModeTable partially_filled_mesh_table(const PartialFillTableSettings& settings,
-                                      const std::function<void(const std::string&)>& report);
+                                      const std::function<void(const std::string&)>& report,
+                                      ModeFields* fields = nullptr);
 
 }  // namespace rc::modes

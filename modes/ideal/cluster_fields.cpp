@@ -210,6 +210,18 @@ ModeFields::Mode nodal_field(const NodalGradient& gradient, const geometry::Meri
 
 }  // namespace
 
+ModeFields::Mode weighted_mode_field(const FESpace& space, double lambda, const std::vector<double>& p, double weight,
+                                     double a, double E) {
+  const NodalGradient gradient(space, geometry::triangle_nodes(space.mesh().order));
+  Eigenpair member;
+  member.lambda = lambda;
+  member.p = p;
+  member.coupling.E = E;
+  ModeFields::Mode m = nodal_field(gradient, space.mesh(), {member}, Combination{{weight}, a});
+  m.lambda = lambda;
+  return m;
+}
+
 ModeFields cluster_fields(const FESpace& space, const PoincareForms& forms, const ModeTable& table,
                           const FieldSettings& settings,
                           const std::function<void(std::size_t, std::size_t)>& progress) {

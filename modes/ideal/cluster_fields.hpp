@@ -40,4 +40,10 @@ ModeFields cluster_fields(const FESpace& space, const PoincareForms& forms, cons
                           const FieldSettings& settings,
                           const std::function<void(std::size_t done, std::size_t total)>& progress = {});
 
+// p, V and the kinetic-energy density at the mesh nodes of one eigenvector (pressure dofs `p`, eigenvalue λ, V from
+// p as above) times `weight`; `a` and `E` are stored as given. For fields formed elsewhere (a partially filled
+// tank's single pairs, free_surface_fields.hpp).
+ModeFields::Mode weighted_mode_field(const FESpace& space, double lambda, const std::vector<double>& p, double weight,
+                                     double a, double E);
+
 }  // namespace rc::modes

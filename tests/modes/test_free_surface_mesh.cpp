@@ -5,6 +5,7 @@
 #include "fe_space.hpp"
 #include "free_surface.hpp"
 #include "free_surface_mesh.hpp"
+#include "partial_fill_table.hpp"
 #include "partial_fill_closed_form.hpp"
 #include "partial_fill_cylinder.hpp"
 #include "separable_cylinder.hpp"
@@ -109,6 +110,40 @@ TEST(FreeSurfaceMesh, SphereTurnsRigidlyAboutATiltedAxis) {
     EXPECT_LT(s.pairs[1].coupling.E, 1e-9 * top.coupling.E);  // rounding of the dense solve: measured ≤ 1.5e-10
     EXPECT_LT(std::abs(s.J_D), 1e-12);
   }
+}
+
+// The fields of the same rigid turn (cavity-modes --fill --fields): V = C (z, −z, −r) in the table's real amplitudes
+// (V = (i v_r, v_φ, i v_z) e^{iφ}: the rotation e1 × r about the sphere's centre), p = −C r z and on the free surface
+// η = −p/b = C z, with C = 1/√(2(A_f + K2)) from ‖W‖² = ∫|V|² + b∫|η|² = 2C²A_f + 2C²K2 = 1. The pressure is a
+// polynomial the P6 space holds, so the nodal fields match it to rounding but for the curved wall's geometry. The sign
+// is the filled sphere's spin-over field's (measured: +C (z, −z, −r) there too), so fields stay continuous as F → 1.
+TEST(FreeSurfaceMesh, FieldsOfTheRigidTurnAreTheClosedForm) {
+  const geometry::ShapeSpec sphere{"sphere", {{"radius", 1.0}}, {}};
+  PartialFillTableSettings settings;
+  settings.shape = sphere;
+  settings.fill = 0.4;
+  settings.grid.order = 6;
+  settings.grid.size = 0.2;
+  settings.check_convergence = false;
+  ModeFields fields;
+  const ModeTable t = partially_filled_mesh_table(settings, {}, &fields);
+  ASSERT_EQ(fields.modes.size(), t.size());
+  ASSERT_NEAR(t.lambda[0], 1.0, 1e-11);
+  const double scale = 1 / std::sqrt(2 * t.E[0]);  // C of the header: the row's E is A_f + K2 (the test above)
+  const ModeFields::Mode& m = fields.modes[0];
+  double worst_v = 0, worst_p = 0, big = 0;
+  for (std::size_t i = 0; i < fields.num_points(); ++i) {
+    const double r = fields.points[3 * i], z = fields.points[3 * i + 2];
+    const double exact[3] = {scale * z, -scale * z, -scale * r};
+    for (int k = 0; k < 3; ++k) worst_v = std::max(worst_v, std::abs(m.V[3 * i + k] - exact[k]));
+    worst_p = std::max(worst_p, std::abs(m.p[i] + scale * r * z));
+    big = std::max(big, scale * std::max(std::abs(z), r));
+  }
+  std::printf("fill 0.4: rigid turn's fields at %zu nodes: V to %.1e, p to %.1e of max|V| = %.4f; stored a %.12g = "
+              "sqrt(E/2) %.12g\n", fields.num_points(), worst_v / big, worst_p / big, big, m.a, std::sqrt(t.E[0] / 2));
+  EXPECT_LT(worst_v / big, 3e-6);  // measured 3.2e-7 (nodal gradients at the curved wall)
+  EXPECT_LT(worst_p / big, 1e-7);  // measured 4.1e-9
+  EXPECT_NEAR(m.a, std::sqrt(t.E[0] / 2), 1e-12);
 }
 
 // A cone (apex down) cut by its free surface: no closed form, so the complete spectrum's Σ E against the sum rule

@@ -124,7 +124,10 @@ refused([modes_bin, "section", os.path.join(os.path.dirname(scene), "..", "secti
          "-o", x], 2, "--fill: not on a section yet", x)
 refused([modes_bin, "cylinder", "--radius", "1", "--height", "2", "--inner-radius", "0.3", "--fill", "0.5", "--method",
          "separable", "-o", x], 2, "a plain cylinder only", x)
-refused([modes_bin, "sphere", "--radius", "1", "--fill", "0.5", "--fields", "-o", x], 2, "not with --fields yet", x)
+refused([modes_bin, "sphere", "--radius", "1", "--fill", "0.5", "--ekman", "1e-3", "--fields", "-o", x], 2,
+        "not with --fields yet", x)
+refused([modes_bin, "cylinder", "--radius", "1", "--height", "2", "--fill", "0.5", "--method", "separable", "--fields",
+         "-o", x], 0, "needs --method mesh", x)
 refused([modes_bin, "sphere", "--radius", "1", "--fill", "0.5", "--clusters", "slices", "-o", x], 0,
         "does not apply with --fill", x)
 refused([modes_bin, "cylinder", "--radius", "1", "--height", "2", "--fill", "0.5", "--ekman", "1e-3", "--target", "0.5",
