@@ -19,5 +19,6 @@ Command add_confirm_command(CLI::App& app);   // spectrum_cli.cpp
 Command add_run_command(CLI::App& app);       // run_cli.cpp
 Command add_sweep_command(CLI::App& app);     // sweep_cli.cpp
 Command add_bench_command(CLI::App& app);     // bench_cli.cpp
+Command add_response_command(CLI::App& app);  // response_cli.cpp
 
 }  // namespace rc::rom::app

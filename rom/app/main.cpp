@@ -15,7 +15,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   using namespace rc::rom::app;
   const std::vector<Command> commands = {add_spectrum_command(app), add_confirm_command(app), add_run_command(app),
-                                         add_sweep_command(app), add_bench_command(app)};
+                                         add_sweep_command(app), add_bench_command(app), add_response_command(app)};
   app.failure_message([](const CLI::App*, const CLI::Error& e) {
     std::string msg = e.what();
     for (auto& ch : msg) if (ch == '\n') ch = ' ';

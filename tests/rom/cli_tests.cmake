@@ -116,3 +116,21 @@ rom_cli(run_validity ARGS run;two_tops.toml;-o;out_validity.h5 EXPECT_EXIT 0
         MATCH "validity: the nonlinear chain differs by")
 rom_cli(run_validity_warns ARGS run;large_tilt_run.toml;-o;out_large_tilt.h5 EXPECT_EXIT 0 MATCH "wrote out_large_tilt.h5"
         MATCH_STDERR "^chain-rom: warning: at this amplitude \\(0\\.3 rad\\) the tilts differ from the nonlinear chain's by [0-9.]+ %")
+
+# Frequency response (chain-rom response): a CSV of N rows after its resonance comments and header, the Bode plot,
+# and bad ranges or bodies refused in one line with no file.
+set(_rs response;top_spheroid.toml)
+rom_cli(response_csv ARGS ${_rs};--body;1;--freq;-400:400:41;-o;out_response.csv EXPECT_EXIT 0
+        MATCH "resonances in the range[^\n]*\nwrote out_response.csv")
+rom_cli(response_bad_range ARGS ${_rs};--body;1;--freq;5:1:10;-o;out_bad_response.csv EXPECT_EXIT 1
+        MATCH "^chain-rom: error: --freq 5:1:10: need finite FROM < TO\n?$" NO_FILE out_bad_response.csv)
+rom_cli(response_bad_count ARGS ${_rs};--body;1;--freq;0:1:1;-o;out_bad_response.csv EXPECT_EXIT 1
+        MATCH "--freq 0:1:1: N must be in 2\\.\\.1000000" NO_FILE out_bad_response.csv)
+rom_cli(response_bad_text ARGS ${_rs};--body;1;--freq;0:x:3;-o;out_bad_response.csv EXPECT_EXIT 1
+        MATCH "--freq 0:x:3: expected FROM:TO:N with numbers" NO_FILE out_bad_response.csv)
+rom_cli(response_bad_body ARGS ${_rs};--body;2;--freq;0:1:3;-o;out_bad_response.csv EXPECT_EXIT 1
+        MATCH "--body 2: the scene has bodies 1\\.\\.1" NO_FILE out_bad_response.csv)
+if(_no_mpl EQUAL 0)
+  rom_cli(response_png ARGS ${_rs};--body;1;--freq;-400:400:41;-o;out_response2.csv;--png;out_response2.png
+          EXPECT_EXIT 0 MATCH "wrote out_response2.png")
+endif()

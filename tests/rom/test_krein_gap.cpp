@@ -12,8 +12,8 @@
 using namespace rc::rom;
 using namespace rc::rom::test;
 
-// Heavy top without fluid: A σ² − C ω σ + a g = 0 (Kononov (22) for one body, roots of e^{iσt}), so the two roots
-// σ± = (C ω ± sqrt(C²ω² − 4 A a g)) / 2A are real above ω* = sqrt(4 A a g)/C, of opposite signature, and meet at ω*:
+// Heavy top without fluid: A σ² + C ω σ + a g = 0 (Kononov (22) for one body, roots of e^{iσt}), so the two roots
+// σ± = (−C ω ± sqrt(C²ω² − 4 A a g)) / 2A are real above ω* = sqrt(4 A a g)/C, of opposite signature, and meet at ω*:
 // the gap is sqrt(C²ω² − 4 A a g)/A, 0 at the threshold, undefined below it.
 TEST(KreinGap, HeavyTopGapIsTheClosedForm) {
   Body b; b.mass = 2; b.A = 0.05; b.C = 0.03; b.com = 0.1;

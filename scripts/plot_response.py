@@ -1,0 +1,89 @@
+#!/usr/bin/python3
+"""Draws a chain-rom frequency response (CSV from `chain-rom response ... -o OUT.csv`) as a Bode plot (PNG).
+
+    /usr/bin/python3 scripts/plot_response.py RESPONSE.csv -o OUT.png [--title TEXT]
+
+Top: each body's tilt per unit moment |u_k| (rad per N m, log scale) against the moment's frequency sigma (rad/s);
+bottom: its phase (degrees). The resonances (real parts of the chain's roots, the CSV's "# resonance" lines) are
+marked by vertical lines: grey for decaying or neutral roots, red for growing ones. `chain-rom response --png` runs
+this script. Uses Debian's python3-matplotlib and python3-numpy.
+"""
+import argparse
+import os
+import sys
+
+
+def read(path, np):
+    resonances = []
+    with open(path) as f:
+        for line in f:
+            if line.startswith("# resonance"):
+                parts = line.split()
+                resonances.append((float(parts[2]), float(parts[4])))
+            elif not line.startswith("#"):
+                header = line.strip().split(",")
+                break
+        else:
+            raise ValueError("no header")
+    if header[0] != "sigma" or len(header) < 3 or len(header) % 2 != 1:
+        raise ValueError("not a chain-rom response CSV (header sigma,abs_1,phase_deg_1,...)")
+    data = np.genfromtxt(path, delimiter=",", comments="#", skip_header=0, names=None, ndmin=2)
+    data = data[~np.isnan(data[:, 0])]  # the header line reads as nan
+    if data.size == 0 or data.shape[1] != len(header):
+        raise ValueError("no rows, or rows do not match the header")
+    return header, data, resonances
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("csv", help="CSV written by chain-rom response")
+    ap.add_argument("-o", "--output", dest="png", required=True, help="PNG to write")
+    ap.add_argument("--title", default=None, help="figure title (default: the CSV's file name)")
+    args = ap.parse_args()
+    try:
+        import matplotlib
+
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        import numpy as np
+    except ImportError as e:
+        print(f"plot_response: error: {e} (apt-get install python3-matplotlib python3-numpy)", file=sys.stderr)
+        return 2
+    try:
+        header, data, resonances = read(args.csv, np)
+    except (OSError, ValueError) as e:
+        print(f"plot_response: error: {args.csv}: {e}", file=sys.stderr)
+        return 1
+    sigma = data[:, 0]
+    fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(8, 6), dpi=110)
+    for k in range((len(header) - 1) // 2):
+        top.semilogy(sigma, data[:, 1 + 2 * k], lw=1.2, label=f"body {k + 1}")
+        bottom.plot(sigma, data[:, 2 + 2 * k], lw=1.0)
+    for s, growth in resonances:
+        for ax in (top, bottom):
+            ax.axvline(s, color="tab:red" if growth > 0 else "0.6", lw=0.7, ls="--", zorder=0)
+    top.set_ylabel("|u| per unit moment (rad/(N m))")
+    top.legend(loc="best", fontsize=8)
+    top.grid(alpha=0.3, which="both")
+    bottom.set_ylabel("phase (degrees)")
+    bottom.set_xlabel("σ of the moment F e^{iσt} (rad/s)")
+    bottom.set_ylim(-180, 180)
+    bottom.grid(alpha=0.3)
+    growing = sum(1 for _, g in resonances if g > 0)
+    top.set_title((args.title or os.path.basename(args.csv)) +
+                  f": {len(resonances)} resonances marked" + (f", {growing} growing (red)" if growing else ""))
+    fig.tight_layout()
+    tmp = args.png + f".tmp-{os.getpid()}.png"
+    try:
+        fig.savefig(tmp)
+        os.replace(tmp, args.png)
+    except OSError as e:
+        if os.path.exists(tmp):
+            os.remove(tmp)
+        print(f"plot_response: error: {args.png}: {e}", file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
