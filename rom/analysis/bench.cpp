@@ -306,6 +306,10 @@ BenchResult run_bench(const Scene& scene, const BenchOptions& options,
     throw std::runtime_error(scene.file.string() + ": run: missing [run] section (bench needs run.t_end)");
   if (!(scene.run.t_end > 0) || !std::isfinite(scene.run.t_end))
     throw std::runtime_error(scene.file.string() + ": run.t_end: must be > 0 for bench");
+  for (std::size_t k = 0; k < scene.size(); ++k)  // its extended-precision reference propagates the free chain only
+    if (scene.bodies[k].moment)
+      throw std::runtime_error(scene.file.string() + ": body[" + std::to_string(k + 1) + "].moment: bench compares "
+                               "the integrators on the free motion; remove the moments");
   BenchResult out;
   out.t_end = scene.run.t_end;
   const ChainModel m = build_model(scene);

@@ -91,6 +91,11 @@ LinearValidity check_validity(const Scene& scene, const ChainModel& model, Histo
 }
 
 void print_energy(const ChainModel& model, const History& h) {
+  if (h.forced && !model.viscous) {
+    std::cout << "energy: H(0) = " << h.H.front() << ", H(end) = " << h.H.back()
+              << " (external moments do work: not an integral; docs/rom.md, \"External moments in the linear chain\")\n";
+    return;
+  }
   if (!model.viscous) {
     std::cout << "energy: H(0) = " << h.H.front() << ", H(end) = " << h.H.back() << ", "
               << (model.has_friction() ? "largest relative increase per step " : "largest relative drift ")

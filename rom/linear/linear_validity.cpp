@@ -3,6 +3,7 @@
 #include "nonlinear_run.hpp"
 #include "propagation.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -27,7 +28,8 @@ LinearValidity linear_validity(const Scene& scene, const ChainModel& model, cons
   for (const auto& b : scene.bodies) spin = std::max(spin, std::abs(b.spin));
   for (std::size_t k = 0; k < scene.size(); ++k)
     v.amplitude = std::max(v.amplitude, std::abs(scene.tilt[k]) + std::abs(scene.rate[k]) / std::max(1.0, spin));
-  if (v.amplitude == 0) {
+  const bool forced = std::any_of(scene.bodies.begin(), scene.bodies.end(), [](const BodySpec& b) { return b.moment; });
+  if (v.amplitude == 0 && !forced) {
     v.why_not = "the scene starts at rest in the straight chain";
     return v;
   }
@@ -49,6 +51,7 @@ LinearValidity linear_validity(const Scene& scene, const ChainModel& model, cons
       diff = std::max(diff, (linear.u.row(j) - nonlinear.base.u.row(j)).cwiseAbs().maxCoeff());
     if (!(scale > 0) || !std::isfinite(diff)) throw std::runtime_error("no finite tilts to compare");
     v.difference = diff / scale;
+    if (forced) v.amplitude = std::max(v.amplitude, scale);  // the moments' response is the amplitude
     v.amplitude_at_limit = v.difference > 0 ? v.amplitude * std::sqrt(kLinearValidityLimit / v.difference) : INFINITY;
     v.measured = true;
   } catch (const std::exception& e) {

@@ -3,6 +3,7 @@
 #include "energy.hpp"
 #include "exact_propagation.hpp"
 #include "first_order_system.hpp"
+#include "forced_solution.hpp"
 #include "spectrum.hpp"
 
 #include <unsupported/Eigen/MatrixFunctions>
@@ -126,8 +127,10 @@ double checked_spectral_radius(const FirstOrderSystem& f, const Scene& scene) {
 // balance (galerkin_energy.hpp).
 class Recorder {
  public:
-  Recorder(const ChainModel& m, const FirstOrderSystem& f, double h, long steps, History& hist)
-      : m_(m), f_(f), h_(h), n_(m.n), nm_(m.n_modes()), hist_(hist), meter_(m) {
+  // `forced`: the particular solution added to every stored state (the run propagates the free part only).
+  Recorder(const ChainModel& m, const FirstOrderSystem& f, double h, long steps, History& hist,
+           const ForcedSolution* forced)
+      : m_(m), f_(f), h_(h), n_(m.n), nm_(m.n_modes()), hist_(hist), meter_(m), forced_(forced) {
     hist.t.resize(steps + 1);
     hist.u.resize(steps + 1, n_);
     hist.z.resize(steps + 1, nm_);
@@ -143,7 +146,8 @@ class Recorder {
     }
   }
 
-  void store(long j, const Eigen::VectorXcd& y) {
+  void store(long j, const Eigen::VectorXcd& free_part) {
+    const Eigen::VectorXcd y = forced_ ? Eigen::VectorXcd(free_part + forced_->at(j * h_)) : free_part;
     if (budget_meter_) budget_[j] = (*budget_meter_)(y);
     if (balance_meter_) measure_balance(j, y);
     Eigen::VectorXcd u, v, w;
@@ -158,6 +162,38 @@ class Recorder {
 
   // Columns of re + i*im are the states at j0, j0 + 1, ... (exact propagation's blocks).
   void store_block(long j0, const Eigen::Ref<const Eigen::MatrixXd>& re, const Eigen::Ref<const Eigen::MatrixXd>& im) {
+    if (!forced_) return store_states(j0, re, im);
+    Eigen::MatrixXd re_total = re, im_total = im;
+    for (long i = 0; i < re.cols(); ++i) {
+      const Eigen::VectorXcd yp = forced_->at((j0 + i) * h_);
+      re_total.col(i) += yp.real();
+      im_total.col(i) += yp.imag();
+    }
+    store_states(j0, re_total, im_total);
+  }
+
+  // The energy's drift (no H with viscous tanks: the budget and the balance instead).
+  void finish(long steps) {
+    const double H0 = hist_.H[0], S0 = std::max(hist_.H_scale[0], 1e-300);
+    hist_.forced = forced_ != nullptr;
+    if (m_.viscous) {
+      hist_.max_energy_drift = std::numeric_limits<double>::quiet_NaN();  // no H (energy.cpp)
+      hist_.budget = energy_budget(budget_, h_);
+      if (balance_meter_) hist_.balance = energy_balance(balance_, h_);
+      return;
+    }
+    if (forced_) {  // the moments do work: H is the chain's energy, not an integral
+      hist_.max_energy_drift = std::numeric_limits<double>::quiet_NaN();
+      return;
+    }
+    for (long j = 1; j <= steps; ++j) {
+      if (m_.has_friction()) hist_.max_energy_drift = std::max(hist_.max_energy_drift, (hist_.H[j] - hist_.H[j - 1]) / S0);
+      else hist_.max_energy_drift = std::max(hist_.max_energy_drift, std::abs(hist_.H[j] - H0) / S0);
+    }
+  }
+
+ private:
+  void store_states(long j0, const Eigen::Ref<const Eigen::MatrixXd>& re, const Eigen::Ref<const Eigen::MatrixXd>& im) {
     const long cols = re.cols();
     const double is = 1.0 / f_.s;
     for (long i = 0; i < cols; ++i) {
@@ -177,22 +213,6 @@ class Recorder {
                  re.bottomRows(nm_), im.bottomRows(nm_), &hist_.H[j0], &hist_.H_scale[j0]);
   }
 
-  // The energy's drift (no H with viscous tanks: the budget and the balance instead).
-  void finish(long steps) {
-    const double H0 = hist_.H[0], S0 = std::max(hist_.H_scale[0], 1e-300);
-    if (m_.viscous) {
-      hist_.max_energy_drift = std::numeric_limits<double>::quiet_NaN();  // no H (energy.cpp)
-      hist_.budget = energy_budget(budget_, h_);
-      if (balance_meter_) hist_.balance = energy_balance(balance_, h_);
-      return;
-    }
-    for (long j = 1; j <= steps; ++j) {
-      if (m_.has_friction()) hist_.max_energy_drift = std::max(hist_.max_energy_drift, (hist_.H[j] - hist_.H[j - 1]) / S0);
-      else hist_.max_energy_drift = std::max(hist_.max_energy_drift, std::abs(hist_.H[j] - H0) / S0);
-    }
-  }
-
- private:
   void measure_balance(long j, const Eigen::VectorXcd& y) {
     Eigen::VectorXcd u, v, w;
     f_.from_state(m_, y, u, v, w);
@@ -211,6 +231,7 @@ class Recorder {
   std::vector<BudgetSample> budget_;
   std::optional<GalerkinEnergyMeter> balance_meter_;
   std::vector<EnergySample> balance_;
+  const ForcedSolution* forced_;
 };
 
 // method = "exact": the eigen-decomposition, or the step's matrix exponential where its eigenvectors are
@@ -296,11 +317,14 @@ History propagate(const ChainModel& m, const Scene& scene) {
     throw std::runtime_error("run.method: unknown method " + method);
   const double rho = checked_spectral_radius(f, scene);  // fastest |sigma|, for the integrators
 
+  // External moments: the particular solution in closed form, the free part from y(0) − y_p(0) (forced_solution.hpp).
+  const ForcedSolution forced = forced_solution(m, f, scene);
+  const Eigen::VectorXcd y_free = forced.present ? Eigen::VectorXcd(y0 - forced.at(0)) : y0;
   History hist;
-  Recorder rec(m, f, h, steps, hist);
-  if (method == "exact") run_exact(m, f, y0, h, steps, rec, hist);
-  else if (method == "gauss") run_gauss(f, y0, h, steps, rho, scene.run, rec, hist);
-  else run_rk45(f, y0, h, steps, scene.run, rec, hist);
+  Recorder rec(m, f, h, steps, hist, forced.present ? &forced : nullptr);
+  if (method == "exact") run_exact(m, f, y_free, h, steps, rec, hist);
+  else if (method == "gauss") run_gauss(f, y_free, h, steps, rho, scene.run, rec, hist);
+  else run_rk45(f, y_free, h, steps, scene.run, rec, hist);
   rec.finish(steps);
   hist.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   timespec cpu1{};

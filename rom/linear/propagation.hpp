@@ -29,6 +29,7 @@ struct History {
   EnergyBudget budget;      // with viscous tanks (which leave no energy integral H): the frozen chain's budget
   EnergyBalance balance;    // with viscous tanks whose fluid holds an energy (Galerkin tanks, one spin): H and its
                             // dissipation (galerkin_energy.hpp); empty otherwise
+  bool forced = false;      // external moments (forced_solution.hpp): H is then not an integral
   std::string method_used;  // what actually ran
   double max_energy_drift = 0;  // max |H - H0| / scale(0) (undamped) or max increase (damped)
   double wall_seconds = 0;

@@ -235,9 +235,13 @@ void require_linear_scene(const Scene& scene) {
     if (b.B && *b.B != b.A)
       fail(scene, "body[" + std::to_string(k + 1) + "].B", "differs from A: the linearised chain (26) needs "
            "axisymmetric bodies; only [run] model = \"nonlinear\" takes B != A");
-    if (b.moment)
-      fail(scene, "body[" + std::to_string(k + 1) + "].moment", "the linearised chain (26) has no external moments; "
-           "only [run] model = \"nonlinear\" takes them");
+    // Transverse moments are the forced (26) (forced_solution.hpp); axial ones change the spins (26) holds constant.
+    if (b.moment && (b.moment->axial != 0 || b.moment->space[2] != 0 || b.moment->harmonic[2] != 0))
+      fail(scene, "body[" + std::to_string(k + 1) + "].moment", "an axial part (axial, or a z component) changes the "
+           "spins, which the linearised chain (26) holds constant; only [run] model = \"nonlinear\" takes it");
+    if (b.moment && scene.free_chain)
+      fail(scene, "body[" + std::to_string(k + 1) + "].moment", "external moments on a free chain are in the "
+           "nonlinear model only ([run] model = \"nonlinear\")");
   }
   for (std::size_t k = 0; k < scene.joints.size(); ++k)
     if (scene.joints[k].axial_friction > 0)

@@ -1,0 +1,109 @@
+// The linear chain (26) under external moments (rom/linear/forced_solution.hpp): against the nonlinear chain at small
+// amplitude (the difference falling as the amplitude squared), against the frequency response's steady oscillation,
+// the three integrators against each other, and what it refuses.
+#include "chain_model.hpp"
+#include "frequency_response.hpp"
+#include "nonlinear_run.hpp"
+#include "propagation.hpp"
+#include "scene.hpp"
+#include "spectrum.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+using namespace rc::rom;
+using cd = std::complex<double>;
+
+namespace {
+
+// A gyroscopic pendulum (centre of mass below O_1) with friction at the support, a constant and a harmonic moment in
+// space, released with a small tilt; every value of tilt and moment times `scale`.
+std::string pendulum(double scale, double t_end, const std::string& method = "exact", const std::string& model = "") {
+  const auto num = [](double x) { return std::to_string(x); };
+  return "[system]\nkind = \"fixed\"\ngravity = 9.81\n[support]\nfriction = 0.05\n"
+         "[[body]]\nmass = 2.0\nA = 0.05\nC = 0.03\ncom = -0.1\nspin = 30.0\n"
+         "[body.moment]\nspace = [" + num(0.004 * scale) + ", " + num(-0.003 * scale) + ", 0.0]\nharmonic = [" +
+         num(0.02 * scale) + ", " + num(0.01 * scale) + ", 0.0]\nfrequency = 1.5\n"
+         "[initial]\ntilt = [[" + num(0.002 * scale) + ", " + num(-0.001 * scale) + "]]\n"
+         "[run]\nt_end = " + num(t_end) + "\noutput_step = 0.01\ntolerance = 1e-11\n" +
+         (model.empty() ? "method = \"" + method + "\"\n" : model);
+}
+
+}  // namespace
+
+// At small amplitude the forced linear run is the nonlinear chain (a separate model: rigid bodies at any angle, the
+// moments applied in space), the difference relative to the amplitude falling as the amplitude squared.
+TEST(ForcedRun, IsTheNonlinearChainAtSmallAmplitude) {
+  std::vector<double> rel;
+  for (double scale : {1.0, 0.5}) {
+    const Scene s = parse_scene_text(pendulum(scale, 5.0), ".", "forced");
+    const History linear = propagate(build_model(s), s);
+    const Scene sn = parse_scene_text(pendulum(scale, 5.0, "", "model = \"nonlinear\"\n"), ".", "forced-nl");
+    const NonlinearChain chain = nonlinear_chain(sn);
+    const NonlinearHistory nl = integrate_nonlinear(chain, nonlinear_initial_state(sn, chain), sn.run);
+    ASSERT_EQ(linear.t.size(), nl.base.t.size());
+    double diff = 0;
+    for (Eigen::Index j = 0; j < linear.u.rows(); ++j)
+      diff = std::max(diff, std::abs(linear.u(j, 0) - nl.base.u(j, 0)));
+    rel.push_back(diff / linear.u.cwiseAbs().maxCoeff());
+    std::printf("  scale %.1f: largest tilt %.3e rad over 5 s, linear forced run against the nonlinear chain %.2e of it\n",
+                scale, linear.u.cwiseAbs().maxCoeff(), rel.back());
+    EXPECT_TRUE(linear.forced);
+  }
+  std::printf("  halving tilt and moments: the difference falls by %.2f (amplitude squared: 4)\n", rel[0] / rel[1]);
+  EXPECT_LT(rel[1], 1e-3);
+  EXPECT_GT(rel[0] / rel[1], 3.5);
+}
+
+// Long after its start has decayed the run is the steady response: the static K⁻¹F_c (Z(0) = K) plus the harmonic
+// (h_y + i h_x)/(2i)[H(Ω)e^{iΩt} − H(−Ω)e^{−iΩt}] of frequency_response.hpp — the closed-form particular solution and
+// Z(σ) checked against each other. The Gauss and Dormand–Prince integrators give the same forced run.
+TEST(ForcedRun, BecomesTheResponsesSteadyOscillation) {
+  const Scene s = parse_scene_text(pendulum(1.0, 300.0), ".", "forced");
+  const ChainModel m = build_model(s);
+  const History h = propagate(m, s);
+  const double Omega = 3 * std::numbers::pi;
+  const cd Hp = frequency_response(m, 0, Omega, 2 * Omega, 2).tilt(0, 0);
+  const cd Hm = frequency_response(m, 0, -Omega, Omega, 2).tilt(0, 0);
+  const cd H0 = frequency_response(m, 0, 0, 1, 2).tilt(0, 0);
+  const cd Fc(-0.003, 0.004), Fh(0.01, 0.02);
+  double worst = 0, amplitude = 0;
+  for (std::size_t j = 0; j < h.t.size(); ++j) {
+    const double t = h.t[j];
+    if (t < 298) continue;
+    const cd steady = H0 * Fc + Fh / cd(0, 2) * (Hp * std::exp(cd(0, Omega * t)) - Hm * std::exp(cd(0, -Omega * t)));
+    worst = std::max(worst, std::abs(h.u(static_cast<Eigen::Index>(j), 0) - steady));
+    amplitude = std::max(amplitude, std::abs(steady));
+  }
+  std::printf("  after 298 s (slowest decay %.3f 1/s): the run against the steady response %.1e of its %.3e rad\n",
+              -compute_verdict(m).growth, worst / amplitude, amplitude);
+  EXPECT_LT(worst / amplitude, 1e-9);
+  const Scene e = parse_scene_text(pendulum(1.0, 5.0), ".", "forced");
+  const History exact = propagate(build_model(e), e);
+  for (const char* method : {"gauss", "rk45"}) {
+    const Scene g = parse_scene_text(pendulum(1.0, 5.0, method), ".", "forced");
+    const History other = propagate(build_model(g), g);
+    const double d = (other.u - exact.u).cwiseAbs().maxCoeff() / exact.u.cwiseAbs().maxCoeff();
+    std::printf("  %s against exact over 5 s: %.1e\n", method, d);
+    EXPECT_LT(d, 1e-7);
+  }
+}
+
+TEST(ForcedRun, RefusesWhatHasNoClosedForm) {
+  std::string axial = pendulum(1.0, 1.0);
+  axial.replace(axial.find("[body.moment]\n"), 14, "[body.moment]\naxial = 0.1\n");
+  EXPECT_THROW(build_model(parse_scene_text(axial, ".", "axial")), SceneError);
+  // No gravity and no spring: a constant moment tips the body without bound (a zero root).
+  std::string drift = pendulum(1.0, 1.0);
+  drift.replace(drift.find("gravity = 9.81"), 14, "gravity = 0.0");
+  const Scene d = parse_scene_text(drift, ".", "drift");
+  try {
+    propagate(build_model(d), d);
+    ADD_FAILURE() << "a constant moment on a chain with a zero root was propagated";
+  } catch (const std::runtime_error& err) {
+    std::printf("  refused: %s\n", err.what());
+    EXPECT_NE(std::string(err.what()).find("without bound"), std::string::npos);
+  }
+}
