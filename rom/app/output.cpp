@@ -356,6 +356,12 @@ static void print_body_line(std::ostream& os, const ChainModel& m, const Spectru
   if (b.free_surface)
     os << ", partially filled (free surface; its static inertia K = " << b.K_free_surface << " in A', couplings about "
        << "the joint)";
+  if (b.static_moment > 0)  // gyroscopic stability factor of linear aeroballistics: > 1 to hold the overturning moment
+    os << ", overturning moment " << b.static_moment << " N m/rad (gyroscopic stability factor S_g = C^2 w^2/(4 A' M) = "
+       << b.C * b.C * b.omega * b.omega / (4 * m.M(k, k) * b.static_moment) << ")";
+  else if (b.static_moment < 0)
+    os << ", restoring moment " << -b.static_moment << " N m/rad";
+  if (b.pitch_damping > 0) os << ", pitch damping " << b.pitch_damping << " N m s/rad";
   if (b.ekman > 0) os << ", viscous (Ek = " << b.ekman << ", kept Im sum E = " << b.E_kept_imag << ")";
   if (b.galerkin) os << ", Galerkin reduction (its E the Galerkin residues)";
   if (b.unconverged > 0)

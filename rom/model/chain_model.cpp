@@ -239,6 +239,9 @@ void require_linear_scene(const Scene& scene) {
     if (b.moment && (b.moment->axial != 0 || b.moment->space[2] != 0 || b.moment->harmonic[2] != 0))
       fail(scene, "body[" + std::to_string(k + 1) + "].moment", "an axial part (axial, or a z component) changes the "
            "spins, which the linearised chain (26) holds constant; only [run] model = \"nonlinear\" takes it");
+    if (b.aero && scene.free_chain)
+      fail(scene, "body[" + std::to_string(k + 1) + "].aero", "aerodynamic moments on a free chain are not modelled "
+           "yet: a projectile is one body about its centre of mass (a fixed chain of one body, docs/rom.md)");
     if (b.moment && scene.free_chain)
       fail(scene, "body[" + std::to_string(k + 1) + "].moment", "external moments on a free chain are in the "
            "nonlinear model only ([run] model = \"nonlinear\")");
@@ -346,6 +349,15 @@ void set_stiffness_friction_gyro(const Scene& scene, ChainModel& cm) {
     cm.D(k, k + 1) -= al;
     cm.D(k + 1, k) -= al;
   }
+  // A projectile's aerodynamics (docs/rom.md, "A projectile's aerodynamic moments"): the static moment M_α u (u = the
+  // yaw, overturning for M_α > 0) joins the stiffness as gravity's −a g u does, the pitch damping −M_q u̇ the friction.
+  for (int k = 0; k < n; ++k)
+    if (scene.bodies[k].aero) {
+      cm.K(k, k) -= scene.bodies[k].aero->static_moment;
+      cm.D(k, k) += scene.bodies[k].aero->pitch_damping;
+      cm.bodies[k].static_moment = scene.bodies[k].aero->static_moment;
+      cm.bodies[k].pitch_damping = scene.bodies[k].aero->pitch_damping;
+    }
   cm.G.resize(n);
   for (int k = 0; k < n; ++k) cm.G[k] = cm.bodies[k].C * cm.bodies[k].omega;
 }

@@ -45,6 +45,7 @@ struct BodyModel {
   double K_free_surface = 0;
   double E_kept = 0;         // sum of the kept E_kl
   double E_rem = 0;          // static-correction inertia (0 unless static_correction)
+  double static_moment = 0, pitch_damping = 0;  // [body.aero] (in K and D already; kept to report S_g)
   double E_kept_imag = 0, E_rem_imag = 0;  // imaginary parts of the two (viscous tables); E_rem_imag = -E_kept_imag
   double ekman = 0;          // the table's Ek (0: ideal fluid)
   // A response-fit table (docs/viscous.md, "Response fit"): its modes stand for R(s) on s in [fit_lo, fit_hi]

@@ -82,6 +82,8 @@ void add_external_moments(const NonlinearChain& c, const Frames& f, double t, st
   for (int k = 0; k < c.size(); ++k) {
     const ChainBody& b = c.bodies[k];
     tau[k] += b.axial_moment * f.n[k] + b.space_moment + std::sin(two_pi * b.frequency * t) * b.harmonic_moment;
+    if (b.static_moment != 0) tau[k] += b.static_moment * Vector3d::UnitZ().cross(f.n[k]);
+    if (b.pitch_damping != 0) tau[k] -= b.pitch_damping * (f.Omega[k] - f.Omega[k].dot(f.n[k]) * f.n[k]);
   }
 }
 
@@ -215,6 +217,7 @@ double chain_energy(const NonlinearChain& c, const ChainState& s) {
     const Vector3d vO = v[k] - f.Omega[k].cross(f.rho[k]);
     E += 0.5 * m * vO.squaredNorm() + m * vO.dot(f.Omega[k].cross(f.rho[k])) + 0.5 * f.Omega[k].dot(f.J[k] * f.Omega[k]);
     E += m * c.gravity * x[k].z();
+    E += c.bodies[k].static_moment * f.n[k].z();  // the static aerodynamic moment's potential: −n × ∂V/∂n = M_α e_z × n
     const Vector3d n_prev = k > 0 ? f.n[k - 1] : Vector3d::UnitZ();
     E += c.joints[k].stiffness * (1 - f.n[k].dot(n_prev));
   }

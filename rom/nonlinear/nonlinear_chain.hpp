@@ -53,6 +53,10 @@ struct ChainBody {
   // External moment on the body (N m): `axial` about its own axis n_k, `space` fixed in space, and
   // `harmonic` · sin(2π frequency t) in space (Kononov (1) with the moments M_k(t) of Batyr (1)-(3)).
   double axial_moment = 0;
+  // A projectile's aerodynamics about O_k (docs/rom.md, "A projectile's aerodynamic moments"), the yaw measured from
+  // the space z axis (the flight direction): static M_α e_z × n_k (overturning for M_α > 0, |e_z × n| = sin of the
+  // total yaw) and pitch damping −M_q (Ω_k − (Ω_k·n_k) n_k) on the transverse angular velocity.
+  double static_moment = 0, pitch_damping = 0;
   Eigen::Vector3d space_moment = Eigen::Vector3d::Zero(), harmonic_moment = Eigen::Vector3d::Zero();
   double frequency = 0;          // Hz
   std::vector<ChainFluidMode> fluid;  // the kept modes of its cavity, then the static correction's

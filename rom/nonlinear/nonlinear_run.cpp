@@ -65,6 +65,10 @@ NonlinearChain nonlinear_chain(const Scene& scene) {
       body.harmonic_moment = Vector3d(b.moment->harmonic.data());
       body.frequency = b.moment->frequency;
     }
+    if (b.aero) {
+      body.static_moment = b.aero->static_moment;
+      body.pitch_damping = b.aero->pitch_damping;
+    }
     // The chain takes a viscous table's values for a positive spin (ChainFluidMode); the linear model's are for the
     // scene's spin, conjugated when it is negative.
     const auto as_positive_spin = [&](std::complex<double> E) { return b.spin < 0 ? std::conj(E) : E; };

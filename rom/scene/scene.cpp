@@ -174,10 +174,19 @@ MomentSpec parse_moment(Ctx& c, const toml::table& mt, const std::string& wm) {
   return m;
 }
 
+// [body.aero]: a projectile's static and pitch-damping moments (linear aeroballistics).
+AeroSpec parse_aero(Ctx& c, const toml::table& at, const std::string& wa) {
+  check_keys(c, at, wa, {"static_moment", "pitch_damping"});
+  AeroSpec a;
+  a.static_moment = get_number(c, at, "static_moment", wa + ".static_moment", Sign::any, false).value_or(0.0);
+  a.pitch_damping = get_number(c, at, "pitch_damping", wa + ".pitch_damping", Sign::nonneg, false).value_or(0.0);
+  return a;
+}
+
 // [[body]] k of n (0-based): its inertias, spin, cavity and moments.
 BodySpec parse_body(Ctx& c, const toml::table& bt, std::size_t k, std::size_t n, const std::filesystem::path& base) {
   const std::string w = "body[" + std::to_string(k + 1) + "]";
-  check_keys(c, bt, w, {"mass", "A", "B", "C", "com", "next_joint", "spin", "cavity", "moment"});
+  check_keys(c, bt, w, {"mass", "A", "B", "C", "com", "next_joint", "spin", "cavity", "moment", "aero"});
   BodySpec b;
   b.mass = *get_number(c, bt, "mass", w + ".mass", Sign::nonneg, true);
   b.A = *get_number(c, bt, "A", w + ".A", Sign::nonneg, true);
@@ -189,6 +198,7 @@ BodySpec parse_body(Ctx& c, const toml::table& bt, std::size_t k, std::size_t n,
   b.spin = get_number(c, bt, "spin", w + ".spin", Sign::any, false).value_or(0.0);
   if (const toml::table* ct = sub_table(c, bt, "cavity", w + ".cavity")) b.cavity = parse_cavity(c, *ct, w + ".cavity", base);
   if (const toml::table* mt = sub_table(c, bt, "moment", w + ".moment")) b.moment = parse_moment(c, *mt, w + ".moment");
+  if (const toml::table* at = sub_table(c, bt, "aero", w + ".aero")) b.aero = parse_aero(c, *at, w + ".aero");
   return b;
 }
 

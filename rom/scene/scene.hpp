@@ -42,6 +42,13 @@ struct MomentSpec {
   double frequency = 0;  // Hz
 };
 
+// A projectile's aerodynamic moments in linear theory (docs/rom.md, "A projectile's aerodynamic moments"): about the
+// body's fixed point, the reference direction of the yaw the chain's vertical (the flight direction).
+struct AeroSpec {
+  double static_moment = 0;  // N m per radian of yaw: > 0 overturning (a spin-stabilised shell), < 0 restoring (a fin)
+  double pitch_damping = 0;  // N m per rad/s of transverse angular velocity, >= 0
+};
+
 struct BodySpec {
   double mass = 0;        // shell mass
   double A = 0;           // shell transverse inertia about O_k
@@ -52,6 +59,7 @@ struct BodySpec {
   double spin = 0;        // omega_k0, rad/s
   std::optional<CavitySpec> cavity;
   std::optional<MomentSpec> moment;
+  std::optional<AeroSpec> aero;
 };
 
 struct JointSpec {
