@@ -17,6 +17,8 @@ import math
 import os
 import sys
 
+import plot_common
+
 COLUMNS = ["part", "method", "parameter", "value", "steps", "body", "static_correction", "spin_factor",
            "coverage", "wall_seconds", "cpu_seconds", "error"]
 FLOOR = 1e-17  # where exact zeros are drawn on the log axes
@@ -116,16 +118,7 @@ def main() -> int:
 
     fig.suptitle(args.title or os.path.basename(args.csv))
     fig.tight_layout()
-    tmp = args.png + f".tmp-{os.getpid()}.png"
-    try:
-        fig.savefig(tmp)
-        os.replace(tmp, args.png)
-    except OSError as e:
-        if os.path.exists(tmp):
-            os.remove(tmp)
-        print(f"plot_bench: error: {args.png}: {e}", file=sys.stderr)
-        return 1
-    return 0
+    return plot_common.save(fig, args.png, "plot_bench")
 
 
 if __name__ == "__main__":

@@ -8,9 +8,10 @@ bottom: its phase (degrees). The resonances (real parts of the chain's roots, th
 marked by vertical lines: grey for decaying or neutral roots, red for growing ones. `chain-rom response --png` runs
 this script. Uses Debian's python3-matplotlib and python3-numpy.
 """
-import argparse
 import os
 import sys
+
+import plot_common
 
 
 def read(path, np):
@@ -35,19 +36,9 @@ def read(path, np):
 
 
 def main() -> int:
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("csv", help="CSV written by chain-rom response")
-    ap.add_argument("-o", "--output", dest="png", required=True, help="PNG to write")
-    ap.add_argument("--title", default=None, help="figure title (default: the CSV's file name)")
-    args = ap.parse_args()
-    try:
-        import matplotlib
-
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        import numpy as np
-    except ImportError as e:
-        print(f"plot_response: error: {e} (apt-get install python3-matplotlib python3-numpy)", file=sys.stderr)
+    args = plot_common.parse_args(__doc__, "response")
+    plt, np = plot_common.pyplot("plot_response")
+    if plt is None:
         return 2
     try:
         header, data, resonances = read(args.csv, np)
@@ -73,16 +64,7 @@ def main() -> int:
     top.set_title((args.title or os.path.basename(args.csv)) +
                   f": {len(resonances)} resonances marked" + (f", {growing} growing (red)" if growing else ""))
     fig.tight_layout()
-    tmp = args.png + f".tmp-{os.getpid()}.png"
-    try:
-        fig.savefig(tmp)
-        os.replace(tmp, args.png)
-    except OSError as e:
-        if os.path.exists(tmp):
-            os.remove(tmp)
-        print(f"plot_response: error: {args.png}: {e}", file=sys.stderr)
-        return 1
-    return 0
+    return plot_common.save(fig, args.png, "plot_response")
 
 
 if __name__ == "__main__":

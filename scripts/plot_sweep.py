@@ -19,6 +19,8 @@ import argparse
 import os
 import sys
 
+import plot_common
+
 
 def draw_growth(fig, ax, np, SymLogNorm, keys, data, stable, growth):
     """The largest growth rate (1/s; < 0: every root decays) of a dissipative chain."""
@@ -136,16 +138,7 @@ def main() -> int:
                 transform=ax.transAxes, fontsize=8, va="bottom")
     ax.set_title(title)
     fig.tight_layout()
-    tmp = args.png + f".tmp-{os.getpid()}.png"
-    try:
-        fig.savefig(tmp)
-        os.replace(tmp, args.png)
-    except OSError as e:
-        if os.path.exists(tmp):
-            os.remove(tmp)
-        print(f"plot_sweep: error: {args.png}: {e}", file=sys.stderr)
-        return 1
-    return 0
+    return plot_common.save(fig, args.png, "plot_sweep")
 
 
 if __name__ == "__main__":
