@@ -24,7 +24,6 @@ struct KreinGap {
   double gap = std::numeric_limits<double>::quiet_NaN();    // rad/s
   double left = std::numeric_limits<double>::quiet_NaN();   // the two roots (rad/s), left < right
   double right = std::numeric_limits<double>::quiet_NaN();
-  int signed_roots = 0;  // roots whose signature could be read (not at σ = 0, a pole of (22) or a multiple root)
 };
 
 // `sigma`: every root of the chain; `tolerance`: |Im σ| (and |σ| at zero) within which a root counts as real (zero).
