@@ -17,7 +17,7 @@ import math
 import os
 import sys
 
-import plot_common
+import plotting
 
 COLUMNS = ["part", "method", "parameter", "value", "steps", "body", "static_correction", "spin_factor",
            "coverage", "wall_seconds", "cpu_seconds", "error"]
@@ -118,7 +118,7 @@ def main() -> int:
 
     fig.suptitle(args.title or os.path.basename(args.csv))
     fig.tight_layout()
-    return plot_common.save(fig, args.png, "plot_bench")
+    return plotting.save(fig, args.png, "plot_bench")
 
 
 if __name__ == "__main__":

@@ -11,7 +11,7 @@ this script. Uses Debian's python3-matplotlib and python3-numpy.
 import os
 import sys
 
-import plot_common
+import plotting
 
 
 def read(path, np):
@@ -36,8 +36,8 @@ def read(path, np):
 
 
 def main() -> int:
-    args = plot_common.parse_args(__doc__, "response")
-    plt, np = plot_common.pyplot("plot_response")
+    args = plotting.parse_args(__doc__, "response")
+    plt, np = plotting.pyplot("plot_response")
     if plt is None:
         return 2
     try:
@@ -64,7 +64,7 @@ def main() -> int:
     top.set_title((args.title or os.path.basename(args.csv)) +
                   f": {len(resonances)} resonances marked" + (f", {growing} growing (red)" if growing else ""))
     fig.tight_layout()
-    return plot_common.save(fig, args.png, "plot_response")
+    return plotting.save(fig, args.png, "plot_response")
 
 
 if __name__ == "__main__":

@@ -19,7 +19,7 @@ import argparse
 import os
 import sys
 
-import plot_common
+import plotting
 
 
 def draw_growth(fig, ax, np, SymLogNorm, keys, data, stable, growth):
@@ -138,7 +138,7 @@ def main() -> int:
                 transform=ax.transAxes, fontsize=8, va="bottom")
     ax.set_title(title)
     fig.tight_layout()
-    return plot_common.save(fig, args.png, "plot_sweep")
+    return plotting.save(fig, args.png, "plot_sweep")
 
 
 if __name__ == "__main__":
