@@ -11,7 +11,7 @@ using cd = std::complex<double>;
 
 Eigen::MatrixXcd dynamic_stiffness(const ChainModel& m, cd sigma) {
   const cd I(0, 1);
-  Eigen::MatrixXcd Z = -sigma * sigma * m.M.cast<cd>() + I * sigma * m.D.cast<cd>() + m.K.cast<cd>();
+  Eigen::MatrixXcd Z = -sigma * sigma * m.M.cast<cd>() + I * sigma * m.D.cast<cd>() + complex_stiffness(m);
   for (int k = 0; k < m.n; ++k)
     Z(k, k) += -sigma * m.G[k] + sigma * sigma * cd(m.bodies[k].E_rem, m.bodies[k].E_rem_imag);
   for (const auto& md : m.modes) {

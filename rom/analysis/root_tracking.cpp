@@ -23,7 +23,7 @@ constexpr int kMaxSweeps = 80;
 }  // namespace
 
 CharacteristicLogDerivative::CharacteristicLogDerivative(const ChainModel& m)
-    : n_(m.n), M_(m.M), K_(m.K), D_(m.D), G_(m.G.data(), m.G.data() + m.n) {
+    : n_(m.n), M_(m.M), D_(m.D), K_(complex_stiffness(m)), G_(m.G.data(), m.G.data() + m.n) {
   for (const BodyModel& b : m.bodies) E_rem_.emplace_back(b.E_rem, b.E_rem_imag);
   // Modes are kept body by body (chain_model.hpp); the ranges below rely on it.
   first_mode_.assign(n_ + 1, 0);

@@ -42,7 +42,8 @@ class CharacteristicLogDerivative {
 
  private:
   int n_ = 0;
-  Eigen::MatrixXd M_, K_, D_;
+  Eigen::MatrixXd M_, D_;
+  Eigen::MatrixXcd K_;  // with the Magnus moments complex (complex_stiffness)
   std::vector<double> G_;
   std::vector<std::complex<double>> E_rem_;
   std::vector<int> first_mode_;           // modes of body k: [first_mode_[k], first_mode_[k + 1])

@@ -362,6 +362,8 @@ static void print_body_line(std::ostream& os, const ChainModel& m, const Spectru
   else if (b.static_moment < 0)
     os << ", restoring moment " << -b.static_moment << " N m/rad";
   if (b.pitch_damping > 0) os << ", pitch damping " << b.pitch_damping << " N m s/rad";
+  if (m.has_circulatory() && m.circulatory[k] != 0)
+    os << ", Magnus moment " << m.circulatory[k] << " N m/rad at this spin";
   if (b.ekman > 0) os << ", viscous (Ek = " << b.ekman << ", kept Im sum E = " << b.E_kept_imag << ")";
   if (b.galerkin) os << ", Galerkin reduction (its E the Galerkin residues)";
   if (b.unconverged > 0)

@@ -35,7 +35,7 @@ int run_nonlinear(const Scene& scene, const std::string& out_file) {
   const bool damped = std::any_of(chain.joints.begin(), chain.joints.end(),
                                   [](const ChainJoint& j) { return j.friction > 0 || j.axial_friction > 0; }) ||
                       std::any_of(chain.bodies.begin(), chain.bodies.end(),
-                                  [](const ChainBody& b) { return b.pitch_damping > 0; });
+                                  [](const ChainBody& b) { return b.pitch_damping > 0 || b.magnus != 0; });
   if (!h.integrals_valid) {
     std::cout << "energy: not an integral with fluid tanks in the nonlinear model (docs/rom.md, \"Nonlinear chain\")\n";
     return 0;

@@ -350,13 +350,16 @@ void set_stiffness_friction_gyro(const Scene& scene, ChainModel& cm) {
     cm.D(k + 1, k) -= al;
   }
   // A projectile's aerodynamics (docs/rom.md, "A projectile's aerodynamic moments"): the static moment M_α u (u = the
-  // yaw, overturning for M_α > 0) joins the stiffness as gravity's −a g u does, the pitch damping −M_q u̇ the friction.
+  // yaw, overturning for M_α > 0) joins the stiffness as gravity's −a g u does, the pitch damping −M_q u̇ the friction,
+  // the Magnus moment i M_p ω u (along the yaw's direction, F = M_y + i M_x) the stiffness as −i M_p ω.
+  cm.circulatory = Eigen::VectorXd::Zero(n);
   for (int k = 0; k < n; ++k)
     if (scene.bodies[k].aero) {
       cm.K(k, k) -= scene.bodies[k].aero->static_moment;
       cm.D(k, k) += scene.bodies[k].aero->pitch_damping;
       cm.bodies[k].static_moment = scene.bodies[k].aero->static_moment;
       cm.bodies[k].pitch_damping = scene.bodies[k].aero->pitch_damping;
+      cm.circulatory[k] = scene.bodies[k].aero->magnus * cm.bodies[k].omega;  // F = i M_p ω u
     }
   cm.G.resize(n);
   for (int k = 0; k < n; ++k) cm.G[k] = cm.bodies[k].C * cm.bodies[k].omega;
@@ -387,6 +390,12 @@ void set_effective_inertia(const Scene& scene, ChainModel& cm) {
 }
 
 }  // namespace
+
+Eigen::MatrixXcd complex_stiffness(const ChainModel& m) {
+  Eigen::MatrixXcd K = m.K.cast<std::complex<double>>();
+  for (Eigen::Index k = 0; k < m.circulatory.size(); ++k) K(k, k) -= std::complex<double>(0, m.circulatory[k]);
+  return K;
+}
 
 ChainModel build_model(const Scene& scene, TableCache* tables, bool linear_keys_only) {
   if (linear_keys_only) require_linear_scene(scene);

@@ -70,6 +70,8 @@ struct ChainModel {
   Eigen::VectorXd a;     // a_k = m_k c_k + s_k sum_{i>k} m_i (Kononov after (10))
   Eigen::MatrixXd M;     // inertia matrix of (26) (fixed) or of the free chain
   Eigen::MatrixXd K;     // -diag(a_k g) (fixed only) + elastic joints, Kononov (27)
+  // The Magnus moments' circulatory stiffness: −i diag(circulatory) joins K (complex_stiffness); 0 without [body.aero].
+  Eigen::VectorXd circulatory;
   Eigen::MatrixXd D;     // joint friction, Batyr (43)
   Eigen::VectorXd G;     // C_k omega_k0 (gyroscopic term of (26))
   Eigen::MatrixXd M_eff; // M - diag(sum_l E_kl + E_rem_k): inertia seen by u-double-dot (its real part)
@@ -78,9 +80,15 @@ struct ChainModel {
   int size() const { return n; }
   int n_modes() const { return static_cast<int>(modes.size()); }
   bool has_friction() const { return D.cwiseAbs().maxCoeff() > 0; }
-  // Friction or viscous fluid: roots leave the real axis, and stable means no growing root.
-  bool dissipative() const { return has_friction() || viscous; }
+  bool has_circulatory() const { return circulatory.size() > 0 && circulatory.cwiseAbs().maxCoeff() > 0; }
+  // Friction, viscous fluid or a Magnus moment (not conservative): roots leave the real axis, and stable means no
+  // growing root.
+  bool dissipative() const { return has_friction() || viscous || has_circulatory(); }
 };
+
+// The stiffness of (26) with the Magnus moments: K − i diag(circulatory) (docs/rom.md, "A projectile's aerodynamic
+// moments"); K itself without them.
+Eigen::MatrixXcd complex_stiffness(const ChainModel& m);
 
 // The scene's initial fluid coordinates z_kl(0) (initial.fluid), one per kept mode of the model, body by body; zeros
 // when absent. Throws SceneError naming initial.fluid when the count differs from the kept modes'.

@@ -30,7 +30,7 @@ Terms evaluate(const ChainModel& m, cd sigma) {
     fluid(md.body, md.body) += (sigma + w0) * md.E_c() / (sigma + w0 - md.lambda_c());
   }
   Eigen::MatrixXcd damp = (-I / sigma) * m.D.cast<cd>();
-  Eigen::MatrixXcd stiff = (-1.0 / (sigma * sigma)) * m.K.cast<cd>();
+  Eigen::MatrixXcd stiff = (-1.0 / (sigma * sigma)) * complex_stiffness(m);
   t.Phi += gyro + damp + stiff - fluid;
   t.norm_sum += gyro.norm() + damp.norm() + stiff.norm() + fluid.norm();
   return t;
@@ -42,7 +42,7 @@ Eigen::MatrixXcd characteristic_matrix(const ChainModel& m, cd sigma) { return e
 Eigen::MatrixXcd characteristic_derivative(const ChainModel& m, cd sigma) {
   const int n = m.n;
   const cd I(0, 1);
-  Eigen::MatrixXcd d = (I / (sigma * sigma)) * m.D.cast<cd>() + (2.0 / (sigma * sigma * sigma)) * m.K.cast<cd>();
+  Eigen::MatrixXcd d = (I / (sigma * sigma)) * m.D.cast<cd>() + (2.0 / (sigma * sigma * sigma)) * complex_stiffness(m);
   for (int k = 0; k < n; ++k) d(k, k) -= m.G[k] / (sigma * sigma);
   for (const auto& md : m.modes) {
     const cd p = sigma + m.bodies[md.body].omega - md.lambda_c();
@@ -54,7 +54,7 @@ Eigen::MatrixXcd characteristic_derivative(const ChainModel& m, cd sigma) {
 double characteristic_residual(const ChainModel& m, cd sigma, double scale) {
   const double tiny = 1e-9 * scale;
   const bool has_inverse_terms =
-      m.G.cwiseAbs().maxCoeff() > 0 || m.has_friction() || m.K.cwiseAbs().maxCoeff() > 0;
+      m.G.cwiseAbs().maxCoeff() > 0 || m.has_friction() || m.K.cwiseAbs().maxCoeff() > 0 || m.has_circulatory();
   if (has_inverse_terms && std::abs(sigma) <= tiny) return std::numeric_limits<double>::quiet_NaN();
   for (const auto& md : m.modes)
     if (std::abs(sigma + m.bodies[md.body].omega - md.lambda_c()) <= tiny)

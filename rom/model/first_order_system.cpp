@@ -17,12 +17,16 @@ Eigen::Matrix<std::complex<Real>, Eigen::Dynamic, Eigen::Dynamic> first_order_ma
     const Eigen::LDLT<RMat> ldlt(m.M_eff.cast<Real>());
     Minv = ldlt.solve(RMat::Identity(n, n)).template cast<C>();
     MiK = ldlt.solve(m.K.cast<Real>()).template cast<C>();
+    if (m.has_circulatory())  // the Magnus moments: K − i diag(circulatory)
+      for (int k = 0; k < n; ++k) MiK.col(k) -= I * Real(m.circulatory[k]) * Minv.col(k);
   } else {
     CMat Mc = m.M_eff.cast<Real>().template cast<C>();
     for (int k = 0; k < n; ++k) Mc(k, k) += I * Real(m.M_eff_imag[k]);
     const Eigen::PartialPivLU<CMat> lu(Mc);
     Minv = lu.inverse();
     MiK = lu.solve(m.K.cast<Real>().template cast<C>());
+    if (m.has_circulatory())
+      for (int k = 0; k < n; ++k) MiK.col(k) -= I * Real(m.circulatory[k]) * Minv.col(k);
   }
   // Gamma_k = C_k w_k0 - sum_l E_kl lambda_kl (complex for viscous modes: E_c lambda_c)
   Eigen::Matrix<C, Eigen::Dynamic, 1> Gamma = m.G.cast<Real>().template cast<C>();

@@ -84,6 +84,8 @@ void add_external_moments(const NonlinearChain& c, const Frames& f, double t, st
     tau[k] += b.axial_moment * f.n[k] + b.space_moment + std::sin(two_pi * b.frequency * t) * b.harmonic_moment;
     if (b.static_moment != 0) tau[k] += b.static_moment * Vector3d::UnitZ().cross(f.n[k]);
     if (b.pitch_damping != 0) tau[k] -= b.pitch_damping * (f.Omega[k] - f.Omega[k].dot(f.n[k]) * f.n[k]);
+    if (b.magnus != 0)
+      tau[k] += b.magnus * f.Omega[k].dot(f.n[k]) * (f.n[k] - f.n[k].z() * Vector3d::UnitZ());
   }
 }
 

@@ -57,6 +57,8 @@ struct ChainBody {
   // the space z axis (the flight direction): static M_α e_z × n_k (overturning for M_α > 0, |e_z × n| = sin of the
   // total yaw) and pitch damping −M_q (Ω_k − (Ω_k·n_k) n_k) on the transverse angular velocity.
   double static_moment = 0, pitch_damping = 0;
+  // The Magnus moment M_p s_k (n_k − (n_k·e_z) e_z), s_k = Ω_k·n_k the spin: along the yaw's direction.
+  double magnus = 0;
   Eigen::Vector3d space_moment = Eigen::Vector3d::Zero(), harmonic_moment = Eigen::Vector3d::Zero();
   double frequency = 0;          // Hz
   std::vector<ChainFluidMode> fluid;  // the kept modes of its cavity, then the static correction's

@@ -68,6 +68,7 @@ NonlinearChain nonlinear_chain(const Scene& scene) {
     if (b.aero) {
       body.static_moment = b.aero->static_moment;
       body.pitch_damping = b.aero->pitch_damping;
+      body.magnus = b.aero->magnus;
     }
     // The chain takes a viscous table's values for a positive spin (ChainFluidMode); the linear model's are for the
     // scene's spin, conjugated when it is negative.

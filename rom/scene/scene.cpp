@@ -176,10 +176,11 @@ MomentSpec parse_moment(Ctx& c, const toml::table& mt, const std::string& wm) {
 
 // [body.aero]: a projectile's static and pitch-damping moments (linear aeroballistics).
 AeroSpec parse_aero(Ctx& c, const toml::table& at, const std::string& wa) {
-  check_keys(c, at, wa, {"static_moment", "pitch_damping"});
+  check_keys(c, at, wa, {"static_moment", "pitch_damping", "magnus"});
   AeroSpec a;
   a.static_moment = get_number(c, at, "static_moment", wa + ".static_moment", Sign::any, false).value_or(0.0);
   a.pitch_damping = get_number(c, at, "pitch_damping", wa + ".pitch_damping", Sign::nonneg, false).value_or(0.0);
+  a.magnus = get_number(c, at, "magnus", wa + ".magnus", Sign::any, false).value_or(0.0);
   return a;
 }
 

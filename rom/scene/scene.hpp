@@ -47,6 +47,7 @@ struct MomentSpec {
 struct AeroSpec {
   double static_moment = 0;  // N m per radian of yaw: > 0 overturning (a spin-stabilised shell), < 0 restoring (a fin)
   double pitch_damping = 0;  // N m per rad/s of transverse angular velocity, >= 0
+  double magnus = 0;         // N m per radian of yaw per rad/s of spin: the Magnus moment, along the yaw's direction
 };
 
 struct BodySpec {

@@ -17,10 +17,12 @@ using cd = std::complex<double>;
 namespace {
 
 // One body about its centre of mass (com = 0, no gravity): the projectile of docs/rom.md's mapping.
-std::string projectile(double spin, double static_moment, double damping, double tilt = 0.0, const std::string& run = "") {
+std::string projectile(double spin, double static_moment, double damping, double tilt = 0.0, const std::string& run = "",
+                       double magnus = 0.0) {
   const auto num = [](double x) { return std::to_string(x); };
   return "[system]\nkind = \"fixed\"\ngravity = 0.0\n[[body]]\nmass = 2.0\nA = 0.025\nC = 0.004\ncom = 0.0\nspin = " +
          num(spin) + "\n[body.aero]\nstatic_moment = " + num(static_moment) + "\npitch_damping = " + num(damping) +
+         "\nmagnus = " + num(magnus) +
          "\n[initial]\ntilt = [[" + num(tilt) + ", " + num(0.5 * tilt) + "]]\n" + run;
 }
 
@@ -70,22 +72,43 @@ TEST(Aero, GyroscopicStabilityFactorIsTheThreshold) {
   }
 }
 
-// The nonlinear chain with the same moments (static M_α e_z × n, damping on the transverse angular velocity) at small
-// yaw: the difference from the linear run relative to the amplitude falls as the amplitude squared.
+// With a Magnus moment M_p ω u (along the yaw's direction, F = i M_p ω u): A ü + (iCω + M_q)u̇ − (M_α + i M_p ω)u = 0,
+// the roots of A σ² + (Cω − i M_q)σ + M_α + i M_p ω = 0.
+TEST(Aero, MagnusRootsAreTheQuadratics) {
+  const double A = 0.025, C = 0.004, w = 3000, Ma = 40, Mq = 0.002, Mp = 1e-4;
+  const Spectrum sp = compute_spectrum(build_model(parse_scene_text(projectile(w, Ma, Mq, 0, "", Mp), ".", "shell")));
+  ASSERT_EQ(sp.roots.size(), 2u);
+  const cd b = C * w - cd(0, Mq), c = Ma + cd(0, Mp * w);
+  const cd d = std::sqrt(b * b - 4.0 * A * c);
+  double worst = 0;
+  for (const cd& e : {(-b - d) / (2 * A), (-b + d) / (2 * A)}) {
+    double nearest = 1e300;
+    for (const Root& r : sp.roots) nearest = std::min(nearest, std::abs(r.sigma - e) / std::abs(e));
+    worst = std::max(worst, nearest);
+  }
+  std::printf("  Magnus %.0e N m/(rad rad/s): roots against the quadratic %.1e; growth %.4g and %.4g 1/s\n", Mp, worst,
+              -sp.roots[0].sigma.imag(), -sp.roots[1].sigma.imag());
+  EXPECT_LT(worst, 1e-12);
+}
+
+// The nonlinear chain with the same moments (static M_α e_z × n, damping on the transverse angular velocity, Magnus
+// M_p s (n − n_z e_z)) at small yaw: the difference from the linear run relative to the amplitude falls as the
+// amplitude squared — which also checks that the two models give the Magnus moment the same sense.
 TEST(Aero, NonlinearChainAtSmallYawIsTheLinearOne) {
   std::vector<double> rel;
   for (double yaw : {0.02, 0.01}) {
     const std::string run = "[run]\nt_end = 0.5\noutput_step = 0.005\n";
-    const Scene s = parse_scene_text(projectile(300, 4, 0.01, yaw, run + "method = \"exact\"\n"), ".", "shell");
+    const Scene s = parse_scene_text(projectile(300, 4, 0.01, yaw, run + "method = \"exact\"\n", 0.002), ".", "shell");
     const History linear = propagate(build_model(s), s);
-    const Scene sn = parse_scene_text(projectile(300, 4, 0.01, yaw, run + "model = \"nonlinear\"\ntolerance = 1e-12\n"),
+    const Scene sn = parse_scene_text(projectile(300, 4, 0.01, yaw, run + "model = \"nonlinear\"\ntolerance = 1e-12\n", 0.002),
                                       ".", "shell-nl");
     const NonlinearChain chain = nonlinear_chain(sn);
     const NonlinearHistory nl = integrate_nonlinear(chain, nonlinear_initial_state(sn, chain), sn.run);
     double diff = 0;
     for (Eigen::Index j = 0; j < linear.u.rows(); ++j) diff = std::max(diff, std::abs(linear.u(j, 0) - nl.base.u(j, 0)));
     rel.push_back(diff / linear.u.cwiseAbs().maxCoeff());
-    std::printf("  yaw %.2f rad (S_g 3.6, damping 0.01): nonlinear against linear %.2e of the amplitude\n", yaw, rel.back());
+    std::printf("  yaw %.2f rad (S_g 3.6, damping 0.01, Magnus 0.002): nonlinear against linear %.2e of the amplitude\n",
+                yaw, rel.back());
   }
   std::printf("  halving the yaw: the difference falls by %.2f (amplitude squared: 4)\n", rel[0] / rel[1]);
   EXPECT_LT(rel[1], 1e-3);
