@@ -23,8 +23,7 @@ const PartialFillPair& pair_of(const PartialFillSpectrum& s, double lambda) {
 }  // namespace
 
 ModeFields free_surface_fields(const FESpace& space, const PartialFillSpectrum& s, const ModeTable& table) {
-  ModeFields f;
-  fill_fields_mesh(space.mesh(), f);
+  std::vector<WeightedPressure> rows;
   for (std::size_t row = 0; row < table.size(); ++row) {
     const PartialFillPair& pair = pair_of(s, table.lambda[row]);
     const double l = pair.lambda, D = 4 - l * l;
@@ -33,11 +32,9 @@ ModeFields free_surface_fields(const FESpace& space, const PartialFillSpectrum& 
     // coupling.hpp's a = −π(f1·p/(2 − λ) + f2·p/λ)), whose sign is opposite to free_surface_coupling.hpp's ⟨U_c, W⟩:
     // so that a field is continuous as the fill goes to 1 (the sphere's rigid turn is then the spin-over mode's).
     const double weight = (pair.coupling.a < 0 ? 1 : -1) * l * D / pair.coupling.norm;
-    ModeFields::Mode m = weighted_mode_field(space, l, pair.pressure, weight, std::abs(pair.coupling.a), pair.coupling.E);
-    m.row = row;
-    f.modes.push_back(std::move(m));
+    rows.push_back({l, &pair.pressure, weight, std::abs(pair.coupling.a), pair.coupling.E});
   }
-  return f;
+  return weighted_mode_fields(space, rows);
 }
 
 }  // namespace rc::modes

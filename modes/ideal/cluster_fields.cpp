@@ -210,16 +210,21 @@ ModeFields::Mode nodal_field(const NodalGradient& gradient, const geometry::Meri
 
 }  // namespace
 
-ModeFields::Mode weighted_mode_field(const FESpace& space, double lambda, const std::vector<double>& p, double weight,
-                                     double a, double E) {
+ModeFields weighted_mode_fields(const FESpace& space, const std::vector<WeightedPressure>& rows) {
+  ModeFields f;
+  fill_fields_mesh(space.mesh(), f);
   const NodalGradient gradient(space, geometry::triangle_nodes(space.mesh().order));
-  Eigenpair member;
-  member.lambda = lambda;
-  member.p = p;
-  member.coupling.E = E;
-  ModeFields::Mode m = nodal_field(gradient, space.mesh(), {member}, Combination{{weight}, a});
-  m.lambda = lambda;
-  return m;
+  for (std::size_t row = 0; row < rows.size(); ++row) {
+    Eigenpair member;
+    member.lambda = rows[row].lambda;
+    member.p = *rows[row].p;
+    member.coupling.E = rows[row].E;
+    ModeFields::Mode m = nodal_field(gradient, space.mesh(), {member}, Combination{{rows[row].weight}, rows[row].a});
+    m.row = row;
+    m.lambda = rows[row].lambda;
+    f.modes.push_back(std::move(m));
+  }
+  return f;
 }
 
 ModeFields cluster_fields(const FESpace& space, const PoincareForms& forms, const ModeTable& table,

@@ -40,10 +40,15 @@ ModeFields cluster_fields(const FESpace& space, const PoincareForms& forms, cons
                           const FieldSettings& settings,
                           const std::function<void(std::size_t done, std::size_t total)>& progress = {});
 
-// p, V and the kinetic-energy density at the mesh nodes of one eigenvector (pressure dofs `p`, eigenvalue λ, V from
-// p as above) times `weight`; `a` and `E` are stored as given. For fields formed elsewhere (a partially filled
-// tank's single pairs, free_surface_fields.hpp).
-ModeFields::Mode weighted_mode_field(const FESpace& space, double lambda, const std::vector<double>& p, double weight,
-                                     double a, double E);
+// One eigenvector (pressure dofs `p`, eigenvalue λ) times `weight`, with the `a` and `E` to store for it.
+struct WeightedPressure {
+  double lambda = 0;
+  const std::vector<double>* p = nullptr;
+  double weight = 1, a = 0, E = 0;
+};
+
+// The mesh part and, per entry, p, V (from p as above) and the kinetic-energy density at the mesh nodes: fields
+// formed elsewhere (a partially filled tank's single pairs, free_surface_fields.hpp), the nodal gradients built once.
+ModeFields weighted_mode_fields(const FESpace& space, const std::vector<WeightedPressure>& rows);
 
 }  // namespace rc::modes
