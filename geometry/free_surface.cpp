@@ -1,8 +1,14 @@
 #include "free_surface.hpp"
 
+#include "gmsh_session.hpp"
+#include "section_cut.hpp"
 #include "shapes.hpp"
 
+#include <gmsh.h>
+
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <stdexcept>
 
 namespace rc::geometry {
@@ -17,6 +23,20 @@ double cone_ratio(double fill) {
     (1 - 3 * c * c + 2 * c * c * c > fill ? lo : hi) = c;
   }
   return 0.5 * (lo + hi);
+}
+
+// A section's b: its file opened in gmsh and cut at trial radii until the liquid's volume is `fill` of the whole.
+double section_radius(const ShapeSpec& shape, double fill) {
+  const std::string where = "section '" + shape.file.string() + "'";
+  if (shape.file.extension() != ".geo")
+    throw std::runtime_error(where + ": --fill cuts a section's geometry, which only a .geo file holds");
+  if (std::filesystem::is_directory(shape.file) || !std::ifstream(shape.file))
+    throw std::runtime_error(where + ": cannot read the file");
+  return detail::with_gmsh(where, [&](detail::GmshSession& session) {
+    gmsh::open(shape.file.string());
+    session.throw_if_error(where);
+    return detail::section_free_radius(fill, where);
+  });
 }
 
 }  // namespace
@@ -34,8 +54,7 @@ double free_surface_radius(const ShapeSpec& shape, double fill) {
     return std::sqrt(a * a - fill * (a * a - rod * rod));
   }
   if (shape.kind == "cone") return shape.dims.at("radius") * cone_ratio(fill);
-  throw std::runtime_error("--fill on a section is not built yet: a partially filled section is so far one of the "
-                           "built-in shapes (docs/modes.md, \"Partially filled tanks\")");
+  return section_radius(shape, fill);
 }
 
 ShapeSpec partially_filled(ShapeSpec shape, double fill) {

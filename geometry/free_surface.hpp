@@ -11,8 +11,8 @@
 
 namespace rc::geometry {
 
-// b for the volume fraction `fill` (0 < fill < 1) of a built-in shape. Throws std::runtime_error (one line) for a
-// section (its free surface is drawn as a 1D group 'free' instead) or a fill outside (0, 1).
+// b for the volume fraction `fill` (0 < fill < 1) of a built-in shape or a .geo section (cut at trial radii).
+// Throws std::runtime_error (one line) for a fill outside (0, 1) or a section that cannot be read or cut.
 double free_surface_radius(const ShapeSpec& shape, double fill);
 
 // The shape with its free surface: dims["free_radius"] = free_surface_radius(shape, fill).

@@ -3,6 +3,7 @@
 #include "meridian_mesh.hpp"
 
 #include "gmsh_session.hpp"
+#include "section_cut.hpp"
 #include "shapes.hpp"
 
 #include <gmsh.h>
@@ -308,25 +309,32 @@ double longest_side(const GmshMesh& m) {
   return h;
 }
 
-GmshMesh mesh_section(const ShapeSpec& shape, const MeshOptions& options) {
-  const std::string path = shape.file.string();
-  const std::string where = "section '" + path + "'";
+// Opens a section's file in gmsh and checks its groups; with a free_radius (--fill), the model becomes the liquid's
+// part r >= free_radius (section_cut.hpp), its line the group 'free'.
+void open_section(const ShapeSpec& shape, const std::string& where, detail::GmshSession& session) {
   const std::string ext = shape.file.extension().string();
   if (ext != ".geo" && ext != ".msh") throw std::runtime_error(where + ": expected a .geo or .msh file");
   // gmsh::open silently ignores a missing file, so check first.
   if (std::filesystem::is_directory(shape.file) || !std::ifstream(shape.file))
     throw std::runtime_error(where + ": cannot read the file");
+  gmsh::open(shape.file.string());
+  session.throw_if_error(where);
+  for (const auto& [dim, name] : {std::pair{2, "fluid"}, {1, "wall"}}) physical_tag(dim, name, where);
+  // A section's own free surface: the table's fill (against the cavity's volume) would be unknown, and the filled
+  // solvers downstream would take it for a wall (its condition is natural); --fill cuts the section instead.
+  detail::refuse_drawn_free_surface(where);
+  if (!shape.dims.count("free_radius")) return;
+  if (ext == ".msh")
+    throw std::runtime_error(where + ": --fill cuts a section's geometry, which a .msh file does not hold (give its .geo)");
+  detail::cut_section(shape.dims.at("free_radius"), where);
+  session.throw_if_error(where);
+}
+
+GmshMesh mesh_section(const ShapeSpec& shape, const MeshOptions& options) {
+  const std::string where = "section '" + shape.file.string() + "'";
   return detail::with_gmsh(where, [&](detail::GmshSession& session) {
-    gmsh::open(path);
-    session.throw_if_error(where);
-    for (const auto& [dim, name] : {std::pair{2, "fluid"}, {1, "wall"}}) physical_tag(dim, name, where);
-    // A section's own free surface: the table's fill (against the cavity's volume) would be unknown, and the filled
-    // solvers downstream would take it for a wall (its condition is natural) — refused until sections take --fill.
-    if (find_physical_tag(1, "free") >= 0)
-      throw std::runtime_error(where + ": a 1D physical group 'free' (a free surface) is not read yet: a section's "
-                               "boundary is 'wall' and 'axis'; a partially filled tank is so far a built-in shape's "
-                               "--fill (docs/modes.md, \"Partially filled tanks\")");
-    if (ext == ".msh") {
+    open_section(shape, where, session);
+    if (shape.file.extension() == ".msh") {
       GmshMesh m = read_mesh(where);
       m.size = longest_side(m);
       return m;
@@ -492,11 +500,8 @@ double default_mesh_size(const ShapeSpec& shape) {
   detail::validate_shape(shape);
   if (shape.kind != "section") return kDefaultSizeFraction * detail::smallest_dimension(shape);
   const std::string where = "section '" + shape.file.string() + "'";
-  if (std::filesystem::is_directory(shape.file) || !std::ifstream(shape.file))
-    throw std::runtime_error(where + ": cannot read the file");
   return detail::with_gmsh(where, [&](detail::GmshSession& session) {
-    gmsh::open(shape.file.string());
-    session.throw_if_error(where);
+    open_section(shape, where, session);
     return kDefaultSizeFraction * model_smallest_side();
   });
 }

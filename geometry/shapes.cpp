@@ -32,7 +32,8 @@ const std::map<std::string, std::vector<std::string>>& optional_dims() {
   static const std::map<std::string, std::vector<std::string>> dims = {{"cylinder", {"inner_radius", "free_radius"}},
                                                                        {"sphere", {"free_radius"}},
                                                                        {"spheroid", {"free_radius"}},
-                                                                       {"cone", {"free_radius"}}};
+                                                                       {"cone", {"free_radius"}},
+                                                                       {"section", {"free_radius"}}};
   return dims;
 }
 
@@ -192,7 +193,8 @@ void validate_shape(const ShapeSpec& shape) {
   if (shape.dims.count("inner_radius") && !(shape.dims.at("inner_radius") < shape.dims.at("radius")))
     throw std::runtime_error(shape.kind + ": inner radius " + number(shape.dims.at("inner_radius")) +
                              " must be below the radius " + number(shape.dims.at("radius")));
-  if (shape.dims.count("free_radius")) {
+  // A section's free radius is checked where its file is cut (section_cut.hpp).
+  if (shape.dims.count("free_radius") && shape.kind != "section") {
     const double b = shape.dims.at("free_radius"), outer = shape.kind == "spheroid" ? dim(shape, "a") : dim(shape, "radius");
     const double inner = shape.dims.count("inner_radius") ? dim(shape, "inner_radius") : 0.0;
     if (!(b > inner && b < outer))

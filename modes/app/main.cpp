@@ -146,7 +146,7 @@ void add_table_options(CLI::App* cmd, TableRequest& req, bool& fields, std::stri
   cmd->add_option("--fill", req.fill,
                   "the liquid's volume fraction, in (0, 1] (default 1): below 1 a partially filled tank whose free "
                   "surface is the coaxial cylinder of rapid spin (docs/physics.md §2, \"Partially filled tanks\"); "
-                  "built-in shapes, ideal or with --ekman")
+                  "built-in shapes and .geo sections (drawn whole), ideal or with --ekman")
       ->check([](const std::string& v) -> std::string {
         try {
           const double f = std::stod(v);
@@ -262,10 +262,8 @@ rc::modes::ViscousTableSettings viscous_request(const ViscousOptions& v, TableRe
       throw std::runtime_error("--mesh-ekman must be at most --ekman (a mesh made for thicker layers does not resolve "
                                "the flow's)");
   }
-  // A partially filled tank's mesh is the liquid's (its smallest dimension the layer outside the free surface); a
-  // section's --fill is refused later, with the other --fill checks (check_fill).
-  const auto liquid = req.fill < 1 && req.shape.kind != "section" ? rc::geometry::partially_filled(req.shape, req.fill)
-                                                                  : req.shape;
+  // A partially filled tank's mesh is the liquid's (its smallest dimension the layer outside the free surface).
+  const auto liquid = req.fill < 1 ? rc::geometry::partially_filled(req.shape, req.fill) : req.shape;
   s.mesh = rc::modes::viscous_mesh_defaults(liquid, v.mesh_ekman > 0 ? v.mesh_ekman : v.ekman, s.mesh);
   req.mesh = {};
   req.mesh.order = 0;
@@ -303,9 +301,12 @@ void check_response_options(const CLI::App& cmd, const ViscousOptions& viscous, 
 // tanks"); each refusal one line, exit code 2.
 void check_fill(const TableRequest& req, bool viscous_fields, const std::string& method) {
   if (!(req.fill < 1)) return;
-  if (req.shape.kind == "section")
-    throw CommandLineError("--fill: not on a section yet (the built-in sphere, spheroid, cylinder and cone take it; "
-                           "docs/modes.md, \"Partially filled tanks\")");
+  // A section's fill is cut from its file now, so that a fill it cannot take is refused before any solve.
+  if (req.shape.kind == "section") try {
+      rc::geometry::free_surface_radius(req.shape, req.fill);
+    } catch (const std::runtime_error& e) {
+      throw CommandLineError(e.what());
+    }
   if (viscous_fields) throw CommandLineError("--fill --ekman: not with --fields yet (the ideal --fill table takes it)");
   if (!req.targets.empty()) throw CommandLineError("--fill: not with --target (the targets are the free surface's modes)");
   if (method == "separable" && (req.shape.kind != "cylinder" || req.shape.dims.count("inner_radius")))

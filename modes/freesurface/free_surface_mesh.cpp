@@ -117,6 +117,9 @@ PartialFillSpectrum solve_partially_filled_mesh(const FESpace& space, int max_un
     throw std::runtime_error(fmt::format("free surface: {} unknowns (pressure and surface) > {}, the dense solver's "
                                          "limit: take a larger --mesh-size or a lower --order", m, max_unknowns));
   out.surface_radius = f.surface.radius;
+  const auto [low, high] = std::minmax_element(space.mesh().nodes.begin(), space.mesh().nodes.end(),
+                                               [](const auto& p, const auto& q) { return p[1] < q[1]; });
+  out.height = (*high)[1] - (*low)[1];
   out.K0 = f.surface.K0;
   out.K1 = f.surface.K1;
   out.K2 = f.surface.K2;

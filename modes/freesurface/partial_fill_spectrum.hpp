@@ -20,6 +20,7 @@ struct PartialFillPair {
 
 struct PartialFillSpectrum {
   double surface_radius = 0;  // b
+  double height = 0;          // the liquid's axial extent (the mesh method's; a section's selection scale)
   FluidIntegrals fluid;       // of the liquid annulus
   double K0 = 0, K1 = 0, K2 = 0;  // π b² ∫ z′ᵏ dz over the free surface: K(O) = K2 + 2c K1 + c² K0
   // Zhukovsky's inertia with the free surface at zero potential, about a point O at height −c below the centroid:

@@ -28,7 +28,7 @@ constexpr double kFreeSurfaceSizeFactor = 3.5;
 constexpr double kRoundingWeight = 1e-12;  // relative to the sum rule
 
 // A pair as a selection item: its weight is its largest E about a point within one height H of the centroid (for a
-// sphere or spheroid H is its polar diameter).
+// sphere or spheroid H is its polar diameter, for a section the liquid's axial extent).
 struct Candidate {
   const PartialFillPair* pair = nullptr;
   double E = 0;  // the selection's weight (cluster_selection.hpp sorts and sums by E)
@@ -92,8 +92,10 @@ ModeTable::FreeSurface free_surface_attributes(const PartialFillSpectrum& s, dou
 ModeTable spectrum_table(const PartialFillTableSettings& req, const PartialFillSpectrum& s,
                          const std::function<PartialFillSpectrum()>& coarse, const std::string& coarse_description,
                          const std::function<void(const std::string&)>& report) {
-  const double H = req.shape.kind == "sphere" ? 2 * req.shape.dims.at("radius")
-                   : req.shape.kind == "spheroid" ? 2 * req.shape.dims.at("c") : req.shape.dims.at("height");
+  const double H = req.shape.kind == "sphere"     ? 2 * req.shape.dims.at("radius")
+                   : req.shape.kind == "spheroid" ? 2 * req.shape.dims.at("c")
+                   : req.shape.kind == "section"  ? s.height
+                                                  : req.shape.dims.at("height");
   const double sum_rule_wide = std::max({s.sum_rule_about(0), s.sum_rule_about(H), s.sum_rule_about(-H)});
   std::vector<Candidate> candidates;
   for (const auto& p : s.pairs) {

@@ -14,9 +14,10 @@ on its spin-test stand, data/scenes/spacecraft_spin_table.toml), and its roots a
    --refusals also a viscous table of the same tank (Ek = 1e-3): chain-rom's roots against (22) with complex
    lambda_c = lambda + i decay and a_c + c t_c;
 5. what is not modelled yet is refused in one line, no file written: a free chain and the nonlinear model with this
-   tank (chain-rom), --fill on a section, with --target, with --fields, separable around a rod and outside (0, 1]
+   tank (chain-rom), a section's fill that cuts it into pieces or meets it twice, a .msh or drawn
+   free surface with --fill, --fill with --target, with --fields, separable around a rod and outside (0, 1]
    (cavity-modes, exit 2), cluster options with --fill,
-   and a section with a 'free' group, which would otherwise be meshed as a wall (exit 1) — with --refusals only.
+   and a section with a 'free' group, with or without --fill (exit 1) — with --refusals only.
 usage: stewartson_scene_check.py CAVITY_MODES CHAIN_ROM SCENE WORKDIR [--refusals]
 """
 import json, os, re, subprocess, sys
@@ -120,8 +121,33 @@ open(nonlinear, "w").write(open(local).read().replace('method = "exact"', 'model
 refused([rom_bin, "run", nonlinear, "-o", os.path.join(work, "x.h5")], 0, "nonlinear chain does not take",
         os.path.join(work, "x.h5"))
 x = os.path.join(work, "refused.h5")
-refused([modes_bin, "section", os.path.join(os.path.dirname(scene), "..", "sections", "annulus.geo"), "--fill", "0.5",
-         "-o", x], 2, "--fill: not on a section yet", x)
+# Sections cut at their free surface: one liquid region and one free-surface segment, from a .geo file. The pieces
+# section is 0.2 < r < 1, |z| < 1 with a notch 0.5 < r < 1, |z| < 0.1 (two arms beyond r = 0.84 at fill 0.3); the
+# segments section has the notch on its inner side, 0.2 < r < 0.6 (r = 0.30 at fill 0.95 meets it above and below).
+def section_file(name, points):
+    n = len(points)
+    text = "".join(f"Point({i + 1}) = {{{r}, {z}, 0}};\n" for i, (r, z) in enumerate(points))
+    text += "".join(f"Line({i + 1}) = {{{i + 1}, {(i + 1) % n + 1}}};\n" for i in range(n))
+    loop = ", ".join(str(i + 1) for i in range(n))
+    text += (f'Curve Loop(1) = {{{loop}}};\nPlane Surface(1) = {{1}};\nPhysical Surface("fluid") = {{1}};\n'
+             f'Physical Curve("wall") = {{{loop}}};\n')
+    path = os.path.join(work, name)
+    open(path, "w").write(text)
+    return path
+pieces = section_file("pieces.geo", [(0.2, -1), (1, -1), (1, -0.1), (0.5, -0.1), (0.5, 0.1), (1, 0.1), (1, 1), (0.2, 1)])
+segments = section_file("segments.geo",
+                        [(0.2, -1), (1, -1), (1, 1), (0.2, 1), (0.2, 0.1), (0.6, 0.1), (0.6, -0.1), (0.2, -0.1)])
+refused([modes_bin, "section", pieces, "--fill", "0.3", "-o", x], 2, "cuts the liquid into 2 pieces", x)
+refused([modes_bin, "section", segments, "--fill", "0.95", "-o", x], 2, "in 2 separate segments", x)
+mesh_file = os.path.join(work, "section.msh")
+open(mesh_file, "w").write("")
+refused([modes_bin, "section", mesh_file, "--fill", "0.5", "-o", x], 2, "only a .geo file holds", x)
+drawn = os.path.join(work, "drawn_free.geo")
+open(drawn, "w").write(open(pieces).read().replace('Physical Curve("wall") = {1, 2, 3, 4, 5, 6, 7, 8};',
+                                                    'Physical Curve("wall") = {1, 2, 3, 4, 5, 6, 7};\n'
+                                                    'Physical Curve("free") = {8};'))
+for fill in ([], ["--fill", "0.5"]):
+    refused([modes_bin, "section", drawn] + fill + ["-o", x], 0, "a 1D physical group 'free'", x)
 refused([modes_bin, "cylinder", "--radius", "1", "--height", "2", "--inner-radius", "0.3", "--fill", "0.5", "--method",
          "separable", "-o", x], 2, "a plain cylinder only", x)
 refused([modes_bin, "sphere", "--radius", "1", "--fill", "0.5", "--ekman", "1e-3", "--fields", "-o", x], 2,
@@ -161,5 +187,5 @@ annulus = open(os.path.join(os.path.dirname(scene), "..", "sections", "annulus.g
 free_geo = os.path.join(work, "annulus_free.geo")
 open(free_geo, "w").write(annulus.replace('Physical Curve("wall") = {1, 2, 3, 4};',
                                           'Physical Curve("wall") = {1, 2, 3};\nPhysical Curve("free") = {4};'))
-refused([modes_bin, "section", free_geo, "--modes", "3", "-o", x], 1, "'free' (a free surface) is not read yet", x)
+refused([modes_bin, "section", free_geo, "--modes", "3", "-o", x], 1, "'free' (a free surface) is not read", x)
 sys.exit(1 if failed else 0)
