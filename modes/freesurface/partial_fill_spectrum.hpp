@@ -27,7 +27,9 @@ struct PartialFillSpectrum {
   // J_D(c) = J_D + 2c J_D1 + c² J_D2 (the potential problem's data is linear in c).
   double J_D = 0, J_D1 = 0, J_D2 = 0;
   double sum_rule = 0;        // A_f + K2 − J_D: what Σ E over every pair must give
-  double sum_E = 0;           // Σ E over every pair
+  double sum_E = 0;           // Σ E over every pair (over the pairs found when not complete)
+  bool complete = true;       // every eigenpair (the dense and separable solvers); false: the sparse solver's
+  int skipped = 0;            // sparse: near-double eigenvalues returned as complex pairs, not kept
   int radial_dofs = 0, axial_dofs = 0;
   int order = 0, radial_elements = 0, axial_elements = 0;
   std::vector<PartialFillPair> pairs;  // every eigenpair of every coupled axial vector, E descending

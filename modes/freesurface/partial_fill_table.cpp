@@ -5,6 +5,7 @@
 #include "free_surface.hpp"
 #include "free_surface_fields.hpp"
 #include "free_surface_mesh.hpp"
+#include "free_surface_sparse.hpp"
 #include "line_space.hpp"
 #include "partial_fill_closed_form.hpp"
 #include "partial_fill_cylinder.hpp"
@@ -17,6 +18,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <list>
 
 namespace rc::modes {
 namespace {
@@ -26,6 +28,9 @@ namespace {
 // "Partially filled tanks").
 constexpr double kFreeSurfaceSizeFactor = 3.5;
 constexpr double kRoundingWeight = 1e-12;  // relative to the sum rule
+// The sparse solver's pairs per target: a target's heavy pair may sit among many light ones (the partially filled
+// sphere: 12 found the rigid turn at λ = 1 that 2 missed, measured 2026-11-27).
+constexpr int kPairsPerTarget = 16;
 
 // A pair as a selection item: its weight is its largest E about a point within one height H of the centroid (for a
 // sphere or spheroid H is its polar diameter, for a section the liquid's axial extent).
@@ -87,15 +92,16 @@ ModeTable::FreeSurface free_surface_attributes(const PartialFillSpectrum& s, dou
   return f;
 }
 
-// The table of one spectrum: rows by weight, the convergence check against `coarse` (solved only when checked), the
-// /free_surface attributes; the caller adds its discretisation's fields and solver line.
-ModeTable spectrum_table(const PartialFillTableSettings& req, const PartialFillSpectrum& s,
-                         const std::function<PartialFillSpectrum()>& coarse, const std::string& coarse_description,
-                         const std::function<void(const std::string&)>& report) {
-  const double H = req.shape.kind == "sphere"     ? 2 * req.shape.dims.at("radius")
-                   : req.shape.kind == "spheroid" ? 2 * req.shape.dims.at("c")
-                   : req.shape.kind == "section"  ? s.height
-                                                  : req.shape.dims.at("height");
+// The height within which a row's weight is its largest E (the Candidate's comment above).
+double selection_height(const PartialFillTableSettings& req, const PartialFillSpectrum& s) {
+  return req.shape.kind == "sphere"     ? 2 * req.shape.dims.at("radius")
+         : req.shape.kind == "spheroid" ? 2 * req.shape.dims.at("c")
+         : req.shape.kind == "section"  ? s.height
+                                        : req.shape.dims.at("height");
+}
+
+// The pairs a table keeps as rows, by weight against the sum rule (cluster_selection.hpp).
+std::vector<Candidate> kept_rows(const PartialFillTableSettings& req, const PartialFillSpectrum& s, double H) {
   const double sum_rule_wide = std::max({s.sum_rule_about(0), s.sum_rule_about(H), s.sum_rule_about(-H)});
   std::vector<Candidate> candidates;
   for (const auto& p : s.pairs) {
@@ -104,7 +110,16 @@ ModeTable spectrum_table(const PartialFillTableSettings& req, const PartialFillS
     if (std::abs(p.lambda) >= req.selection.geostrophic_cutoff && w > kRoundingWeight * sum_rule_wide)
       candidates.push_back({&p, w});
   }
-  const std::vector<Candidate> kept = select_clusters(std::move(candidates), req.selection, sum_rule_wide);
+  return select_clusters(std::move(candidates), req.selection, sum_rule_wide);
+}
+
+// The table of one spectrum: rows by weight, the convergence check against `coarse` (solved only when checked), the
+// /free_surface attributes; the caller adds its discretisation's fields and solver line.
+ModeTable spectrum_table(const PartialFillTableSettings& req, const PartialFillSpectrum& s,
+                         const std::function<PartialFillSpectrum()>& coarse, const std::string& coarse_description,
+                         const std::function<void(const std::string&)>& report) {
+  const double H = selection_height(req, s);
+  const std::vector<Candidate> kept = kept_rows(req, s, H);
 
   ModeTable t = start_table(req.shape, s.fluid, s.J_D);
   t.sum_rule = s.sum_rule;
@@ -126,6 +141,54 @@ ModeTable spectrum_table(const PartialFillTableSettings& req, const PartialFillS
   t.sort_by_energy();
   return t;
 }
+
+// The mesh method's spectra of one liquid, each mesh solved once: every pair by the dense solver when the mesh's
+// unknowns fit req.max_unknowns; beyond, two levels — the rows the mesh with its sizes doubled keeps (solved the same
+// way, and kept for the convergence check) give the targets of the sparse solver (free_surface_sparse.hpp).
+class MeshSpectra {
+ public:
+  MeshSpectra(const PartialFillTableSettings& req, const geometry::ShapeSpec& liquid,
+              const std::function<void(const std::string&)>& report)
+      : req_(req), liquid_(liquid), report_(report) {}
+
+  const PartialFillSpectrum& on(const geometry::MeshOptions& o) {
+    for (const auto& [size, s] : solved_)
+      if (size == o.size) return s;
+    solved_.emplace_back(o.size, solve(FESpace(geometry::mesh_meridian(liquid_, o)), o, false));
+    return solved_.back().second;
+  }
+
+  PartialFillSpectrum solve(const FESpace& space, const geometry::MeshOptions& o, bool keep_pressure) {
+    const long unknowns = free_surface_unknowns(space);
+    if (unknowns <= req_.max_unknowns) {
+      PartialFillSpectrum s = solve_partially_filled_mesh(space, req_.max_unknowns, keep_pressure);
+      say(fmt::format("{} pairs of {} pressure dofs (mesh size {:g}), sum of E - sum rule = {:.1e} (relative)",
+                      s.pairs.size(), s.radial_dofs, o.size, (s.sum_E - s.sum_rule) / s.sum_rule));
+      return s;
+    }
+    std::string unused;
+    say(fmt::format("{} unknowns (mesh size {:g}) > {}: the targets from the mesh with its sizes doubled", unknowns,
+                    o.size, req_.max_unknowns));
+    const PartialFillSpectrum& coarse = on(coarser(o, unused));
+    std::vector<double> targets;
+    for (const Candidate& k : kept_rows(req_, coarse, selection_height(req_, coarse))) targets.push_back(k.pair->lambda);
+    PartialFillSpectrum s = solve_partially_filled_near(space, targets, kPairsPerTarget, keep_pressure);
+    say(fmt::format("{} pairs near {} targets (mesh size {:g}, sparse), their sum of E {:.4f} of the sum rule{}",
+                    s.pairs.size(), targets.size(), o.size, s.sum_E / s.sum_rule,
+                    s.skipped ? fmt::format("; {} near-double eigenvalues returned complex, not kept", s.skipped) : ""));
+    return s;
+  }
+
+ private:
+  void say(const std::string& line) const {
+    if (report_) report_(line);
+  }
+
+  const PartialFillTableSettings& req_;
+  geometry::ShapeSpec liquid_;
+  std::function<void(const std::string&)> report_;
+  std::list<std::pair<double, PartialFillSpectrum>> solved_;  // a list: references to its spectra stay valid
+};
 
 }  // namespace
 
@@ -166,28 +229,29 @@ ModeTable partially_filled_mesh_table(const PartialFillTableSettings& req,
   const geometry::ShapeSpec liquid = geometry::partially_filled(req.shape, req.fill);
   geometry::MeshOptions mesh = req.grid;
   if (mesh.size == 0) mesh.size = geometry::default_mesh_size(liquid) * kFreeSurfaceSizeFactor;
-  const auto solve = [&](const geometry::MeshOptions& o) {
-    return solve_partially_filled_mesh(FESpace(geometry::mesh_meridian(liquid, o)), req.max_unknowns);
-  };
   if (report) report(fmt::format("partially filled {}: free surface r = {:.10g}, order {}, mesh size {:g}",
                                  req.shape.kind, liquid.dims.at("free_radius"), mesh.order, mesh.size));
+  MeshSpectra spectra(req, liquid, report);
   const FESpace space(geometry::mesh_meridian(liquid, mesh));
-  const PartialFillSpectrum s = solve_partially_filled_mesh(space, req.max_unknowns, fields != nullptr);
-  if (report) report(fmt::format("{} pairs of {} pressure dofs, sum of E - sum rule = {:.1e} (relative)",
-                                 s.pairs.size(), s.radial_dofs, (s.sum_E - s.sum_rule) / s.sum_rule));
+  const PartialFillSpectrum s = spectra.solve(space, mesh, fields != nullptr);
   std::string coarse_description;
   const geometry::MeshOptions c = coarser(mesh, coarse_description);
-  ModeTable t = spectrum_table(req, s, [&] { return solve(c); }, coarse_description + ", pairs matched by nearest lambda",
-                               report);
+  ModeTable t = spectrum_table(req, s, [&] { return spectra.on(c); },
+                               coarse_description + ", pairs matched by nearest lambda", report);
   t.fe_order = s.order;
   t.mesh_h = mesh.size;
   t.mesh_h_radial = mesh.radial_size;
   t.ndof = s.radial_dofs;
-  t.solver = fmt::format(
+  t.solver = s.complete ? fmt::format(
       "mesh, free surface r = b: P{} Lagrange triangles ({} pressure dofs), the quartic made a symmetric quadratic by "
       "one unknown per surface dof, every eigenpair by a dense eigensolver (LAPACK) of its companion form; sum of E "
       "over all pairs - (A_f + K2 - J_zh) = {:.1e} (relative)", s.order, s.radial_dofs,
-      (s.sum_E - s.sum_rule) / s.sum_rule);
+      (s.sum_E - s.sum_rule) / s.sum_rule)
+      : fmt::format(
+      "mesh, free surface r = b: P{} Lagrange triangles ({} pressure dofs), the quartic made a symmetric quadratic by "
+      "one unknown per surface dof; beyond the dense solver's {} unknowns, the {} pairs nearest the rows of the mesh "
+      "with its sizes doubled by SLEPc (TOAR, shift-and-invert, MUMPS LU): not every pair, so the coverage is what "
+      "the rows hold of A_f + K2 - J_zh", s.order, s.radial_dofs, req.max_unknowns, kPairsPerTarget);
   if (fields) *fields = free_surface_fields(space, s, t);
   t.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return t;
