@@ -2,6 +2,10 @@
 
 #include "cavity_table.hpp"
 #include "discretisation.hpp"
+#include "free_surface.hpp"
+#include "free_surface_mesh.hpp"
+#include "partial_fill_cylinder.hpp"
+#include "partial_fill_table.hpp"
 #include "passivity_scan.hpp"
 #include "ideal_response.hpp"
 #include "petsc_handles.hpp"
@@ -62,6 +66,67 @@ CavityResponse mesh_response(const ResponseRequest& req) {
 void stderr_on_root(const std::string& line) {
   if (is_root_rank()) std::cerr << line << "\n";
 }
+
+// A partially filled tank's ideal response: the sums over EVERY pair (the separable cylinder's, or the mesh method's
+// dense solver) of 2a²/(σ − λ), 2at/(σ − λ), 2t²/(σ − λ) (free_surface_coupling.hpp).
+CavityResponse partially_filled_ideal_response(const ResponseRequest& req) {
+  const geometry::ShapeSpec liquid = geometry::partially_filled(req.shape, req.fill);
+  PartialFillSpectrum s;
+  if (req.separable) {
+    if (req.shape.kind != "cylinder" || req.shape.dims.count("inner_radius"))
+      throw std::runtime_error("--fill --method separable: a plain cylinder only (the mesh method takes the others)");
+    const double R = req.shape.dims.at("radius"), H = req.shape.dims.at("height");
+    geometry::ShapeSpec annulus = req.shape;
+    annulus.dims["inner_radius"] = liquid.dims.at("free_radius");
+    s = solve_partially_filled_cylinder(R, H, req.fill, separable_grid(annulus, req.mesh));
+  } else {
+    geometry::MeshOptions mesh = req.mesh;
+    if (mesh.size == 0) mesh.size = geometry::default_mesh_size(liquid) * kFreeSurfaceSizeFactor;
+    s = solve_partially_filled_mesh(FESpace(geometry::mesh_meridian(liquid, mesh)), kDenseFreeSurfaceUnknowns);
+  }
+  CavityResponse out;
+  for (const auto sigma : req.sigmas) {
+    std::complex<double> ff = 0, fg = 0, gg = 0;
+    for (const auto& p : s.pairs) {
+      if (p.coupling.E == 0 && p.coupling.t == 0) continue;  // the geostrophic λ = 0: no coupling
+      const std::complex<double> w = 2.0 / (sigma - p.lambda);
+      ff += w * p.coupling.a * p.coupling.a;
+      fg += w * p.coupling.a * p.coupling.t;
+      gg += w * p.coupling.t * p.coupling.t;
+    }
+    out.R.push_back(ff);
+    out.R_fg.push_back(fg);
+    out.R_gg.push_back(gg);
+  }
+  out.method = fmt::format("ideal fluid, partially filled (fill {:g}, free surface r = {:.10g}): the sums over all {} "
+                           "eigenpairs of the {} (sum of E - (A_f + K2 - J_zh) = {:.1e} relative)", req.fill,
+                           s.surface_radius, s.pairs.size(), req.separable ? "separable cylinder" : "mesh method",
+                           (s.sum_E - s.sum_rule) / s.sum_rule);
+  return out;
+}
+
+// A partially filled tank's viscous response by forced solves on the liquid's mesh (its free surface stress-free).
+CavityResponse partially_filled_viscous_response(const ResponseRequest& req) {
+  const geometry::ShapeSpec liquid = geometry::partially_filled(req.shape, req.fill);
+  const ViscousForms forms = assemble_cavity_forms(liquid, req.mesh, req.ekman);
+  Progress lines(stderr_on_root);
+  ForcedResponse response(forms);
+  CavityResponse out;
+  for (std::size_t k = 0; k < req.sigmas.size(); ++k) {
+    const OffsetResponse r = response.with_offset(req.sigmas[k]);
+    out.R.push_back(r.ff);
+    out.R_fg.push_back(r.fg);
+    out.R_gg.push_back(r.gg);
+    lines.step(fmt::format("cavity-modes response: {}/{} frequencies", k + 1, req.sigmas.size()), k + 1,
+               req.sigmas.size());
+  }
+  out.unknowns = 2L * forms.complex_size;
+  out.method = fmt::format("viscous fluid, Ekman number {:g}, partially filled (fill {:g}, free surface stress-free): "
+                           "forced solves on Taylor-Hood P{}/P{} ({} real unknowns); R = sum_l E_l/(sigma - lambda_l) + "
+                           "const", req.ekman, req.fill, req.mesh.order, req.mesh.order - 1, out.unknowns);
+  return out;
+}
+
 
 int world_ranks() {
   int ranks = 1;
@@ -168,6 +233,7 @@ CavityResponse compute_cavity_response(const ResponseRequest& req) {
   if (req.sigmas.empty()) throw std::runtime_error("no frequency sigma given");
   for (const auto s : req.sigmas)
     if (!std::isfinite(s.real()) || !std::isfinite(s.imag())) throw std::runtime_error("every sigma must be finite");
+  if (req.fill < 1) return req.ekman > 0 ? partially_filled_viscous_response(req) : partially_filled_ideal_response(req);
   if (req.ekman > 0) {  // under mpirun the frequencies are shared out, as for a response table
     const bool split = world_ranks() > 1 && req.sigmas.size() > 1;
     Progress lines(stderr_on_root);
@@ -523,17 +589,24 @@ std::vector<std::complex<double>> parse_sigma_spec(const std::string& spec, doub
   return s;
 }
 
-void write_response(const std::string& path, const std::vector<std::complex<double>>& sigma,
-                    const std::vector<std::complex<double>>& R, const std::string& method) {
+void write_response(const std::string& path, const std::vector<std::complex<double>>& sigma, const CavityResponse& R) {
   const std::filesystem::path tmp = path + ".tmp" + std::to_string(::getpid());
+  const bool offset = !R.R_fg.empty();
   {
     std::ofstream out(tmp);
     if (!out) throw std::runtime_error("cannot create " + path);
-    out << "# cavity-modes response: " << method << "\n# R(sigma) = sum_l E_l/(sigma - lambda_l) (docs/viscous.md, "
-        << "\"Response function\")\nsigma_re,sigma_im,R_re,R_im\n";
+    out << "# cavity-modes response: " << R.method << "\n# R(sigma) = sum_l E_l/(sigma - lambda_l) (docs/viscous.md, "
+        << "\"Response function\")\n";
+    if (offset)
+      out << "# partially filled: R is about the liquid's centroid; about a point at height -c below it R + 2c R_fg + "
+             "c^2 R_gg (docs/physics.md section 2, \"Partially filled tanks\")\n";
+    out << "sigma_re,sigma_im,R_re,R_im" << (offset ? ",R_fg_re,R_fg_im,R_gg_re,R_gg_im" : "") << "\n";
     out.precision(17);
-    for (std::size_t k = 0; k < sigma.size(); ++k)
-      out << sigma[k].real() << ',' << sigma[k].imag() << ',' << R[k].real() << ',' << R[k].imag() << '\n';
+    for (std::size_t k = 0; k < sigma.size(); ++k) {
+      out << sigma[k].real() << ',' << sigma[k].imag() << ',' << R.R[k].real() << ',' << R.R[k].imag();
+      if (offset) out << ',' << R.R_fg[k].real() << ',' << R.R_fg[k].imag() << ',' << R.R_gg[k].real() << ',' << R.R_gg[k].imag();
+      out << '\n';
+    }
     if (!out) {
       out.close();
       std::error_code ec;

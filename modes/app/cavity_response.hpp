@@ -22,6 +22,7 @@ struct ResponseRequest {
   geometry::MeshOptions mesh;   // resolved: the viscous mesh, or the ideal mesh/grid (0 = the method's defaults)
   double ekman = 0;             // 0: ideal fluid
   bool separable = false;       // ideal cylinder: the separable mode sum instead of forced solves
+  double fill = 1;              // below 1 a partially filled tank: R about the liquid's centroid and its offset parts
   std::vector<std::complex<double>> sigmas;
   // A Krylov response table's frequencies where its R must be the fluid's own (viscous/krylov_response.hpp).
   std::vector<std::complex<double>> exact_at;
@@ -31,6 +32,9 @@ struct ResponseRequest {
 
 struct CavityResponse {
   std::vector<std::complex<double>> R;
+  // A partially filled tank (fill < 1): R about a point at height −c below the liquid's centroid is
+  // R + 2c R_fg + c² R_gg (viscous_response.hpp, OffsetResponse); empty otherwise.
+  std::vector<std::complex<double>> R_fg, R_gg;
   std::string method;  // one line: what computed R and on which discretisation (the CSV's header)
   long unknowns = 0;   // real unknowns of the forced solves (0 for the separable sum)
 };
@@ -70,9 +74,9 @@ std::vector<std::complex<double>> parse_sigma_spec(const std::string& spec, doub
 // only; chain-rom confirm drives it (docs/rom.md, "Confirmed roots"). Throws std::runtime_error without --ekman.
 void serve_response(const ResponseRequest& request, std::istream& in, std::ostream& out);
 
-// CSV: two `#` lines (the method, the definition), then sigma_re, sigma_im, R_re, R_im per line. Written to a
-// temporary name and renamed, so no half-written file is ever left.
-void write_response(const std::string& path, const std::vector<std::complex<double>>& sigma,
-                    const std::vector<std::complex<double>>& R, const std::string& method);
+// CSV: `#` lines (the method, the definition), then sigma_re, sigma_im, R_re, R_im per line, and for a partially
+// filled tank R_fg_re, R_fg_im, R_gg_re, R_gg_im after them. Written to a temporary name and renamed, so no
+// half-written file is ever left.
+void write_response(const std::string& path, const std::vector<std::complex<double>>& sigma, const CavityResponse& R);
 
 }  // namespace rc::modes

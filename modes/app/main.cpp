@@ -110,6 +110,25 @@ void add_viscous_options(CLI::App* cmd, ViscousOptions& viscous, bool response) 
 }
 
 // The cluster search and selection of a table (docs/modes.md).
+// --fill on tables and on `cavity-modes response` (CSV only: R about the liquid's centroid and its offset parts).
+void add_fill_option(CLI::App* cmd, TableRequest& req, bool response) {
+  cmd->add_option("--fill", req.fill,
+                  std::string("the liquid's volume fraction, in (0, 1] (default 1): below 1 a partially filled tank "
+                              "whose free surface is the coaxial cylinder of rapid spin (docs/physics.md §2, "
+                              "\"Partially filled tanks\"); built-in shapes and .geo sections (drawn whole), ideal or "
+                              "with --ekman") +
+                      (response ? "; the CSV adds R_fg and R_gg: R about a point c below the centroid is R + 2c R_fg "
+                                  "+ c^2 R_gg" : ""))
+      ->check([](const std::string& v) -> std::string {
+        try {
+          const double f = std::stod(v);
+          if (f > 0 && f <= 1) return {};
+        } catch (const std::exception&) {
+        }
+        return "the liquid's volume fraction must be in (0, 1], not " + v;
+      });
+}
+
 void add_table_options(CLI::App* cmd, TableRequest& req, bool& fields, std::string& cluster_method) {
   auto* modes = cmd->add_option("--modes", req.selection.modes, "keep the N clusters of largest E");
   auto* coverage = cmd->add_option(
@@ -143,18 +162,7 @@ void add_table_options(CLI::App* cmd, TableRequest& req, bool& fields, std::stri
                               number(req.convergence_tolerance)));
   cmd->add_flag("--no-convergence-check", [&req](std::int64_t) { req.check_convergence = false; },
                 "skip the per-cluster comparison with a coarser discretisation");
-  cmd->add_option("--fill", req.fill,
-                  "the liquid's volume fraction, in (0, 1] (default 1): below 1 a partially filled tank whose free "
-                  "surface is the coaxial cylinder of rapid spin (docs/physics.md §2, \"Partially filled tanks\"); "
-                  "built-in shapes and .geo sections (drawn whole), ideal or with --ekman")
-      ->check([](const std::string& v) -> std::string {
-        try {
-          const double f = std::stod(v);
-          if (f > 0 && f <= 1) return {};
-        } catch (const std::exception&) {
-        }
-        return "the liquid's volume fraction must be in (0, 1], not " + v;
-      });
+  add_fill_option(cmd, req, false);
   cmd->add_flag("--fields", fields, "also store the mesh and each mode's p and V in /fields, with an XDMF companion "
                                     "FILE.xdmf for ParaView (docs/modes.md, Fields)");
 }
@@ -297,16 +305,31 @@ void check_response_options(const CLI::App& cmd, const ViscousOptions& viscous, 
                              "--sigma ... -o FILE.h5' without --fit or --galerkin");
 }
 
+// A section's fill is cut from its file now, so that a fill it cannot take is refused before any solve.
+void check_section_fill(const TableRequest& req) {
+  if (req.shape.kind != "section") return;
+  try {
+    rc::geometry::free_surface_radius(req.shape, req.fill);
+  } catch (const std::runtime_error& e) {
+    throw CommandLineError(e.what());
+  }
+}
+
+// `cavity-modes response --fill`: R and its offset parts as CSV, ideal or viscous; not yet a response table or --serve.
+void check_response_fill(const TableRequest& req, const ViscousOptions& viscous, const std::string& output) {
+  if (!(req.fill < 1)) return;
+  if (viscous.serve) throw CommandLineError("--fill: not with --serve yet (-o FILE.csv gives R and its offset parts)");
+  if (ends_with(output, ".h5"))
+    throw CommandLineError("--fill: a response table (FILE.h5) of a partially filled tank is not made yet (-o FILE.csv "
+                           "gives R and its offset parts; the damped-mode table takes --fill)");
+  check_section_fill(req);
+}
+
 // --fill below 1: what a partially filled tank's table can be made with so far (docs/modes.md, "Partially filled
 // tanks"); each refusal one line, exit code 2.
 void check_fill(const TableRequest& req, bool viscous_fields, const std::string& method) {
   if (!(req.fill < 1)) return;
-  // A section's fill is cut from its file now, so that a fill it cannot take is refused before any solve.
-  if (req.shape.kind == "section") try {
-      rc::geometry::free_surface_radius(req.shape, req.fill);
-    } catch (const std::runtime_error& e) {
-      throw CommandLineError(e.what());
-    }
+  check_section_fill(req);
   if (viscous_fields) throw CommandLineError("--fill --ekman: not with --fields yet (the ideal --fill table takes it)");
   if (!req.targets.empty()) throw CommandLineError("--fill: not with --target (the targets are the free surface's modes)");
   if (method == "separable" && (req.shape.kind != "cylinder" || req.shape.dims.count("inner_radius")))
@@ -436,6 +459,7 @@ int run_response(const TableRequest& req, const ViscousOptions& viscous, bool is
   r.ekman = is_viscous ? viscous.ekman : 0;
   r.mesh = is_viscous ? viscous_settings.mesh : req.mesh;
   r.separable = !is_viscous && method == "separable";  // auto: forced solves for every shape
+  r.fill = req.fill;
   if (!is_viscous && !r.separable && r.mesh.order == 0) r.mesh.order = 6;
   if (viscous.serve) {
     rc::modes::serve_response(r, std::cin, std::cout);
@@ -461,7 +485,7 @@ int run_response(const TableRequest& req, const ViscousOptions& viscous, bool is
   }
   const auto R = rc::modes::compute_cavity_response(r);
   if (!rc::modes::is_root_rank()) return 0;
-  rc::modes::write_response(output, r.sigmas, R.R, R.method);
+  rc::modes::write_response(output, r.sigmas, R);
   std::cout << "wrote " << output << ": R(sigma) at " << r.sigmas.size() << " frequencies (" << R.method << ")\n";
   return 0;
 }
@@ -543,7 +567,7 @@ int run(int argc, char** argv) {
   for (auto& s : shapes.all()) {
     add_mesh_options(s.app, s.kind, response, req, method);
     add_viscous_options(s.app, viscous, response);
-    if (response) add_response_options(s.app, viscous);
+    if (response) add_response_options(s.app, viscous), add_fill_option(s.app, req, true);
     else add_table_options(s.app, req, fields, cluster_method);
     add_output_option(s.app, response, output);
   }
@@ -564,6 +588,7 @@ int run(int argc, char** argv) {
   const bool is_viscous = table_command->count("--ekman") > 0;
   const auto viscous_settings = resolve_viscous(*table_command, response, is_viscous, viscous, output, req);
   if (!response) check_fill(req, fields && is_viscous, method);
+  else check_response_fill(req, viscous, output);
   choose_method(*table_command, method, fields, req);
 
   int petsc_argc = static_cast<int>(args.petsc.size());

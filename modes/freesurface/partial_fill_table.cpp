@@ -23,10 +23,6 @@
 namespace rc::modes {
 namespace {
 
-// The mesh method's default element size against a filled cavity's (geometry's 1/8 of the smallest dimension, here
-// of the liquid): the dense solver needs few dofs, and order 6 resolves the heavy modes on coarse meshes (docs/modes.md,
-// "Partially filled tanks").
-constexpr double kFreeSurfaceSizeFactor = 3.5;
 constexpr double kRoundingWeight = 1e-12;  // relative to the sum rule
 // The sparse solver's pairs per target: a target's heavy pair may sit among many light ones (the partially filled
 // sphere: 12 found the rigid turn at λ = 1 that 2 missed, measured 2026-11-27).

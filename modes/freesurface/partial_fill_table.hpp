@@ -14,6 +14,12 @@
 
 namespace rc::modes {
 
+// The mesh method's default element size against geometry's default for the liquid's shape: the dense solver needs
+// few dofs, and order 6 resolves the heavy modes on coarse meshes (docs/modes.md, "Partially filled tanks").
+inline constexpr double kFreeSurfaceSizeFactor = 3.5;
+// The dense solver's limit (free_surface_mesh.hpp): beyond it a table takes two levels (free_surface_sparse.hpp).
+inline constexpr int kDenseFreeSurfaceUnknowns = 4000;
+
 // What the table needs of a cavity-modes request (resolved by the driver, app/cavity_table.cpp).
 struct PartialFillTableSettings {
   geometry::ShapeSpec shape;     // separable: a cylinder without an inner rod; mesh: any built-in shape
@@ -22,7 +28,7 @@ struct PartialFillTableSettings {
   ModeSelection selection;       // already validated
   double convergence_tolerance = 1e-6;
   bool check_convergence = true;
-  int max_unknowns = 4000;       // mesh: the dense solver's limit (free_surface_mesh.hpp)
+  int max_unknowns = kDenseFreeSurfaceUnknowns;  // mesh: the dense solver's limit
 };
 
 // Rows are chosen by their largest E about a point within one cavity height of the liquid's centroid,

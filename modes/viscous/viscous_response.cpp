@@ -13,23 +13,23 @@ namespace rc::modes {
 
 namespace {
 
-// π fᵀx for the block form x = a + ib: the coupling vector sits on the real slots only.
-std::complex<double> moment_of(const ViscousForms& forms, Vec x) {
+// π fᵀx for the block form x = a + ib: the coupling vector f sits on the real slots only.
+std::complex<double> moment_of(Vec f, Vec x) {
   MPI_Comm comm;
   petsc_check(PetscObjectGetComm(reinterpret_cast<PetscObject>(x), &comm), "PetscObjectGetComm");
   PetscScalar fa = 0, fb = 0;
-  petsc_check(VecDot(x, forms.coupling, &fa), "VecDot");  // Σ f_j a_j
+  petsc_check(VecDot(x, f, &fa), "VecDot");  // Σ f_j a_j
   // Σ f_j b_j: each pair (a_j, b_j) is local to one rank (viscous_forms.cpp).
   const PetscScalar* xs = nullptr;
   const PetscScalar* fs = nullptr;
   PetscInt lo = 0, hi = 0;
   petsc_check(VecGetOwnershipRange(x, &lo, &hi), "VecGetOwnershipRange");
   petsc_check(VecGetArrayRead(x, &xs), "VecGetArrayRead");
-  petsc_check(VecGetArrayRead(forms.coupling, &fs), "VecGetArrayRead");
+  petsc_check(VecGetArrayRead(f, &fs), "VecGetArrayRead");
   double local = 0;
   for (PetscInt g = lo; g + 1 < hi; g += 2) local += fs[g - lo] * xs[g + 1 - lo];  // pairs never straddle ranks
   petsc_check(VecRestoreArrayRead(x, &xs), "VecRestoreArrayRead");
-  petsc_check(VecRestoreArrayRead(forms.coupling, &fs), "VecRestoreArrayRead");
+  petsc_check(VecRestoreArrayRead(f, &fs), "VecRestoreArrayRead");
   MPI_Allreduce(&local, &fb, 1, MPI_DOUBLE, MPI_SUM, comm);
   return std::numbers::pi * std::complex<double>(fa, fb);
 }
@@ -67,7 +67,20 @@ ForcedResponse::~ForcedResponse() = default;
 std::complex<double> ForcedResponse::operator()(std::complex<double> sigma) {
   state_->solver.factor(sigma);
   state_->solver.solve(state_->forms.coupling, state_->x);
-  return moment_of(state_->forms, state_->x);
+  return moment_of(state_->forms.coupling, state_->x);
+}
+
+OffsetResponse ForcedResponse::with_offset(std::complex<double> sigma) {
+  const ViscousForms& forms = state_->forms;
+  if (!forms.offset_coupling) throw std::logic_error("an offset response needs a free surface's offset coupling");
+  state_->solver.factor(sigma);
+  state_->solver.solve(forms.coupling, state_->x);
+  OffsetResponse r;
+  r.ff = moment_of(forms.coupling, state_->x);
+  r.fg = moment_of(forms.offset_coupling, state_->x);  // the pencil is complex symmetric: gᵀ(σ𝓜 − A)⁻¹f = fᵀ(…)⁻¹g
+  state_->solver.solve(forms.offset_coupling, state_->x);
+  r.gg = moment_of(forms.offset_coupling, state_->x);
+  return r;
 }
 
 std::vector<std::complex<double>> viscous_response(const ViscousForms& forms,

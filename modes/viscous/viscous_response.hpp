@@ -24,6 +24,13 @@ std::vector<std::complex<double>> viscous_response(const ViscousForms& forms,
                                                    const std::vector<std::complex<double>>& sigmas,
                                                    const ResponseProgress& progress = {});
 
+// A partially filled tank's response about a point at height −c below the liquid's centroid (docs/physics.md §2,
+// "Partially filled tanks"): R(c) = R_ff + 2c R_fg + c² R_gg with R_xy = π xᵀ(σ𝓜 − A)⁻¹ y over the coupling f and the
+// offset coupling g of viscous_forms.hpp; near a damped mode λ_c their residues are 2a_c², 2a_c t_c and 2t_c².
+struct OffsetResponse {
+  std::complex<double> ff, fg, gg;
+};
+
 // R(σ) one σ at a time, from one solver object that keeps the pattern and MUMPS's analysis across calls: for
 // callers that choose the next σ from the last answer (a root iteration on Kononov's (22) with the fluid's own
 // response: `cavity-modes response ... --serve`, which chain-rom confirm drives; docs/rom.md, "Confirmed roots").
@@ -35,6 +42,8 @@ class ForcedResponse {
   ForcedResponse(const ForcedResponse&) = delete;
   ForcedResponse& operator=(const ForcedResponse&) = delete;
   std::complex<double> operator()(std::complex<double> sigma);
+  // The three parts at σ (two solves on one factorisation); forms with a free surface only (std::logic_error else).
+  OffsetResponse with_offset(std::complex<double> sigma);
 
  private:
   struct State;

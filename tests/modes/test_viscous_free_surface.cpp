@@ -7,6 +7,7 @@
 #include "taylor_hood_space.hpp"
 #include "viscous_eigensolver.hpp"
 #include "viscous_forms.hpp"
+#include "viscous_response.hpp"
 #include "partial_fill_closed_form.hpp"
 #include "partial_fill_cylinder.hpp"
 #include "separable_cylinder.hpp"
@@ -35,7 +36,7 @@ const cd I(0, 1);
 // The interior elements are half the default's: the contact lines, where the no-slip lids meet the stress-free surface,
 // make λ converge slowly with the element size, even with the mesh refined towards them (docs/viscous.md, "Partially
 // filled tanks").
-ViscousMode partially_filled_mode(double ek, cd target, double size = 0.0625) {
+ViscousForms partially_filled_forms(double ek, double size) {
   const geometry::ShapeSpec cylinder{"cylinder", {{"radius", 1.0}, {"height", 2.0}}, {}};
   const geometry::ShapeSpec liquid = geometry::partially_filled(cylinder, 0.9);
   geometry::MeshOptions o;
@@ -43,7 +44,11 @@ ViscousMode partially_filled_mode(double ek, cd target, double size = 0.0625) {
   o.size = size;
   const TaylorHoodSpace space(geometry::mesh_meridian(liquid, viscous_mesh_defaults(liquid, ek, o)));
   const double zc = integrate_fluid(space.geometry()).centroid_z;
-  const ViscousForms forms = assemble_viscous_forms(space, zc, ek, PETSC_COMM_SELF);
+  return assemble_viscous_forms(space, zc, ek, PETSC_COMM_SELF);
+}
+
+ViscousMode partially_filled_mode(double ek, cd target, double size = 0.0625) {
+  const ViscousForms forms = partially_filled_forms(ek, size);
   ViscousSolveSettings settings;
   settings.pairs = 1;
   return viscous_modes_near(forms, target, settings).front();
@@ -183,4 +188,44 @@ TEST(ViscousFreeSurface, SurfaceWaveOffsetCouplingTendsToTheIdeal) {
               v.lambda.imag(), v.offset.real(), v.offset.imag(), dt, std::sqrt(std::abs(v.residue) / 2));
   EXPECT_LT(dt, 3 * std::sqrt(ek) * 0.1);
   EXPECT_LT(std::abs(v.lambda.real() - wave->lambda), 3 * std::sqrt(ek));
+}
+
+// cavity-modes response --fill --ekman (viscous_response.hpp, OffsetResponse): the forced solves' R_ff, R_fg, R_gg about
+// a damped mode λ_c, by the trapezoid rule on four points of a circle of radius 1e-4 (error of order 1e-16 relative),
+// have the residues the eigensolver gives the mode: E_c, 2 a_c t_c and 2 t_c² — for the heaviest mode (odd about the
+// mid-plane: t = 0) and for the surface wave (even: a = 0), the offset coupling coming only from the response.
+TEST(ViscousFreeSurface, ForcedResponseResiduesAreTheModesCouplings) {
+  const double ek = 1e-3;
+  const ViscousForms forms = partially_filled_forms(ek, 0.125);
+  ForcedResponse response(forms);
+  ViscousSolveSettings settings;
+  settings.pairs = 1;
+  const double b = exact::partial_fill_surface_radius(1.0, 0.9);
+  const PartialFillSpectrum ideal =
+      solve_partially_filled_cylinder(1.0, 2.0, 0.9, SeparableGrid::graded(1.0, 2.0, 8, 6, 12, 2, b));
+  const PartialFillPair* wave = nullptr;  // the surface wave of the test above
+  for (const auto& p : ideal.pairs)
+    if (p.lambda < -2 && (!wave || std::abs(p.coupling.t) > std::abs(wave->coupling.t))) wave = &p;
+  ASSERT_NE(wave, nullptr);
+  for (const cd target : {cd(0.98, 0.05), cd(wave->lambda, 2 * std::sqrt(ek))}) {
+    const ViscousMode m = viscous_modes_near(forms, target, settings).front();
+    const double delta = 1e-4;
+    OffsetResponse res{0, 0, 0};
+    for (const cd u : {cd(1, 0), cd(0, 1), cd(-1, 0), cd(0, -1)}) {
+      const OffsetResponse r = response.with_offset(m.lambda + delta * u);
+      res.ff += delta * u * r.ff / 4.0;
+      res.fg += delta * u * r.fg / 4.0;
+      res.gg += delta * u * r.gg / 4.0;
+    }
+    const double scale = std::abs(m.residue) + 2 * std::norm(m.offset);
+    const double eff = std::abs(res.ff - m.residue) / scale, egg = std::abs(res.gg - 2.0 * m.offset * m.offset) / scale,
+                 efg = std::abs(res.fg * res.fg - res.ff * res.gg) / (scale * scale);
+    std::printf("lambda_c %.9f%+.9fi: residue of R_ff %.4e%+.4ei (E_c %.4e%+.4ei, %.1e), of R_gg %.6e%+.6ei "
+                "(2 t_c^2 %.6e%+.6ei, %.1e), R_fg^2 - R_ff R_gg: %.1e (of the scale %.3g)\n", m.lambda.real(),
+                m.lambda.imag(), res.ff.real(), res.ff.imag(), m.residue.real(), m.residue.imag(), eff, res.gg.real(),
+                res.gg.imag(), (2.0 * m.offset * m.offset).real(), (2.0 * m.offset * m.offset).imag(), egg, efg, scale);
+    EXPECT_LT(eff, 1e-7);
+    EXPECT_LT(egg, 1e-7);
+    EXPECT_LT(efg, 1e-7);
+  }
 }
