@@ -179,6 +179,7 @@ Spectrum compute_spectrum(const ChainModel& m) {
   });
   tally_roots(m, sp);
   set_verdict(m, v, sp);
+  sp.axial = axial_spectrum(m.axial);
   return sp;
 }
 

@@ -33,6 +33,7 @@ struct Root {
 
 struct Spectrum {
   std::vector<Root> roots;     // sorted by Re sigma, then Im sigma
+  AxialSpectrum axial;         // the spins' own roots (axial_rotation.hpp), apart from (26)'s and from the verdict
   double tolerance = 0;        // |Im sigma| <= tolerance counts as real
   bool stable = false;         // no friction: all roots real; friction: no growing root
   double margin = 0;           // largest |Im sigma|; friction or viscous fluid: the largest growth rate

@@ -135,6 +135,12 @@ void write_h5(const ChainModel& m, const History& h, const fs::path& tmp) {
   write_dataset(file.id, "mode_E", E, nm, 0);
   write_dataset(file.id, "mode_lambda", lam, nm, 0);
   if (!m.viscous) write_dataset(file.id, "energy", h.H, N, 0);
+  if (h.spin.size() > 0) {  // axial_rotation.hpp: steps x n, row after row
+    const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> spin = h.spin, angle = h.axial_angle;
+    write_dataset(file.id, "spin", std::vector<double>(spin.data(), spin.data() + spin.size()), N, spin.cols());
+    write_dataset(file.id, "axial_angle", std::vector<double>(angle.data(), angle.data() + angle.size()), N,
+                  angle.cols());
+  }
   if (!h.budget.empty()) {  // energy_budget.hpp
     write_dataset(file.id, "frozen_energy", h.budget.frozen_energy, N, 0);
     write_dataset(file.id, "fluid_power", h.budget.fluid_power, N, 0);
@@ -237,6 +243,12 @@ std::string spectrum_json(const ChainModel& m, const Spectrum& sp) {
   j["outside_fit"] = sp.outside_fit;
   j["unconverged_owners"] = sp.unconverged_owners;
   j["fits_not_passive"] = sp.fits_not_passive;
+  // The spins' own roots (axial_rotation.hpp): sigma = 0 `axial_zeros` times with `axial_jordan_chains` chains of
+  // length 2, then i mu for each friction rate mu > 0.
+  j["axial_roots"] = nlohmann::ordered_json::array();
+  for (const auto& r : sp.axial.roots) j["axial_roots"].push_back({r.real(), r.imag()});
+  j["axial_zeros"] = sp.axial.zeros;
+  j["axial_jordan_chains"] = sp.axial.zeros - sp.axial.zero_eigenvectors;
   // A stable undamped chain's distance to the threshold (rad/s; krein_gap.hpp), null otherwise.
   if (sp.krein.defined) j["krein_gap"] = sp.krein.gap;
   else j["krein_gap"] = nullptr;
@@ -380,6 +392,27 @@ static void print_body_line(std::ostream& os, const ChainModel& m, const Spectru
   os << "\n";
 }
 
+// The spins' own roots, apart from the verdict: σ = 0 is neutral there (a new rest angle, or a new steady spin).
+void print_axial(std::ostream& os, const ChainModel& m, const AxialSpectrum& a) {
+  const int chains = a.zeros - a.zero_eigenvectors;
+  os << "axial rotations (apart from the verdict): sigma = 0 x " << a.zeros << " (" << a.zero_eigenvectors
+     << (a.zero_eigenvectors == 1 ? " rest angle" : " rest angles");
+  if (chains > 0) os << ", " << chains << (chains == 1 ? " Jordan chain" : " Jordan chains") << " of length 2: a uniform "
+                     << "change of spin";
+  os << ")";
+  std::string rates;
+  for (Eigen::Index j = 0; j < a.decay.size(); ++j)
+    if (a.decay[j] > 0) {
+      std::ostringstream r;
+      r << std::setprecision(6) << a.decay[j];
+      rates += (rates.empty() ? "" : ", ") + r.str();
+    }
+  if (!rates.empty()) os << "; the spins' perturbations decay at " << rates << " 1/s (axial friction)";
+  if (m.axial.moment.cwiseAbs().maxCoeff() > 0 || m.axial.harmonic.cwiseAbs().maxCoeff() > 0)
+    os << "; axial moments change the spins (run: /spin)";
+  os << "\n";
+}
+
 void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp, bool all) {
   os << (m.free_chain ? "free" : "fixed") << " chain, " << m.n << " bodies, " << m.n_modes()
      << " fluid modes\n";
@@ -397,6 +430,7 @@ void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp, b
   } else {
     os << verdict_with_dissipation(m, sp) << "\n";
   }
+  print_axial(os, m, sp.axial);
   os << std::setprecision(static_cast<int>(precision));
   print_roots(os, m, sp, all);
   os << std::setprecision(6);

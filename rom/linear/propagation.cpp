@@ -326,6 +326,11 @@ History propagate(const ChainModel& m, const Scene& scene) {
   else if (method == "gauss") run_gauss(f, y_free, h, steps, rho, scene.run, rec, hist);
   else run_rk45(f, y_free, h, steps, scene.run, rec, hist);
   rec.finish(steps);
+  if (m.axial.moves()) {
+    const AxialHistory axial = axial_history(m.axial, hist.t);
+    hist.spin = axial.spin;
+    hist.axial_angle = axial.angle;
+  }
   hist.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   timespec cpu1{};
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &cpu1);

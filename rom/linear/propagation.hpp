@@ -30,6 +30,8 @@ struct History {
   EnergyBalance balance;    // with viscous tanks whose fluid holds an energy (Galerkin tanks, one spin): H and its
                             // dissipation (galerkin_energy.hpp); empty otherwise
   bool forced = false;      // external moments (forced_solution.hpp): H is then not an integral
+  // The spins' own motion (axial_rotation.hpp), when axial friction or moments move them: steps x n, else empty.
+  Eigen::MatrixXd spin, axial_angle;
   std::string method_used;  // what actually ran
   double max_energy_drift = 0;  // max |H - H0| / scale(0) (undamped) or max increase (damped)
   double wall_seconds = 0;

@@ -228,17 +228,16 @@ const rc::ModeTable& TableCache::get(const std::filesystem::path& file) {
 
 namespace {
 
-// What only the nonlinear model has: the linear system (26) needs axisymmetric bodies and constant spins.
+// What only the nonlinear model has: the linear system (26) needs axisymmetric bodies; the spins' own motion (axial
+// friction and moments) is its separate block (axial_rotation.hpp).
 void require_linear_scene(const Scene& scene) {
   for (std::size_t k = 0; k < scene.size(); ++k) {
     const BodySpec& b = scene.bodies[k];
     if (b.B && *b.B != b.A)
       fail(scene, "body[" + std::to_string(k + 1) + "].B", "differs from A: the linearised chain (26) needs "
            "axisymmetric bodies; only [run] model = \"nonlinear\" takes B != A");
-    // Transverse moments are the forced (26) (forced_solution.hpp); axial ones change the spins (26) holds constant.
-    if (b.moment && (b.moment->axial != 0 || b.moment->space[2] != 0 || b.moment->harmonic[2] != 0))
-      fail(scene, "body[" + std::to_string(k + 1) + "].moment", "an axial part (axial, or a z component) changes the "
-           "spins, which the linearised chain (26) holds constant; only [run] model = \"nonlinear\" takes it");
+    // Transverse moments are the forced (26) (forced_solution.hpp); axial ones drive the spins' own states
+    // (axial_rotation.hpp).
     if (b.aero && scene.free_chain)
       fail(scene, "body[" + std::to_string(k + 1) + "].aero", "aerodynamic moments on a free chain are not modelled "
            "yet: a projectile is one body about its centre of mass (a fixed chain of one body, docs/rom.md)");
@@ -246,13 +245,6 @@ void require_linear_scene(const Scene& scene) {
       fail(scene, "body[" + std::to_string(k + 1) + "].moment", "external moments on a free chain are in the "
            "nonlinear model only ([run] model = \"nonlinear\")");
   }
-  for (std::size_t k = 0; k < scene.joints.size(); ++k)
-    if (scene.joints[k].axial_friction > 0)
-      fail(scene, "joint[" + std::to_string(k + 1) + "].axial_friction", "changes the spins, which the linearised "
-           "chain (26) holds constant; only [run] model = \"nonlinear\" takes it");
-  if (scene.support_axial_friction > 0)
-    fail(scene, "support.axial_friction", "changes the spins, which the linearised chain (26) holds constant; only "
-         "[run] model = \"nonlinear\" takes it");
 }
 
 }  // namespace
@@ -406,6 +398,9 @@ ChainModel build_model(const Scene& scene, TableCache* tables, bool linear_keys_
   for (int k = 0; k < cm.n; ++k) cm.bodies.push_back(body_model(scene, k, tables, linear_keys_only, cm.modes));
   set_inertia(scene, cm);
   set_stiffness_friction_gyro(scene, cm);
+  std::vector<double> axial_inertia;
+  for (const BodyModel& b : cm.bodies) axial_inertia.push_back(b.C);
+  cm.axial = axial_chain(scene, axial_inertia);
   // Scene values that are each in range can still overflow together (mass 1e308 times com times g): the
   // matrices of (26) must be finite before any solver sees them.
   if (!cm.M.allFinite() || !cm.K.allFinite() || !cm.D.allFinite() || !cm.G.allFinite())

@@ -3,6 +3,7 @@
 // (docs/free-chain.md), with elastic joints (27) and joint friction (Batyr (43)).
 #pragma once
 
+#include "axial_rotation.hpp"
 #include "mode_table.hpp"
 #include "scene.hpp"
 
@@ -77,6 +78,7 @@ struct ChainModel {
   Eigen::MatrixXd M_eff; // M - diag(sum_l E_kl + E_rem_k): inertia seen by u-double-dot (its real part)
   Eigen::VectorXd M_eff_imag;  // -Im(sum_l E_kl + E_rem_k) per body: 0 for ideal tables and with static_correction
   bool viscous = false;  // some cavity has a viscous table (complex lambda_kl, E_kl)
+  AxialChain axial;      // the spins' own block (axial_rotation.hpp): decoupled from (26) at first order
   int size() const { return n; }
   int n_modes() const { return static_cast<int>(modes.size()); }
   bool has_friction() const { return D.cwiseAbs().maxCoeff() > 0; }

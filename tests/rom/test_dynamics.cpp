@@ -219,3 +219,35 @@ TEST(Energy, StaticCorrectionRestoresZhukovskyInertiaAtZeroSpin) {
   EXPECT_LT(err, 1e-12);
   EXPECT_GT(err_bare, 1e-6);  // the correction matters
 }
+
+// Batyr's Property 7 on his three pendulums with fluid at w = 0: without friction the tilts' spectrum is purely
+// imaginary in his λ (real in our σ) and, with the fluid as Zhukovsky's inertia, σ = ±√μ_k with μ_k the eigenvalues of
+// M_eff⁻¹K (Batyr (87), C11⁻¹ᐟ²B1C11⁻¹ᐟ² restricted to the tilts); the axial rotations add σ = 0 six times with three
+// Jordan chains of length two (axial_rotation.hpp). Property 11 (the root vectors form a basis): the tilt roots are
+// simple, so the companion matrix is diagonalisable there.
+TEST(Batyr, PropertySevenWithoutFriction) {
+  const ChainModel m = model_of(scene_text(batyr_bodies(true), {{0, 0}, {0, 0}}, 9.81, false, 0));
+  const Spectrum sp = compute_spectrum(m);
+  const auto tilts = tilt_roots(sp, m.n_modes(), sp.tolerance);
+  ASSERT_EQ(tilts.size(), 6u);
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> ge(m.K, m.M_eff);
+  double worst = 0, imag = 0, gap = 1e300;
+  for (const cd s : tilts) {
+    double nearest = 1e300;
+    for (Eigen::Index k = 0; k < ge.eigenvalues().size(); ++k)
+      nearest = std::min(nearest, std::abs(std::abs(s.real()) - std::sqrt(ge.eigenvalues()[k])));
+    worst = std::max(worst, nearest);
+    imag = std::max(imag, std::abs(s.imag()));
+    for (const cd t : tilts)
+      if (t != s) gap = std::min(gap, std::abs(t - s));
+  }
+  std::printf("  tilt roots: largest |Im sigma| %.1e; against (87) +-sqrt(eig(M_eff^-1 K)) %.1e rad/s; closest pair "
+              "%.3g rad/s apart (simple roots); axial: sigma = 0 x %d with %d Jordan chains\n", imag, worst, gap,
+              sp.axial.zeros, sp.axial.zeros - sp.axial.zero_eigenvectors);
+  EXPECT_LT(imag, sp.tolerance);
+  EXPECT_LT(worst, 1e-9 * std::sqrt(ge.eigenvalues().maxCoeff()));
+  EXPECT_GT(gap, 1e-3);
+  EXPECT_TRUE(sp.stable);
+  EXPECT_EQ(sp.axial.zeros, 6);
+  EXPECT_EQ(sp.axial.zeros - sp.axial.zero_eigenvectors, 3);
+}

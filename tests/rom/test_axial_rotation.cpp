@@ -1,0 +1,111 @@
+// The spins' own block of the linear chain (rom/model/axial_rotation.hpp): its roots against Batyr's Lemma 1 and
+// Properties 1, 7 and 10 (the zero root's multiplicity and Jordan chains, measured on the first-order matrix by rank),
+// the friction rates against an independent generalised eigen-solve, and the closed-form spins against the nonlinear
+// chain's. Every comparison prints its figure.
+#include "axial_rotation.hpp"
+#include "chain_model.hpp"
+#include "nonlinear_run.hpp"
+#include "propagation.hpp"
+#include "scene.hpp"
+#include "spectrum.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+using namespace rc::rom;
+
+namespace {
+
+// Three bodies; `support` and `joint` axial frictions (N m s), axial moments on the last body.
+std::string three_bodies(double support, double joint, double moment, double harmonic, const std::string& run) {
+  const auto num = [](double x) { return std::to_string(x); };
+  return "[system]\nkind = \"fixed\"\ngravity = 9.81\n[support]\nfriction = 0.05\naxial_friction = " + num(support) +
+         "\n[[body]]\nmass = 2.0\nA = 0.05\nC = 0.03\ncom = -0.1\nnext_joint = -0.2\nspin = 30.0\n"
+         "[[body]]\nmass = 1.5\nA = 0.03\nC = 0.02\ncom = -0.1\nnext_joint = -0.2\nspin = 25.0\n"
+         "[[body]]\nmass = 1.0\nA = 0.02\nC = 0.01\ncom = -0.1\nspin = 20.0\n"
+         "[body.moment]\naxial = " + num(moment) + "\nharmonic = [0.0, 0.0, " + num(harmonic) + "]\nfrequency = 0.5\n"
+         "[[joint]]\nfriction = 0.01\naxial_friction = " + num(joint) + "\n[[joint]]\nfriction = 0.01\naxial_friction = " +
+         num(joint) + "\n" + run;
+}
+
+// rank of the first-order matrix of the axial block [[0, I], [0, −C⁻¹D]] and of its square: the zero root's
+// eigenvectors are 2n − rank(A), its Jordan chains of length two rank(A) − rank(A²).
+std::pair<int, int> ranks(const AxialChain& a) {
+  const int n = static_cast<int>(a.C.size());
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+  A.topRightCorner(n, n).setIdentity();
+  A.bottomRightCorner(n, n) = -(a.C.cwiseInverse().asDiagonal() * a.D);
+  const auto rank = [](const Eigen::MatrixXd& M) {
+    Eigen::FullPivLU<Eigen::MatrixXd> lu(M);
+    lu.setThreshold(1e-10);
+    return static_cast<int>(lu.rank());
+  };
+  return {rank(A), rank(A * A)};
+}
+
+}  // namespace
+
+// Batyr's Property 7 (no friction: σ = 0 2n-fold with n chains), Property 1 / Theorem 6 (friction to the support:
+// σ = 0 n-fold, no chain, and n positive rates), and a chain without the support's friction (the common rotation
+// keeps one chain).
+TEST(AxialRotation, ZeroRootsAndRatesAreBatyrs) {
+  struct Case {
+    double support, joint;
+    int zeros, chains;
+  };
+  for (const Case c : {Case{0, 0, 6, 3}, Case{0.02, 0.004, 3, 0}, Case{0, 0.004, 4, 1}}) {
+    const ChainModel m = build_model(parse_scene_text(three_bodies(c.support, c.joint, 0, 0, ""), ".", "axial"));
+    const AxialSpectrum s = axial_spectrum(m.axial);
+    const auto [r1, r2] = ranks(m.axial);
+    const int n = 3, eigenvectors = 2 * n - r1, chains = r1 - r2;
+    std::printf("support %.3f, joints %.3f: sigma = 0 x %d, %d eigenvectors, %d Jordan chains (ranks of A, A^2: %d, "
+                "%d: %d eigenvectors, %d chains)\n", c.support, c.joint, s.zeros, s.zero_eigenvectors,
+                s.zeros - s.zero_eigenvectors, r1, r2, eigenvectors, chains);
+    EXPECT_EQ(s.zeros, c.zeros);
+    EXPECT_EQ(s.zeros - s.zero_eigenvectors, c.chains);
+    EXPECT_EQ(eigenvectors, s.zero_eigenvectors);
+    EXPECT_EQ(chains, c.chains);
+    EXPECT_EQ(s.roots.size(), 6u);
+    // The rates: the generalised eigenvalues of (D, C), independently.
+    const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> ge(m.axial.D, Eigen::MatrixXd(m.axial.C.asDiagonal()));
+    double worst = 0;
+    for (int j = 0; j < n; ++j) worst = std::max(worst, std::abs(ge.eigenvalues()[j] - s.decay[j]));
+    std::printf("  rates %.9g %.9g %.9g 1/s, against the generalised eigen-solve: %.1e\n", s.decay[0], s.decay[1],
+                s.decay[2], worst);
+    EXPECT_LT(worst, 1e-12 * std::max(1.0, ge.eigenvalues().maxCoeff()));
+  }
+}
+
+// The linear run's spins (closed form) against the nonlinear chain's at a small tilt: axial friction to the support
+// and between the bodies, a constant and a harmonic axial moment on the top body. At zero tilt the two are the same
+// equations (the nonlinear chain's only to its integrator's tolerance); a tilt of 1e-3 rad changes them at second order.
+TEST(AxialRotation, SpinsAreTheNonlinearChains) {
+  const std::string run = "[initial]\ntilt = [[0.001, -0.0005], [0.0, 0.0], [0.0, 0.0]]\n"
+                          "[run]\nt_end = 5.0\noutput_step = 0.01\ntolerance = 1e-11\n";
+  const Scene s = parse_scene_text(three_bodies(0.02, 0.004, 0.01, 0.005, run), ".", "axial");
+  const History linear = propagate(build_model(s), s);
+  const Scene sn = parse_scene_text(three_bodies(0.02, 0.004, 0.01, 0.005, run + "model = \"nonlinear\"\n"), ".", "nl");
+  const NonlinearChain chain = nonlinear_chain(sn);
+  const NonlinearHistory nl = integrate_nonlinear(chain, nonlinear_initial_state(sn, chain), sn.run);
+  ASSERT_EQ(linear.spin.rows(), static_cast<Eigen::Index>(nl.base.t.size()));
+  double diff = 0, change = 0;
+  for (Eigen::Index j = 0; j < linear.spin.rows(); ++j)
+    for (int k = 0; k < 3; ++k) {
+      diff = std::max(diff, std::abs(linear.spin(j, k) - nl.spins[j * 3 + k]));
+      change = std::max(change, std::abs(linear.spin(j, k) - linear.spin(0, k)));
+    }
+  std::printf("spins over 5 s: largest change %.4f rad/s; linear closed form against the nonlinear chain %.2e rad/s "
+              "(%.1e of the change)\n", change, diff, diff / change);
+  EXPECT_GT(change, 0.5);
+  EXPECT_LT(diff, 1e-6 * change);
+  // ψ is the integral of ω − ω0: its last value against the trapezoid sum of the spins.
+  double integral = 0;
+  for (Eigen::Index j = 1; j < linear.spin.rows(); ++j)
+    integral += 0.5 * 0.01 * (linear.spin(j, 2) + linear.spin(j - 1, 2) - 2 * 20.0);
+  const double last = linear.axial_angle(linear.spin.rows() - 1, 2);
+  std::printf("top body's angle gained: %.9f rad (trapezoid sum of its spin %.9f)\n", last, integral);
+  EXPECT_NEAR(last, integral, 1e-4 * std::abs(last));
+}
