@@ -67,6 +67,9 @@ void stderr_on_root(const std::string& line) {
   if (is_root_rank()) std::cerr << line << "\n";
 }
 
+// The ideal response sums over every pair: the dense solver only, up to its own limit (free_surface_mesh.hpp).
+constexpr int kDenseResponseUnknowns = 4000;
+
 // A partially filled tank's ideal response: the sums over EVERY pair (the separable cylinder's, or the mesh method's
 // dense solver) of 2a²/(σ − λ), 2at/(σ − λ), 2t²/(σ − λ) (free_surface_coupling.hpp).
 CavityResponse partially_filled_ideal_response(const ResponseRequest& req) {
@@ -82,7 +85,7 @@ CavityResponse partially_filled_ideal_response(const ResponseRequest& req) {
   } else {
     geometry::MeshOptions mesh = req.mesh;
     if (mesh.size == 0) mesh.size = geometry::default_mesh_size(liquid) * kFreeSurfaceSizeFactor;
-    s = solve_partially_filled_mesh(FESpace(geometry::mesh_meridian(liquid, mesh)), kDenseFreeSurfaceUnknowns);
+    s = solve_partially_filled_mesh(FESpace(geometry::mesh_meridian(liquid, mesh)), kDenseResponseUnknowns);
   }
   CavityResponse out;
   for (const auto sigma : req.sigmas) {

@@ -58,7 +58,7 @@ void configure(PEP pep, double target, int nev) {
 
 // The converged pairs of one target, each checked real.
 std::vector<PartialFillPair> pairs_near(const FreeSurfaceQuadratic& f, Mat mats[3], double target, int nev,
-                                        bool keep_pressure, int& skipped) {
+                                        bool keep_pressure, int& skipped, int& short_targets) {
   PPEP pep;
   petsc_check(PEPCreate(PETSC_COMM_SELF, pep.out()), "PEPCreate");
   petsc_check(PEPSetOperators(pep, 3, mats), "PEPSetOperators");
@@ -69,9 +69,12 @@ std::vector<PartialFillPair> pairs_near(const FreeSurfaceQuadratic& f, Mat mats[
   petsc_check(PEPGetConvergedReason(pep, &reason), "PEPGetConvergedReason");
   PetscInt nconv = 0;
   petsc_check(PEPGetConverged(pep, &nconv), "PEPGetConverged");
-  if (reason < 0 || nconv < nev)
-    throw std::runtime_error(fmt::format("free surface: the sparse eigensolver converged {} of {} pairs at {:.6g} "
-                                         "(SLEPc reason {})", nconv, nev, target, static_cast<int>(reason)));
+  // Shift-and-invert converges the pairs nearest the target first: short of nev (a cluster beyond them, like the
+  // accumulation of surface waves at λ → −2, measured 2026-11-27: 4 of 16), the converged ones stand, counted.
+  if (nconv < 1)
+    throw std::runtime_error(fmt::format("free surface: the sparse eigensolver converged no pair at {:.6g} (SLEPc "
+                                         "reason {})", target, static_cast<int>(reason)));
+  if (nconv < nev) ++short_targets;
   PVec xr, xi;
   petsc_check(MatCreateVecs(mats[0], xr.out(), nullptr), "MatCreateVecs");
   petsc_check(VecDuplicate(xr, xi.out()), "VecDuplicate");
@@ -120,7 +123,7 @@ PartialFillSpectrum solve_partially_filled_near(const FESpace& space, const std:
   std::array<PMat, 3> P{to_petsc(A[0]), to_petsc(A[1]), to_petsc(A[2])};
   Mat mats[3] = {P[0], P[1], P[2]};
   for (const double target : targets) {
-    for (auto& p : pairs_near(f, mats, target, per_target, keep_pressure, out.skipped))
+    for (auto& p : pairs_near(f, mats, target, per_target, keep_pressure, out.skipped, out.short_targets))
       if (!already_found(out.pairs, p)) out.pairs.push_back(std::move(p));
     progress_tick();
   }

@@ -14,7 +14,7 @@ namespace rc::modes {
 // The unknowns of the quadratic on this mesh: pressure dofs and one per free-surface dof.
 long free_surface_unknowns(const FESpace& space);
 
-// Up to `per_target` pairs nearest each target (real frequencies, ω0 = 1), pairs found from two targets kept once,
+// Up to `per_target` pairs nearest each target (fewer where SLEPc converged fewer: counted in short_targets) (real frequencies, ω0 = 1), pairs found from two targets kept once,
 // sorted by E descending. Throws std::runtime_error when SLEPc fails or does not converge, or returns an eigenvalue
 // with |Im λ| above 1e-4 max(1, |λ|) (the problem is self-adjoint with positive energy); below it, a near-double real
 // eigenvalue split by rounding, counted in `skipped` and not kept. With keep_pressure each pair keeps its eigenvector.

@@ -30,6 +30,7 @@ struct PartialFillSpectrum {
   double sum_E = 0;           // Σ E over every pair (over the pairs found when not complete)
   bool complete = true;       // every eigenpair (the dense and separable solvers); false: the sparse solver's
   int skipped = 0;            // sparse: near-double eigenvalues returned as complex pairs, not kept
+  int short_targets = 0;      // sparse: targets where fewer pairs than asked converged (the nearest ones stand)
   int radial_dofs = 0, axial_dofs = 0;
   int order = 0, radial_elements = 0, axial_elements = 0;
   std::vector<PartialFillPair> pairs;  // every eigenpair of every coupled axial vector, E descending

@@ -169,9 +169,11 @@ class MeshSpectra {
     std::vector<double> targets;
     for (const Candidate& k : kept_rows(req_, coarse, selection_height(req_, coarse))) targets.push_back(k.pair->lambda);
     PartialFillSpectrum s = solve_partially_filled_near(space, targets, kPairsPerTarget, keep_pressure);
-    say(fmt::format("{} pairs near {} targets (mesh size {:g}, sparse), their sum of E {:.4f} of the sum rule{}",
+    say(fmt::format("{} pairs near {} targets (mesh size {:g}, sparse), their sum of E {:.4f} of the sum rule{}{}",
                     s.pairs.size(), targets.size(), o.size, s.sum_E / s.sum_rule,
-                    s.skipped ? fmt::format("; {} near-double eigenvalues returned complex, not kept", s.skipped) : ""));
+                    s.skipped ? fmt::format("; {} near-double eigenvalues returned complex, not kept", s.skipped) : "",
+                    s.short_targets ? fmt::format("; at {} targets fewer than {} pairs converged (the nearest kept)",
+                                                  s.short_targets, kPairsPerTarget) : ""));
     return s;
   }
 
