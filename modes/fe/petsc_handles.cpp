@@ -60,6 +60,20 @@ PetscSession::~PetscSession() {
 
 namespace rc::modes {
 
+ST pep_shift_invert_mumps(PEP pep, PCType pc_type) {
+  ST st;
+  KSP ksp;
+  PC pc;
+  petsc_check(PEPGetST(pep, &st), "PEPGetST");
+  petsc_check(STSetType(st, STSINVERT), "STSetType");
+  petsc_check(STGetKSP(st, &ksp), "STGetKSP");
+  petsc_check(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
+  petsc_check(KSPGetPC(ksp, &pc), "KSPGetPC");
+  petsc_check(PCSetType(pc, pc_type), "PCSetType");
+  petsc_check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
+  return st;
+}
+
 bool is_root_rank() {
   PetscBool initialised = PETSC_FALSE;
   PetscInitialized(&initialised);

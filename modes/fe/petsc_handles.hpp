@@ -40,6 +40,10 @@ using PVec = PetscHandle<Vec, VecDestroy>;
 using PKSP = PetscHandle<KSP, KSPDestroy>;
 using PPEP = PetscHandle<PEP, PEPDestroy>;
 
+// A polynomial eigensolver's spectral transformation: shift-and-invert, each shift's matrix factorised once by MUMPS
+// (pc_type PCLU or PCCHOLESKY), no Krylov iterations around the factorisation. Returns the ST for further settings.
+ST pep_shift_invert_mumps(PEP pep, PCType pc_type);
+
 // True on rank 0 of PETSC_COMM_WORLD: the rank that prints and writes. When PETSc is not initialised, the rank an
 // MPI launcher gave the process (OMPI_COMM_WORLD_RANK, PMIX_RANK, PMI_RANK) is 0, or there is none.
 bool is_root_rank();

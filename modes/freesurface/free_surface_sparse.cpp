@@ -43,17 +43,8 @@ void configure(PEP pep, double target, int nev) {
   petsc_check(PEPSetWhichEigenpairs(pep, PEP_TARGET_MAGNITUDE), "PEPSetWhichEigenpairs");
   petsc_check(PEPSetDimensions(pep, nev, 4 * nev, PETSC_DEFAULT), "PEPSetDimensions");
   petsc_check(PEPSetTolerances(pep, kTolerance, PETSC_DEFAULT), "PEPSetTolerances");
-  ST st;
-  KSP ksp;
-  PC pc;
-  petsc_check(PEPGetST(pep, &st), "PEPGetST");
-  petsc_check(STSetType(st, STSINVERT), "STSetType");
+  const ST st = pep_shift_invert_mumps(pep, PCLU);
   petsc_check(STSetMatStructure(st, DIFFERENT_NONZERO_PATTERN), "STSetMatStructure");
-  petsc_check(STGetKSP(st, &ksp), "STGetKSP");
-  petsc_check(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
-  petsc_check(KSPGetPC(ksp, &pc), "KSPGetPC");
-  petsc_check(PCSetType(pc, PCLU), "PCSetType");
-  petsc_check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
 }
 
 // The converged pairs of one target, each checked real.

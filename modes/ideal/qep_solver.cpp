@@ -25,16 +25,7 @@ void configure_slicing(PEP pep, double lo, double hi) {
   petsc_check(PEPSetType(pep, PEPSTOAR), "PEPSetType");
   petsc_check(PEPSetWhichEigenpairs(pep, PEP_ALL), "PEPSetWhichEigenpairs");
   petsc_check(PEPSetInterval(pep, lo, hi), "PEPSetInterval");
-  ST st;
-  KSP ksp;
-  PC pc;
-  petsc_check(PEPGetST(pep, &st), "PEPGetST");
-  petsc_check(STSetType(st, STSINVERT), "STSetType");
-  petsc_check(STGetKSP(st, &ksp), "STGetKSP");
-  petsc_check(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
-  petsc_check(KSPGetPC(ksp, &pc), "KSPGetPC");
-  petsc_check(PCSetType(pc, PCCHOLESKY), "PCSetType");
-  petsc_check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
+  pep_shift_invert_mumps(pep, PCCHOLESKY);
   // MUMPS must compute the inertia of the factorised matrix: no ScaLAPACK root node (ICNTL(13) = 1).
   petsc_check(PetscOptionsInsertString(nullptr, "-mat_mumps_icntl_13 1"), "PetscOptionsInsertString");
 }

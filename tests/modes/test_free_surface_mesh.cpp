@@ -92,7 +92,7 @@ TEST(FreeSurfaceMesh, CylinderIsStewartsonsClosedForm) {
 // closed form for the liquid b < r, r² + z² < 1 (u = √(1 − b²)): A_f = π ∫∫ (r² + 2z²) r dr dz, K2 = (2/3)π b² u³.
 TEST(FreeSurfaceMesh, SphereTurnsRigidlyAboutATiltedAxis) {
   const geometry::ShapeSpec sphere{"sphere", {{"radius", 1.0}}, {}};
-  for (const auto [fill, size] : {std::pair{0.4, 0.2}, std::pair{0.8, 0.3}}) {
+  for (const auto& [fill, size] : {std::pair{0.4, 0.2}, std::pair{0.8, 0.3}}) {
     const PartialFillSpectrum s = mesh_spectrum(sphere, fill, 6, size);
     const double b = s.surface_radius, u = std::sqrt(1 - b * b), pi = std::acos(-1.0);
     // ∫_{-u}^{u} ∫_b^{√(1−z²)} (r² + 2z²) r dr dz = ∫ [((1 − z²)² − b⁴)/4 + z²(1 − z² − b²)] dz.
@@ -164,7 +164,7 @@ TEST(FreeSurfaceMesh, ConeSumRuleAboutThreePoints) {
 // method's eigenvalues at its defaults (order 6, 3.5 × geometry's default size), for two of the table's cases (fill 0.98,
 // 2h/a = 3, 1075 dofs, measured 1.1e-7: docs/modes.md, "Partially filled tanks").
 TEST(FreeSurfaceMesh, DefaultMeshGivesStewartsonsFrequencies) {
-  for (const auto [fill, height] : {std::pair{0.8, 1.0}, std::pair{0.9, 2.0}}) {
+  for (const auto& [fill, height] : {std::pair{0.8, 1.0}, std::pair{0.9, 2.0}}) {
     const geometry::ShapeSpec cylinder{"cylinder", {{"radius", 1.0}, {"height", height}}, {}};
     const geometry::ShapeSpec liquid = geometry::partially_filled(cylinder, fill);
     const PartialFillSpectrum s = mesh_spectrum(cylinder, fill, 6, 3.5 * geometry::default_mesh_size(liquid));
