@@ -18,9 +18,9 @@ namespace rc::modes {
 // few dofs, and order 6 resolves the heavy modes on coarse meshes (docs/modes.md, "Partially filled tanks").
 inline constexpr double kFreeSurfaceSizeFactor = 3.5;
 // The dense solver's limit in a table (free_surface_mesh.hpp): beyond it two levels (free_surface_sparse.hpp). Every
-// default mesh stays below it (the largest measured: 1345 unknowns, the annulus section), so a default table keeps
+// default mesh measured stays below it (the largest of nine: 1364 unknowns, the annulus section), so a default table keeps
 // every pair and its sum rule; above it the dense solve's cube costs more than the levels (measured 2026-11-27, the
-// fill 0.9 cylinder at 2365 dofs: 93 s dense; docs/benchmarks.md, "Partially filled tanks").
+// fill 0.9 cylinder at 2365 dofs: 93 s dense; docs/benchmarks.md, "Partially filled tanks: dense and two-level solvers").
 inline constexpr int kDenseFreeSurfaceUnknowns = 1500;
 
 // What the table needs of a cavity-modes request (resolved by the driver, app/cavity_table.cpp).
