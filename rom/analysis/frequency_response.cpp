@@ -16,7 +16,7 @@ Eigen::MatrixXcd dynamic_stiffness(const ChainModel& m, cd sigma) {
     Z(k, k) += -sigma * m.G[k] + sigma * sigma * cd(m.bodies[k].E_rem, m.bodies[k].E_rem_imag);
   for (const auto& md : m.modes) {
     const double w0 = m.bodies[md.body].omega;
-    Z(md.body, md.body) += sigma * sigma * (sigma + w0) * md.E_c() / (sigma + w0 - md.lambda_c());
+    add_mode_term(Z, md, sigma * sigma * (sigma + w0) * md.E_c() / (sigma + w0 - md.lambda_c()));
   }
   return Z;
 }

@@ -186,6 +186,13 @@ TrackedRoots track_roots(const ChainModel& m, const Eigen::VectorXcd& start, dou
     t.why = "more than " + std::to_string(CharacteristicLogDerivative::kMaxBodies) + " bodies";
     return t;
   }
+  // Its pole sums run row by row; a mode coupled to several bodies (a partially filled tank whose joint moves) is off
+  // the diagonal: the eigen-solver takes such a point.
+  for (const FluidMode& md : m.modes)
+    if (!md.lever.empty()) {
+      t.why = "a fluid mode coupled to several bodies";
+      return t;
+    }
   const CharacteristicLogDerivative logd(m);
   if (start.size() != logd.degree()) {
     t.why = "the number of roots changed";

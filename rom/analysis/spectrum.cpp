@@ -100,7 +100,7 @@ Root root_of(const ChainModel& m, const ComplexEigen& es, int j, double radius, 
   for (int l = 0; l < m.n_modes(); ++l) {
     const FluidMode& md = m.modes[l];
     ++count[md.body];
-    const double wgt = std::abs(md.E_c()) * std::norm(y[2 * n + l] - y[n + md.body]);
+    const double wgt = std::abs(md.E_c()) * std::norm(y[2 * n + l] - coupled(md, Eigen::VectorXcd(y.segment(n, n))));
     if (wgt > best) {
       best = wgt;
       r.owner = "fluid " + std::to_string(md.body + 1) + "." + std::to_string(count[md.body]);

@@ -367,7 +367,7 @@ static void print_body_line(std::ostream& os, const ChainModel& m, const Spectru
        << (b.E_rem > 0 ? ", static correction " + std::to_string(b.E_rem) : std::string());
   if (b.free_surface)
     os << ", partially filled (free surface; its static inertia K = " << b.K_free_surface << " in A', couplings about "
-       << "the joint)";
+       << "the joint" << (k > 0 ? ", and through t to the earlier bodies' tilts that move the joint" : "") << ")";
   if (b.static_moment > 0)  // gyroscopic stability factor of linear aeroballistics: > 1 to hold the overturning moment
     os << ", overturning moment " << b.static_moment << " N m/rad (gyroscopic stability factor S_g = C^2 w^2/(4 A' M) = "
        << b.C * b.C * b.omega * b.omega / (4 * m.M(k, k) * b.static_moment) << ")";

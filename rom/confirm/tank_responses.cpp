@@ -38,6 +38,11 @@ TankResponses serve_tanks(const Scene& scene, const ChainModel& m, const std::st
     // (at most the served Ek: the table's recorded Ek may round below the sweep's least)
     const double mesh_ek = std::min(ekman, static_cast<std::size_t>(k) < mesh_ekman.size()
                                                ? mesh_ekman[static_cast<std::size_t>(k)] : 0.0);
+    // Its response about the joint is R + 2cR_fg + c²R_gg (docs/viscous.md, "The response of a partially filled tank"),
+    // which cavity-modes gives as CSV but does not serve: confirming with the filled cavity's R would be wrong.
+    if (m.bodies[k].free_surface)
+      throw SceneError("body[" + std::to_string(k + 1) + "].cavity.table " + cav.table.string() + ": confirm does not "
+                       "take a partially filled tank yet (cavity-modes response --fill gives its response as CSV)");
     std::vector<std::string> args;
     try {
       args = serve_arguments(table, scratch, ekman, mesh_ek);

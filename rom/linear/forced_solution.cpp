@@ -16,8 +16,7 @@ cd complex_moment(const std::array<double, 3>& v) { return {v[1], v[0]}; }
 
 // The first-order forcing (0, M_eff⁻¹ F, 0) of a moment vector over the bodies (balanced state: the u̇ block).
 Eigen::VectorXcd forcing(const ChainModel& m, const FirstOrderSystem& f, const Eigen::VectorXcd& F) {
-  Eigen::MatrixXcd Meff = m.M_eff.cast<cd>();
-  for (int k = 0; k < m.n; ++k) Meff(k, k) += cd(0, m.M_eff_imag[k]);
+  const Eigen::MatrixXcd Meff = m.M_eff.cast<cd>() + cd(0, 1) * m.M_eff_imag.cast<cd>();
   Eigen::VectorXcd y = Eigen::VectorXcd::Zero(f.dim());
   y.segment(m.n, m.n) = Meff.partialPivLu().solve(F);
   return y;

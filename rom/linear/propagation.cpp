@@ -154,7 +154,7 @@ class Recorder {
     f_.from_state(m_, y, u, v, w);
     hist_.t[j] = j * h_;
     hist_.u.row(j) = u.transpose();
-    for (int l = 0; l < nm_; ++l) hist_.z(j, l) = w[l] - v[m_.modes[l].body];
+    for (int l = 0; l < nm_; ++l) hist_.z(j, l) = w[l] - coupled(m_.modes[l], v);
     const Energy e = meter_(u, v, w);
     hist_.H[j] = e.total();
     hist_.H_scale[j] = e.scale();
@@ -200,9 +200,9 @@ class Recorder {
       const long j = j0 + i;
       hist_.t[j] = j * h_;
       for (int k = 0; k < n_; ++k) hist_.u(j, k) = cd(re(k, i) * is, im(k, i) * is);
-      for (int l = 0; l < nm_; ++l) {
-        const int v = n_ + m_.modes[l].body;  // z = w - u-dot of the mode's body
-        hist_.z(j, l) = cd(re(2 * n_ + l, i) - re(v, i), im(2 * n_ + l, i) - im(v, i));
+      for (int l = 0; l < nm_; ++l) {  // z = w - w_rowᵀ u-dot (the mode's coupling row, chain_model.hpp)
+        const Eigen::VectorXcd v = re.col(i).segment(n_, n_).cast<cd>() + cd(0, 1) * im.col(i).segment(n_, n_).cast<cd>();
+        hist_.z(j, l) = cd(re(2 * n_ + l, i), im(2 * n_ + l, i)) - coupled(m_.modes[l], v);
       }
     }
     if (budget_meter_)
@@ -217,7 +217,7 @@ class Recorder {
     Eigen::VectorXcd u, v, w;
     f_.from_state(m_, y, u, v, w);
     Eigen::VectorXcd z(nm_);
-    for (int l = 0; l < nm_; ++l) z[l] = w[l] - v[m_.modes[l].body];
+    for (int l = 0; l < nm_; ++l) z[l] = w[l] - coupled(m_.modes[l], v);
     balance_[j] = (*balance_meter_)(u, v, z);
   }
 

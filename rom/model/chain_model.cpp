@@ -92,6 +92,8 @@ void set_frozen_fluid(const Scene& scene, const std::string& w, const CavitySpec
     const double c = b.fluid_center / L;
     b.free_surface = true;
     b.K_free_surface = rho * L5 * t.free_surface.K(c);
+    b.K_cross = rho * L5 / L * (t.free_surface.K1 + c * t.free_surface.K0);
+    b.K_shift = rho * L3 * t.free_surface.K0;
     b.sum_rule = rho * L5 * t.sum_rule_about(c);
   }
 }
@@ -154,6 +156,27 @@ FluidMode chain_mode(int k, int l, const rc::ModeTable& t, const RowCoupling& rc
   return m;
 }
 
+// A partially filled tank on body k > 0 of a fixed chain: its joint moves by y = Σ_{j<k} s_j u_j, which the liquid
+// feels as it feels the centroid's own displacement c u_k (docs/physics.md §2, "A tank whose joint moves"), so the
+// row's coupling about O_k, a + c t, gains t y/L: lever_j = (s_j/L) t / (a + c t). Spin −ω conjugates a viscous
+// mode's couplings (chain_mode) and so its lever.
+void set_lever(const Scene& scene, int k, int l, const rc::ModeTable& t, const RowCoupling& rc, const CavitySpec& cav,
+               double omega, FluidMode& m) {
+  if (k == 0) return;
+  const bool visc = t.viscous();
+  std::complex<double> a_c(rc.a(l), visc ? t.a_imag[l] + rc.c * t.free_surface.t_imag[l] : 0.0),
+      t_c(t.free_surface.t[l], visc ? t.free_surface.t_imag[l] : 0.0);
+  if (omega < 0) {
+    a_c = std::conj(a_c);
+    t_c = std::conj(t_c);
+  }
+  if (a_c == 0.0) return;  // not kept (E about O_k is 0)
+  for (int j = 0; j < k; ++j) {
+    const double s = scene.bodies[j].next_joint / cav.scale;
+    if (s != 0) m.lever.emplace_back(j, s * t_c / a_c);
+  }
+}
+
 // A Galerkin tank's fluid energy and dissipation forms in chain units; spin -omega conjugates the flow, the forms
 // too. Energy ~ rho L^5, dissipation ~ rho L^5 |omega|.
 void set_galerkin_forms(const GalerkinFluid& gf, const CavitySpec& cav, BodyModel& b) {
@@ -199,6 +222,7 @@ void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
       m.E = L5 * gf.residue[static_cast<Eigen::Index>(j)].real();
       m.E_imag = (b.omega < 0 ? -1 : 1) * L5 * gf.residue[static_cast<Eigen::Index>(j)].imag();
     }
+    if (t.free_surface.present()) set_lever(scene, k, rows[j], t, rc, cav, b.omega, m);
     b.E_kept += m.E;
     b.E_kept_imag += m.E_imag;
     modes.push_back(m);
@@ -281,10 +305,14 @@ BodyModel body_model(const Scene& scene, int k, TableCache* tables, bool linear_
     A += b.A_f + b.m_f * d * d;  // parallel-axis theorem: fluid inertia about O_k
     // A partially filled tank's surface re-centres on the tilted spin axis: inertia K(O_k) more (docs/physics.md §2).
     A += b.K_free_surface;
-    if (b.free_surface && (k > 0 || scene.free_chain))
+    if (b.free_surface && scene.free_chain)
       fail(scene, "body[" + std::to_string(k + 1) + "].cavity.table",
-           "a partially filled tank's liquid follows the translation of its body's joint, which the chain does not "
-           "model yet: only the first body of a fixed chain may carry one (docs/rom.md, \"Partially filled tanks\")");
+           "a partially filled tank on a free chain is not modelled yet: its liquid's own momentum would enter the "
+           "chain's centre of mass (docs/rom.md, \"Partially filled tanks\"); a fixed chain takes it on any body");
+    if (b.free_surface && k > 0 && bs.cavity->static_correction)
+      fail(scene, "body[" + std::to_string(k + 1) + "].cavity.static_correction",
+           "not modelled for a partially filled tank on a body whose joint moves (its remainder would couple to the "
+           "earlier bodies too): leave it false, or keep more modes");
     if (b.free_surface && !linear_keys_only)
       fail(scene, "body[" + std::to_string(k + 1) + "].cavity.table",
            "the nonlinear chain does not take a partially filled tank yet (the linear model (26) does)");
@@ -312,6 +340,17 @@ void set_inertia(const Scene& scene, ChainModel& cm) {
   }
   for (int k = 0; k < n; ++k)
     for (int i = 0; i < k; ++i) cm.M(k, i) = cm.M(i, k) = cm.a[k] * cm.bodies[i].s;
+  // A partially filled tank on body k > 0: its re-centring inertia is a form in (u_k, y), y = Σ_{j<k} s_j u_j
+  // (docs/physics.md §2, "A tank whose joint moves"); K(O_k) u_k² is in A_k already.
+  for (int k = 1; k < n; ++k) {
+    const BodyModel& b = cm.bodies[k];
+    if (!b.free_surface) continue;
+    for (int j = 0; j < k; ++j) {
+      cm.M(k, j) += b.K_cross * cm.bodies[j].s;
+      cm.M(j, k) += b.K_cross * cm.bodies[j].s;
+      for (int i = 0; i < k; ++i) cm.M(j, i) += b.K_shift * cm.bodies[j].s * cm.bodies[i].s;
+    }
+  }
   const double mtot = tail;
   if (scene.free_chain) {
     // Free chain (docs/free-chain.md, from Kononov (12)-(14)): the centre of mass of the
@@ -360,13 +399,14 @@ void set_stiffness_friction_gyro(const Scene& scene, ChainModel& cm) {
 // M_eff = M − diag(Σ E + E_rem), which must stay positive definite: the shells must carry inertia of their own.
 void set_effective_inertia(const Scene& scene, ChainModel& cm) {
   const int n = cm.n;
-  cm.M_eff = cm.M;
-  cm.M_eff_imag.setZero(n);
+  Eigen::MatrixXcd fluid = Eigen::MatrixXcd::Zero(n, n);  // Σ_l E_kl w wᵀ + diag(E_rem)
+  for (const FluidMode& md : cm.modes) add_mode_term(fluid, md, md.E_c());
   for (int k = 0; k < n; ++k) {
-    cm.M_eff(k, k) -= cm.bodies[k].E_kept + cm.bodies[k].E_rem;
-    cm.M_eff_imag[k] = -(cm.bodies[k].E_kept_imag + cm.bodies[k].E_rem_imag);
+    fluid(k, k) += std::complex<double>(cm.bodies[k].E_rem, cm.bodies[k].E_rem_imag);
     cm.viscous = cm.viscous || cm.bodies[k].ekman > 0;
   }
+  cm.M_eff = cm.M - fluid.real();
+  cm.M_eff_imag = -fluid.imag();
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(cm.M_eff, Eigen::EigenvaluesOnly);
   // Against the inertia M with the fluid frozen, not M_eff itself: M_eff = M - diag(sum E) cancels
   // digits, and below ~1e-13 of M what is left is rounding (a shell of 1e-15 around a sphere).

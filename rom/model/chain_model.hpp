@@ -12,6 +12,7 @@
 #include <complex>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rc::rom {
@@ -29,10 +30,36 @@ struct FluidMode {
   double E_imag = 0;        // kg m^2
   double decay = 0;         // omega_k0 * decay_table (1/s)
   int converged = -1;       // the table's flag for this cluster: 1 yes, 0 no, -1 the table has no flags
+  // A partially filled tank on a body whose joint moves (docs/physics.md §2, "A tank whose joint moves"): the liquid
+  // feels the joint's acceleration, so the mode couples to earlier bodies' tilts u_j too, with weight lever_j against
+  // its own body's 1 (complex for a viscous table). Empty: it couples to its own body alone, as every filled tank.
+  std::vector<std::pair<int, std::complex<double>>> lever;
   std::complex<double> E_c() const { return {E, E_imag}; }
   std::complex<double> lambda_c() const { return {lambda, decay}; }
   std::complex<double> nu_c() const { return {nu, -decay}; }  // omega_k0 - lambda_c
 };
+
+// The mode's coupling row w (w_k = 1 for its own body k, lever_j for the earlier ones): its forcing is wᵀ(ü + iω_k0 u̇)
+// and its term of (22) E w wᵀ. Adds scale · w wᵀ to the square complex matrix A.
+template <class Mat, class Scalar>
+void add_mode_term(Mat& A, const FluidMode& md, Scalar scale) {
+  A(md.body, md.body) += scale;
+  for (const auto& [j, r] : md.lever) {
+    const Scalar rj = static_cast<Scalar>(r);
+    A(md.body, j) += scale * rj;
+    A(j, md.body) += scale * rj;
+    for (const auto& [i, q] : md.lever) A(j, i) += scale * rj * static_cast<Scalar>(q);
+  }
+}
+
+// wᵀ v: the combination of the bodies' tilt velocities (or accelerations) the mode is forced by.
+template <class Vec>
+typename Vec::Scalar coupled(const FluidMode& md, const Vec& v) {
+  using S = typename Vec::Scalar;
+  S out = v[md.body];
+  for (const auto& [j, r] : md.lever) out += static_cast<S>(r) * v[j];
+  return out;
+}
 
 struct BodyModel {
   // totals with the frozen fluid included (docs/physics.md §3: A_k, C_k, m_k include the fluid)
@@ -44,6 +71,9 @@ struct BodyModel {
   // couplings are about O_k (docs/physics.md §2, "Partially filled tanks").
   bool free_surface = false;
   double K_free_surface = 0;
+  // On a body whose joint moves K is a form in (u_k, y), y = Σ_{j<k} s_j u_j the joint's displacement: K(O_k) u_k² +
+  // 2 K_cross u_k y + K_shift y² (kg m, kg): ρL⁴(K1 + cK0) and ρL³K0 (docs/physics.md §2, "A tank whose joint moves").
+  double K_cross = 0, K_shift = 0;
   double E_kept = 0;         // sum of the kept E_kl
   double E_rem = 0;          // static-correction inertia (0 unless static_correction)
   double static_moment = 0, pitch_damping = 0;  // [body.aero] (in K and D already; kept to report S_g)
@@ -76,7 +106,7 @@ struct ChainModel {
   Eigen::MatrixXd D;     // joint friction, Batyr (43)
   Eigen::VectorXd G;     // C_k omega_k0 (gyroscopic term of (26))
   Eigen::MatrixXd M_eff; // M - diag(sum_l E_kl + E_rem_k): inertia seen by u-double-dot (its real part)
-  Eigen::VectorXd M_eff_imag;  // -Im(sum_l E_kl + E_rem_k) per body: 0 for ideal tables and with static_correction
+  Eigen::MatrixXd M_eff_imag;  // -Im(Σ_l E_kl w wᵀ + diag(E_rem)): 0 for ideal tables and with static_correction
   bool viscous = false;  // some cavity has a viscous table (complex lambda_kl, E_kl)
   AxialChain axial;      // the spins' own block (axial_rotation.hpp): decoupled from (26) at first order
   int size() const { return n; }

@@ -27,7 +27,7 @@ Terms evaluate(const ChainModel& m, cd sigma) {
   }
   for (const auto& md : m.modes) {
     const double w0 = m.bodies[md.body].omega;
-    fluid(md.body, md.body) += (sigma + w0) * md.E_c() / (sigma + w0 - md.lambda_c());
+    add_mode_term(fluid, md, (sigma + w0) * md.E_c() / (sigma + w0 - md.lambda_c()));
   }
   Eigen::MatrixXcd damp = (-I / sigma) * m.D.cast<cd>();
   Eigen::MatrixXcd stiff = (-1.0 / (sigma * sigma)) * complex_stiffness(m);
@@ -46,7 +46,7 @@ Eigen::MatrixXcd characteristic_derivative(const ChainModel& m, cd sigma) {
   for (int k = 0; k < n; ++k) d(k, k) -= m.G[k] / (sigma * sigma);
   for (const auto& md : m.modes) {
     const cd p = sigma + m.bodies[md.body].omega - md.lambda_c();
-    d(md.body, md.body) += md.E_c() * md.lambda_c() / (p * p);  // -d/dsigma of (sigma + w0) E/(sigma + w0 - lambda)
+    add_mode_term(d, md, md.E_c() * md.lambda_c() / (p * p));  // -d/dsigma of (sigma + w0) E/(sigma + w0 - lambda)
   }
   return d;
 }

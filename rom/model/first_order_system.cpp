@@ -20,30 +20,33 @@ Eigen::Matrix<std::complex<Real>, Eigen::Dynamic, Eigen::Dynamic> first_order_ma
     if (m.has_circulatory())  // the Magnus moments: K − i diag(circulatory)
       for (int k = 0; k < n; ++k) MiK.col(k) -= I * Real(m.circulatory[k]) * Minv.col(k);
   } else {
-    CMat Mc = m.M_eff.cast<Real>().template cast<C>();
-    for (int k = 0; k < n; ++k) Mc(k, k) += I * Real(m.M_eff_imag[k]);
+    const CMat Mc = m.M_eff.cast<Real>().template cast<C>() + I * m.M_eff_imag.cast<Real>().template cast<C>();
     const Eigen::PartialPivLU<CMat> lu(Mc);
     Minv = lu.inverse();
     MiK = lu.solve(m.K.cast<Real>().template cast<C>());
     if (m.has_circulatory())
       for (int k = 0; k < n; ++k) MiK.col(k) -= I * Real(m.circulatory[k]) * Minv.col(k);
   }
-  // Gamma_k = C_k w_k0 - sum_l E_kl lambda_kl (complex for viscous modes: E_c lambda_c)
-  Eigen::Matrix<C, Eigen::Dynamic, 1> Gamma = m.G.cast<Real>().template cast<C>();
-  for (const auto& md : m.modes) Gamma[md.body] -= C(md.E_c()) * C(md.lambda_c());
+  // Gamma = diag(C_k w_k0) - sum_l E_kl lambda_kl w wᵀ (complex for viscous modes: E_c lambda_c; w the mode's
+  // coupling row, e_k unless its joint moves: chain_model.hpp)
+  CMat Gamma = CMat(m.G.cast<Real>().template cast<C>().asDiagonal());
+  for (const auto& md : m.modes) add_mode_term(Gamma, md, -C(md.E_c()) * C(md.lambda_c()));
 
   CMat B = CMat::Zero(D, D);
   // (s u)' = s u-dot
   B.block(0, n, n, n) = C(s) * CMat::Identity(n, n);
-  // M_eff u'' = -K u - (i Gamma + D) u' + i sum E nu w      [(26) with (21) substituted]
-  const CMat Cdamp = I * CMat(Gamma.asDiagonal()) + m.D.cast<Real>().template cast<C>();
+  // M_eff u'' = -K u - (i Gamma + D) u' + i sum E nu w_row w      [(26) with (21) substituted]
+  const CMat Cdamp = I * Gamma + m.D.cast<Real>().template cast<C>();
   B.block(n, 0, n, n) = -MiK / C(s);
   B.block(n, n, n, n) = -(Minv * Cdamp);
   for (int l = 0; l < nm; ++l) {
     const FluidMode& md = m.modes[l];
-    B.block(n, 2 * n + l, n, 1) = (I * C(md.E_c()) * C(md.nu_c())) * Minv.col(md.body);
-    // w' = -i nu w - i lambda u'      [fluid equation of (26) in w = z + u-dot]
-    B(2 * n + l, n + md.body) = -I * C(md.lambda_c());
+    CMat row = CMat::Zero(n, 1);  // the coupling row as a column
+    row(md.body, 0) = 1;
+    for (const auto& [j, r] : md.lever) row(j, 0) = static_cast<C>(r);
+    B.block(n, 2 * n + l, n, 1) = (I * C(md.E_c()) * C(md.nu_c())) * (Minv * row);
+    // w' = -i nu w - i lambda w_rowᵀ u'      [fluid equation of (26) in w = z + w_rowᵀ u-dot]
+    B.block(2 * n + l, n, 1, n) = (-I * C(md.lambda_c())) * row.transpose();
     B(2 * n + l, 2 * n + l) = -I * C(md.nu_c());
   }
   return B;
@@ -59,13 +62,12 @@ std::complex<double> first_order_trace(const ChainModel& m) {
   const int n = m.n;
   // The same blocks as first_order_matrix: the (u-dot, u-dot) block -M_eff^{-1}(i Gamma + D) and the fluid diagonal
   // -i nu; the s u block has a zero diagonal.
-  Eigen::MatrixXcd Mc = m.M_eff.cast<C>();
-  for (int k = 0; k < n; ++k) Mc(k, k) += I * m.M_eff_imag[k];
+  const Eigen::MatrixXcd Mc = m.M_eff.cast<C>() + I * m.M_eff_imag.cast<C>();
   Eigen::MatrixXcd Cdamp = m.D.cast<C>();
   for (int k = 0; k < n; ++k) Cdamp(k, k) += I * m.G[k];
   C trace = 0;
   for (const auto& md : m.modes) {
-    Cdamp(md.body, md.body) -= I * md.E_c() * md.lambda_c();
+    add_mode_term(Cdamp, md, -I * md.E_c() * md.lambda_c());
     trace -= I * md.nu_c();
   }
   return trace - Mc.partialPivLu().solve(Cdamp).trace();
@@ -77,12 +79,12 @@ FirstOrderSystem build_first_order(const ChainModel& m) {
   f.nm = m.n_modes();
   // The scale only balances the blocks: the real parts of M_eff and Gamma set it well enough.
   const Eigen::LDLT<Eigen::MatrixXd> ldlt(m.M_eff);
-  Eigen::VectorXd Gamma = m.G;  // Gamma_k = C_k w_k0 - sum_l E_kl lambda_kl
-  for (const auto& md : m.modes) Gamma[md.body] -= md.E * md.lambda;
+  Eigen::MatrixXcd Gamma = m.G.cast<std::complex<double>>().asDiagonal();  // diag(C_k w_k0) - sum E lambda w wᵀ
+  for (const auto& md : m.modes) add_mode_term(Gamma, md, std::complex<double>(-md.E * md.lambda));
 
   // Frequency scale: sqrt(|M^-1 K|) if there is stiffness, else the gyroscopic/fluid rates.
   double s = std::sqrt(ldlt.solve(m.K).norm());
-  if (!(s > 0)) s = ldlt.solve(Eigen::MatrixXd(Gamma.asDiagonal())).norm();
+  if (!(s > 0)) s = ldlt.solve(Eigen::MatrixXd(Gamma.real())).norm();
   if (!(s > 0))
     for (const auto& md : m.modes) s = std::max(s, std::abs(md.nu_c()));
   if (!(s > 0) || !std::isfinite(s)) s = 1;
@@ -97,7 +99,7 @@ Eigen::VectorXcd FirstOrderSystem::to_state(const ChainModel& m, const Eigen::Ve
   Eigen::VectorXcd y(dim());
   y.head(n) = s * u;
   y.segment(n, n) = v;
-  for (int l = 0; l < nm; ++l) y[2 * n + l] = z[l] + v[m.modes[l].body];
+  for (int l = 0; l < nm; ++l) y[2 * n + l] = z[l] + coupled(m.modes[l], v);
   return y;
 }
 

@@ -217,7 +217,7 @@ TEST(PartialFillCoupling, WallPressureMomentIsTheModalModel) {
   const Eigen::MatrixXd S = e * e.transpose();
   const double r1 = R.integral([](double r) { return r; }), r3 = R.integral([](double r) { return r * r * r; });
   double worst = 0;
-  for (const double c : {0.0, 0.8}) {
+  for (const double c : {0.0, 0.8, -1.3}) {  // three offsets pin every coefficient of the form in c (a moving joint)
     // (f1 − f2 + f3)(χ) for χ = z_O r: 2∫∫ z_O² r − ∫∫ r³ + b² ∫ z_O², a real constant.
     const double zz = Z.integral([&](double z) { return (z + c) * (z + c); }), z0 = Z.integral([](double) { return 1.0; });
     const double chi_term = 2 * zz * r1 - r3 * z0 + b * b * zz;

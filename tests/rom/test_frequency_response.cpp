@@ -46,7 +46,7 @@ TEST(FrequencyResponse, IsTheFirstOrderSystemsForcedSolve) {
   const ChainModel m = build_model(parse_scene_text(scene_text({b1, b2}, {{3.0, 0.02}}, 9.81), test_dir(), "test-scene"));
   const FirstOrderSystem f = build_first_order(m);
   Eigen::MatrixXcd Meff = m.M_eff.cast<cd>();
-  for (int k = 0; k < m.n; ++k) Meff(k, k) += cd(0, m.M_eff_imag[k]);
+  Meff += cd(0, 1) * m.M_eff_imag.cast<cd>();
   double worst = 0;
   int points = 0;
   for (int body = 0; body < m.n; ++body) {
