@@ -1,6 +1,7 @@
 #include "frequency_response.hpp"
 
 #include "spectrum.hpp"
+#include "base_translation.hpp"
 
 #include <cmath>
 #include <limits>
@@ -10,6 +11,7 @@ namespace rc::rom {
 using cd = std::complex<double>;
 
 Eigen::MatrixXcd dynamic_stiffness(const ChainModel& m, cd sigma) {
+  if (m.extended) return reduce_on_base(dynamic_stiffness(*m.extended, sigma));  // base_translation.hpp
   const cd I(0, 1);
   Eigen::MatrixXcd Z = -sigma * sigma * m.M.cast<cd>() + I * sigma * m.D.cast<cd>() + complex_stiffness(m);
   for (int k = 0; k < m.n; ++k)

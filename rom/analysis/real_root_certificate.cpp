@@ -14,7 +14,9 @@ namespace {
 
 // sign of P(t) (header): +1, −1, or 0 where it cannot be told (an exact zero pivot, t at a pole).
 int sign_of_p(const ChainModel& m, double t) {
-  const Eigen::MatrixXd Phi = characteristic_matrix(m, {t, 0.0}).real();
+  // A free chain with a partially filled tank: P is the extended chain's (base_translation.hpp); the reduced Φ's
+  // determinant changes sign also where its X entry vanishes, which is no root.
+  const Eigen::MatrixXd Phi = characteristic_matrix(m.extended ? *m.extended : m, {t, 0.0}).real();
   if (!Phi.allFinite()) return 0;
   const Eigen::PartialPivLU<Eigen::MatrixXd> lu(Phi);
   int sign = static_cast<int>(std::lround(lu.permutationP().determinant()));

@@ -2,6 +2,7 @@
 
 #include "characteristic.hpp"
 #include "complex_eigen.hpp"
+#include "first_order_system.hpp"
 #include "real_root_certificate.hpp"
 #include "root_newton.hpp"
 
@@ -97,10 +98,11 @@ Root root_of(const ChainModel& m, const ComplexEigen& es, int j, double radius, 
     if (wgt > best) { best = wgt; r.owner = "body " + std::to_string(k + 1); }
   }
   std::vector<int> count(n, 0);
+  const Eigen::VectorXcd z = fluid_coordinates(m, y.segment(n, n), y.tail(m.n_modes()));
   for (int l = 0; l < m.n_modes(); ++l) {
     const FluidMode& md = m.modes[l];
     ++count[md.body];
-    const double wgt = std::abs(md.E_c()) * std::norm(y[2 * n + l] - coupled(md, Eigen::VectorXcd(y.segment(n, n))));
+    const double wgt = std::abs(md.E_c()) * std::norm(z[l]);
     if (wgt > best) {
       best = wgt;
       r.owner = "fluid " + std::to_string(md.body + 1) + "." + std::to_string(count[md.body]);

@@ -113,6 +113,10 @@ void print_energy(const ChainModel& model, const History& h) {
               << " on the samples (docs/rom.md, \"Galerkin tanks\")\n";
   else
     std::cout << "energy: no integral with these viscous tanks: " << galerkin_energy_unavailable(model) << "\n";
+  if (b.frozen_energy.empty()) {  // propagation.cpp: not kept for a free chain with a partially filled tank
+    std::cout << "energy budget: not measured (a free chain whose liquid has momentum of its own)\n";
+    return;
+  }
   std::cout << "energy budget of the chain with its fluid frozen: H_b(0) = " << b.frozen_energy.front()
             << ", H_b(end) = " << b.frozen_energy.back() << " J, work taken by the fluid " << b.fluid_work.back()
             << " J, friction " << b.friction_work << " J; dH_b/dt = -(friction + fluid power) to " << b.balance_residual

@@ -23,8 +23,18 @@ int TankResponses::solves() const {
   return n;
 }
 
+// Confirming with the filled cavity's R would be wrong (docs/viscous.md, "The response of a partially filled tank").
+void require_servable(const Scene& scene, const ChainModel& m) {
+  for (int k = 0; k < m.n; ++k)
+    if (m.bodies[k].ekman > 0 && m.bodies[k].free_surface)
+      throw SceneError("body[" + std::to_string(k + 1) + "].cavity.table " + scene.bodies[k].cavity->table.string() +
+                       ": the fluid's own response (confirm, and sweeps over spin with viscous tanks) does not take a "
+                       "partially filled tank yet (cavity-modes response --fill gives it as CSV)");
+}
+
 TankResponses serve_tanks(const Scene& scene, const ChainModel& m, const std::string& binary, const fs::path& scratch,
                           std::ostream& log, const std::vector<double>& mesh_ekman, TableCache* tables) {
+  require_servable(scene, m);
   TankResponses t;
   for (int k = 0; k < m.n; ++k) {
     if (m.bodies[k].ekman <= 0) continue;
@@ -38,11 +48,6 @@ TankResponses serve_tanks(const Scene& scene, const ChainModel& m, const std::st
     // (at most the served Ek: the table's recorded Ek may round below the sweep's least)
     const double mesh_ek = std::min(ekman, static_cast<std::size_t>(k) < mesh_ekman.size()
                                                ? mesh_ekman[static_cast<std::size_t>(k)] : 0.0);
-    // Its response about the joint is R + 2cR_fg + c²R_gg (docs/viscous.md, "The response of a partially filled tank"),
-    // which cavity-modes gives as CSV but does not serve: confirming with the filled cavity's R would be wrong.
-    if (m.bodies[k].free_surface)
-      throw SceneError("body[" + std::to_string(k + 1) + "].cavity.table " + cav.table.string() + ": confirm does not "
-                       "take a partially filled tank yet (cavity-modes response --fill gives its response as CSV)");
     std::vector<std::string> args;
     try {
       args = serve_arguments(table, scratch, ekman, mesh_ek);

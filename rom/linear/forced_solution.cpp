@@ -16,9 +16,13 @@ cd complex_moment(const std::array<double, 3>& v) { return {v[1], v[0]}; }
 
 // The first-order forcing (0, M_eff⁻¹ F, 0) of a moment vector over the bodies (balanced state: the u̇ block).
 Eigen::VectorXcd forcing(const ChainModel& m, const FirstOrderSystem& f, const Eigen::VectorXcd& F) {
-  const Eigen::MatrixXcd Meff = m.M_eff.cast<cd>() + cd(0, 1) * m.M_eff_imag.cast<cd>();
+  // A free chain with a partially filled tank: the extended chain's ü (no moment acts on its base's translation).
+  const ChainModel& e = m.extended ? *m.extended : m;
+  const Eigen::MatrixXcd Meff = e.M_eff.cast<cd>() + cd(0, 1) * e.M_eff_imag.cast<cd>();
+  Eigen::VectorXcd Fe = Eigen::VectorXcd::Zero(e.n);
+  Fe.head(m.n) = F;
   Eigen::VectorXcd y = Eigen::VectorXcd::Zero(f.dim());
-  y.segment(m.n, m.n) = Meff.partialPivLu().solve(F);
+  y.segment(m.n, m.n) = Meff.partialPivLu().solve(Fe).head(m.n);
   return y;
 }
 

@@ -136,7 +136,9 @@ class Recorder {
     hist.z.resize(steps + 1, nm_);
     hist.H.resize(steps + 1);
     hist.H_scale.resize(steps + 1);
-    if (m.viscous) {
+    // The frozen chain's budget (energy_budget.hpp) has no base translation: not kept for a free chain with a partially
+    // filled tank (base_translation.hpp).
+    if (m.viscous && !m.extended) {
       budget_meter_.emplace(m, f);
       budget_.resize(steps + 1);
     }
@@ -154,7 +156,7 @@ class Recorder {
     f_.from_state(m_, y, u, v, w);
     hist_.t[j] = j * h_;
     hist_.u.row(j) = u.transpose();
-    for (int l = 0; l < nm_; ++l) hist_.z(j, l) = w[l] - coupled(m_.modes[l], v);
+    hist_.z.row(j) = fluid_coordinates(m_, v, w).transpose();
     const Energy e = meter_(u, v, w);
     hist_.H[j] = e.total();
     hist_.H_scale[j] = e.scale();
@@ -200,10 +202,10 @@ class Recorder {
       const long j = j0 + i;
       hist_.t[j] = j * h_;
       for (int k = 0; k < n_; ++k) hist_.u(j, k) = cd(re(k, i) * is, im(k, i) * is);
-      for (int l = 0; l < nm_; ++l) {  // z = w - w_rowᵀ u-dot (the mode's coupling row, chain_model.hpp)
-        const Eigen::VectorXcd v = re.col(i).segment(n_, n_).cast<cd>() + cd(0, 1) * im.col(i).segment(n_, n_).cast<cd>();
-        hist_.z(j, l) = cd(re(2 * n_ + l, i), im(2 * n_ + l, i)) - coupled(m_.modes[l], v);
-      }
+      // z = w - w_rowᵀ u-dot (the mode's coupling row, chain_model.hpp)
+      const Eigen::VectorXcd v = re.col(i).segment(n_, n_).cast<cd>() + cd(0, 1) * im.col(i).segment(n_, n_).cast<cd>(),
+                             w = re.col(i).tail(nm_).cast<cd>() + cd(0, 1) * im.col(i).tail(nm_).cast<cd>();
+      hist_.z.row(j) = fluid_coordinates(m_, v, w).transpose();
     }
     if (budget_meter_)
       for (long i = 0; i < cols; ++i) budget_[j0 + i] = (*budget_meter_)(re.col(i).cast<cd>() + cd(0, 1) * im.col(i).cast<cd>());
@@ -216,8 +218,7 @@ class Recorder {
   void measure_balance(long j, const Eigen::VectorXcd& y) {
     Eigen::VectorXcd u, v, w;
     f_.from_state(m_, y, u, v, w);
-    Eigen::VectorXcd z(nm_);
-    for (int l = 0; l < nm_; ++l) z[l] = w[l] - coupled(m_.modes[l], v);
+    const Eigen::VectorXcd z = fluid_coordinates(m_, v, w);
     balance_[j] = (*balance_meter_)(u, v, z);
   }
 

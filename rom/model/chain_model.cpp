@@ -1,5 +1,7 @@
 #include "chain_model.hpp"
 
+#include "base_translation.hpp"
+
 #include "galerkin_fluid.hpp"
 #include "mode_table.hpp"
 
@@ -156,13 +158,14 @@ FluidMode chain_mode(int k, int l, const rc::ModeTable& t, const RowCoupling& rc
   return m;
 }
 
-// A partially filled tank on body k > 0 of a fixed chain: its joint moves by y = Σ_{j<k} s_j u_j, which the liquid
-// feels as it feels the centroid's own displacement c u_k (docs/physics.md §2, "A tank whose joint moves"), so the
-// row's coupling about O_k, a + c t, gains t y/L: lever_j = (s_j/L) t / (a + c t). Spin −ω conjugates a viscous
-// mode's couplings (chain_mode) and so its lever.
+// A partially filled tank on body k > 0: its joint moves by y = Σ_{j<k} s_j u_j, which the liquid feels as it feels
+// the centroid's own displacement c u_k (docs/physics.md §2, "A tank whose joint moves"), so the row's coupling about
+// O_k, a + c t, gains t y/L: lever_j = (s_j/L) t / (a + c t); on a free chain the base's translation X moves every
+// joint: lever_base = (1/L) t / (a + c t) (base_translation.hpp). Spin −ω conjugates a viscous mode's couplings
+// (chain_mode) and so its lever.
 void set_lever(const Scene& scene, int k, int l, const rc::ModeTable& t, const RowCoupling& rc, const CavitySpec& cav,
                double omega, FluidMode& m) {
-  if (k == 0) return;
+  if (k == 0 && !scene.free_chain) return;
   const bool visc = t.viscous();
   std::complex<double> a_c(rc.a(l), visc ? t.a_imag[l] + rc.c * t.free_surface.t_imag[l] : 0.0),
       t_c(t.free_surface.t[l], visc ? t.free_surface.t_imag[l] : 0.0);
@@ -175,6 +178,7 @@ void set_lever(const Scene& scene, int k, int l, const rc::ModeTable& t, const R
     const double s = scene.bodies[j].next_joint / cav.scale;
     if (s != 0) m.lever.emplace_back(j, s * t_c / a_c);
   }
+  if (scene.free_chain) m.lever_base = t_c / a_c / cav.scale;
 }
 
 // A Galerkin tank's fluid energy and dissipation forms in chain units; spin -omega conjugates the flow, the forms
@@ -305,11 +309,7 @@ BodyModel body_model(const Scene& scene, int k, TableCache* tables, bool linear_
     A += b.A_f + b.m_f * d * d;  // parallel-axis theorem: fluid inertia about O_k
     // A partially filled tank's surface re-centres on the tilted spin axis: inertia K(O_k) more (docs/physics.md §2).
     A += b.K_free_surface;
-    if (b.free_surface && scene.free_chain)
-      fail(scene, "body[" + std::to_string(k + 1) + "].cavity.table",
-           "a partially filled tank on a free chain is not modelled yet: its liquid's own momentum would enter the "
-           "chain's centre of mass (docs/rom.md, \"Partially filled tanks\"); a fixed chain takes it on any body");
-    if (b.free_surface && k > 0 && bs.cavity->static_correction)
+    if (b.free_surface && (k > 0 || scene.free_chain) && bs.cavity->static_correction)
       fail(scene, "body[" + std::to_string(k + 1) + "].cavity.static_correction",
            "not modelled for a partially filled tank on a body whose joint moves (its remainder would couple to the "
            "earlier bodies too): leave it false, or keep more modes");
@@ -327,7 +327,8 @@ BodyModel body_model(const Scene& scene, int k, TableCache* tables, bool linear_
 
 // Fixed chain, Kononov after (10) and (26): A'_k = A_k + s_k^2 sum_{i>k} m_i,
 // a_k = m_k c_k + s_k sum_{i>k} m_i, M_ki = a_k s_i (i<k), M_ki = s_k a_i (i>k); a free chain's M less a aᵀ/m.
-void set_inertia(const Scene& scene, ChainModel& cm) {
+// Returns the total mass.
+double set_inertia(const Scene& scene, ChainModel& cm) {
   const int n = cm.n;
   cm.a.resize(n);
   cm.M.setZero(n, n);
@@ -358,6 +359,7 @@ void set_inertia(const Scene& scene, ChainModel& cm) {
     if (!(mtot > 0)) fail(scene, "body", "a free chain needs a positive total mass");
     cm.M -= cm.a * cm.a.transpose() / mtot;
   }
+  return mtot;
 }
 
 // Gravity and the joints' stiffness (Kononov (27)) and friction (Batyr (43)); the gyroscopic C_k ω_k0.
@@ -396,17 +398,27 @@ void set_stiffness_friction_gyro(const Scene& scene, ChainModel& cm) {
   for (int k = 0; k < n; ++k) cm.G[k] = cm.bodies[k].C * cm.bodies[k].omega;
 }
 
-// M_eff = M − diag(Σ E + E_rem), which must stay positive definite: the shells must carry inertia of their own.
-void set_effective_inertia(const Scene& scene, ChainModel& cm) {
+// M_eff = M − Σ_l E_kl w wᵀ − diag(E_rem), which must stay positive definite: the shells must carry inertia of their
+// own. A free chain with a partially filled tank: the extended chain's, reduced on its base (base_translation.hpp).
+void set_effective_inertia(const Scene& scene, ChainModel& cm, const Eigen::MatrixXd& M_fixed, double mass) {
   const int n = cm.n;
-  Eigen::MatrixXcd fluid = Eigen::MatrixXcd::Zero(n, n);  // Σ_l E_kl w wᵀ + diag(E_rem)
-  for (const FluidMode& md : cm.modes) add_mode_term(fluid, md, md.E_c());
-  for (int k = 0; k < n; ++k) {
-    fluid(k, k) += std::complex<double>(cm.bodies[k].E_rem, cm.bodies[k].E_rem_imag);
-    cm.viscous = cm.viscous || cm.bodies[k].ekman > 0;
+  for (int k = 0; k < n; ++k) cm.viscous = cm.viscous || cm.bodies[k].ekman > 0;
+  bool base = false;
+  for (const FluidMode& md : cm.modes) base = base || md.lever_base != 0.0;
+  if (base) {
+    cm.extended = std::make_shared<const ChainModel>(extend_with_base(cm, M_fixed, cm.a, mass));
+    const Eigen::MatrixXcd Me = reduce_on_base(cm.extended->M_eff.cast<std::complex<double>>() +
+                                               std::complex<double>(0, 1) * cm.extended->M_eff_imag.cast<std::complex<double>>());
+    cm.M = reduce_on_base(cm.extended->M.cast<std::complex<double>>()).real();
+    cm.M_eff = Me.real();
+    cm.M_eff_imag = Me.imag();
+  } else {
+    Eigen::MatrixXcd fluid = Eigen::MatrixXcd::Zero(n, n);  // Σ_l E_kl w wᵀ + diag(E_rem)
+    for (const FluidMode& md : cm.modes) add_mode_term(fluid, md, md.E_c());
+    for (int k = 0; k < n; ++k) fluid(k, k) += std::complex<double>(cm.bodies[k].E_rem, cm.bodies[k].E_rem_imag);
+    cm.M_eff = cm.M - fluid.real();
+    cm.M_eff_imag = -fluid.imag();
   }
-  cm.M_eff = cm.M - fluid.real();
-  cm.M_eff_imag = -fluid.imag();
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(cm.M_eff, Eigen::EigenvaluesOnly);
   // Against the inertia M with the fluid frozen, not M_eff itself: M_eff = M - diag(sum E) cancels
   // digits, and below ~1e-13 of M what is left is rounding (a shell of 1e-15 around a sphere).
@@ -436,7 +448,9 @@ ChainModel build_model(const Scene& scene, TableCache* tables, bool linear_keys_
   cm.free_chain = scene.free_chain;
   cm.g = scene.gravity;
   for (int k = 0; k < cm.n; ++k) cm.bodies.push_back(body_model(scene, k, tables, linear_keys_only, cm.modes));
-  set_inertia(scene, cm);
+  const double mass = set_inertia(scene, cm);
+  Eigen::MatrixXd M_fixed = cm.M;  // a free chain's before its reduction a aᵀ/m (what base_translation.hpp extends)
+  if (scene.free_chain) M_fixed += cm.a * cm.a.transpose() / mass;
   set_stiffness_friction_gyro(scene, cm);
   std::vector<double> axial_inertia;
   for (const BodyModel& b : cm.bodies) axial_inertia.push_back(b.C);
@@ -447,7 +461,7 @@ ChainModel build_model(const Scene& scene, TableCache* tables, bool linear_keys_
     fail(scene, "body", "the chain's inertia, stiffness, friction or gyroscopic terms overflow double precision "
                         "(masses, inertias, lengths, spins or gravity too large together)");
   check_modes_finite(scene, cm.modes);
-  set_effective_inertia(scene, cm);
+  set_effective_inertia(scene, cm, M_fixed, mass);
   return cm;
 }
 

@@ -11,6 +11,7 @@
 
 #include <complex>
 #include <map>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -34,6 +35,8 @@ struct FluidMode {
   // feels the joint's acceleration, so the mode couples to earlier bodies' tilts u_j too, with weight lever_j against
   // its own body's 1 (complex for a viscous table). Empty: it couples to its own body alone, as every filled tank.
   std::vector<std::pair<int, std::complex<double>>> lever;
+  // The same on a free chain's base translation X (1/m; base_translation.hpp): 0 unless the tank is partially filled.
+  std::complex<double> lever_base = 0;
   std::complex<double> E_c() const { return {E, E_imag}; }
   std::complex<double> lambda_c() const { return {lambda, decay}; }
   std::complex<double> nu_c() const { return {nu, -decay}; }  // omega_k0 - lambda_c
@@ -109,6 +112,10 @@ struct ChainModel {
   Eigen::MatrixXd M_eff_imag;  // -Im(Σ_l E_kl w wᵀ + diag(E_rem)): 0 for ideal tables and with static_correction
   bool viscous = false;  // some cavity has a viscous table (complex lambda_kl, E_kl)
   AxialChain axial;      // the spins' own block (axial_rotation.hpp): decoupled from (26) at first order
+  // A free chain with a partially filled tank (base_translation.hpp): the chain with its base's translation as
+  // coordinate n, from which Φ, B and the energy are reduced; M and M_eff above are then its Schur complements on X
+  // (what the chain's bodies feel at rest). Null otherwise.
+  std::shared_ptr<const ChainModel> extended;
   int size() const { return n; }
   int n_modes() const { return static_cast<int>(modes.size()); }
   bool has_friction() const { return D.cwiseAbs().maxCoeff() > 0; }

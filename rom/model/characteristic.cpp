@@ -1,5 +1,7 @@
 #include "characteristic.hpp"
 
+#include "base_translation.hpp"
+
 #include <Eigen/SVD>
 #include <cmath>
 #include <limits>
@@ -37,9 +39,15 @@ Terms evaluate(const ChainModel& m, cd sigma) {
 }
 }  // namespace
 
-Eigen::MatrixXcd characteristic_matrix(const ChainModel& m, cd sigma) { return evaluate(m, sigma).Phi; }
+// A free chain with a partially filled tank: the extended chain's Φ reduced on its base's translation
+// (base_translation.hpp).
+Eigen::MatrixXcd characteristic_matrix(const ChainModel& m, cd sigma) {
+  if (m.extended) return reduce_on_base(evaluate(*m.extended, sigma).Phi);
+  return evaluate(m, sigma).Phi;
+}
 
 Eigen::MatrixXcd characteristic_derivative(const ChainModel& m, cd sigma) {
+  if (m.extended) return reduced_derivative(evaluate(*m.extended, sigma).Phi, characteristic_derivative(*m.extended, sigma));
   const int n = m.n;
   const cd I(0, 1);
   Eigen::MatrixXcd d = (I / (sigma * sigma)) * m.D.cast<cd>() + (2.0 / (sigma * sigma * sigma)) * complex_stiffness(m);
@@ -52,6 +60,7 @@ Eigen::MatrixXcd characteristic_derivative(const ChainModel& m, cd sigma) {
 }
 
 double characteristic_residual(const ChainModel& m, cd sigma, double scale) {
+  if (m.extended) return characteristic_residual(*m.extended, sigma, scale);  // its Φ vanishes where the reduced one does
   const double tiny = 1e-9 * scale;
   const bool has_inverse_terms =
       m.G.cwiseAbs().maxCoeff() > 0 || m.has_friction() || m.K.cwiseAbs().maxCoeff() > 0 || m.has_circulatory();

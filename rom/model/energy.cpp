@@ -1,5 +1,7 @@
 #include "energy.hpp"
 
+#include "base_translation.hpp"
+
 #include <cmath>
 #include <limits>
 
@@ -27,12 +29,23 @@ Eigen::MatrixXd symmetric_abs(const Eigen::MatrixXd& S) {
 }
 
 EnergyMeter::EnergyMeter(const ChainModel& m)
-    : M_eff_(m.M_eff), K_(m.K), K_abs_(symmetric_abs(m.K)), c_(fluid_weights(m)) {}
+    : M_eff_(m.M_eff), K_(m.K), K_abs_(symmetric_abs(m.K)), c_(fluid_weights(m)) {
+  if (m.extended) {
+    base_ = &m;
+    M_eff_ext_ = m.extended->M_eff;
+  }
+}
 
 Energy EnergyMeter::operator()(const Eigen::VectorXcd& u, const Eigen::VectorXcd& v,
                                const Eigen::VectorXcd& w) const {
   Energy e;
-  e.kinetic = 0.5 * v.dot(M_eff_ * v).real();  // dot() conjugates its left side: v^H M v
+  if (base_) {  // ½ q̇ᴴ M_eff,ext q̇ with q̇ = (u̇, Ẋ)
+    Eigen::VectorXcd q(v.size() + 1);
+    q << v, base_rate(*base_, v, w);
+    e.kinetic = 0.5 * q.dot(M_eff_ext_ * q).real();
+  } else {
+    e.kinetic = 0.5 * v.dot(M_eff_ * v).real();  // dot() conjugates its left side: v^H M v
+  }
   e.potential = 0.5 * u.dot(K_ * u).real();
   e.potential_abs = 0.5 * u.dot(K_abs_ * u).real();
   for (Eigen::Index l = 0; l < c_.size(); ++l) {
@@ -44,6 +57,16 @@ Energy EnergyMeter::operator()(const Eigen::VectorXcd& u, const Eigen::VectorXcd
 
 void EnergyMeter::block(const Part& u_re, const Part& u_im, const Part& v_re, const Part& v_im,
                         const Part& w_re, const Part& w_im, double* H, double* scale) const {
+  if (base_) {  // the kinetic energy needs Ẋ per state: one state at a time
+    const std::complex<double> I(0, 1);
+    for (Eigen::Index j = 0; j < u_re.cols(); ++j) {
+      const Energy e = (*this)(u_re.col(j) + I * u_im.col(j), v_re.col(j) + I * v_im.col(j),
+                               w_re.col(j) + I * w_im.col(j));
+      H[j] = e.total();
+      scale[j] = e.scale();
+    }
+    return;
+  }
   // x^H S x = a^T S a + b^T S b for x = a + ib and a real symmetric S.
   const Eigen::MatrixXd Mr = M_eff_ * v_re, Mi = M_eff_ * v_im, Kr = K_ * u_re, Ki = K_ * u_im,
                         Ar = K_abs_ * u_re, Ai = K_abs_ * u_im;

@@ -35,6 +35,10 @@ class EnergyMeter {
  private:
   Eigen::MatrixXd M_eff_, K_, K_abs_;
   Eigen::VectorXd c_;
+  // A free chain with a partially filled tank (base_translation.hpp): the kinetic energy is the extended chain's,
+  // with the base's rate from the momentum; null otherwise.
+  const ChainModel* base_ = nullptr;
+  Eigen::MatrixXd M_eff_ext_;
 };
 
 // NaN-filled when some mode has lambda = 0 on a spinning body (no such integral then).

@@ -1,11 +1,15 @@
 #include "first_order_system.hpp"
 
+#include "base_translation.hpp"
+
 #include <cmath>
 
 namespace rc::rom {
 
 template <class Real>
 Eigen::Matrix<std::complex<Real>, Eigen::Dynamic, Eigen::Dynamic> first_order_matrix(const ChainModel& m, Real s) {
+  // A free chain with a partially filled tank: the chain with its base's translation, reduced (base_translation.hpp).
+  if (m.extended) return reduce_first_order(m, first_order_matrix(*m.extended, s), s);
   using C = std::complex<Real>;
   using RMat = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>;
   using CMat = Eigen::Matrix<C, Eigen::Dynamic, Eigen::Dynamic>;
@@ -57,6 +61,7 @@ template Eigen::Matrix<std::complex<long double>, Eigen::Dynamic, Eigen::Dynamic
     const ChainModel&, long double);
 
 std::complex<double> first_order_trace(const ChainModel& m) {
+  if (m.extended) return first_order_matrix(m, 1.0).trace();
   using C = std::complex<double>;
   const C I(0, 1);
   const int n = m.n;
@@ -99,7 +104,8 @@ Eigen::VectorXcd FirstOrderSystem::to_state(const ChainModel& m, const Eigen::Ve
   Eigen::VectorXcd y(dim());
   y.head(n) = s * u;
   y.segment(n, n) = v;
-  for (int l = 0; l < nm; ++l) y[2 * n + l] = z[l] + coupled(m.modes[l], v);
+  const std::complex<double> base = m.extended ? base_rate_from_z(m, v, z) : 0.0;
+  for (int l = 0; l < nm; ++l) y[2 * n + l] = z[l] + coupled(m.modes[l], v) + m.modes[l].lever_base * base;
   return y;
 }
 
@@ -109,6 +115,13 @@ void FirstOrderSystem::from_state(const ChainModel& m, const Eigen::VectorXcd& y
   u = y.head(n) / s;
   v = y.segment(n, n);
   w = y.tail(nm);
+}
+
+Eigen::VectorXcd fluid_coordinates(const ChainModel& m, const Eigen::VectorXcd& v, const Eigen::VectorXcd& w) {
+  const std::complex<double> base = m.extended ? base_rate(m, v, w) : 0.0;
+  Eigen::VectorXcd z(m.n_modes());
+  for (int l = 0; l < m.n_modes(); ++l) z[l] = w[l] - coupled(m.modes[l], v) - m.modes[l].lever_base * base;
+  return z;
 }
 
 }  // namespace rc::rom

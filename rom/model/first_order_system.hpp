@@ -31,6 +31,10 @@ struct FirstOrderSystem {
 
 FirstOrderSystem build_first_order(const ChainModel& m);
 
+// The fluid coordinates z from the bodies' rates v and the fluid states w: z_l = w_l − w_lᵀu̇ (minus the base's share
+// on a free chain with a partially filled tank, base_translation.hpp).
+Eigen::VectorXcd fluid_coordinates(const ChainModel& m, const Eigen::VectorXcd& v, const Eigen::VectorXcd& w);
+
 // The matrix B of build_first_order assembled in the arithmetic of Real (double or long double) for
 // the balancing scale s, from the model's (double) M_eff, K, D, G, E, lambda, nu: what the
 // extended-precision reference of `chain-rom bench` propagates (reference_propagation.hpp).

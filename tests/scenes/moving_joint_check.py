@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """A partially filled tank on a body whose joint moves (docs/physics.md §2, "A tank whose joint moves"): Stewartson's top
-(data/scenes/stewartson_top.toml) carried on a gimbal arm, the second body of a fixed chain.
+(data/scenes/stewartson_top.toml) carried on a gimbal arm, the second body of a fixed chain, and the two floating free.
 
 1. cavity-modes makes the top's table from the scene's "# recipe:" line;
 2. the rigid limit: with the joint between arm and top stiff (κ² = 1e5 … 1e9 N m/rad) and both spinning alike, the
@@ -13,7 +13,12 @@
    forcing uses its own body's spin); and the same Φ without the joint's terms (the tank as if its joint were fixed)
    is far from singular at some of them: the joint's motion matters;
 4. chain-rom run on the stable chain keeps the energy of docs/rom.md "Energy" to rounding;
-5. a viscous table of the same tank (coarse, Ek = 1e-2) on the arm: (22) with the complex rows at chain-rom's roots.
+5. a viscous table of the same tank (coarse, Ek = 1e-2) on the arm: (22) with the complex rows at chain-rom's roots;
+6. the free chain (docs/free-chain.md, "Partially filled tanks"; its base's translation eliminated through the chain's
+   momentum, rom/model/base_translation.*) against the same chain carried by a massless, spinless arm 1 m long on a fixed
+   support, whose tilt is the base's translation and which goes through section 3's joint levers instead: every root
+   (ideal and viscous tank), and a run's tilts and fluid coordinates, to rounding;
+7. refused in one line: static_correction on such a tank, a sweep over spin with a viscous one.
 usage: moving_joint_check.py CAVITY_MODES CHAIN_ROM SCENE WORKDIR
 """
 import json, os, re, subprocess, sys
@@ -51,10 +56,26 @@ def roots_of(scene_text, tag):
     sp = json.loads(out.stdout)
     return np.array([complex(r[0], r[1]) for r in sp["roots"]]), sp
 
-def chain_text(kappa2, arm_spin):
-    return (f"[system]\nkind = \"fixed\"\ngravity = {g!r}\n" + body_text(arm, arm_spin, next_joint=arm["s"])
+def chain_text(kappa2, arm_spin, kind="fixed", tank_table=None, viscosity=None):
+    """The top on the arm; another table (a viscous one with its viscosity) in place of the top's when given."""
+    text = (f"[system]\nkind = \"{kind}\"\ngravity = {g!r}\n" + body_text(arm, arm_spin, next_joint=arm["s"])
             + body_text(top, top["spin"], center=d) + f"[[joint]]\nstiffness = {kappa2!r}\nfriction = 0.0\n"
-            + "[support]\nfriction = 0.0\n")
+            + ("[support]\nfriction = 0.0\n" if kind == "fixed" else ""))
+    if tank_table:
+        text = text.replace(f'table = "{table}"', f'table = "{tank_table}"'
+                            + (f"\nviscosity = {viscosity!r}" if viscosity else ""))
+    return text
+
+def on_massless_arm(free_text):
+    """The free chain as a fixed one on a massless, spinless arm 1 m long (no gravity): the arm's tilt u0 moves the
+    chain's base by X = 1 m · u0 and does nothing else, so this chain is the free one with its base's translation
+    kept as a coordinate — through the joints' levers (section 3's code), not the free chain's momentum."""
+    body0 = "[[body]]\nmass = 0.0\nA = 0.0\nC = 0.0\ncom = 0.0\nnext_joint = 1.0\nspin = 0.0\n"
+    head, rest = free_text.split("[[body]]", 1)
+    head = head.replace('kind = "free"', 'kind = "fixed"').replace(f"gravity = {g!r}", "gravity = 0.0")
+    first_joint = "[[joint]]\nstiffness = 0.0\nfriction = 0.0\n"
+    return head + body0 + "[[body]]" + rest.replace("[[joint]]", first_joint + "[[joint]]", 1) + \
+        "[support]\nfriction = 0.0\n"
 
 failed = 0
 # 2. The rigid limit. The one body: both masses about the support, the top's inertia moved up by the parallel-axis
@@ -150,11 +171,66 @@ ek = 1e-2
 subprocess.run([modes_bin, "cylinder", "--radius", "1", "--height", "2", "--fill", re.search(r"--fill ([0-9.]+)",
                 args).group(1), "--ekman", str(ek), "--modes", "3", "--order", "3", "--mesh-size", "0.5",
                 "--no-convergence-check", "-o", viscous], check=True, stdout=subprocess.DEVNULL)
-vtext = chain_text(50.0, 0.0).replace(f'table = "{table}"', f'table = "{viscous}"\nviscosity = {ek * top["spin"] * L * L!r}')
+vtext = chain_text(50.0, 0.0, tank_table=viscous, viscosity=ek * top["spin"] * L * L)
 vroots, vsp = roots_of(vtext, "viscous")
 vres = max(sigma_min(r, 50.0, (0.0, top["spin"]), tank(viscous)) for r in vroots if abs(r) > 1e-9 * np.max(np.abs(vroots)))
 print(f"viscous tank (Ek = {ek:g}) on the arm: growth {vsp['growth']:.6g} 1/s; (22) with complex rows at chain-rom's "
       f"{len(vroots)} roots: sigma_min/terms <= {vres:.2e}")
 if not vres < max(1e-9, 10 * vsp["det_residual"]):
     print("FAILED: a root of chain-rom with the viscous tank on the arm is not a root of (22)"); failed += 1
+
+# 6. Free chains (docs/free-chain.md, "Partially filled tanks"): the arm and the top floating free, ideal and viscous
+# tanks, against the same chain on a massless arm; and a run of both from the same tilt (zero momentum: no rates).
+visc_nu = ek * top["spin"] * L * L
+for label, tk, nu in (("ideal", table, None), (f"viscous (Ek = {ek:g})", viscous, visc_nu)):
+    free = chain_text(50.0, 0.0, kind="free", tank_table=tk, viscosity=nu)
+    roots, sp = roots_of(free, "free")
+    arm_roots, _ = roots_of(on_massless_arm(free), "free_on_arm")
+    far = np.max(np.abs(roots))
+    gap = max(np.min(np.abs(arm_roots - r)) for r in roots) / far
+    zeros = sorted(np.abs(arm_roots))[:2]  # the arm's tilt and rate: X and Ẋ, uniform motion
+    print(f"free chain, {label} tank: growth {sp['growth']:.6g} 1/s, {len(roots)} roots; the same chain on a massless "
+          f"arm: every root to {gap:.2e} of the spectral radius (its two more at |sigma| <= {max(zeros) / far:.1e})")
+    if not (gap < 1e-10 and max(zeros) < 1e-8 * far):
+        print("FAILED: the free chain's momentum reduction is not the chain with its base as a coordinate"); failed += 1
+
+def history(scene_text, tag):
+    path, out_h5 = os.path.join(work, tag + ".toml"), os.path.join(work, tag + ".h5")
+    open(path, "w").write(scene_text)
+    r = subprocess.run([rom_bin, "run", path, "-o", out_h5], capture_output=True, text=True)
+    if r.returncode != 0:
+        sys.exit(f"FAILED: chain-rom run {tag} exited {r.returncode}: {r.stderr}")
+    with h5py.File(out_h5) as h:
+        return (h["u_re"][:] + 1j * h["u_im"][:], h["z_re"][:] + 1j * h["z_im"][:],
+                float(h.attrs["max_energy_drift"]))
+
+motion = "[initial]\ntilt = [[0.0, 0.0], [0.01, 0.0]]\nrate = [[0.0, 0.0], [0.0, 0.0]]\n[run]\nt_end = 0.5\noutput_step = 0.0005\n"
+free = chain_text(50.0, 0.0, kind="free")  # stable (section 6): the energy is then a bounded integral
+u_free, z_free, drift_free = history(free + motion, "free_run")
+arm_motion = motion.replace("tilt = [[", "tilt = [[0.0, 0.0], [").replace("rate = [[", "rate = [[0.0, 0.0], [")
+u_arm, z_arm, _ = history(on_massless_arm(free) + arm_motion, "free_run_on_arm")
+du = np.max(np.abs(u_free - u_arm[:, 1:])) / np.max(np.abs(u_free))
+dz = np.max(np.abs(z_free - z_arm)) / np.max(np.abs(z_free))
+print(f"free chain run (0.5 s from the top tilted 0.01 rad, zero momentum): tilts = the massless arm chain's to {du:.2e}, "
+      f"fluid coordinates to {dz:.2e}; energy drift {drift_free:.2e}")
+if not (du < 1e-9 and dz < 1e-9 and drift_free < 1e-10):
+    print("FAILED: the free chain's motion is not the chain's with its base as a coordinate"); failed += 1
+
+# 7. Refused in one line: the static correction on a body whose joint moves, a viscous such tank in a sweep over spin
+# (each point would need the liquid's own response, not served for a free surface).
+def refused(scene_text, command, phrase):
+    global failed
+    path = os.path.join(work, "refused.toml")
+    open(path, "w").write(scene_text)
+    r = subprocess.run([rom_bin] + command + [path] + (["-o", os.path.join(work, "x.csv")] if command[0] == "sweep" else []),
+                       capture_output=True, text=True)
+    lines = r.stderr.strip().splitlines()
+    ok = r.returncode == 1 and len(lines) == 1 and phrase in lines[0]
+    print(f"{'refused' if ok else 'FAILED to refuse'} ({r.returncode}): {r.stderr.strip()}")
+    failed += 0 if ok else 1
+
+refused(chain_text(50.0, 0.0).replace(f'center = {d!r}', f'center = {d!r}\nstatic_correction = true'), ["spectrum"],
+        "not modelled for a partially filled tank on a body whose joint moves")
+sweep = ["sweep", "--param", "body[2].spin", "--from", "300", "--to", "500", "--steps", "3"]
+refused(vtext, sweep[:1] + sweep[1:], "does not take a partially filled tank yet")
 sys.exit(1 if failed else 0)
