@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """A top with a partially filled tank end to end (Stewartson's top, data/scenes/stewartson_top.toml, and the spacecraft
-on its spin-test stand, data/scenes/spacecraft_spin_table.toml), and its roots against Kononov (22) written out here.
+on its spin-test stand and in free flight, data/scenes/spacecraft_spin_table.toml and spacecraft_free.toml), and its roots against Kononov (22) written out here.
 
 1. cavity-modes makes the scene's partially filled tank's table from its "# recipe:" line;
 2. chain-rom spectrum --json on a copy of the scene pointed at it: the verdict its "# expect:" line states (Stewartson's
@@ -9,7 +9,9 @@ on its spin-test stand, data/scenes/spacecraft_spin_table.toml), and its roots a
      F(σ) = A′ + C ω/σ + a g/σ² − (σ + ω) Σ_l E_l(O)/(σ + ω − λ_l ω),
    with the tank taken about the joint as docs/physics.md §2 ("Partially filled tanks") says — E_l(O) = 2(a_l + c t_l)²
    and A′ = A + ρL⁵(A_f + K(c)) + m_f d², c = d/L — is computed from the table's own datasets (h5py), independently
-   of chain-rom's model: |F| at the roots must be rounding against its terms;
+   of chain-rom's model: |F| at the roots must be rounding against its terms (a free body, kind = "free": without
+   gravity, and reduced on the body's translation X, F − F_uX²/F_XX with the tank's row (a + c t, t/L) and K over
+   (u, X): docs/free-chain.md, "Partially filled tanks");
 4. the same table read as if filled (t and K dropped) gives other roots: the free surface's terms matter; with
    --refusals also a viscous table of the same tank (Ek = 1e-3): chain-rom's roots against (22) with complex
    lambda_c = lambda + i decay and a_c + c t_c;
@@ -64,17 +66,29 @@ def tank(path):
 ideal = tank(table)
 L5 = rho * L**5
 
+free_chain = re.search(r'^kind = "free"', text, re.M) is not None
+
 def F(sigma, tk, free_surface=True):
     c = d / L
-    a_O = tk["a"] + c * tk["t"] if free_surface else tk["a"]
-    E = L5 * 2 * a_O**2 / tk["N2"]
+    t = tk["t"] if free_surface else 0 * tk["t"]
+    a_O = tk["a"] + c * t
+    weight = (sigma + spin) * L5 * 2 / tk["N2"] / (sigma + spin - tk["lam"] * spin)
     K = L5 * (tk["K2"] + 2 * c * tk["K1"] + c * c * tk["K0"]) if free_surface else 0.0
     m_f = rho * L**3 * tk["volume"]
     A1 = A + L5 * tk["A_f"] + m_f * d * d + K
     a1 = mass * com + m_f * d
-    terms = [A1, (C + L5 * tk["C_f"]) * spin / sigma, a1 * g / sigma**2]
-    fluid = (sigma + spin) * E / (sigma + spin - tk["lam"] * spin)
-    return sum(terms) - fluid.sum(), max(abs(x) for x in terms + list(abs(fluid)))
+    terms = [A1, (C + L5 * tk["C_f"]) * spin / sigma] + ([] if free_chain else [a1 * g / sigma**2])
+    fluid = weight * a_O**2
+    F_uu = sum(terms) - fluid.sum()
+    if not free_chain:
+        return F_uu, max(abs(x) for x in terms + list(abs(fluid)))
+    # A free body: its translation X kept and eliminated (docs/free-chain.md, "Partially filled tanks"): the Schur
+    # complement F_uu - F_uX²/F_XX, the tank's row (a + c t, t/L) and K over (u, X).
+    k_uX = L5 / L * (tk["K1"] + c * tk["K0"]) if free_surface else 0.0
+    k_XX = L5 / L**2 * tk["K0"] if free_surface else 0.0
+    F_uX = a1 + k_uX - (weight * a_O * t / L).sum()
+    F_XX = mass + m_f + k_XX - (weight * (t / L) ** 2).sum()
+    return F_uu - F_uX**2 / F_XX, max(abs(x) for x in terms + [abs(F_uX) ** 2 / abs(F_XX)] + list(abs(fluid)))
 
 def worst_residual(roots, tk):
     """|F|/max|term| at the roots off sigma = 0 (see below), and how many."""
