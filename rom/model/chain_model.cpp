@@ -313,9 +313,12 @@ BodyModel body_model(const Scene& scene, int k, TableCache* tables, bool linear_
       fail(scene, "body[" + std::to_string(k + 1) + "].cavity.static_correction",
            "not modelled for a partially filled tank on a body whose joint moves (its remainder would couple to the "
            "earlier bodies too): leave it false, or keep more modes");
-    if (b.free_surface && !linear_keys_only)
+    // The nonlinear chain takes the modes about O_k and K in A and B (nonlinear_run.cpp); a moving joint's forcing of
+    // the free surface (the modes' levers) is the linear model's only.
+    if (b.free_surface && !linear_keys_only && (k > 0 || scene.free_chain))
       fail(scene, "body[" + std::to_string(k + 1) + "].cavity.table",
-           "the nonlinear chain does not take a partially filled tank yet (the linear model (26) does)");
+           "the nonlinear chain takes a partially filled tank on the first body of a fixed chain only (the joint's "
+           "motion forces its free surface in the linear model (26) only)");
     C += b.C_f;
   }
   b.m = m;

@@ -18,7 +18,8 @@
    momentum, rom/model/base_translation.*) against the same chain carried by a massless, spinless arm 1 m long on a fixed
    support, whose tilt is the base's translation and which goes through section 3's joint levers instead: every root
    (ideal and viscous tank), and a run's tilts and fluid coordinates, to rounding;
-7. refused in one line: static_correction on such a tank, a sweep over spin with a viscous one.
+7. refused in one line, no file written: static_correction on such a tank, a sweep over spin with a viscous one, the
+   nonlinear chain with it.
 usage: moving_joint_check.py CAVITY_MODES CHAIN_ROM SCENE WORKDIR
 """
 import json, os, re, subprocess, sys
@@ -217,20 +218,25 @@ if not (du < 1e-9 and dz < 1e-9 and drift_free < 1e-10):
     print("FAILED: the free chain's motion is not the chain's with its base as a coordinate"); failed += 1
 
 # 7. Refused in one line: the static correction on a body whose joint moves, a viscous such tank in a sweep over spin
-# (each point would need the liquid's own response, not served for a free surface).
+# (each point would need the liquid's own response, not served for a free surface), the nonlinear chain with it.
 def refused(scene_text, command, phrase):
     global failed
     path = os.path.join(work, "refused.toml")
     open(path, "w").write(scene_text)
-    r = subprocess.run([rom_bin] + command + [path] + (["-o", os.path.join(work, "x.csv")] if command[0] == "sweep" else []),
+    out_file = os.path.join(work, "x.csv" if command[0] == "sweep" else "x.h5")
+    if os.path.exists(out_file):
+        os.remove(out_file)
+    r = subprocess.run([rom_bin] + command + [path] + (["-o", out_file] if command[0] in ("sweep", "run") else []),
                        capture_output=True, text=True)
     lines = r.stderr.strip().splitlines()
-    ok = r.returncode == 1 and len(lines) == 1 and phrase in lines[0]
+    ok = r.returncode == 1 and len(lines) == 1 and phrase in lines[0] and not os.path.exists(out_file)
     print(f"{'refused' if ok else 'FAILED to refuse'} ({r.returncode}): {r.stderr.strip()}")
     failed += 0 if ok else 1
 
 refused(chain_text(50.0, 0.0).replace(f'center = {d!r}', f'center = {d!r}\nstatic_correction = true'), ["spectrum"],
         "not modelled for a partially filled tank on a body whose joint moves")
 sweep = ["sweep", "--param", "body[2].spin", "--from", "300", "--to", "500", "--steps", "3"]
-refused(vtext, sweep[:1] + sweep[1:], "does not take a partially filled tank yet")
+refused(vtext, sweep, "does not take a partially filled tank yet")
+refused(chain_text(50.0, 0.0) + motion.replace("[run]\n", "[run]\nmodel = \"nonlinear\"\n"), ["run"],
+        "on the first body of a fixed chain only")
 sys.exit(1 if failed else 0)
