@@ -212,16 +212,27 @@ void serve_response(const ResponseRequest& req, std::istream& in, std::ostream& 
   int ranks = 1;
   MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
   if (ranks > 1) throw std::runtime_error("--serve runs on one rank (it reads standard input)");
-  const ViscousForms forms = assemble_cavity_forms(req.shape, req.mesh, req.ekman);
+  // A partially filled tank: the liquid's part of the cavity, and each answer R, R_fg, R_gg (viscous_response.hpp).
+  const bool offset = req.fill < 1;
+  const ViscousForms forms =
+      assemble_cavity_forms(offset ? geometry::partially_filled(req.shape, req.fill) : req.shape, req.mesh, req.ekman);
   ForcedResponse response(forms);
-  out << fmt::format("ready: viscous fluid, Ekman number {:g}, forced solves on Taylor-Hood P{}/P{} ({} real unknowns)",
-                     req.ekman, req.mesh.order, req.mesh.order - 1, 2L * forms.complex_size)
+  out << fmt::format("ready: viscous fluid, Ekman number {:g}, {}forced solves on Taylor-Hood P{}/P{} ({} real unknowns)",
+                     req.ekman, offset ? fmt::format("partially filled (fill {:g}; R R_fg R_gg), ", req.fill) : "",
+                     req.mesh.order, req.mesh.order - 1, 2L * forms.complex_size)
       << std::endl;
   std::string line;
   while (std::getline(in, line) && !line.empty()) {
     try {
       const std::complex<double> sigma = parse_complex(line);
       if (!std::isfinite(sigma.real()) || !std::isfinite(sigma.imag())) throw std::runtime_error("sigma must be finite");
+      if (offset) {
+        const OffsetResponse r = response.with_offset(sigma);
+        out << fmt::format("{:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g}", r.ff.real(), r.ff.imag(), r.fg.real(),
+                           r.fg.imag(), r.gg.real(), r.gg.imag())
+            << std::endl;
+        continue;
+      }
       const std::complex<double> R = response(sigma);
       out << fmt::format("{:.17g} {:.17g}", R.real(), R.imag()) << std::endl;
     } catch (const std::exception& e) {

@@ -69,7 +69,9 @@ std::vector<std::complex<double>> parse_sigma_spec(const std::string& spec, doub
 
 // `cavity-modes response SHAPE ... --ekman Ek --serve`: assembles the viscous forms once, writes one line
 // "ready: <the method line>" on `out`, then answers each line of `in` (one complex sigma, written as --sigma's list
-// items are) with one line "R_re R_im" (17 significant digits), flushed, until end of input or an empty line. A line
+// items are) with one line "R_re R_im" (17 significant digits; a partially filled tank, fill < 1: "R_re R_im R_fg_re
+// R_fg_im R_gg_re R_gg_im", R about the liquid's centroid and its offset parts), flushed, until end of input or an
+// empty line. A line
 // it cannot answer (not a number, a failed factorisation) gets "error: <one line>" and the session goes on. Serial
 // only; chain-rom confirm drives it (docs/rom.md, "Confirmed roots"). Throws std::runtime_error without --ekman.
 void serve_response(const ResponseRequest& request, std::istream& in, std::ostream& out);

@@ -315,10 +315,10 @@ void check_section_fill(const TableRequest& req) {
   }
 }
 
-// `cavity-modes response --fill`: R and its offset parts as CSV, ideal or viscous; not yet a response table or --serve.
+// `cavity-modes response --fill`: R and its offset parts as CSV, ideal or viscous, or served (three complex numbers a
+// line); not yet a response table.
 void check_response_fill(const TableRequest& req, const ViscousOptions& viscous, const std::string& output) {
   if (!(req.fill < 1)) return;
-  if (viscous.serve) throw CommandLineError("--fill: not with --serve yet (-o FILE.csv gives R and its offset parts)");
   if (ends_with(output, ".h5"))
     throw CommandLineError("--fill: a response table (FILE.h5) of a partially filled tank is not made yet (-o FILE.csv "
                            "gives R and its offset parts; the damped-mode table takes --fill)");

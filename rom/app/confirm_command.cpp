@@ -158,7 +158,6 @@ int confirm_roots(const Scene& scene, const ConfirmRequest& req, std::ostream& o
     else out << "no viscous tank: the roots of spectrum are (22)'s own, nothing to confirm\n";
     return 0;
   }
-  require_servable(scene, m);
   const ScratchFolder scratch;
   log << "the fluid's own response R(s) by forced solves (cavity-modes response ... --serve), one per viscous tank:"
       << std::endl;

@@ -136,7 +136,6 @@ std::vector<ConfirmedSweepPoint> run_confirmed_sweep(const Scene& base, const Sw
   settings.tolerance = tolerance;
   std::vector<ConfirmedSweepPoint> points;
   const bool moves = moves_viscous_ekman(base, axis.key);
-  require_servable(base, build_model(base, &tables));
   const std::vector<double> mesh_ekman = moves ? sweep_mesh_ekman(base, axis) : std::vector<double>{};
   log << "chain-rom sweep: each point's roots by (22) with the fluid's own response (forced solves; docs/rom.md, "
       << (moves ? "\"Spin sweeps with viscous tanks\"): " + axis.key.text + " moves the Ekman numbers, so each point "

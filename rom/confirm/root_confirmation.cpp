@@ -1,5 +1,6 @@
 #include "root_confirmation.hpp"
 
+#include "base_translation.hpp"
 #include "characteristic.hpp"
 
 #include <Eigen/LU>
@@ -21,20 +22,43 @@ ChainModel without_tank_modes(const ChainModel& m, const std::vector<TankRespons
   out.modes.erase(std::remove_if(out.modes.begin(), out.modes.end(), [&](const FluidMode& f) { return listed(f.body); }),
                   out.modes.end());
   for (const TankResponse& t : tanks) out.bodies[t.body].E_rem = out.bodies[t.body].E_rem_imag = 0;
+  if (m.extended) {  // a free chain with a partially filled tank: its extended chain stripped alike
+    ChainModel e = *m.extended;
+    e.modes.erase(std::remove_if(e.modes.begin(), e.modes.end(), [&](const FluidMode& f) { return listed(f.body); }),
+                  e.modes.end());
+    for (const TankResponse& t : tanks) e.bodies[t.body].E_rem = e.bodies[t.body].E_rem_imag = 0;
+    out.extended = std::make_shared<const ChainModel>(std::move(e));
+  }
   return out;
+}
+
+// The tank's term of Φ (Kononov (22)): ρL⁵ s R on its body, or for a partially filled tank the form of R, R_fg, R_gg
+// over its offset row (root_confirmation.hpp). Spin −ω mirrors the flow: R(s) -> conj(R(conj(s))).
+void subtract_tank(Eigen::MatrixXcd& Phi, const TankResponse& t, double w, cd s) {
+  const auto mirrored = [&](cd x) { return w > 0 ? x : std::conj(x); };
+  if (!t.R_offset) {
+    Phi(t.body, t.body) -= t.rho_L5 * s * mirrored(t.R(w > 0 ? s : std::conj(s)));
+    return;
+  }
+  const std::array<cd, 3> r = t.R_offset(w > 0 ? s : std::conj(s));
+  const cd R = mirrored(r[0]), R_fg = mirrored(r[1]), R_gg = mirrored(r[2]);
+  const Eigen::VectorXcd g = t.offset_row.cast<cd>();
+  Eigen::VectorXcd e = Eigen::VectorXcd::Zero(g.size());
+  e[t.body] = 1;
+  Phi -= t.rho_L5 * s * (R * e * e.transpose() + R_fg * (e * g.transpose() + g * e.transpose()) + R_gg * g * g.transpose());
 }
 
 // Phi_true(sigma) = Phi of the stripped model − diag(rho L^5 s R(s)) (Kononov (22); chain_model.cpp's mirror at
 // negative spin: lambda_c -> -conj(lambda_c), E_c -> conj(E_c), i.e. R(s) -> conj(R(conj(s))).
+// A free chain with a partially filled tank: on its extended chain, then reduced on the base (base_translation.hpp).
 Eigen::MatrixXcd phi_true(const ChainModel& stripped, const std::vector<TankResponse>& tanks, cd sigma) {
-  Eigen::MatrixXcd Phi = characteristic_matrix(stripped, sigma);
+  const bool extended = stripped.extended != nullptr;
+  Eigen::MatrixXcd Phi = characteristic_matrix(extended ? *stripped.extended : stripped, sigma);
   for (const TankResponse& t : tanks) {
     const double w = stripped.bodies[t.body].omega;
-    const cd s = (sigma + w) / w;
-    const cd R = w > 0 ? t.R(s) : std::conj(t.R(std::conj(s)));
-    Phi(t.body, t.body) -= t.rho_L5 * s * R;
+    subtract_tank(Phi, t, w, (sigma + w) / w);
   }
-  return Phi;
+  return extended ? reduce_on_base(Phi) : Phi;
 }
 
 // log det by LU (complex log: only exp of differences is used, so the branch does not matter); -inf when singular.

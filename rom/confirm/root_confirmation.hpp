@@ -10,6 +10,7 @@
 #include "chain_model.hpp"
 
 #include <complex>
+#include <array>
 #include <functional>
 #include <string>
 #include <vector>
@@ -21,6 +22,13 @@ struct TankResponse {
   int body = 0;                                          // 0-based
   double rho_L5 = 0;                                     // density * scale^5: table units -> kg m^2
   std::function<std::complex<double>(std::complex<double>)> R;
+  // A partially filled tank (docs/viscous.md, "The response of a partially filled tank"): R about the liquid's centroid
+  // and its offset parts (R, R_fg, R_gg) at s, in place of R; and the offset row g over the chain's coordinates (the
+  // extended chain's on a free chain, base_translation.hpp), in table lengths: the centroid's offset from its joint
+  // on its own body, the joints' lengths s_j on the earlier ones, 1 per unit of the base's translation. The tank
+  // answers the form R e eᵀ + R_fg (e gᵀ + g eᵀ) + R_gg g gᵀ (e its own body), docs/physics.md §2.
+  std::function<std::array<std::complex<double>, 3>(std::complex<double>)> R_offset;
+  Eigen::VectorXd offset_row;
 };
 
 struct ConfirmSettings {

@@ -11,6 +11,7 @@
 #include <fcntl.h>
 #include <fstream>
 #include <regex>
+#include <sstream>
 #include <spawn.h>
 #include <stdexcept>
 #include <sys/wait.h>
@@ -33,7 +34,7 @@ bool is_flag(const std::string& name) {
 // What the served forced solves need: the shape's dimensions and the viscous mesh.
 bool is_kept(const std::string& name) {
   for (const char* k : {"--radius", "--height", "--inner-radius", "--a", "--c", "--order", "--mesh-size", "--radial-size", "--wall-size",
-                        "--mesh-ekman"})
+                        "--mesh-ekman", "--fill"})
     if (name == k) return true;
   return false;
 }
@@ -189,16 +190,27 @@ long ServedResponse::unknowns() const {
   return std::regex_search(ready_, m, re) ? std::stol(m[1]) : 0;
 }
 
-std::complex<double> ServedResponse::operator()(std::complex<double> s) {
+std::vector<double> ServedResponse::ask(std::complex<double> s, int count) {
   if (std::fprintf(to_child_, "%.17g%+.17gi\n", s.real(), s.imag()) < 0 || std::fflush(to_child_) != 0)
     throw std::runtime_error("cavity-modes stopped answering: " + child_error());
   const std::string line = read_line();
   if (line.rfind("error: ", 0) == 0) throw std::runtime_error("cavity-modes: " + line.substr(7));
-  double re = 0, im = 0;
-  if (std::sscanf(line.c_str(), "%lf %lf", &re, &im) != 2)
-    throw std::runtime_error("cavity-modes stopped answering: " + child_error());
+  std::istringstream in(line);
+  std::vector<double> v(static_cast<std::size_t>(count));
+  for (double& x : v)
+    if (!(in >> x)) throw std::runtime_error("cavity-modes stopped answering: " + child_error());
   ++solves_;
-  return {re, im};
+  return v;
+}
+
+std::complex<double> ServedResponse::operator()(std::complex<double> s) {
+  const std::vector<double> v = ask(s, 2);
+  return {v[0], v[1]};
+}
+
+std::array<std::complex<double>, 3> ServedResponse::offset(std::complex<double> s) {
+  const std::vector<double> v = ask(s, 6);
+  return {std::complex<double>(v[0], v[1]), {v[2], v[3]}, {v[4], v[5]}};
 }
 
 }  // namespace rc::rom

@@ -7,6 +7,7 @@
 
 #include "mode_table.hpp"
 
+#include <array>
 #include <complex>
 #include <cstdio>
 #include <filesystem>
@@ -40,12 +41,15 @@ class ServedResponse {
   ServedResponse& operator=(const ServedResponse&) = delete;
 
   std::complex<double> operator()(std::complex<double> s);  // throws std::runtime_error with the child's reason
+  // A partially filled tank's child (served with --fill): R, R_fg, R_gg at s.
+  std::array<std::complex<double>, 3> offset(std::complex<double> s);
   const std::string& ready_line() const { return ready_; }  // "viscous fluid, Ekman number ..., N real unknowns)"
   long unknowns() const;                                    // from the ready line; 0 if it names none
   int solves() const { return solves_; }
 
  private:
   std::string read_line();
+  std::vector<double> ask(std::complex<double> s, int count);  // one line of `count` numbers back
   void shut();                      // closes the pipes, waits for the child, removes the message file
   std::string child_error() const;  // the last line the child wrote on stderr
   pid_t pid_ = -1;

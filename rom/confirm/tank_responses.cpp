@@ -23,18 +23,20 @@ int TankResponses::solves() const {
   return n;
 }
 
-// Confirming with the filled cavity's R would be wrong (docs/viscous.md, "The response of a partially filled tank").
-void require_servable(const Scene& scene, const ChainModel& m) {
-  for (int k = 0; k < m.n; ++k)
-    if (m.bodies[k].ekman > 0 && m.bodies[k].free_surface)
-      throw SceneError("body[" + std::to_string(k + 1) + "].cavity.table " + scene.bodies[k].cavity->table.string() +
-                       ": the fluid's own response (confirm, and sweeps over spin with viscous tanks) does not take a "
-                       "partially filled tank yet (cavity-modes response --fill gives it as CSV)");
+namespace {
+// A partially filled tank's offset row (root_confirmation.hpp), in its table's lengths.
+Eigen::VectorXd offset_row(const Scene& scene, const ChainModel& m, int k) {
+  const double L = scene.bodies[k].cavity->scale;
+  Eigen::VectorXd g = Eigen::VectorXd::Zero(m.extended ? m.n + 1 : m.n);
+  g[k] = m.bodies[k].fluid_center / L;
+  for (int j = 0; j < k; ++j) g[j] = scene.bodies[j].next_joint / L;
+  if (m.extended) g[m.n] = 1 / L;
+  return g;
 }
+}  // namespace
 
 TankResponses serve_tanks(const Scene& scene, const ChainModel& m, const std::string& binary, const fs::path& scratch,
                           std::ostream& log, const std::vector<double>& mesh_ekman, TableCache* tables) {
-  require_servable(scene, m);
   TankResponses t;
   for (int k = 0; k < m.n; ++k) {
     if (m.bodies[k].ekman <= 0) continue;
@@ -64,7 +66,12 @@ TankResponses serve_tanks(const Scene& scene, const ChainModel& m, const std::st
           << "with other defaults, so the check is against a different discretisation";
     log << std::endl;
     ServedResponse* p = &s;
-    t.responses.push_back({k, cav.density * std::pow(cav.scale, 5), [p](std::complex<double> x) { return (*p)(x); }});
+    t.responses.push_back({k, cav.density * std::pow(cav.scale, 5), [p](std::complex<double> x) { return (*p)(x); },
+                           {}, {}});
+    if (m.bodies[k].free_surface) {  // served with --fill (its table's command line): R, R_fg, R_gg
+      t.responses.back().R_offset = [p](std::complex<double> x) { return p->offset(x); };
+      t.responses.back().offset_row = offset_row(scene, m, k);
+    }
   }
   return t;
 }

@@ -37,10 +37,6 @@ struct TankResponses {
 // given) holds the tables already read, which a sweep does not read again at every point. Writes one line per tank to
 // `log` (the command and the served mesh, and a warning when it is not the table's mesh). Throws SceneError naming
 // the table when its provenance cannot be read back, std::runtime_error when cavity-modes does not start.
-// Throws SceneError naming the first viscous tank cavity-modes cannot serve: a partially filled one (its response about
-// the joint is R + 2cR_fg + c²R_gg, which cavity-modes gives as CSV but does not serve).
-void require_servable(const Scene& scene, const ChainModel& m);
-
 TankResponses serve_tanks(const Scene& scene, const ChainModel& m, const std::string& binary,
                           const std::filesystem::path& scratch, std::ostream& log,
                           const std::vector<double>& mesh_ekman = {}, TableCache* tables = nullptr);
