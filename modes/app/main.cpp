@@ -19,6 +19,7 @@
 #include "cavity_response.hpp"
 #include "galerkin_response_table.hpp"
 #include "shape_commands.hpp"
+#include "stokes_series.hpp"
 #include "table_comparison.hpp"
 #include "table_provenance.hpp"
 #include "viscous_table.hpp"
@@ -57,6 +58,7 @@ struct ViscousOptions {
   bool krylov = false, fit = false, galerkin = false;
   std::string exact_at;         // response to FILE.h5, Krylov: complex frequencies where R must be exact
   bool serve = false;           // response: answer sigma lines on stdin with R on stdout (chain-rom confirm)
+  bool stokes_series = false;   // response: print the strong-viscosity series' coefficients (stokes_series.hpp)
 };
 
 // The mesh of every command; --radial-size and --method (auto|mesh|separable: auto is separable for a cylinder
@@ -192,8 +194,12 @@ void add_response_options(CLI::App* cmd, ViscousOptions& viscous) {
                   "--refine-tables gives the chain's roots here: docs/rom.md, \"Confirmed roots\")");
   cmd->add_flag("--serve", viscous.serve,
                 "with --ekman, instead of --sigma and -o: assemble once, then answer each complex sigma read from "
-                "standard input (one a line) with 'R_re R_im' on standard output, until end of input (chain-rom "
-                "confirm drives it: docs/rom.md, \"Confirmed roots\")");
+                "standard input (one a line) with 'R_re R_im' on standard output (with --fill: R, R_fg, R_gg, six "
+                "numbers), until end of input (chain-rom confirm drives it: docs/rom.md, \"Confirmed roots\")");
+  cmd->add_flag("--stokes-series", viscous.stokes_series,
+                "with --ekman (the mesh's wall layers), instead of --sigma and -o: print the strong-viscosity series "
+                "R = sum_n r_n(sigma)/Ek^(n+1), Kononov's P1, P2, P3 and the order after (docs/viscous.md, \"Strong "
+                "viscosity\"); a completely filled cavity");
 }
 
 // An option the parsed command does not take (CLI11 keeps it in remaining()): one line naming it and the command.
@@ -286,6 +292,16 @@ bool ends_with(const std::string& s, const std::string& tail) {
 // What `cavity-modes response` takes together: --serve (stdin, stdout) or --sigma and -o; the fit's options with an
 // .h5 output only.
 void check_response_options(const CLI::App& cmd, const ViscousOptions& viscous, const std::string& output) {
+  if (viscous.stokes_series) {
+    if (viscous.serve || cmd.count("--sigma") > 0 || !output.empty())
+      throw CommandLineError("--stokes-series prints the series' coefficients: give neither --serve, --sigma nor -o");
+    if (cmd.count("--ekman") == 0)
+      throw CommandLineError("--stokes-series needs --ekman (the Ekman number whose wall-layer mesh it uses)");
+    if (cmd.count("--fill") > 0)
+      throw CommandLineError("--stokes-series: a completely filled cavity only (a free surface's normal stress does "
+                             "not scale with Ek)");
+    return;
+  }
   if (viscous.serve && (cmd.count("--sigma") > 0 || !output.empty()))
     throw std::runtime_error("--serve reads its frequencies from standard input and answers on standard output: "
                              "give neither --sigma nor -o");
@@ -440,13 +456,22 @@ int run_compare(const CompareRequest& r) {
   return 0;
 }
 
+// The strong-viscosity series' coefficients (stokes_series.hpp), one line each.
+void print_stokes_series(const rc::modes::StokesSeries& s) {
+  const auto c = [](std::complex<double> z) { return fmt::format("{:.12g}{:+.12g}i", z.real() + 0.0, z.imag() + 0.0); };
+  fmt::print("strong-viscosity series R(sigma) = r0/Ek + r1(sigma)/Ek^2 + r2(sigma)/Ek^3 + ... (docs/viscous.md, "
+             "\"Strong viscosity\"; Kononov's P1 = r0, P2 and P3 the sigma and constant terms of r1)\n");
+  fmt::print("r0 = {}\nr1 = ({}) sigma + ({})\nr2 = ({}) sigma^2 + ({}) sigma + ({})\n", c(s.r0), c(s.r1_s), c(s.r1_0),
+             c(s.r2_ss), c(s.r2_s), c(s.r2_0));
+}
+
 // `cavity-modes response SHAPE ...`: R(sigma) as CSV, a response table (FILE.h5), or served one sigma at a time.
 int run_response(const TableRequest& req, const ViscousOptions& viscous, bool is_viscous,
                  const rc::modes::ViscousTableSettings& viscous_settings, const std::string& method,
                  const std::string& output, const std::string& command_line) {
   rc::modes::ResponseRequest r;
   r.shape = req.shape;
-  if (!viscous.serve) r.sigmas = rc::modes::parse_sigma_spec(viscous.sigma, viscous.sigma_imag);
+  if (!viscous.serve && !viscous.stokes_series) r.sigmas = rc::modes::parse_sigma_spec(viscous.sigma, viscous.sigma_imag);
   if (!viscous.exact_at.empty()) {
     try {
       r.exact_at = rc::modes::parse_sigma_spec(viscous.exact_at, 0);
@@ -463,6 +488,10 @@ int run_response(const TableRequest& req, const ViscousOptions& viscous, bool is
   if (!is_viscous && !r.separable && r.mesh.order == 0) r.mesh.order = 6;
   if (viscous.serve) {
     rc::modes::serve_response(r, std::cin, std::cout);
+    return 0;
+  }
+  if (viscous.stokes_series) {
+    print_stokes_series(rc::modes::stokes_series(r.shape, r.mesh));
     return 0;
   }
   if (ends_with(output, ".h5")) {

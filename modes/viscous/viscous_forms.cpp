@@ -93,8 +93,8 @@ void integrate_element(const TaylorHoodSpace& space, std::size_t e, double centr
 }
 
 // Scatters one element into the real, imaginary and mass triplets of the complex pencil.
-void scatter(const TaylorHoodSpace& space, std::size_t e, const ElementMatrices& em, double ekman, Triplets& ar,
-             Triplets& ai, Triplets& mass, std::vector<double>& f, std::vector<double>& g) {
+void scatter(const TaylorHoodSpace& space, std::size_t e, const ElementMatrices& em, double ekman, bool coriolis,
+             Triplets& ar, Triplets& ai, Triplets& mass, std::vector<double>& f, std::vector<double>& g) {
   const int npe = space.velocity_nodes_per_element(), npp = space.pressure_nodes_per_element();
   const auto up = space.velocity(e, kPlus), um = space.velocity(e, kMinus), uz = space.velocity(e, kAxial);
   const auto p = space.pressure(e);
@@ -107,8 +107,10 @@ void scatter(const TaylorHoodSpace& space, std::size_t e, const ElementMatrices&
       mass.add(up[a], up[b], 0.5 * em.m0[ab]);
       mass.add(um[a], um[b], 0.5 * em.m0[ab]);
       mass.add(uz[a], uz[b], em.m0[ab]);
-      ar.add(up[a], up[b], -em.m0[ab]);  // −C
-      ar.add(um[a], um[b], em.m0[ab]);
+      if (coriolis) {
+        ar.add(up[a], up[b], -em.m0[ab]);  // −C
+        ar.add(um[a], um[b], em.m0[ab]);
+      }
       ai.add(up[a], up[b], 0.5 * ekman * em.k2[ab]);
       ai.add(um[a], um[b], 0.5 * ekman * em.k0[ab]);
       ai.add(uz[a], uz[b], ekman * em.k1[ab]);
@@ -242,7 +244,8 @@ PVec block_vector(Mat like, const std::vector<double>& real_part) {
 
 }  // namespace
 
-ViscousForms assemble_viscous_forms(const TaylorHoodSpace& space, double centroid_z, double ekman, MPI_Comm comm) {
+ViscousForms assemble_viscous_forms(const TaylorHoodSpace& space, double centroid_z, double ekman, MPI_Comm comm,
+                                    bool coriolis) {
   if (!(ekman >= 0)) throw std::runtime_error("the Ekman number must be >= 0");
   int rank = 0, ranks = 1;
   MPI_Comm_rank(comm, &rank);
@@ -259,7 +262,7 @@ ViscousForms assemble_viscous_forms(const TaylorHoodSpace& space, double centroi
   ElementMatrices em;
   for (std::size_t e = first; e < last; ++e) {
     integrate_element(space, e, centroid_z, free_surface, eq, em);
-    scatter(space, e, em, ekman, ar, ai, mass, f, g);
+    scatter(space, e, em, ekman, coriolis, ar, ai, mass, f, g);
   }
   MPI_Allreduce(f.data(), f_all.data(), n, MPI_DOUBLE, MPI_SUM, comm);
   MPI_Allreduce(g.data(), g_all.data(), n, MPI_DOUBLE, MPI_SUM, comm);

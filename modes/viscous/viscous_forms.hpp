@@ -50,7 +50,9 @@ struct ViscousForms {
 };
 
 // Assembles on `comm`: each rank integrates a contiguous share of the elements; PETSc's COO assembly sends
-// the entries to the ranks that own their rows. ekman >= 0.
-ViscousForms assemble_viscous_forms(const TaylorHoodSpace& space, double centroid_z, double ekman, MPI_Comm comm);
+// the entries to the ranks that own their rows. ekman >= 0. Without `coriolis` A has no −C: the Stokes operator of the
+// strong-viscosity expansion (stokes_series.hpp).
+ViscousForms assemble_viscous_forms(const TaylorHoodSpace& space, double centroid_z, double ekman, MPI_Comm comm,
+                                    bool coriolis = true);
 
 }  // namespace rc::modes

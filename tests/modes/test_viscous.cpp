@@ -6,6 +6,7 @@
 #include "closed_forms.hpp"
 #include "galerkin_response_table.hpp"
 #include "passivity_scan.hpp"
+#include "stokes_series.hpp"
 #include "mesh_broadcast.hpp"
 #include "taylor_hood_space.hpp"
 #include "viscous_eigensolver.hpp"
@@ -16,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <complex>
 #include <cstdio>
@@ -419,6 +421,48 @@ TEST(ViscousResponse, StrongViscosityIsTheStokesLimit) {
     previous = err;
   }
   EXPECT_LE(previous, 1e-4);
+}
+
+// Kononov's strong-viscosity series (stokes_series.hpp: P¹, then P² and P³, then the next order) against forced solves
+// on one sphere mesh: r_0 is the closed-form Stokes flow's i 8π/525, and each term added cuts the distance to R by
+// about another factor of Ek, so that at a fixed σ the error of N terms falls like Ek^−(N+1).
+TEST(ViscousResponse, StokesSeriesApproachesTheResponseOrderByOrder) {
+  const rc::geometry::ShapeSpec sphere{"sphere", {{"radius", 1.0}}, {}};
+  rc::geometry::MeshOptions m;
+  m.order = 0;
+  const rc::geometry::MeshOptions mesh = viscous_mesh_defaults(sphere, 10.0, m);
+  const StokesSeries series = stokes_series(sphere, mesh);
+  const double P1 = 8 * kPi / 525;
+  std::printf("r0 = %.12f%+.12fi (closed form %.12fi); r1 = %.6e%+.6ei sigma %+.6e%+.6ei; r2 = (%.3e%+.3ei) sigma^2 "
+              "+ (%.3e%+.3ei) sigma + (%.3e%+.3ei)\n", series.r0.real(), series.r0.imag(), P1, series.r1_s.real(),
+              series.r1_s.imag(), series.r1_0.real(), series.r1_0.imag(), series.r2_ss.real(), series.r2_ss.imag(),
+              series.r2_s.real(), series.r2_s.imag(), series.r2_0.real(), series.r2_0.imag());
+  EXPECT_LT(std::abs(series.r0 - cd(0, P1)) / P1, 1e-6);
+  // r_1's inertia term is the Stokes flow's energy ∫|u₁|² dV, u₁ = (e1 × r)(1 − r²)/10: (2/3)·4π∫r⁴(1 − r²)²dr/100
+  // = 16π/23625; its Coriolis term is measured to be minus that (r_1 = 16π/23625 (σ − 1)).
+  const double P2 = 16 * kPi / 23625;
+  std::printf("r1: sigma term %.12f against 16 pi/23625 = %.12f (relative %.1e); constant + sigma term %.1e\n",
+              series.r1_s.real(), P2, std::abs(series.r1_s - P2) / P2, std::abs(series.r1_0 + series.r1_s) / P2);
+  EXPECT_LT(std::abs(series.r1_s - P2) / P2, 1e-6);
+  const std::vector<double> ekmans = {10, 30, 100};
+  for (const cd sigma : {cd(0.5, 0), cd(1.2, 0.3)}) {
+    std::vector<std::array<double, 3>> err;
+    for (const double ek : ekmans) {
+      const cd R = cavity_response(sphere, mesh, ek, {sigma})[0];
+      std::array<double, 3> e{};
+      for (int terms = 1; terms <= 3; ++terms) e[terms - 1] = std::abs(series.response(sigma, ek, terms) - R) / std::abs(R);
+      std::printf("sigma = %.1f%+.1fi, Ek = %5.0f: |R - series|/|R| with 1, 2, 3 terms: %.2e %.2e %.2e\n",
+                  sigma.real(), sigma.imag(), ek, e[0], e[1], e[2]);
+      EXPECT_LT(e[1], e[0] / 5);
+      EXPECT_LT(e[2], e[1] / 5);
+      err.push_back(e);
+    }
+    for (int n = 0; n < 3; ++n) {  // slope against Ek between 10 and 100: N terms leave O(Ek^−(N+1)) of R ~ 1/Ek
+      const double slope = std::log(err[0][n] / err[2][n]) / std::log(ekmans[2] / ekmans[0]);
+      std::printf("  %d terms: relative error falls like Ek^-%.2f (expected %d)\n", n + 1, slope, n + 1);
+      EXPECT_NEAR(slope, n + 1, 0.25);
+    }
+  }
 }
 
 // The spheroid's coupling mode (docs/physics.md §2: λ0 = 2a²/(a² + c²)) is the linear flow of p = −z r, like the sphere's;

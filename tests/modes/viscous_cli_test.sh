@@ -90,6 +90,19 @@ expect_error "--serve without --ekman" "needs --ekman" "$BIN" response sphere --
 expect_error "--serve with -o" "give neither --sigma nor -o" "$BIN" response sphere --radius 1 --ekman 1e-2 --serve -o out.csv
 expect_error "--serve with --sigma" "give neither --sigma nor -o" "$BIN" response sphere --radius 1 --ekman 1e-2 --serve --sigma 0.5
 expect_error "response without -o" "-o,--output is required" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5
+expect_error "--stokes-series with --fill" "a completely filled cavity only" "$BIN" response sphere --radius 1 --ekman 10 --fill 0.5 --stokes-series
+expect_error "--stokes-series without --ekman" "needs --ekman" "$BIN" response sphere --radius 1 --stokes-series
+expect_error "--stokes-series with -o" "give neither --serve, --sigma nor -o" "$BIN" response sphere --radius 1 --ekman 10 --stokes-series -o out.csv
+# --stokes-series prints the strong-viscosity coefficients: r0 is the sphere's Stokes flow, i 8 pi/525.
+if "$BIN" response sphere --radius 1 --ekman 10 "${small_response[@]}" --stokes-series > series.txt 2> series.err &&
+   python3 -c '
+import math
+line = [l for l in open("series.txt") if l.startswith("r0 = ")][0]
+r0 = complex(line.split("= ")[1].strip().replace("i", "j"))
+d = abs(r0 - 8j * math.pi / 525) / (8 * math.pi / 525)
+assert d < 1e-3, d
+print("r0 = i 8 pi/525 to %.1e" % d)
+'; then ok "response --stokes-series"; else bad "response --stokes-series: $(tail -2 series.err)"; fi
 # --serve answers each sigma line with R, as the CSV path does, and a bad line with one error line.
 if printf '0.5+0.1i\nfoo\n1.2\n' | "$BIN" response sphere --radius 1 --ekman 1e-2 "${small_response[@]}" --serve > served.txt 2> served.err &&
    "$BIN" response sphere --radius 1 --ekman 1e-2 "${small_response[@]}" --sigma 0.5+0.1i,1.2 -o direct.csv > /dev/null 2>&1 &&
