@@ -25,27 +25,6 @@ cd StokesSeries::response(cd sigma, double ekman, int terms) const {
 
 namespace {
 
-// xᵀy (no conjugate) of two complex vectors in the block form (pairs (Re, Im), each pair on one rank).
-cd bilinear(Vec x, Vec y) {
-  MPI_Comm comm;
-  petsc_check(PetscObjectGetComm(reinterpret_cast<PetscObject>(x), &comm), "PetscObjectGetComm");
-  const PetscScalar* xs = nullptr;
-  const PetscScalar* ys = nullptr;
-  PetscInt lo = 0, hi = 0;
-  petsc_check(VecGetOwnershipRange(x, &lo, &hi), "VecGetOwnershipRange");
-  petsc_check(VecGetArrayRead(x, &xs), "VecGetArrayRead");
-  petsc_check(VecGetArrayRead(y, &ys), "VecGetArrayRead");
-  double local[2] = {0, 0}, total[2] = {0, 0};
-  for (PetscInt j = 0; j + 1 < hi - lo; j += 2) {
-    local[0] += xs[j] * ys[j] - xs[j + 1] * ys[j + 1];
-    local[1] += xs[j] * ys[j + 1] + xs[j + 1] * ys[j];
-  }
-  petsc_check(VecRestoreArrayRead(x, &xs), "VecRestoreArrayRead");
-  petsc_check(VecRestoreArrayRead(y, &ys), "VecRestoreArrayRead");
-  MPI_Allreduce(local, total, 2, MPI_DOUBLE, MPI_SUM, comm);
-  return {total[0], total[1]};
-}
-
 PVec like(Vec v) {
   PVec out;
   petsc_check(VecDuplicate(v, out.out()), "VecDuplicate");
@@ -82,12 +61,12 @@ StokesSeries stokes_series(const geometry::ShapeSpec& shape, const geometry::Mes
   const PVec zM = stokes_solve(solver, Mx), zC = stokes_solve(solver, Cx);
   const double pi = std::numbers::pi;
   StokesSeries s;
-  s.r0 = -pi * bilinear(stokes.coupling, x0);
-  s.r1_s = -pi * bilinear(x0, Mx);
-  s.r1_0 = -pi * bilinear(x0, Cx);
-  s.r2_ss = -pi * bilinear(Mx, zM);
-  s.r2_s = -2.0 * pi * bilinear(Mx, zC);
-  s.r2_0 = -pi * bilinear(Cx, zC);
+  s.r0 = -pi * block_bilinear(stokes.coupling, x0);
+  s.r1_s = -pi * block_bilinear(x0, Mx);
+  s.r1_0 = -pi * block_bilinear(x0, Cx);
+  s.r2_ss = -pi * block_bilinear(Mx, zM);
+  s.r2_s = -2.0 * pi * block_bilinear(Mx, zC);
+  s.r2_0 = -pi * block_bilinear(Cx, zC);
   return s;
 }
 

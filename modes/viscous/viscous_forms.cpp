@@ -244,6 +244,26 @@ PVec block_vector(Mat like, const std::vector<double>& real_part) {
 
 }  // namespace
 
+std::complex<double> block_bilinear(Vec x, Vec y) {
+  MPI_Comm comm;
+  petsc_check(PetscObjectGetComm(reinterpret_cast<PetscObject>(x), &comm), "PetscObjectGetComm");
+  const PetscScalar* xs = nullptr;
+  const PetscScalar* ys = nullptr;
+  PetscInt lo = 0, hi = 0;
+  petsc_check(VecGetOwnershipRange(x, &lo, &hi), "VecGetOwnershipRange");
+  petsc_check(VecGetArrayRead(x, &xs), "VecGetArrayRead");
+  petsc_check(VecGetArrayRead(y, &ys), "VecGetArrayRead");
+  double local[2] = {0, 0}, total[2] = {0, 0};
+  for (PetscInt j = 0; j + 1 < hi - lo; j += 2) {
+    local[0] += xs[j] * ys[j] - xs[j + 1] * ys[j + 1];
+    local[1] += xs[j] * ys[j + 1] + xs[j + 1] * ys[j];
+  }
+  petsc_check(VecRestoreArrayRead(x, &xs), "VecRestoreArrayRead");
+  petsc_check(VecRestoreArrayRead(y, &ys), "VecRestoreArrayRead");
+  MPI_Allreduce(local, total, 2, MPI_DOUBLE, MPI_SUM, comm);
+  return {total[0], total[1]};
+}
+
 ViscousForms assemble_viscous_forms(const TaylorHoodSpace& space, double centroid_z, double ekman, MPI_Comm comm,
                                     bool coriolis) {
   if (!(ekman >= 0)) throw std::runtime_error("the Ekman number must be >= 0");

@@ -31,6 +31,8 @@
 
 #include <mpi.h>
 
+#include <complex>
+
 namespace rc::modes {
 
 // The complex pencil written over the reals: unknown j of the complex problem is the pair (2j, 2j + 1) =
@@ -48,6 +50,10 @@ struct ViscousForms {
   PVec real_slots;         // 1 on the real slots, 0 on the imaginary ones
   PVec mass_diagonal;      // diagonal of M̂ (for scaling checks)
 };
+
+// xᵀy (no conjugate) of two complex vectors in the block form above (pairs (Re, Im), each pair on one rank), summed
+// over the vectors' communicator.
+std::complex<double> block_bilinear(Vec x, Vec y);
 
 // Assembles on `comm`: each rank integrates a contiguous share of the elements; PETSc's COO assembly sends
 // the entries to the ranks that own their rows. ekman >= 0. Without `coriolis` A has no −C: the Stokes operator of the

@@ -14,25 +14,7 @@ namespace rc::modes {
 namespace {
 
 // π fᵀx for the block form x = a + ib: the coupling vector f sits on the real slots only.
-std::complex<double> moment_of(Vec f, Vec x) {
-  MPI_Comm comm;
-  petsc_check(PetscObjectGetComm(reinterpret_cast<PetscObject>(x), &comm), "PetscObjectGetComm");
-  PetscScalar fa = 0, fb = 0;
-  petsc_check(VecDot(x, f, &fa), "VecDot");  // Σ f_j a_j
-  // Σ f_j b_j: each pair (a_j, b_j) is local to one rank (viscous_forms.cpp).
-  const PetscScalar* xs = nullptr;
-  const PetscScalar* fs = nullptr;
-  PetscInt lo = 0, hi = 0;
-  petsc_check(VecGetOwnershipRange(x, &lo, &hi), "VecGetOwnershipRange");
-  petsc_check(VecGetArrayRead(x, &xs), "VecGetArrayRead");
-  petsc_check(VecGetArrayRead(f, &fs), "VecGetArrayRead");
-  double local = 0;
-  for (PetscInt g = lo; g + 1 < hi; g += 2) local += fs[g - lo] * xs[g + 1 - lo];  // pairs never straddle ranks
-  petsc_check(VecRestoreArrayRead(x, &xs), "VecRestoreArrayRead");
-  petsc_check(VecRestoreArrayRead(f, &fs), "VecRestoreArrayRead");
-  MPI_Allreduce(&local, &fb, 1, MPI_DOUBLE, MPI_SUM, comm);
-  return std::numbers::pi * std::complex<double>(fa, fb);
-}
+std::complex<double> moment_of(Vec f, Vec x) { return std::numbers::pi * block_bilinear(f, x); }
 
 }  // namespace
 

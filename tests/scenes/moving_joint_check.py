@@ -29,6 +29,9 @@ import json, os, re, subprocess, sys
 import h5py
 import numpy as np
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from partial_fill_table import tank  # noqa: E402
+
 modes_bin, rom_bin, scene, work = sys.argv[1:5]
 os.makedirs(work, exist_ok=True)
 text = open(scene).read()
@@ -100,16 +103,6 @@ if not last < 1e-6:
     print("FAILED: the stiff chain is not the rigid top with its tank s1 + d above the support"); failed += 1
 
 # 3. (22) for the two bodies, written out from the table.
-def tank(path):
-    """A table's datasets: each mode's lambda_c, a_c, t_c (complex for a viscous table) and the tank's integrals."""
-    with h5py.File(path) as h:
-        md, fs = h["modes"], h["free_surface"]
-        v = "decay" in md
-        out = dict(lam=md["lambda"][:] + (1j * md["decay"][:] if v else 0), N2=md["N2"][:],
-                   a=md["a"][:] + (1j * md["a_imag"][:] if v else 0), t=fs["t"][:] + (1j * fs["t_imag"][:] if v else 0))
-        out.update({k: float(fs.attrs[k][()]) for k in ("K0", "K1", "K2")})
-        out.update({k: float(h.attrs[k][()]) for k in ("volume", "A_f", "C_f")})
-    return out
 
 L5, c, y = rho * L**5, d / L, s1 / L
 

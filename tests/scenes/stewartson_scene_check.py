@@ -27,6 +27,9 @@ import json, os, re, subprocess, sys
 import h5py
 import numpy as np
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from partial_fill_table import tank  # noqa: E402
+
 modes_bin, rom_bin, scene, work = sys.argv[1:5]
 os.makedirs(work, exist_ok=True)
 text = open(scene).read()
@@ -51,17 +54,6 @@ def value(key):
 
 mass, A, C, com, spin = value("mass"), value("A"), value("C"), value("com"), value("spin")
 rho, L, d, g = value("density"), value("scale"), value("center"), value("gravity")
-def tank(path):
-    """A table's datasets (h5py): each mode's lambda_c, a_c and t_c (complex for a viscous table: lambda + i decay,
-    a + i a_imag, t + i t_imag) and the tank's integrals."""
-    with h5py.File(path) as h:
-        m, fs = h["modes"], h["free_surface"]
-        v = "decay" in m
-        out = dict(lam=m["lambda"][:] + (1j * m["decay"][:] if v else 0), N2=m["N2"][:],
-                   a=m["a"][:] + (1j * m["a_imag"][:] if v else 0), t=fs["t"][:] + (1j * fs["t_imag"][:] if v else 0))
-        out.update({k: float(fs.attrs[k][()]) for k in ("K0", "K1", "K2")})
-        out.update({k: float(h.attrs[k][()]) for k in ("volume", "A_f", "C_f")})
-    return out
 
 ideal = tank(table)
 L5 = rho * L**5
