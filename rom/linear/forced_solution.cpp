@@ -48,12 +48,41 @@ Eigen::VectorXcd ForcedSolution::at(double t) const {
   return y;
 }
 
+namespace {
+
+// A transverse force f (space frame) on body k at `at` along its axis, as the moments it puts on the tilts: ℓ e_z × f
+// with ℓ = at on body k and s_j on each body j below it (its joint carries the force), M_y + i M_x = ℓ (f_x − i f_y).
+void add_force_moments(const Scene& scene, std::size_t k, const std::array<double, 3>& f, double at,
+                       Eigen::VectorXcd& F) {
+  const cd transverse(f[0], -f[1]);
+  F[static_cast<Eigen::Index>(k)] += at * transverse;
+  for (std::size_t j = 0; j < k; ++j) F[static_cast<Eigen::Index>(j)] += scene.bodies[j].next_joint * transverse;
+}
+
+}  // namespace
+
 Eigen::VectorXcd constant_moments(const Scene& scene) {
   Eigen::VectorXcd F = Eigen::VectorXcd::Zero(static_cast<Eigen::Index>(scene.size()));
-  for (std::size_t k = 0; k < scene.size(); ++k)
+  for (std::size_t k = 0; k < scene.size(); ++k) {
     if (scene.bodies[k].moment) F[static_cast<Eigen::Index>(k)] = complex_moment(scene.bodies[k].moment->space);
+    if (scene.bodies[k].force) add_force_moments(scene, k, scene.bodies[k].force->space, scene.bodies[k].force->at, F);
+  }
   return F;
 }
+
+namespace {
+
+// The particular solution of the moments F sin(2π frequency t) on the tilts, added to s (nothing when F is 0).
+void add_harmonic(const ChainModel& m, const FirstOrderSystem& f, const Eigen::VectorXcd& F, double frequency,
+                  const std::string& what, ForcedSolution& s) {
+  if (F.cwiseAbs().maxCoeff() == 0) return;
+  s.present = true;
+  const Eigen::VectorXcd fh = forcing(m, f, F) / cd(0, 2);
+  const double omega = 2 * std::numbers::pi * frequency;
+  s.harmonics.push_back({omega, resolvent(f, omega, fh, what), resolvent(f, -omega, -fh, what)});
+}
+
+}  // namespace
 
 ForcedSolution forced_solution(const ChainModel& m, const FirstOrderSystem& f, const Scene& scene) {
   ForcedSolution s;
@@ -61,20 +90,19 @@ ForcedSolution forced_solution(const ChainModel& m, const FirstOrderSystem& f, c
   const Eigen::VectorXcd Fc = constant_moments(scene);
   if (Fc.cwiseAbs().maxCoeff() > 0) {
     s.present = true;
-    s.constant = resolvent(f, 0.0, forcing(m, f, Fc), "a constant moment (body.moment.space)");  // (0 − B) y_c = f_c
+    s.constant = resolvent(f, 0.0, forcing(m, f, Fc), "a constant moment or force (body.moment.space, body.force.space)");  // (0 − B) y_c = f_c
   }
   for (std::size_t k = 0; k < scene.size(); ++k) {
-    const auto& spec = scene.bodies[k].moment;
-    if (!spec) continue;
-    const cd Fh = complex_moment(spec->harmonic);
-    if (Fh == cd(0) || spec->frequency == 0) continue;  // sin(0 t) = 0
-    s.present = true;
     Eigen::VectorXcd F = Eigen::VectorXcd::Zero(m.n);
-    F[static_cast<Eigen::Index>(k)] = Fh;
-    const Eigen::VectorXcd fh = forcing(m, f, F) / cd(0, 2);
-    const double omega = 2 * std::numbers::pi * spec->frequency;
-    const std::string what = "body[" + std::to_string(k + 1) + "].moment.harmonic";
-    s.harmonics.push_back({omega, resolvent(f, omega, fh, what), resolvent(f, -omega, -fh, what)});
+    if (const auto& spec = scene.bodies[k].moment; spec && spec->frequency > 0) {  // sin(0 t) = 0
+      F[static_cast<Eigen::Index>(k)] = complex_moment(spec->harmonic);
+      add_harmonic(m, f, F, spec->frequency, "body[" + std::to_string(k + 1) + "].moment.harmonic", s);
+    }
+    if (const auto& force = scene.bodies[k].force; force && force->frequency > 0) {
+      F.setZero();
+      add_force_moments(scene, k, force->harmonic, force->at, F);
+      add_harmonic(m, f, F, force->frequency, "body[" + std::to_string(k + 1) + "].force.harmonic", s);
+    }
   }
   return s;
 }

@@ -272,6 +272,12 @@ void require_linear_scene(const Scene& scene) {
     if (b.moment && scene.free_chain)
       fail(scene, "body[" + std::to_string(k + 1) + "].moment", "external moments on a free chain are in the "
            "nonlinear model only ([run] model = \"nonlinear\")");
+    if (b.force && scene.free_chain)
+      fail(scene, "body[" + std::to_string(k + 1) + "].force", "external forces on a free chain are in the "
+           "nonlinear model only ([run] model = \"nonlinear\")");
+    if (b.force && b.force->frequency > 0 && b.force->harmonic[2] != 0)
+      fail(scene, "body[" + std::to_string(k + 1) + "].force.harmonic", "a time-varying axial force changes the "
+           "chain's stiffness with time (a parametric chain): the nonlinear model only ([run] model = \"nonlinear\")");
   }
 }
 
@@ -385,6 +391,13 @@ void set_stiffness_friction_gyro(const Scene& scene, ChainModel& cm) {
     cm.D(k, k + 1) -= al;
     cm.D(k + 1, k) -= al;
   }
+  // A constant axial force F_z at `at` on body k (docs/rom.md, "External forces"): its potential −F·x_P, to second order
+  // ½F_z(at |u_k|² + Σ_{j<k} s_j |u_j|²), stiffens each tilt that lowers the point as gravity's −m g does.
+  for (int k = 0; k < n; ++k)
+    if (const auto& f = scene.bodies[k].force; f && !scene.free_chain) {
+      cm.K(k, k) += f->space[2] * f->at;
+      for (int j = 0; j < k; ++j) cm.K(j, j) += f->space[2] * scene.bodies[j].next_joint;
+    }
   // A projectile's aerodynamics (docs/rom.md, "A projectile's aerodynamic moments"): the static moment M_α u (u = the
   // yaw, overturning for M_α > 0) joins the stiffness as gravity's −a g u does, the pitch damping −M_q u̇ the friction,
   // the Magnus moment i M_p ω u (along the yaw's direction, F = M_y + i M_x) the stiffness as −i M_p ω.

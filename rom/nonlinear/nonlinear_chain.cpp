@@ -86,7 +86,19 @@ void add_external_moments(const NonlinearChain& c, const Frames& f, double t, st
     if (b.pitch_damping != 0) tau[k] -= b.pitch_damping * (f.Omega[k] - f.Omega[k].dot(f.n[k]) * f.n[k]);
     if (b.magnus != 0)
       tau[k] += b.magnus * f.Omega[k].dot(f.n[k]) * (f.n[k] - f.n[k].z() * Vector3d::UnitZ());
+    // A force at the point force_at n_k: its moment about O_k, and the joints below carry it (their reactions).
+    const Vector3d F = b.force(t);
+    if (F.isZero()) continue;
+    tau[k] += (b.force_at * f.n[k]).cross(F);
+    for (int j = 0; j < k; ++j) tau[j] += f.S[j].cross(F);
   }
+}
+
+// Σ_k F_k(t): what the free chain's centre of mass feels besides gravity.
+Vector3d total_force(const NonlinearChain& c, double t) {
+  Vector3d F = Vector3d::Zero();
+  for (const ChainBody& b : c.bodies) F += b.force(t);
+  return F;
 }
 
 }  // namespace
@@ -181,7 +193,7 @@ ChainRates chain_rates(const NonlinearChain& c, const ChainState& s) {
   }
   if (c.free_chain) {
     M.block<3, 3>(3 * n, 3 * n) = mu[0] * Matrix3d::Identity();
-    Vector3d r = mu[0] * g;
+    Vector3d r = mu[0] * g + total_force(c, s.t);
     for (int j = 0; j < n; ++j) r -= c.bodies[j].mass * d[j];
     rhs.segment<3>(3 * n) = r;
   }

@@ -17,6 +17,7 @@
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
 
+#include <cmath>
 #include <complex>
 #include <vector>
 
@@ -61,6 +62,13 @@ struct ChainBody {
   double magnus = 0;
   Eigen::Vector3d space_moment = Eigen::Vector3d::Zero(), harmonic_moment = Eigen::Vector3d::Zero();
   double frequency = 0;          // Hz
+  // External force (N), space_force + sin(2π force_frequency t) harmonic_force, at force_at (m) along e3 from O_k
+  // (Batyr's F_k): its moment about O_k on this body, and through the joints' reactions S_j × F on each body below.
+  Eigen::Vector3d space_force = Eigen::Vector3d::Zero(), harmonic_force = Eigen::Vector3d::Zero();
+  double force_frequency = 0, force_at = 0;
+  Eigen::Vector3d force(double t) const {
+    return space_force + std::sin(6.283185307179586 * force_frequency * t) * harmonic_force;
+  }
   std::vector<ChainFluidMode> fluid;  // the kept modes of its cavity, then the static correction's
   int kept_modes = 0;                 // how many of `fluid` are the table's kept modes
   // Σ E of the kept modes + the static correction: the transverse inertia the fluid does not carry rigidly

@@ -65,6 +65,12 @@ NonlinearChain nonlinear_chain(const Scene& scene) {
       body.harmonic_moment = Vector3d(b.moment->harmonic.data());
       body.frequency = b.moment->frequency;
     }
+    if (b.force) {
+      body.space_force = Vector3d(b.force->space.data());
+      body.harmonic_force = Vector3d(b.force->harmonic.data());
+      body.force_frequency = b.force->frequency;
+      body.force_at = b.force->at;
+    }
     if (b.aero) {
       body.static_moment = b.aero->static_moment;
       body.pitch_damping = b.aero->pitch_damping;

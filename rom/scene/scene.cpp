@@ -174,6 +174,18 @@ MomentSpec parse_moment(Ctx& c, const toml::table& mt, const std::string& wm) {
   return m;
 }
 
+// [body.force]: an external force at a point of the body's axis.
+ForceSpec parse_force(Ctx& c, const toml::table& ft, const std::string& wf) {
+  check_keys(c, ft, wf, {"space", "harmonic", "frequency", "at"});
+  ForceSpec f;
+  f.space = get_vector3(c, ft, "space", wf + ".space");
+  f.harmonic = get_vector3(c, ft, "harmonic", wf + ".harmonic");
+  f.frequency = get_number(c, ft, "frequency", wf + ".frequency", Sign::nonneg, false).value_or(0.0);
+  f.at = *get_number(c, ft, "at", wf + ".at", Sign::any, true);
+  if (ft.get("harmonic") && !ft.get("frequency")) c.fail(wf + ".frequency", "missing: a harmonic force needs it (Hz)");
+  return f;
+}
+
 // [body.aero]: a projectile's static and pitch-damping moments (linear aeroballistics).
 AeroSpec parse_aero(Ctx& c, const toml::table& at, const std::string& wa) {
   check_keys(c, at, wa, {"static_moment", "pitch_damping", "magnus"});
@@ -187,7 +199,7 @@ AeroSpec parse_aero(Ctx& c, const toml::table& at, const std::string& wa) {
 // [[body]] k of n (0-based): its inertias, spin, cavity and moments.
 BodySpec parse_body(Ctx& c, const toml::table& bt, std::size_t k, std::size_t n, const std::filesystem::path& base) {
   const std::string w = "body[" + std::to_string(k + 1) + "]";
-  check_keys(c, bt, w, {"mass", "A", "B", "C", "com", "next_joint", "spin", "cavity", "moment", "aero"});
+  check_keys(c, bt, w, {"mass", "A", "B", "C", "com", "next_joint", "spin", "cavity", "moment", "force", "aero"});
   BodySpec b;
   b.mass = *get_number(c, bt, "mass", w + ".mass", Sign::nonneg, true);
   b.A = *get_number(c, bt, "A", w + ".A", Sign::nonneg, true);
@@ -199,6 +211,7 @@ BodySpec parse_body(Ctx& c, const toml::table& bt, std::size_t k, std::size_t n,
   b.spin = get_number(c, bt, "spin", w + ".spin", Sign::any, false).value_or(0.0);
   if (const toml::table* ct = sub_table(c, bt, "cavity", w + ".cavity")) b.cavity = parse_cavity(c, *ct, w + ".cavity", base);
   if (const toml::table* mt = sub_table(c, bt, "moment", w + ".moment")) b.moment = parse_moment(c, *mt, w + ".moment");
+  if (const toml::table* ft = sub_table(c, bt, "force", w + ".force")) b.force = parse_force(c, *ft, w + ".force");
   if (const toml::table* at = sub_table(c, bt, "aero", w + ".aero")) b.aero = parse_aero(c, *at, w + ".aero");
   return b;
 }

@@ -42,6 +42,14 @@ struct MomentSpec {
   double frequency = 0;  // Hz
 };
 
+// An external force on a body (N; Batyr (1)-(7)'s F_k), applied at the point `at` (m) along its axis from O_k: `space`
+// fixed in space plus `harmonic` · sin(2π frequency t) (docs/rom.md, "External forces").
+struct ForceSpec {
+  std::array<double, 3> space{0, 0, 0}, harmonic{0, 0, 0};
+  double frequency = 0;  // Hz
+  double at = 0;         // m along the body's axis from O_k
+};
+
 // A projectile's aerodynamic moments in linear theory (docs/rom.md, "A projectile's aerodynamic moments"): about the
 // body's fixed point, the reference direction of the yaw the chain's vertical (the flight direction).
 struct AeroSpec {
@@ -60,6 +68,7 @@ struct BodySpec {
   double spin = 0;        // omega_k0, rad/s
   std::optional<CavitySpec> cavity;
   std::optional<MomentSpec> moment;
+  std::optional<ForceSpec> force;
   std::optional<AeroSpec> aero;
 };
 
