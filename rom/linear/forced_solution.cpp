@@ -61,6 +61,14 @@ void add_force_moments(const Scene& scene, std::size_t k, const std::array<doubl
 
 }  // namespace
 
+namespace {
+// A uniform transverse field f (m/s²) on a fixed chain: every mass m at its lever, Σ = a_k (f_x − i f_y) on tilt k
+// (Kononov's a_k, the fluid's mass included: a filled cavity's liquid feels a uniform field as a gradient only).
+Eigen::VectorXcd field_moments(const ChainModel& m, const std::array<double, 3>& f) {
+  return m.a.cast<cd>() * cd(f[0], -f[1]);
+}
+}  // namespace
+
 Eigen::VectorXcd constant_moments(const Scene& scene) {
   Eigen::VectorXcd F = Eigen::VectorXcd::Zero(static_cast<Eigen::Index>(scene.size()));
   for (std::size_t k = 0; k < scene.size(); ++k) {
@@ -87,11 +95,14 @@ void add_harmonic(const ChainModel& m, const FirstOrderSystem& f, const Eigen::V
 ForcedSolution forced_solution(const ChainModel& m, const FirstOrderSystem& f, const Scene& scene) {
   ForcedSolution s;
   s.constant = Eigen::VectorXcd::Zero(f.dim());
-  const Eigen::VectorXcd Fc = constant_moments(scene);
+  Eigen::VectorXcd Fc = constant_moments(scene);
+  if (scene.field && !scene.free_chain) Fc += field_moments(m, scene.field->space);
   if (Fc.cwiseAbs().maxCoeff() > 0) {
     s.present = true;
     s.constant = resolvent(f, 0.0, forcing(m, f, Fc), "a constant moment or force (body.moment.space, body.force.space)");  // (0 − B) y_c = f_c
   }
+  if (scene.field && !scene.free_chain && scene.field->frequency > 0)
+    add_harmonic(m, f, field_moments(m, scene.field->harmonic), scene.field->frequency, "field.harmonic", s);
   for (std::size_t k = 0; k < scene.size(); ++k) {
     Eigen::VectorXcd F = Eigen::VectorXcd::Zero(m.n);
     if (const auto& spec = scene.bodies[k].moment; spec && spec->frequency > 0) {  // sin(0 t) = 0

@@ -259,6 +259,9 @@ namespace {
 // What only the nonlinear model has: the linear system (26) needs axisymmetric bodies; the spins' own motion (axial
 // friction and moments) is its separate block (axial_rotation.hpp).
 void require_linear_scene(const Scene& scene) {
+  if (scene.field && !scene.free_chain && scene.field->frequency > 0 && scene.field->harmonic[2] != 0)
+    fail(scene, "field.harmonic", "a time-varying axial field changes the chain's stiffness with time (a parametric "
+         "chain, e.g. a vibrating support): the nonlinear model only ([run] model = \"nonlinear\")");
   for (std::size_t k = 0; k < scene.size(); ++k) {
     const BodySpec& b = scene.bodies[k];
     if (b.B && *b.B != b.A)
@@ -315,6 +318,11 @@ BodyModel body_model(const Scene& scene, int k, TableCache* tables, bool linear_
     A += b.A_f + b.m_f * d * d;  // parallel-axis theorem: fluid inertia about O_k
     // A partially filled tank's surface re-centres on the tilted spin axis: inertia K(O_k) more (docs/physics.md §2).
     A += b.K_free_surface;
+    if (b.free_surface && scene.field && !scene.free_chain &&
+        (scene.field->space[0] != 0 || scene.field->space[1] != 0 || scene.field->harmonic[0] != 0 ||
+         scene.field->harmonic[1] != 0))
+      fail(scene, "field", "a transverse field moves a partially filled tank's free surface, which the chain does not "
+           "model yet (body[" + std::to_string(k + 1) + "]'s tank; an axial field is taken, as gravity is)");
     if (b.free_surface && (k > 0 || scene.free_chain) && bs.cavity->static_correction)
       fail(scene, "body[" + std::to_string(k + 1) + "].cavity.static_correction",
            "not modelled for a partially filled tank on a body whose joint moves (its remainder would couple to the "
@@ -391,6 +399,9 @@ void set_stiffness_friction_gyro(const Scene& scene, ChainModel& cm) {
     cm.D(k, k + 1) -= al;
     cm.D(k + 1, k) -= al;
   }
+  // A constant axial field f_z (m/s², docs/rom.md "A uniform force field") acts as gravity −f_z would: −a_k g → +a_k f_z.
+  if (scene.field && !scene.free_chain)
+    for (int k = 0; k < n; ++k) cm.K(k, k) += cm.a[k] * scene.field->space[2];
   // A constant axial force F_z at `at` on body k (docs/rom.md, "External forces"): its potential −F·x_P, to second order
   // ½F_z(at |u_k|² + Σ_{j<k} s_j |u_j|²), stiffens each tilt that lowers the point as gravity's −m g does.
   for (int k = 0; k < n; ++k)

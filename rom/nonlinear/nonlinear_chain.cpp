@@ -154,7 +154,7 @@ void add_fluid_rates(const NonlinearChain& c, const ChainState& s, const std::ve
 ChainRates chain_rates(const NonlinearChain& c, const ChainState& s) {
   const int n = c.size(), dim = 3 * n + (c.free_chain ? 3 : 0);
   const Frames f = frames(c, s);
-  const Vector3d g(0, 0, -c.gravity);
+  const Vector3d g = c.acceleration(s.t);
   std::vector<double> mu(n + 1, 0.0);  // mu[k] = Σ_{j>k} m_j
   for (int k = n - 1; k >= 0; --k) mu[k] = mu[k + 1] + c.bodies[k].mass;
   // Centripetal parts: b[k] = Σ_{i<k} Ω_i × (Ω_i × S_i) of r̈_k, d[k] = b[k] + Ω_k × (Ω_k × ρ_k) of ẍ_k.
@@ -230,7 +230,7 @@ double chain_energy(const NonlinearChain& c, const ChainState& s) {
     // About O_k: J_k holds m_k ρ_k²; the kinetic energy is ½ m |v_O|² + m v_O·(Ω × ρ) + ½ Ωᵀ J Ω.
     const Vector3d vO = v[k] - f.Omega[k].cross(f.rho[k]);
     E += 0.5 * m * vO.squaredNorm() + m * vO.dot(f.Omega[k].cross(f.rho[k])) + 0.5 * f.Omega[k].dot(f.J[k] * f.Omega[k]);
-    E += m * c.gravity * x[k].z();
+    E += m * c.gravity * x[k].z() - m * c.field.dot(x[k]);  // the constant field's potential (a harmonic one does work)
     E += c.bodies[k].static_moment * f.n[k].z();  // the static aerodynamic moment's potential: −n × ∂V/∂n = M_α e_z × n
     const Vector3d n_prev = k > 0 ? f.n[k - 1] : Vector3d::UnitZ();
     E += c.joints[k].stiffness * (1 - f.n[k].dot(n_prev));

@@ -87,6 +87,13 @@ struct ChainJoint {              // joint k: O_k, between body k − 1 (the supp
 struct NonlinearChain {
   bool free_chain = false;
   double gravity = 0;                 // along −e3 of space (m/s²)
+  // A uniform force field besides gravity (m/s², on every mass; the scene's [field]): field + sin(2π f t) field_harmonic.
+  Eigen::Vector3d field = Eigen::Vector3d::Zero(), field_harmonic = Eigen::Vector3d::Zero();
+  double field_frequency = 0;         // Hz
+  // The acceleration field every mass feels at time t: gravity and the field.
+  Eigen::Vector3d acceleration(double t) const {
+    return Eigen::Vector3d(0, 0, -gravity) + field + std::sin(6.283185307179586 * field_frequency * t) * field_harmonic;
+  }
   std::vector<ChainBody> bodies;
   std::vector<ChainJoint> joints;     // n: joints[0] is the support (stiffness 0), joints[k] links bodies k−1 and k
   int size() const { return static_cast<int>(bodies.size()); }

@@ -34,6 +34,7 @@ bool finite(const ChainState& s) {
 double energy_scale(const NonlinearChain& c, const ChainState& s) {
   NonlinearChain no_potential = c;
   no_potential.gravity = 0;
+  no_potential.field.setZero();
   for (auto& j : no_potential.joints) j.stiffness = 0;
   const double kinetic = chain_energy(no_potential, s);
   return kinetic + std::abs(chain_energy(c, s) - kinetic);
@@ -45,6 +46,11 @@ NonlinearChain nonlinear_chain(const Scene& scene) {
   NonlinearChain c;
   c.free_chain = scene.free_chain;
   c.gravity = scene.free_chain ? 0.0 : scene.gravity;  // uniform gravity does not turn a free chain (docs/scene-format.md)
+  if (scene.field && !scene.free_chain) {  // nor does a uniform field
+    c.field = Vector3d(scene.field->space.data());
+    c.field_harmonic = Vector3d(scene.field->harmonic.data());
+    c.field_frequency = scene.field->frequency;
+  }
   // Totals with the frozen fluid and the kept modes, as the linear model has them (chain_model.hpp).
   const ChainModel model = build_model(scene, nullptr, false);
   const std::size_t n = scene.size();

@@ -186,6 +186,17 @@ ForceSpec parse_force(Ctx& c, const toml::table& ft, const std::string& wf) {
   return f;
 }
 
+// [field]: a uniform body-force field, m/s².
+FieldSpec parse_field(Ctx& c, const toml::table& ft) {
+  check_keys(c, ft, "field", {"space", "harmonic", "frequency"});
+  FieldSpec f;
+  f.space = get_vector3(c, ft, "space", "field.space");
+  f.harmonic = get_vector3(c, ft, "harmonic", "field.harmonic");
+  f.frequency = get_number(c, ft, "frequency", "field.frequency", Sign::nonneg, false).value_or(0.0);
+  if (ft.get("harmonic") && !ft.get("frequency")) c.fail("field.frequency", "missing: a harmonic field needs it (Hz)");
+  return f;
+}
+
 // [body.aero]: a projectile's static and pitch-damping moments (linear aeroballistics).
 AeroSpec parse_aero(Ctx& c, const toml::table& at, const std::string& wa) {
   check_keys(c, at, wa, {"static_moment", "pitch_damping", "magnus"});
@@ -308,10 +319,11 @@ Scene parse_scene_text(const std::string& text, const std::filesystem::path& bas
     os << name << ": TOML syntax error at line " << e.source().begin.line << ": " << e.description();
     throw SceneError(os.str());
   }
-  check_keys(c, root, "", {"system", "body", "joint", "support", "initial", "run"});
+  check_keys(c, root, "", {"system", "field", "body", "joint", "support", "initial", "run"});
   Scene s;
   s.file = name;
   parse_system(c, root, s);
+  if (const toml::table* ft = sub_table(c, root, "field", "field")) s.field = parse_field(c, *ft);
   const toml::node* bodies = root.get("body");
   if (!bodies) c.fail("body", "missing: a chain needs at least one [[body]]");
   const toml::array* barr = bodies->as_array();

@@ -88,10 +88,19 @@ struct RunSpec {
   bool nonlinear() const { return model == "nonlinear"; }
 };
 
+// A uniform body-force field (Batyr's f(t, x), uniform in space): an acceleration in m/s² acting on every mass
+// besides gravity, `space` constant plus `harmonic` · sin(2π frequency t) — the inertial force of a support's or a
+// craft's acceleration (docs/rom.md, "A uniform force field").
+struct FieldSpec {
+  std::array<double, 3> space{0, 0, 0}, harmonic{0, 0, 0};
+  double frequency = 0;  // Hz
+};
+
 struct Scene {
   std::filesystem::path file;
   bool free_chain = false;
   double gravity = 0;
+  std::optional<FieldSpec> field;
   std::vector<BodySpec> bodies;
   std::vector<JointSpec> joints;  // n - 1
   double support_friction = 0;    // alpha_1

@@ -109,6 +109,10 @@ rom_cli(run_nonlinear_tank ARGS run;nonlinear_tank.toml;-o;out_nl_tank.h5 EXPECT
         MATCH "wrote out_nl_tank.h5: 101 samples, model nonlinear[^\n]*\nenergy: not an integral with fluid tanks")
 rom_cli(bad_moment ARGS run;bad_moment.toml;-o;out_bad_moment.h5 EXPECT_EXIT 1
         MATCH "^chain-rom: error: [^\n]*body\\[1\\]\\.moment\\.frequency: missing: a harmonic moment needs it" NO_FILE out_bad_moment.h5)
+rom_cli(bad_force ARGS run;bad_force.toml;-o;out_bad_force.h5 EXPECT_EXIT 1
+        MATCH "^chain-rom: error: [^\n]*body\\[1\\]\\.force\\.at: " NO_FILE out_bad_force.h5)
+rom_cli(bad_field ARGS run;bad_field.toml;-o;out_bad_field.h5 EXPECT_EXIT 1
+        MATCH "^chain-rom: error: [^\n]*field\\.harmonic: a time-varying axial field changes the chain's stiffness" NO_FILE out_bad_field.h5)
 rom_cli(bad_nonlinear_tilt ARGS run;bad_nonlinear_tilt.toml;-o;out_bad_nl_tilt.h5 EXPECT_EXIT 1
         MATCH "^chain-rom: error: [^\n]*initial\\.tilt\\[1\\]: Krylov angles beta = Re u = 2, [^\n]*outside" NO_FILE out_bad_nl_tilt.h5)
 # The linear run measures its own validity against the nonlinear chain (with its tanks) and warns past 1 %.

@@ -112,6 +112,89 @@ TEST(ForcedRun, ForcesAreTheNonlinearChainsAtSmallAmplitude) {
   EXPECT_GT(rel[0] / rel[1], 3.5);
 }
 
+namespace {
+// forced_pendulums' chain in a uniform field instead of the force: a constant part (transverse and axial) and a
+// harmonic transverse one; tilts and transverse parts times `scale`.
+std::string pendulums_in_field(double scale, const std::string& model = "method = \"exact\"\n") {
+  const auto num = [](double x) { return std::to_string(x); };
+  return "[system]\nkind = \"fixed\"\ngravity = 9.81\n[support]\nfriction = 0.05\n[field]\nspace = [" +
+         num(0.03 * scale) + ", " + num(-0.02 * scale) + ", -2.0]\nharmonic = [" + num(0.05 * scale) + ", " +
+         num(0.04 * scale) + ", 0.0]\nfrequency = 0.8\n"
+         "[[body]]\nmass = 2.0\nA = 0.05\nC = 0.03\ncom = -0.1\nnext_joint = -0.3\nspin = 30.0\n"
+         "[[body]]\nmass = 1.0\nA = 0.02\nC = 0.01\ncom = -0.12\nspin = 20.0\n"
+         "[[joint]]\nstiffness = 3.0\nfriction = 0.02\n"
+         "[initial]\ntilt = [[" + num(0.002 * scale) + ", 0.0], [" + num(-0.001 * scale) + ", 0.001]]\n"
+         "[run]\nt_end = 5.0\noutput_step = 0.01\ntolerance = 1e-11\n" + model;
+}
+}  // namespace
+
+// A uniform field f (Batyr's body force field, uniform in space; the scene's [field]) is tilted gravity: the linear
+// chain's static tilt under its constant part is every body's −(f_x − i f_y)/(g − f_z) (the chain hangs along the
+// effective gravity, its joints unstressed), and with a harmonic part it is the nonlinear chain at small amplitude,
+// the difference falling as the amplitude squared.
+TEST(ForcedRun, UniformFieldIsTiltedGravity) {
+  const Scene s0 = parse_scene_text(pendulums_in_field(1.0), ".", "field-static");
+  const ChainModel m0 = build_model(s0);
+  const FirstOrderSystem f0 = build_first_order(m0);
+  const Eigen::VectorXcd u_static = forced_solution(m0, f0, s0).constant.head(2) / f0.s;
+  const cd u_closed = -cd(0.03, 0.02) / (9.81 - -2.0);
+  const double static_error = (u_static.array() - u_closed).abs().maxCoeff() / std::abs(u_closed);
+  std::printf("  static tilts %.10f%+.10fi, %.10f%+.10fi; along the effective gravity %.10f%+.10fi (relative %.1e)\n",
+              u_static[0].real(), u_static[0].imag(), u_static[1].real(), u_static[1].imag(), u_closed.real(),
+              u_closed.imag(), static_error);
+  EXPECT_LT(static_error, 1e-12);
+  std::vector<double> rel;
+  for (double scale : {1.0, 0.5}) {
+    const Scene s = parse_scene_text(pendulums_in_field(scale), ".", "field");
+    const History linear = propagate(build_model(s), s);
+    const Scene sn = parse_scene_text(pendulums_in_field(scale, "model = \"nonlinear\"\n"), ".", "field-nl");
+    const NonlinearChain chain = nonlinear_chain(sn);
+    const NonlinearHistory nl = integrate_nonlinear(chain, nonlinear_initial_state(sn, chain), sn.run);
+    ASSERT_EQ(linear.t.size(), nl.base.t.size());
+    rel.push_back((linear.u - nl.base.u).cwiseAbs().maxCoeff() / linear.u.cwiseAbs().maxCoeff());
+    std::printf("  scale %.1f: largest tilt %.3e rad over 5 s, linear against nonlinear %.2e of it\n", scale,
+                linear.u.cwiseAbs().maxCoeff(), rel.back());
+  }
+  std::printf("  halving tilts and transverse field: the difference falls by %.2f (amplitude squared: 4)\n",
+              rel[0] / rel[1]);
+  EXPECT_LT(rel[1], 1e-3);
+  EXPECT_GT(rel[0] / rel[1], 3.5);
+}
+
+// A uniform force field of Batyr (the scene's [field]): a support vibrating vertically, y = a sin Ωt, is the axial field
+// −ÿ = a Ω² sin Ωt on every mass. The nonlinear chain holds an inverted pendulum up when (aΩ)² > 2 g A/(m ℓ) (Kapitza
+// 1951, "Dynamic stability of a pendulum when its point of suspension vibrates"; A about the pivot, ℓ = com above it)
+// and lets it fall below: at 50 Hz, 30 % above and below the threshold's acceleration amplitude.
+TEST(ForcedRun, VibratingSupportHoldsTheInvertedPendulumAsKapitzaSays) {
+  const double m = 1.0, l = 0.1, A = 0.01, g = 9.81, f = 50.0, Omega = 2 * std::numbers::pi * f;
+  const double threshold = Omega * std::sqrt(2 * g * A / (m * l));  // acceleration amplitude a Ω² at (aΩ)² = 2gA/(mℓ)
+  double held = 0, fallen = 0;
+  for (const double factor : {1.3, 0.7}) {
+    const std::string text = "[system]\nkind = \"fixed\"\ngravity = 9.81\n[field]\nharmonic = [0.0, 0.0, " +
+                             std::to_string(factor * threshold) + "]\nfrequency = 50.0\n[[body]]\nmass = 1.0\n"
+                             "A = 0.01\nC = 0.001\ncom = 0.1\n[initial]\ntilt = [[0.05, 0.0]]\n[run]\nt_end = 3.0\n"
+                             "output_step = 0.001\ntolerance = 1e-8\nmodel = \"nonlinear\"\n";
+    const Scene s = parse_scene_text(text, ".", "kapitza");
+    const NonlinearChain chain = nonlinear_chain(s);
+    const NonlinearHistory nl = integrate_nonlinear(chain, nonlinear_initial_state(s, chain), s.run);
+    const double largest = nl.base.u.cwiseAbs().maxCoeff();
+    std::printf("  a Omega^2 = %.1f m/s^2 (%.1f x Kapitza's threshold %.1f): largest tilt over 3 s %.3f rad from 0.05\n",
+                factor * threshold, factor, threshold, largest);
+    (factor > 1 ? held : fallen) = largest;
+    if (factor < 1) continue;
+    // Kapitza's averaged motion: θ = θ_s(1 − ε sin Ωt), ε = mℓa/A (a = aΩ²/Ω²), θ_s in the effective potential of
+    // frequency ω_s² = (mℓaΩ)²/(2A²) − mgℓ/A. Started at rest, the slow motion starts with the rate εΩθ0 that cancels
+    // the fast one's: its amplitude is θ0 √(1 + (εΩ/ω_s)²), the tilt's largest that times (1 + ε).
+    const double a = factor * threshold / (Omega * Omega), eps = m * l * a / A;
+    const double ws = std::sqrt(std::pow(m * l * a * Omega, 2) / (2 * A * A) - m * g * l / A);
+    const double predicted = 0.05 * std::sqrt(1 + std::pow(eps * Omega / ws, 2)) * (1 + eps);
+    std::printf("    Kapitza's averaged motion: largest tilt %.3f rad (slow frequency %.2f rad/s, eps %.4f); relative %.1e\n",
+                predicted, ws, eps, std::abs(largest - predicted) / predicted);
+    EXPECT_LT(std::abs(largest - predicted) / predicted, 0.1);
+  }
+  EXPECT_GT(fallen, 0.5);
+}
+
 // Long after its start has decayed the run is the steady response: the static K⁻¹F_c (Z(0) = K) plus the harmonic
 // (h_y + i h_x)/(2i)[H(Ω)e^{iΩt} − H(−Ω)e^{−iΩt}] of frequency_response.hpp — the closed-form particular solution and
 // Z(σ) checked against each other. The Gauss and Dormand–Prince integrators give the same forced run.

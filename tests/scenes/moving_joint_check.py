@@ -21,7 +21,8 @@
 7. chain-rom confirm with the viscous tank's own response (served by cavity-modes with --fill: R, R_fg, R_gg), on the
    arm and floating free: every confirmed root is a root of (22) written out here with R, R_fg, R_gg from
    cavity-modes response --fill -o CSV;
-8. refused in one line, no file written: static_correction on such a tank, the nonlinear chain with it.
+8. refused in one line, no file written: static_correction on such a tank, the nonlinear chain with it, a transverse
+   force field with it.
 usage: moving_joint_check.py CAVITY_MODES CHAIN_ROM SCENE WORKDIR
 """
 import json, os, re, subprocess, sys
@@ -289,4 +290,6 @@ refused(chain_text(50.0, 0.0).replace(f'center = {d!r}', f'center = {d!r}\nstati
         "not modelled for a partially filled tank on a body whose joint moves")
 refused(chain_text(50.0, 0.0) + motion.replace("[run]\n", "[run]\nmodel = \"nonlinear\"\n"), ["run"],
         "on the first body of a fixed chain only")
+refused(chain_text(50.0, 0.0).replace("[[body]]", "[field]\nspace = [0.5, 0.0, 0.0]\n[[body]]", 1), ["spectrum"],
+        "a transverse field moves a partially filled tank's free surface")
 sys.exit(1 if failed else 0)
