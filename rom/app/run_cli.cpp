@@ -95,7 +95,12 @@ LinearValidity check_validity(const Scene& scene, const ChainModel& model, Histo
 void print_energy(const ChainModel& model, const History& h) {
   if (h.forced && !model.viscous) {
     std::cout << "energy: H(0) = " << h.H.front() << ", H(end) = " << h.H.back()
-              << " (external moments do work: not an integral; docs/rom.md, \"External moments in the linear chain\")\n";
+              << " (external moments and forces do work: not an integral; docs/rom.md, \"External moments in the linear "
+                 "chain\")";
+    if (!std::isnan(h.work_balance))
+      std::cout << "; H(t) - H(0) = their work less the friction's, to " << h.work_balance
+                << " of H's scale (trapezoid rule on the output samples; Batyr (11))";
+    std::cout << "\n";
     return;
   }
   if (!model.viscous) {

@@ -42,6 +42,12 @@ Eigen::VectorXcd resolvent(const FirstOrderSystem& f, double omega, const Eigen:
 
 }  // namespace
 
+Eigen::VectorXcd ForcedSolution::moments_at(double t) const {
+  Eigen::VectorXcd F = moments;
+  for (const auto& [omega, amplitude] : moment_harmonics) F += std::sin(omega * t) * amplitude;
+  return F;
+}
+
 Eigen::VectorXcd ForcedSolution::at(double t) const {
   Eigen::VectorXcd y = constant;
   for (const Harmonic& h : harmonics) y += h.plus * std::exp(cd(0, h.omega * t)) + h.minus * std::exp(cd(0, -h.omega * t));
@@ -88,6 +94,7 @@ void add_harmonic(const ChainModel& m, const FirstOrderSystem& f, const Eigen::V
   const Eigen::VectorXcd fh = forcing(m, f, F) / cd(0, 2);
   const double omega = 2 * std::numbers::pi * frequency;
   s.harmonics.push_back({omega, resolvent(f, omega, fh, what), resolvent(f, -omega, -fh, what)});
+  s.moment_harmonics.emplace_back(omega, F);
 }
 
 }  // namespace
@@ -97,6 +104,7 @@ ForcedSolution forced_solution(const ChainModel& m, const FirstOrderSystem& f, c
   s.constant = Eigen::VectorXcd::Zero(f.dim());
   Eigen::VectorXcd Fc = constant_moments(scene);
   if (scene.field && !scene.free_chain) Fc += field_moments(m, scene.field->space);
+  s.moments = Fc;
   if (Fc.cwiseAbs().maxCoeff() > 0) {
     s.present = true;
     s.constant = resolvent(f, 0.0, forcing(m, f, Fc), "a constant moment or force (body.moment.space, body.force.space)");  // (0 − B) y_c = f_c

@@ -17,6 +17,7 @@
 
 #include <Eigen/Dense>
 #include <complex>
+#include <utility>
 #include <vector>
 
 namespace rc::rom {
@@ -30,6 +31,11 @@ struct ForcedSolution {
   Eigen::VectorXcd constant;
   std::vector<Harmonic> harmonics;
   Eigen::VectorXcd at(double t) const;  // y_p(t) in the balanced state of FirstOrderSystem
+  // The generalised moments F(t) on the tilts themselves (moments, forces, field: M_y + i M_x per body), constant plus
+  // Σ amplitude · sin(Ω t): their power Re(F̄ᵀu̇) is the work the run's energy balance counts.
+  Eigen::VectorXcd moments;
+  std::vector<std::pair<double, Eigen::VectorXcd>> moment_harmonics;  // (Ω rad/s, amplitude)
+  Eigen::VectorXcd moments_at(double t) const;
 };
 
 // The complex moment F_k = M_y + i M_x on each body: the constant part and, per body, the harmonic amplitude.

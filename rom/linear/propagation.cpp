@@ -157,6 +157,7 @@ class Recorder {
     hist_.t[j] = j * h_;
     hist_.u.row(j) = u.transpose();
     hist_.z.row(j) = fluid_coordinates(m_, v, w).transpose();
+    if (forced_) record_power(j, u, v);
     const Energy e = meter_(u, v, w);
     hist_.H[j] = e.total();
     hist_.H_scale[j] = e.scale();
@@ -184,8 +185,9 @@ class Recorder {
       if (balance_meter_) hist_.balance = energy_balance(balance_, h_);
       return;
     }
-    if (forced_) {  // the moments do work: H is the chain's energy, not an integral
+    if (forced_) {  // the moments do work: H is the chain's energy, not an integral, and its change is their work
       hist_.max_energy_drift = std::numeric_limits<double>::quiet_NaN();
+      if (!m_.has_circulatory()) hist_.work_balance = work_balance(steps, H0, S0);
       return;
     }
     for (long j = 1; j <= steps; ++j) {
@@ -207,12 +209,34 @@ class Recorder {
                              w = re.col(i).tail(nm_).cast<cd>() + cd(0, 1) * im.col(i).tail(nm_).cast<cd>();
       hist_.z.row(j) = fluid_coordinates(m_, v, w).transpose();
     }
+    if (forced_)
+      for (long i = 0; i < cols; ++i) {
+        const Eigen::VectorXcd y = re.col(i).cast<cd>() + cd(0, 1) * im.col(i).cast<cd>();
+        record_power(j0 + i, y.head(n_) * is, y.segment(n_, n_));
+      }
     if (budget_meter_)
       for (long i = 0; i < cols; ++i) budget_[j0 + i] = (*budget_meter_)(re.col(i).cast<cd>() + cd(0, 1) * im.col(i).cast<cd>());
     if (balance_meter_)
       for (long i = 0; i < cols; ++i) measure_balance(j0 + i, re.col(i).cast<cd>() + cd(0, 1) * im.col(i).cast<cd>());
     meter_.block(re.topRows(n_) * is, im.topRows(n_) * is, re.middleRows(n_, n_), im.middleRows(n_, n_),
                  re.bottomRows(nm_), im.bottomRows(nm_), &hist_.H[j0], &hist_.H_scale[j0]);
+  }
+
+  // The power of the external moments less the friction's at sample j: Re(F̄ᵀu̇) − u̇ᴴDu̇ (dH/dt, docs/rom.md "Energy").
+  void record_power(long j, const Eigen::VectorXcd& /*u*/, const Eigen::VectorXcd& v) {
+    if (power_.empty()) power_.resize(hist_.H.size());
+    power_[j] = forced_->moments_at(j * h_).dot(v).real() - v.dot(m_.D.cast<cd>() * v).real();
+  }
+
+  // Against the largest energy scale of the run (the moments may pump it up from next to nothing).
+  double work_balance(long steps, double H0, double S0) const {
+    double work = 0, worst = 0, scale = S0;
+    for (long j = 1; j <= steps; ++j) {
+      work += 0.5 * h_ * (power_[j - 1] + power_[j]);
+      worst = std::max(worst, std::abs(hist_.H[j] - H0 - work));
+      scale = std::max(scale, hist_.H_scale[j]);
+    }
+    return worst / scale;
   }
 
   void measure_balance(long j, const Eigen::VectorXcd& y) {
@@ -233,6 +257,7 @@ class Recorder {
   std::optional<GalerkinEnergyMeter> balance_meter_;
   std::vector<EnergySample> balance_;
   const ForcedSolution* forced_;
+  std::vector<double> power_;  // forced runs: dH/dt at each sample
 };
 
 // method = "exact": the eigen-decomposition, or the step's matrix exponential where its eigenvectors are

@@ -12,6 +12,7 @@
 #include "galerkin_energy.hpp"
 #include "scene.hpp"
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,9 @@ struct History {
   EnergyBalance balance;    // with viscous tanks whose fluid holds an energy (Galerkin tanks, one spin): H and its
                             // dissipation (galerkin_energy.hpp); empty otherwise
   bool forced = false;      // external moments (forced_solution.hpp): H is then not an integral
+  // Forced, ideal tanks: max_t |H(t) − H(0) − W(t)| / max_t scale(t), W the work of the external moments, forces and field
+  // less the friction's, ∫ Re(F̄ᵀu̇) − u̇ᴴDu̇ by the trapezoid rule on the output samples (Batyr (11)); NaN otherwise.
+  double work_balance = std::numeric_limits<double>::quiet_NaN();
   // The spins' own motion (axial_rotation.hpp), when axial friction or moments move them: steps x n, else empty.
   Eigen::MatrixXd spin, axial_angle;
   std::string method_used;  // what actually ran

@@ -76,6 +76,25 @@ std::string forced_pendulums(double scale, const std::string& model = "method = 
 }
 }  // namespace
 
+// Batyr's energy balance (11) with the external moments' power: a forced run's H changes by the work of its moments,
+// forces and field less the friction's, ∫ Re(F̄ᵀu̇) − u̇ᴴDu̇ dt (History::work_balance, the trapezoid rule on the
+// output samples): its error falls as the output step squared, and a wrong power (the moments left out) fails it.
+TEST(ForcedRun, EnergyChangesByTheWorkOfTheMoments) {
+  std::vector<double> balance;
+  for (const double step : {0.01, 0.005}) {
+    std::string text = forced_pendulums(1.0);
+    text.replace(text.find("output_step = 0.01"), 18, "output_step = " + std::to_string(step));
+    const Scene s = parse_scene_text(text, ".", "work");
+    const History h = propagate(build_model(s), s);
+    balance.push_back(h.work_balance);
+    std::printf("  output step %.3f s: max |H(t) - H(0) - W(t)| = %.2e of H's largest scale (H from %.4e to %.4e)\n", step,
+                h.work_balance, h.H.front(), h.H.back());
+  }
+  std::printf("  halving the step: the balance's error falls by %.2f (trapezoid rule: 4)\n", balance[0] / balance[1]);
+  EXPECT_LT(balance[1], 1e-3);
+  EXPECT_GT(balance[0] / balance[1], 3.5);
+}
+
 // External forces (Batyr's F_k): the linear chain takes a force's transverse part as the moments ℓ e_z × F on the body
 // (ℓ = at) and on every body below it (ℓ = s_j, through its joint), its constant axial part as the stiffness of its
 // potential; the nonlinear chain applies the force at its point in space. (1) The static tilt of one pendulum under a
