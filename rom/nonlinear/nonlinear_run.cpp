@@ -42,6 +42,29 @@ double energy_scale(const NonlinearChain& c, const ChainState& s) {
 
 }  // namespace
 
+namespace {
+// The body's external moments, force and aerodynamic moments as the scene gives them.
+void set_external_loads(const BodySpec& b, ChainBody& body) {
+  if (b.moment) {
+    body.axial_moment = b.moment->axial;
+    body.space_moment = Vector3d(b.moment->space.data());
+    body.harmonic_moment = Vector3d(b.moment->harmonic.data());
+    body.frequency = b.moment->frequency;
+  }
+  if (b.force) {
+    body.space_force = Vector3d(b.force->space.data());
+    body.harmonic_force = Vector3d(b.force->harmonic.data());
+    body.force_frequency = b.force->frequency;
+    body.force_at = b.force->at;
+  }
+  if (b.aero) {
+    body.static_moment = b.aero->static_moment;
+    body.pitch_damping = b.aero->pitch_damping;
+    body.magnus = b.aero->magnus;
+  }
+}
+}  // namespace
+
 NonlinearChain nonlinear_chain(const Scene& scene) {
   NonlinearChain c;
   c.free_chain = scene.free_chain;
@@ -65,23 +88,7 @@ NonlinearChain nonlinear_chain(const Scene& scene) {
     body.C = t.C;
     body.com = t.c;
     body.next_joint = k + 1 < n ? b.next_joint : 0.0;
-    if (b.moment) {
-      body.axial_moment = b.moment->axial;
-      body.space_moment = Vector3d(b.moment->space.data());
-      body.harmonic_moment = Vector3d(b.moment->harmonic.data());
-      body.frequency = b.moment->frequency;
-    }
-    if (b.force) {
-      body.space_force = Vector3d(b.force->space.data());
-      body.harmonic_force = Vector3d(b.force->harmonic.data());
-      body.force_frequency = b.force->frequency;
-      body.force_at = b.force->at;
-    }
-    if (b.aero) {
-      body.static_moment = b.aero->static_moment;
-      body.pitch_damping = b.aero->pitch_damping;
-      body.magnus = b.aero->magnus;
-    }
+    set_external_loads(b, body);
     // The chain takes a viscous table's values for a positive spin (ChainFluidMode); the linear model's are for the
     // scene's spin, conjugated when it is negative.
     const auto as_positive_spin = [&](std::complex<double> E) { return b.spin < 0 ? std::conj(E) : E; };

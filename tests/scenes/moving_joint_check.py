@@ -31,17 +31,13 @@ import h5py
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from partial_fill_table import tank  # noqa: E402
+from partial_fill_table import table_from_recipe, tank, value as scene_value  # noqa: E402
 
 modes_bin, rom_bin, scene, work = sys.argv[1:5]
-os.makedirs(work, exist_ok=True)
-text = open(scene).read()
-name, args = re.search(r"^# recipe: ([^:]+): (.*)$", text, re.M).groups()
-table = os.path.join(work, name)
-subprocess.run([modes_bin] + args.split() + ["-o", table], check=True, stdout=subprocess.DEVNULL)
+text, args, table = table_from_recipe(modes_bin, scene, work)
 
 def value(key):
-    return float(re.search(rf"^{key} = ([-0-9.e]+)", text, re.M).group(1))
+    return scene_value(text, key)
 
 top = dict(mass=value("mass"), A=value("A"), C=value("C"), com=value("com"), spin=value("spin"))
 rho, L, d, g = value("density"), value("scale"), value("center"), value("gravity")

@@ -1,5 +1,9 @@
 """A partially filled tank's table as the scene checks read it (h5py), independently of chain-rom: shared by
 stewartson_scene_check.py and moving_joint_check.py."""
+import os
+import re
+import subprocess
+
 import h5py
 
 
@@ -14,3 +18,19 @@ def tank(path):
         out.update({k: float(fs.attrs[k][()]) for k in ("K0", "K1", "K2")})
         out.update({k: float(h.attrs[k][()]) for k in ("volume", "A_f", "C_f")})
     return out
+
+
+def table_from_recipe(modes_bin, scene, work):
+    """Makes the scene's table from its '# recipe: NAME: ARGS' line into `work`: returns the scene's text, the recipe's
+    cavity-modes arguments and the table's path."""
+    os.makedirs(work, exist_ok=True)
+    text = open(scene).read()
+    name, args = re.search(r"^# recipe: ([^:]+): (.*)$", text, re.M).groups()
+    table = os.path.join(work, name)
+    subprocess.run([modes_bin] + args.split() + ["-o", table], check=True, stdout=subprocess.DEVNULL)
+    return text, args, table
+
+
+def value(text, key):
+    """The number a scene's line 'key = number' holds (the first such line)."""
+    return float(re.search(rf"^{key} = ([-0-9.e]+)", text, re.M).group(1))

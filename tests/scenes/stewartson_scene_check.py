@@ -28,14 +28,10 @@ import h5py
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from partial_fill_table import tank  # noqa: E402
+from partial_fill_table import table_from_recipe, tank, value as scene_value  # noqa: E402
 
 modes_bin, rom_bin, scene, work = sys.argv[1:5]
-os.makedirs(work, exist_ok=True)
-text = open(scene).read()
-name, args = re.search(r"^# recipe: ([^:]+): (.*)$", text, re.M).groups()
-table = os.path.join(work, name)
-subprocess.run([modes_bin] + args.split() + ["-o", table], check=True, stdout=subprocess.DEVNULL)
+text, args, table = table_from_recipe(modes_bin, scene, work)
 local = os.path.join(work, "scene.toml")
 open(local, "w").write(re.sub(r'^table = ".*"$', f'table = "{table}"', text, flags=re.M))
 out = subprocess.run([rom_bin, "spectrum", local, "--json", "--all"], capture_output=True, text=True)
@@ -50,7 +46,7 @@ if spectrum["stable"] != (expect == "stable"):
     print(f"FAILED: the scene should be {expect}"); failed += 1
 
 def value(key):
-    return float(re.search(rf"^{key} = ([-0-9.e]+)", text, re.M).group(1))
+    return scene_value(text, key)
 
 mass, A, C, com, spin = value("mass"), value("A"), value("C"), value("com"), value("spin")
 rho, L, d, g = value("density"), value("scale"), value("center"), value("gravity")
