@@ -131,6 +131,8 @@ class Recorder {
   Recorder(const ChainModel& m, const FirstOrderSystem& f, double h, long steps, History& hist,
            const ForcedSolution* forced)
       : m_(m), f_(f), h_(h), n_(m.n), nm_(m.n_modes()), hist_(hist), meter_(m), forced_(forced) {
+    // Sized here, not when first written: exact propagation stores its blocks from several threads.
+    if (forced) power_.resize(steps + 1);
     hist.t.resize(steps + 1);
     hist.u.resize(steps + 1, n_);
     hist.z.resize(steps + 1, nm_);
@@ -157,7 +159,7 @@ class Recorder {
     hist_.t[j] = j * h_;
     hist_.u.row(j) = u.transpose();
     hist_.z.row(j) = fluid_coordinates(m_, v, w).transpose();
-    if (forced_) record_power(j, u, v);
+    if (forced_) record_power(j, v);
     const Energy e = meter_(u, v, w);
     hist_.H[j] = e.total();
     hist_.H_scale[j] = e.scale();
@@ -212,7 +214,7 @@ class Recorder {
     if (forced_)
       for (long i = 0; i < cols; ++i) {
         const Eigen::VectorXcd y = re.col(i).cast<cd>() + cd(0, 1) * im.col(i).cast<cd>();
-        record_power(j0 + i, y.head(n_) * is, y.segment(n_, n_));
+        record_power(j0 + i, y.segment(n_, n_));
       }
     if (budget_meter_)
       for (long i = 0; i < cols; ++i) budget_[j0 + i] = (*budget_meter_)(re.col(i).cast<cd>() + cd(0, 1) * im.col(i).cast<cd>());
@@ -223,8 +225,7 @@ class Recorder {
   }
 
   // The power of the external moments less the friction's at sample j: Re(F̄ᵀu̇) − u̇ᴴDu̇ (dH/dt, docs/rom.md "Energy").
-  void record_power(long j, const Eigen::VectorXcd& /*u*/, const Eigen::VectorXcd& v) {
-    if (power_.empty()) power_.resize(hist_.H.size());
+  void record_power(long j, const Eigen::VectorXcd& v) {
     power_[j] = forced_->moments_at(j * h_).dot(v).real() - v.dot(m_.D.cast<cd>() * v).real();
   }
 
