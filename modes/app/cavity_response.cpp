@@ -4,6 +4,7 @@
 #include "discretisation.hpp"
 #include "free_surface.hpp"
 #include "free_surface_mesh.hpp"
+#include "free_surface_quadratic.hpp"
 #include "partial_fill_cylinder.hpp"
 #include "partial_fill_table.hpp"
 #include "passivity_scan.hpp"
@@ -329,12 +330,36 @@ std::vector<double> response_tail(double lo, double hi) {
   return tail;
 }
 
+namespace {
+
+// A partially filled tank's frozen liquid, Zhukovsky's inertia and the /free_surface attributes: the ideal problem's
+// integrals on the liquid's default mesh, as the ideal --fill table's (no eigenpairs: free_surface_quadratic.hpp).
+ModeTable partially_filled_start(const ResponseRequest& req) {
+  const geometry::ShapeSpec liquid = geometry::partially_filled(req.shape, req.fill);
+  geometry::MeshOptions mesh;
+  mesh.order = 6;
+  mesh.size = geometry::default_mesh_size(liquid) * kFreeSurfaceSizeFactor;
+  const FESpace space(geometry::mesh_meridian(liquid, mesh));
+  const PartialFillSpectrum s = spectrum_integrals(space, free_surface_quadratic(space));
+  ModeTable t = start_table(req.shape, s.fluid, s.J_D);
+  t.sum_rule = s.sum_rule;
+  t.free_surface = free_surface_attributes(s, req.fill);
+  return t;
+}
+
+}  // namespace
+
 ModeTable response_table_start(const ResponseRequest& req, long unknowns) {
-  // The frozen-fluid integrals and J_zh: the ideal problem on the shape's default mesh.
-  rc::geometry::MeshOptions ideal_mesh;
-  ideal_mesh.order = 6;
-  const Discretisation d(req.shape, mesh_method_defaults(req.shape, ideal_mesh));
-  ModeTable t = start_table(req.shape, d.fluid, d.zhukovsky.J_zh);
+  ModeTable t;
+  if (req.fill < 1) {
+    t = partially_filled_start(req);
+  } else {
+    // The frozen-fluid integrals and J_zh: the ideal problem on the shape's default mesh.
+    rc::geometry::MeshOptions ideal_mesh;
+    ideal_mesh.order = 6;
+    const Discretisation d(req.shape, mesh_method_defaults(req.shape, ideal_mesh));
+    t = start_table(req.shape, d.fluid, d.zhukovsky.J_zh);
+  }
   t.ekman = req.ekman;
   t.fe_order = req.mesh.order;
   t.mesh_h = req.mesh.size;

@@ -3,6 +3,8 @@
 #include "galerkin_projection.hpp"
 #include "galerkin_response.hpp"
 #include "krylov_response.hpp"
+#include "offset_rows.hpp"
+#include "free_surface.hpp"
 #include "passivity_scan.hpp"
 #include "petsc_handles.hpp"
 #include "progress.hpp"
@@ -11,6 +13,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <iostream>
 #include <limits>
@@ -22,11 +25,57 @@ namespace {
 
 using cd = std::complex<double>;
 
-// max |R_G − R| / max |R| over (s, R) pairs.
-double relative_error(const GalerkinReduction& g, const std::vector<cd>& s, const std::vector<cd>& R, double scale) {
+// R's largest values on the window, entry by entry: each entry's error is measured against its own (R_fg's against
+// √(scale_ff scale_gg): it may vanish by symmetry), as the Krylov reduction measures it (krylov_response.hpp).
+struct EntryScales {
+  double ff = 0, gg = 0;
+};
+
+EntryScales window_scales(const std::vector<OffsetResponse>& R, std::size_t window) {
+  EntryScales s;
+  for (std::size_t k = 0; k < window; ++k) {
+    s.ff = std::max(s.ff, std::abs(R[k].ff));
+    s.gg = std::max(s.gg, std::abs(R[k].gg));
+  }
+  return s;
+}
+
+// max over (s, R) pairs and entries of |R_G − R| / scale.
+double relative_error(const GalerkinReduction& g, const std::vector<cd>& s, const std::vector<OffsetResponse>& R,
+                      const EntryScales& scale) {
   double worst = 0;
-  for (std::size_t k = 0; k < s.size(); ++k) worst = std::max(worst, std::abs(g.response(s[k]) - R[k]) / scale);
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    const OffsetResponse r = g.entries(s[k]);
+    worst = std::max(worst, std::abs(r.ff - R[k].ff) / scale.ff);
+    if (scale.gg > 0)
+      worst = std::max({worst, std::abs(r.fg - R[k].fg) / std::sqrt(scale.ff * scale.gg),
+                        std::abs(r.gg - R[k].gg) / scale.gg});
+  }
   return worst;
+}
+
+// R at the samples from the projection itself: R_xy = π yᵀx_x = π conj(x̄ᵀy), the solutions in the order
+// forced_solutions made them (with a free surface x_f(s_k), x_g(s_k) for each sample).
+std::vector<OffsetResponse> sample_entries(const GalerkinMatrices& g, std::size_t samples) {
+  const bool offset = g.offset.size() > 0;
+  std::vector<OffsetResponse> R;
+  const auto at = [&](const Eigen::VectorXcd& v, std::size_t k) { return std::numbers::pi * std::conj(v[static_cast<Eigen::Index>(k)]); };
+  for (std::size_t k = 0; k < samples; ++k)
+    R.push_back(offset ? OffsetResponse{at(g.coupling, 2 * k), at(g.offset, 2 * k), at(g.offset, 2 * k + 1)}
+                       : OffsetResponse{at(g.coupling, k), 0.0, 0.0});
+  return R;
+}
+
+// R at frequencies by forced solves the basis never saw (its entries with a free surface).
+std::vector<OffsetResponse> forced_entries(const ViscousForms& forms, const std::vector<cd>& s,
+                                           const ResponseProgress& progress) {
+  ForcedResponse response(forms);
+  std::vector<OffsetResponse> R;
+  for (const cd x : s) {
+    R.push_back(forms.offset_coupling ? response.with_offset(x) : OffsetResponse{response(x), 0.0, 0.0});
+    if (progress) progress(R.size(), s.size());
+  }
+  return R;
 }
 
 // The forced solutions are all kept until projected: refuse, with one line, a table whose solutions would take more
@@ -46,7 +95,7 @@ void check_basis_memory(const ViscousForms& forms, std::size_t samples) {
 // The projection on the forced solutions at `samples` (freed once projected).
 GalerkinMatrices project_on_forced_solutions(const ViscousForms& forms, const std::vector<cd>& samples,
                                              const ResponseProgress& progress) {
-  const auto solutions = forced_solutions(forms, samples, progress);
+  const auto solutions = forced_solutions(forms, samples, progress, forms.offset_coupling.get() != nullptr);
   std::vector<Vec> basis;
   for (const auto& x : solutions) basis.push_back(*x);
   return project_on_modes(forms, basis);
@@ -85,6 +134,65 @@ cd add_ritz_rows(ModeTable& t, const GalerkinReduction& red, double residual) {
   return sum;
 }
 
+// A partially filled tank's Ritz pairs as rows: two per Ritz value (offset_rows), their t in /free_surface; no
+// /galerkin block (its Ritz vectors would need both rows' couplings; chain-rom's reduction = "galerkin" refuses a
+// partially filled tank). Returns the residues' sum about the centroid.
+cd add_offset_ritz_rows(ModeTable& t, const GalerkinReduction& red, double residual) {
+  cd sum = 0;
+  for (std::size_t l = 0; l < red.lambda.size(); ++l) {
+    const cd p = red.lambda[l];
+    for (const OffsetRow& r : offset_rows(red.residue[l], red.residue_fg[l], red.residue_gg[l])) {
+      if (r.a == 0.0 && r.t == 0.0) continue;
+      const cd E = 2.0 * r.a * r.a;
+      t.lambda.push_back(p.real());
+      t.kappa.push_back(2 / p.real());
+      t.decay.push_back(std::max(p.imag(), 0.0));
+      t.E.push_back(E.real());
+      t.E_imag.push_back(E.imag());
+      t.a.push_back(r.a.real());
+      t.a_imag.push_back(r.a.imag());
+      t.N2.push_back(1.0);
+      t.residual.push_back(std::max(residual, std::numeric_limits<double>::epsilon()));
+      t.free_surface.t.push_back(r.t.real());
+      t.free_surface.t_imag.push_back(r.t.imag());
+    }
+    sum += red.residue[l];
+  }
+  return sum;
+}
+
+// The rows of either reduction: a filled cavity's one per Ritz pair with /galerkin, a partially filled tank's two.
+cd add_rows(ModeTable& t, const GalerkinReduction& red, double residual) {
+  return red.residue_fg.empty() ? add_ritz_rows(t, red, residual) : add_offset_ritz_rows(t, red, residual);
+}
+
+// The sum rule's terms, as the table's report names them.
+const char* sum_rule_name(const ModeTable& t) { return t.free_surface.present() ? "A_f + K2 - J_zh" : "A_f - J_zh"; }
+
+// What a partially filled tank's rows are, for the table's normalisation line.
+std::string offset_rows_note(const GalerkinReduction& red) {
+  if (red.residue_fg.empty()) return {};
+  return "; partially filled: each Ritz value's residues of R, R_fg, R_gg about the liquid's centroid form a symmetric "
+         "2x2 matrix, written as two rows with its pole, 2 (a + c t)^2 each about a point at height -c below the "
+         "centroid (docs/viscous.md, \"Response tables of a partially filled tank\"); no /galerkin block";
+}
+
+// The cavity the forms are assembled on: the liquid's part for a partially filled tank.
+geometry::ShapeSpec liquid_of(const ResponseRequest& req) {
+  return req.fill < 1 ? geometry::partially_filled(req.shape, req.fill) : req.shape;
+}
+
+// The passivity scan of R about the centroid and, with a free surface, of R_gg (the diagonal of the response matrix:
+// each must have Im ≥ 0 on the real axis): the smaller minimum, relative to each one's largest value.
+PassivityScan scan_rows(const GalerkinReduction& red, double lo, double hi) {
+  PassivityScan scan = scan_passivity(red.lambda, red.residue, lo, hi);
+  if (!red.residue_gg.empty()) {
+    const PassivityScan gg = scan_passivity(red.lambda, red.residue_gg, lo, hi);
+    if (gg.min_im < scan.min_im) scan = gg;
+  }
+  return scan;
+}
+
 }  // namespace
 
 ModeTable galerkin_response_table(const ResponseRequest& req, double max_error) {
@@ -97,8 +205,8 @@ ModeTable galerkin_response_table(const ResponseRequest& req, double max_error) 
   for (std::size_t k = 0; k + 1 < req.sigmas.size(); ++k)
     midpoints.emplace_back(0.5 * (req.sigmas[k].real() + req.sigmas[k + 1].real()), 0.0);
 
-  const ViscousForms forms = assemble_cavity_forms(req.shape, req.mesh, req.ekman);
-  check_basis_memory(forms, samples.size());
+  const ViscousForms forms = assemble_cavity_forms(liquid_of(req), req.mesh, req.ekman);
+  check_basis_memory(forms, samples.size() * (forms.offset_coupling ? 2 : 1));
   Progress lines([](const std::string& line) { if (is_root_rank()) std::cerr << line << "\n"; });
   const auto progress = [&](const char* what) {
     return [&lines, what](std::size_t done, std::size_t total) {
@@ -109,13 +217,10 @@ ModeTable galerkin_response_table(const ResponseRequest& req, double max_error) 
       project_on_forced_solutions(forms, samples, progress("galerkin response: forced solve"));
   const GalerkinReduction red = reduce_on_span(g);
 
-  // R at the samples is π fᵀx = π conj(x̄ᵀf); at the midpoints, by forced solves the basis never saw.
-  std::vector<cd> R_samples;
-  for (Eigen::Index k = 0; k < g.coupling.size(); ++k) R_samples.push_back(std::numbers::pi * std::conj(g.coupling[k]));
-  const std::vector<cd> window_R(R_samples.begin(), R_samples.begin() + static_cast<long>(req.sigmas.size()));
-  const std::vector<cd> mid_R = viscous_response(forms, midpoints, progress("galerkin response: check"));
-  double scale = 0;
-  for (const cd r : window_R) scale = std::max(scale, std::abs(r));
+  // R at the samples from the projection; at the midpoints, by forced solves the basis never saw.
+  const std::vector<OffsetResponse> R_samples = sample_entries(g, samples.size());
+  const std::vector<OffsetResponse> mid_R = forced_entries(forms, midpoints, progress("galerkin response: check"));
+  const EntryScales scale = window_scales(R_samples, req.sigmas.size());
   const double at_samples = relative_error(red, samples, R_samples, scale);
   const double between = relative_error(red, midpoints, mid_R, scale);
   if (!(between <= max_error))
@@ -126,21 +231,23 @@ ModeTable galerkin_response_table(const ResponseRequest& req, double max_error) 
   ModeTable t = response_table_start(req, 2L * forms.complex_size);
   t.fit_error = between;
   const std::size_t n = red.lambda.size();
-  const cd sum = add_ritz_rows(t, red, at_samples);
+  const cd sum = add_rows(t, red, at_samples);
   t.coverage = t.sum_rule > 0 ? sum.real() / t.sum_rule : 1.0;
-  const PassivityScan passivity = scan_passivity(red.lambda, red.residue, lo, hi);
+  const PassivityScan passivity = scan_rows(red, lo, hi);
   t.normalisation = "pseudo-modes of a Galerkin projection on forced solutions: lambda + i decay a Ritz value, E + "
                     "i E_imag the reduced response's residue there, a + i a_imag = sqrt((E + i E_imag)/2), N2 = 1; "
                     "/galerkin holds the Ritz vectors' Gram and viscous matrices and couplings f^T x (docs/viscous.md, "
-                    "\"Galerkin response table\")";
+                    "\"Galerkin response table\")" +
+                    offset_rows_note(red);
   t.solver = fmt::format("Galerkin (Hermitian) projection on the forced solutions at {} real samples in [{:g}, {:g}] "
                          "and {} beyond it up to |s| = {:.3g} ({} directions dropped as dependent), {} Ritz pairs; R "
                          "matched at the samples to {:.2g} and between them (forced solves at the {} midpoints) to "
                          "{:.2g} of max|R|; min Im R on the window {:.2g} max|R|; sum of residues {:.9g}{:+.3g}i, "
-                         "A_f - J_zh = {:.9g}; forced solves on Taylor-Hood P{}/P{}, {} real unknowns",
+                         "{} = {:.9g}; forced solves on Taylor-Hood P{}/P{}, {} real unknowns",
                          req.sigmas.size(), lo, hi, samples.size() - req.sigmas.size(), std::abs(samples.back()),
                          red.dropped, n, at_samples, midpoints.size(), between, passivity.min_im, sum.real(),
-                         sum.imag(), t.sum_rule, req.mesh.order, req.mesh.order - 1, 2L * forms.complex_size);
+                         sum.imag(), sum_rule_name(t), t.sum_rule, req.mesh.order, req.mesh.order - 1,
+                         2L * forms.complex_size);
   t.tolerance = 1e-10;
   t.sort_by_energy();
   t.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -167,7 +274,7 @@ ModeTable krylov_response_table(const ResponseRequest& req, double max_error) {
   const auto start = std::chrono::steady_clock::now();
   check_response_window(req, "a Krylov response table");
   const double lo = req.sigmas.front().real(), hi = req.sigmas.back().real();
-  const ViscousForms forms = assemble_cavity_forms(req.shape, req.mesh, req.ekman);
+  const ViscousForms forms = assemble_cavity_forms(liquid_of(req), req.mesh, req.ekman);
   KrylovOptions options;
   options.tolerance = max_error;
   options.exact_at = req.exact_at;
@@ -184,19 +291,20 @@ ModeTable krylov_response_table(const ResponseRequest& req, double max_error) {
                              "max|R|, above --max-fit-error {:.2g}; it is written with that error (fit_error): a "
                              "larger --max-fit-error, or a narrower window\n", k.points.size(), t.fit_error,
                              max_error);
-  const cd sum = add_ritz_rows(t, red, t.fit_error);
+  const cd sum = add_rows(t, red, t.fit_error);
   t.coverage = t.sum_rule > 0 ? sum.real() / t.sum_rule : 1.0;
-  const PassivityScan passivity = scan_passivity(red.lambda, red.residue, lo, hi);
+  const PassivityScan passivity = scan_rows(red, lo, hi);
   t.normalisation = "pseudo-modes of a Galerkin projection on a rational Krylov space: lambda + i decay a Ritz value, "
                     "E + i E_imag the reduced response's residue there, a + i a_imag = sqrt((E + i E_imag)/2), N2 = 1; "
                     "/galerkin holds the Ritz vectors' Gram and viscous matrices and couplings f^T x (docs/viscous.md, "
-                    "\"Krylov response table\")";
+                    "\"Krylov response table\")" +
+                    offset_rows_note(red);
   t.solver = fmt::format("Galerkin (Hermitian) projection on a rational Krylov space: {} expansion points chosen "
                          "greedily on {} frequencies of [{:g}, {:g}] and {} beyond it up to |s| = {:.3g}, {} vectors "
                          "per point{}, {} basis vectors ({} directions dropped as dependent), {} Ritz pairs; estimated "
                          "error (bilinear against Hermitian projection) at most {:.2g} of max|R|, measured by a forced "
                          "solve at the worst estimate s = {:.6g}: {:.2g}{}; min Im R on the window {:.2g} max|R|; sum of "
-                         "residues {:.9g}{:+.3g}i, A_f - J_zh = {:.9g}; forced solves on Taylor-Hood P{}/P{}, {} real "
+                         "residues {:.9g}{:+.3g}i, {} = {:.9g}; forced solves on Taylor-Hood P{}/P{}, {} real "
                          "unknowns", k.points.size(), window.size(), lo, hi, beyond.size(), std::abs(beyond.back()),
                          options.vectors_per_point,
                          req.exact_at.empty() ? std::string()
@@ -205,7 +313,7 @@ ModeTable krylov_response_table(const ResponseRequest& req, double max_error) {
                          k.vectors, red.dropped, red.lambda.size(), k.estimate,
                          k.check_point, k.check_error,
                          k.within_tolerance ? "" : fmt::format(" (NOT within --max-fit-error {:.2g})", max_error),
-                         passivity.min_im, sum.real(), sum.imag(), t.sum_rule,
+                         passivity.min_im, sum.real(), sum.imag(), sum_rule_name(t), t.sum_rule,
                          req.mesh.order, req.mesh.order - 1, 2L * forms.complex_size);
   t.tolerance = 1e-10;
   t.sort_by_energy();

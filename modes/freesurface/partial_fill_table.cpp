@@ -21,6 +21,19 @@
 #include <list>
 
 namespace rc::modes {
+
+ModeTable::FreeSurface free_surface_attributes(const PartialFillSpectrum& s, double fill) {
+  ModeTable::FreeSurface f;
+  f.fill = fill;
+  f.radius = s.surface_radius;
+  f.K0 = s.K0;
+  f.K1 = s.K1;
+  f.K2 = s.K2;
+  f.J1 = s.J_D1;
+  f.J2 = s.J_D2;
+  return f;
+}
+
 namespace {
 
 constexpr double kRoundingWeight = 1e-12;  // relative to the sum rule
@@ -75,18 +88,6 @@ SeparableGrid annulus_grid(const PartialFillTableSettings& req, double b) {
   return separable_grid(annulus, req.grid);
 }
 
-// /free_surface's attributes (its per-row t is added with the rows).
-ModeTable::FreeSurface free_surface_attributes(const PartialFillSpectrum& s, double fill) {
-  ModeTable::FreeSurface f;
-  f.fill = fill;
-  f.radius = s.surface_radius;
-  f.K0 = s.K0;
-  f.K1 = s.K1;
-  f.K2 = s.K2;
-  f.J1 = s.J_D1;
-  f.J2 = s.J_D2;
-  return f;
-}
 
 // The height within which a row's weight is its largest E (the Candidate's comment above).
 double selection_height(const PartialFillTableSettings& req, const PartialFillSpectrum& s) {

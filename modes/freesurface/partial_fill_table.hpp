@@ -8,6 +8,7 @@
 #include "meridian_mesh.hpp"
 #include "mode_fields.hpp"
 #include "mode_table.hpp"
+#include "partial_fill_spectrum.hpp"
 
 #include <functional>
 #include <string>
@@ -33,6 +34,9 @@ struct PartialFillTableSettings {
   bool check_convergence = true;
   int max_unknowns = kDenseFreeSurfaceUnknowns;  // mesh: the dense solver's limit
 };
+
+// /free_surface's attributes of a spectrum's table (its per-row t is added with the rows).
+ModeTable::FreeSurface free_surface_attributes(const PartialFillSpectrum& s, double fill);
 
 // Rows are chosen by their largest E about a point within one cavity height of the liquid's centroid,
 // 2 (|a| + H |t|)², against the sum rule there (docs/modes.md says why). Throws std::runtime_error (one line) for a

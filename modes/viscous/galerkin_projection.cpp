@@ -43,6 +43,16 @@ Eigen::MatrixXcd projected(Mat op, const std::vector<Vec>& modes) {
   return P;
 }
 
+// x_l^H y for each block vector x_l.
+Eigen::VectorXcd projected(Vec y, const std::vector<Vec>& modes) {
+  PVec Jy;
+  petsc_check(VecDuplicate(y, Jy.out()), "VecDuplicate");
+  turn(y, Jy);
+  Eigen::VectorXcd out(static_cast<Eigen::Index>(modes.size()));
+  for (std::size_t l = 0; l < modes.size(); ++l) out[static_cast<Eigen::Index>(l)] = block_dot(modes[l], y, Jy);
+  return out;
+}
+
 }  // namespace
 
 GalerkinMatrices project_on_modes(const ViscousForms& forms, const std::vector<Vec>& modes) {
@@ -52,11 +62,8 @@ GalerkinMatrices project_on_modes(const ViscousForms& forms, const std::vector<V
   g.gram = projected(forms.M, modes);
   g.gram = (0.5 * (g.gram + g.gram.adjoint())).eval();  // Hermitian up to rounding; made exactly so
   g.viscous = (g.op - g.op.adjoint()) / std::complex<double>(0, 2);
-  PVec JF;
-  petsc_check(VecDuplicate(forms.coupling, JF.out()), "VecDuplicate");
-  turn(forms.coupling, JF);
-  g.coupling.resize(static_cast<Eigen::Index>(modes.size()));
-  for (std::size_t l = 0; l < modes.size(); ++l) g.coupling[static_cast<Eigen::Index>(l)] = block_dot(modes[l], forms.coupling, JF);
+  g.coupling = projected(forms.coupling, modes);
+  if (forms.offset_coupling.get() != nullptr) g.offset = projected(forms.offset_coupling, modes);
   return g;
 }
 

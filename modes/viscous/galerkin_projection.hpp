@@ -23,9 +23,10 @@ struct GalerkinMatrices {
   Eigen::MatrixXcd viscous;   // V_lk = Ek x̄_lᵀKx_k = ((H − Hᴴ)/(2i))_lk
   Eigen::MatrixXcd op;        // H_lk = x̄_lᵀAx_k
   Eigen::VectorXcd coupling;  // x̄_lᵀf (f real: the conjugate of the coupling fᵀx_l)
+  Eigen::VectorXcd offset;    // x̄_lᵀg for a free surface's offset coupling g (viscous_forms.hpp); empty without one
 };
 
-// G, V, H and X̄ᵀf for the block vectors `modes` (damped modes made by viscous_modes_near with keep_block, or forced
+// G, V, H, X̄ᵀf (and X̄ᵀg with a free surface) for the block vectors `modes` (damped modes made by viscous_modes_near with keep_block, or forced
 // solutions), on the forms' communicator.
 GalerkinMatrices project_on_modes(const ViscousForms& forms, const std::vector<Vec>& modes);
 

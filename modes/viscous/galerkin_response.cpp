@@ -7,9 +7,26 @@
 
 namespace rc::modes {
 
-std::complex<double> GalerkinReduction::response(std::complex<double> s) const {
+std::complex<double> GalerkinReduction::response(std::complex<double> s, double c) const {
   std::complex<double> r = 0;
-  for (std::size_t l = 0; l < lambda.size(); ++l) r += residue[l] / (s - lambda[l]);
+  for (std::size_t l = 0; l < lambda.size(); ++l) {
+    std::complex<double> e = residue[l];
+    if (!residue_fg.empty()) e += 2 * c * residue_fg[l] + c * c * residue_gg[l];
+    r += e / (s - lambda[l]);
+  }
+  return r;
+}
+
+OffsetResponse GalerkinReduction::entries(std::complex<double> s) const {
+  OffsetResponse r{0, 0, 0};
+  for (std::size_t l = 0; l < lambda.size(); ++l) {
+    const std::complex<double> w = 1.0 / (s - lambda[l]);
+    r.ff += residue[l] * w;
+    if (!residue_fg.empty()) {
+      r.fg += residue_fg[l] * w;
+      r.gg += residue_gg[l] * w;
+    }
+  }
   return r;
 }
 
@@ -36,7 +53,15 @@ GalerkinReduction reduce_on_span(const GalerkinMatrices& g, double rank_toleranc
   out.gram = W.adjoint() * W;
   out.viscous = W.adjoint() * Vq * W;
   out.coupling = (cq.adjoint() * W).transpose();  // fᵀQw_l = conj(Qᴴf)ᵀ w_l
-  const Eigen::VectorXcd gl = out.gram.llt().solve(out.coupling.conjugate());  // G′ = WᴴW: Hermitian definite
+  const Eigen::LLT<Eigen::MatrixXcd> gram(out.gram);  // G′ = WᴴW: Hermitian definite
+  const Eigen::VectorXcd gl = gram.solve(out.coupling.conjugate());
+  // With a free surface, R_xy = π xᵀQ(s − H_q)⁻¹Qᴴy has the residue π (xᵀQw_l)(G′⁻¹WᴴQᴴy)_l; the exact R_fg = R_gf (the
+  // pencil is complex symmetric), the projection's only nearly: the mean of the two approximates R_fg no worse.
+  Eigen::VectorXcd offset, offset_left;
+  if (g.offset.size() > 0) {
+    offset = ((T.adjoint() * g.offset).adjoint() * W).transpose();
+    offset_left = gram.solve(offset.conjugate());
+  }
   for (Eigen::Index l = 0; l < r; ++l) {
     const cd lambda = ritz.eigenvalues()[l];
     if (lambda.imag() < -1e-10 * std::abs(lambda))
@@ -44,6 +69,10 @@ GalerkinReduction reduce_on_span(const GalerkinMatrices& g, double rank_toleranc
                                            "semi-definite", lambda.real(), lambda.imag()));
     out.lambda.push_back(lambda);
     out.residue.push_back(std::numbers::pi * out.coupling[l] * gl[l]);
+    if (offset.size() > 0) {
+      out.residue_fg.push_back(0.5 * std::numbers::pi * (out.coupling[l] * offset_left[l] + offset[l] * gl[l]));
+      out.residue_gg.push_back(std::numbers::pi * offset[l] * offset_left[l]);
+    }
   }
   return out;
 }

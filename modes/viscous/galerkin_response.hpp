@@ -11,6 +11,7 @@
 #pragma once
 
 #include "galerkin_projection.hpp"
+#include "viscous_response.hpp"
 
 #include <Eigen/Dense>
 
@@ -25,7 +26,14 @@ struct GalerkinReduction {
   Eigen::MatrixXcd gram, viscous;             // G′ = WᴴW, V′ = WᴴV_qW in the Ritz vectors' coordinates
   Eigen::VectorXcd coupling;                  // f_l = fᵀx_l of each Ritz vector x_l = Q w_l (unit 2-norm w_l)
   int dropped = 0;                            // basis directions dropped as dependent
-  std::complex<double> response(std::complex<double> s) const;  // R_G(s) = Σ Ẽ_l/(s − λ_l)
+  // A free surface (the projection's offset set): the residues of R_fg and R_gg at each Ritz value, R_fg's made
+  // symmetric (docs/viscous.md, "Response tables of a partially filled tank"); empty otherwise.
+  std::vector<std::complex<double>> residue_fg, residue_gg;
+  // R_G(s) = Σ Ẽ_l/(s − λ_l); with a free surface R_G about a point at height −c below the centroid,
+  // Σ (Ẽ_l + 2c Ẽ_fg,l + c² Ẽ_gg,l)/(s − λ_l).
+  std::complex<double> response(std::complex<double> s, double c = 0) const;
+  // R_G's entries R_ff (= response(s)), R_fg, R_gg at s (the last two 0 without a free surface).
+  OffsetResponse entries(std::complex<double> s) const;
 };
 
 // The Ritz pairs of the projection `g` (project_on_modes on forced solutions). Directions of G below

@@ -44,7 +44,10 @@ class KrylovBasis {
     petsc_check(PetscObjectGetComm(reinterpret_cast<PetscObject>(forms.coupling.get()), &comm_), "PetscObjectGetComm");
     petsc_check(VecDuplicate(forms.coupling, in_.out()), "VecDuplicate");
     petsc_check(VecDuplicate(forms.coupling, out_.out()), "VecDuplicate");
-    f_ = local_of(forms.coupling);
+    const bool offset = forms.offset_coupling.get() != nullptr;
+    F_.resize(local_of(forms.coupling).size(), offset ? 2 : 1);
+    F_.col(0) = local_of(forms.coupling);
+    if (offset) F_.col(1) = local_of(forms.offset_coupling);
   }
 
   int size() const { return m_; }
@@ -58,16 +61,20 @@ class KrylovBasis {
   Eigen::VectorXcd apply(Mat op, const Eigen::VectorXcd& x);
   cd mdot(const Eigen::VectorXcd& x, const Eigen::VectorXcd& mx) const { return sum(x.dot(mx)); }
 
-  // π fᵀx for a block vector x (f is real: f.dot(x) = fᵀx).
-  cd moment(const Eigen::VectorXcd& x) const { return std::numbers::pi * sum(f_.dot(x)); }
+  // π yᵀx for a block vector x and each input y (the inputs are real: y.dot(x) = yᵀx).
+  Eigen::VectorXcd moments(const Eigen::VectorXcd& x) const {
+    Eigen::MatrixXcd m = F_.transpose() * x;
+    sum(m);
+    return std::numbers::pi * m.col(0);
+  }
 
   ReducedTransfer galerkin() const {
     const auto n = m_;
-    return {Mh_.topLeftCorner(n, n), Hh_.topLeftCorner(n, n), fh_.head(n).conjugate(), fh_.head(n)};
+    return {Mh_.topLeftCorner(n, n), Hh_.topLeftCorner(n, n), fh_.topRows(n).conjugate(), fh_.topRows(n)};
   }
   ReducedTransfer bilinear() const {
     const auto n = m_;
-    return {Mb_.topLeftCorner(n, n), Ab_.topLeftCorner(n, n), fh_.head(n).conjugate(), fh_.head(n).conjugate()};
+    return {Mb_.topLeftCorner(n, n), Ab_.topLeftCorner(n, n), fh_.topRows(n).conjugate(), fh_.topRows(n).conjugate()};
   }
   GalerkinMatrices projection() const;
 
@@ -87,10 +94,10 @@ class KrylovBasis {
   const ViscousForms& forms_;
   MPI_Comm comm_;
   PVec in_, out_;
-  Eigen::VectorXcd f_;
+  Eigen::MatrixXcd F_;                  // the inputs' local rows: f, and a free surface's offset coupling g
   Eigen::MatrixXcd X_;                  // local rows, m_ columns used
   Eigen::MatrixXcd Hh_, Mh_, Ab_, Mb_;  // XᴴAX, Xᴴ𝓜X, XᵀAX, Xᵀ𝓜X
-  Eigen::VectorXcd fh_;                 // Xᴴf
+  Eigen::MatrixXcd fh_;                 // XᴴF
   int m_ = 0;
 };
 
@@ -109,9 +116,9 @@ Eigen::MatrixXcd KrylovBasis::apply(Mat op, const Eigen::MatrixXcd& W) {
 void KrylovBasis::reserve(int n) {
   if (n <= X_.cols()) return;
   const int cap = std::max(n, 2 * static_cast<int>(X_.cols()) + 16);
-  X_.conservativeResize(f_.size(), cap);
+  X_.conservativeResize(F_.rows(), cap);
   for (auto* P : {&Hh_, &Mh_, &Ab_, &Mb_}) P->conservativeResize(cap, cap);
-  fh_.conservativeResize(cap);
+  fh_.conservativeResize(cap, F_.cols());
 }
 
 void KrylovBasis::orthogonalise(Eigen::MatrixXcd& W) {
@@ -140,7 +147,7 @@ int KrylovBasis::add(Eigen::MatrixXcd W) {
 }
 
 // The new columns' entries of every small matrix in one product with [X W]ᴴ and one reduction: XᴴAW; XᵀAW̄ (the new
-// rows of XᴴAX, since wᴴAx = xᵀAw̄ for complex symmetric A); Xᴴ𝓜W; XᵀAW and Xᵀ𝓜W (Xᵀv = conj(Xᴴv̄)); and Wᴴf.
+// rows of XᴴAX, since wᴴAx = xᵀAw̄ for complex symmetric A); Xᴴ𝓜W; XᵀAW and Xᵀ𝓜W (Xᵀv = conj(Xᴴv̄)); and WᴴF.
 void KrylovBasis::append(const Eigen::MatrixXcd& W) {
   const Eigen::Index k = W.cols(), old = m_, n = old + k;
   reserve(static_cast<int>(n));
@@ -150,11 +157,12 @@ void KrylovBasis::append(const Eigen::MatrixXcd& W) {
   const Eigen::MatrixXcd AWbar = apply(forms_.A, Eigen::MatrixXcd(W.conjugate()));
   Eigen::MatrixXcd rhs(W.rows(), 5 * k);
   rhs << AW, AWbar.conjugate(), MW, AW.conjugate(), MW.conjugate();
-  Eigen::MatrixXcd Z(n + 1, 5 * k), XZ;
+  const Eigen::Index p = F_.cols();
+  Eigen::MatrixXcd Z(n + p, 5 * k), XZ;
   blas_product(Xn, true, rhs, XZ);
   Z.topRows(n) = XZ;
-  Z.row(n).head(k) = (W.adjoint() * f_).transpose();
-  Z.row(n).tail(4 * k).setZero();
+  Z.bottomRows(p).leftCols(k) = (W.adjoint() * F_).transpose();
+  Z.bottomRows(p).rightCols(4 * k).setZero();
   sum(Z);
   for (Eigen::Index j = 0; j < k; ++j) {
     const Eigen::Index c = old + j;
@@ -168,7 +176,7 @@ void KrylovBasis::append(const Eigen::MatrixXcd& W) {
     Ab_.row(c).head(n) = Z.col(3 * k + j).conjugate().transpose();
     Mb_.col(c).head(n) = Z.col(4 * k + j).conjugate();
     Mb_.row(c).head(n) = Z.col(4 * k + j).conjugate().transpose();
-    fh_[c] = Z(n, j);
+    fh_.row(c) = Z.col(j).tail(p).transpose();
   }
   m_ = static_cast<int>(n);
 }
@@ -179,84 +187,129 @@ GalerkinMatrices KrylovBasis::projection() const {
   g.gram = (0.5 * (g.gram + g.gram.adjoint())).eval();
   g.op = Hh_.topLeftCorner(m_, m_);
   g.viscous = (g.op - g.op.adjoint()) / cd(0, 2);
-  g.coupling = fh_.head(m_);
+  g.coupling = fh_.col(0).head(m_);
+  if (fh_.cols() > 1) g.offset = fh_.col(1).head(m_);
   return g;
 }
 
-// The greedy loop's state: the basis, one solver, the candidates and what has been measured.
+// The largest entry of |a − b| / scale (entry by entry): how far two response matrices are apart.
+double entry_error(const Eigen::MatrixXcd& a, const Eigen::MatrixXcd& b, const Eigen::MatrixXd& scale) {
+  return ((a - b).cwiseAbs().array() / scale.array()).maxCoeff();
+}
+
+// The greedy loop's state: the basis, one solver, the candidates and what has been measured. With p inputs (the
+// coupling f, and a free surface's offset coupling g) R is the p × p matrix π yᵢᵀS⁻¹yⱼ, every expansion point adds
+// the Krylov vectors of each input, and each entry's error is measured against its own scale (scale_ij = √(scale_ii
+// scale_jj) off the diagonal, where R_fg may vanish by symmetry).
 class Greedy {
  public:
   Greedy(const ViscousForms& forms, const std::vector<double>& window, const std::vector<double>& beyond)
       : forms_(forms), basis_(forms), solver_(forms), window_(window) {
     candidates_ = window;
     candidates_.insert(candidates_.end(), beyond.begin(), beyond.end());
+    inputs_.push_back(forms.coupling);
+    if (forms.offset_coupling.get() != nullptr) inputs_.push_back(forms.offset_coupling);
     petsc_check(VecDuplicate(forms.coupling, x_.out()), "VecDuplicate");
     petsc_check(VecDuplicate(forms.coupling, v_.out()), "VecDuplicate");
     petsc_check(PetscObjectGetComm(reinterpret_cast<PetscObject>(forms.coupling.get()), &comm_), "PetscObjectGetComm");
   }
 
-  // R(s) by a forced solve; x(s) into `x` when given (the basis unchanged).
-  cd forced(cd s, Eigen::VectorXcd* x = nullptr) {
+  Eigen::Index inputs() const { return static_cast<Eigen::Index>(inputs_.size()); }
+
+  // R(s) by forced solves (one factorisation, a solve per input); the solutions x(s) = S⁻¹yⱼ into `x` when given (the
+  // basis unchanged).
+  Eigen::MatrixXcd forced(cd s, std::vector<Eigen::VectorXcd>* x = nullptr) {
     solver_.factor(s);
-    solver_.solve(forms_.coupling, x_);
-    const Eigen::VectorXcd xs = local_of(x_);
-    if (x) *x = xs;
-    return basis_.moment(xs);
+    Eigen::MatrixXcd R(inputs(), inputs());
+    for (Eigen::Index j = 0; j < inputs(); ++j) {
+      solver_.solve(inputs_[static_cast<std::size_t>(j)], x_);
+      const Eigen::VectorXcd xs = local_of(x_);
+      R.col(j) = basis_.moments(xs);
+      if (x) x->push_back(xs);
+    }
+    return R;
   }
 
-  // Factors at s, makes the point's Krylov vectors x(s), (S⁻¹𝓜)x(s), … by Arnoldi in 𝓜's inner product (against
-  // the point's own vectors), and adds them to the basis as one block; returns R(s) by the first, forced solve.
-  cd expand(cd s, int vectors) {
-    Eigen::VectorXcd q;
-    const cd R = forced(s, &q);
-    Eigen::MatrixXcd W(q.size(), vectors);
-    Eigen::MatrixXcd MW(q.size(), vectors);
-    int k = 0;
-    for (; k < vectors; ++k) {
-      if (k > 0) {
-        store(MW.col(k - 1), v_);
-        solver_.solve(v_, x_);
-        q = local_of(x_);
+  // Factors at s, makes each input's Krylov vectors x(s), (S⁻¹𝓜)x(s), … by Arnoldi in 𝓜's inner product (against
+  // the point's own vectors), and adds them to the basis as one block; returns R(s) by the first, forced solves.
+  Eigen::MatrixXcd expand(cd s, int vectors) {
+    std::vector<Eigen::VectorXcd> starts;
+    const Eigen::MatrixXcd R = forced(s, &starts);
+    const Eigen::Index rows = starts.front().size(), total = vectors * inputs();
+    Eigen::MatrixXcd W(rows, total), MW(rows, total);
+    Eigen::Index k = 0;
+    for (const Eigen::VectorXcd& start : starts) {
+      Eigen::VectorXcd q = start;
+      for (int j = 0; j < vectors; ++j) {
+        if (j > 0) {
+          store(MW.col(k - 1), v_);
+          solver_.solve(v_, x_);
+          q = local_of(x_);
+        }
+        Eigen::VectorXcd mq;
+        if (!normalise_against(q, W.leftCols(k), MW.leftCols(k), mq)) break;
+        W.col(k) = q;
+        MW.col(k) = mq;
+        ++k;
       }
-      Eigen::VectorXcd mq;
-      if (!normalise_against(q, W.leftCols(k), MW.leftCols(k), mq)) break;
-      W.col(k) = q;
-      MW.col(k) = mq;
     }
     basis_.add(W.leftCols(k));
     return R;
   }
 
-  // R_G's scale (max over the window), the worst estimate |R_B − R_G| over the candidates relative to it, and R_G
-  // there (what the forced solve at s is measured against).
+  // R_G's scales (max over the window, entry by entry), the worst estimate |R_B − R_G| over the candidates relative to
+  // them, and R_G there (what the forced solve at s is measured against).
   struct Worst {
-    double s = 0, estimate = 0, scale = 0;
-    cd galerkin = 0;
+    double s = 0, estimate = 0;
+    Eigen::MatrixXd scale;
+    Eigen::MatrixXcd galerkin;
   };
   Worst worst() const {
     const ReducedTransfer G = basis_.galerkin(), B = basis_.bilinear();
-    Worst w;
-    std::vector<double> est(candidates_.size());
+    const Eigen::Index p = inputs();
+    std::vector<Eigen::MatrixXcd> g(candidates_.size()), b(candidates_.size());
+    Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(p);
     for (std::size_t i = 0; i < candidates_.size(); ++i) {
-      const cd g = G(candidates_[i]);
-      est[i] = std::abs(B(candidates_[i]) - g);
-      if (i < window_.size()) w.scale = std::max(w.scale, std::abs(g));
+      g[i] = G.matrix(candidates_[i]);
+      b[i] = B.matrix(candidates_[i]);
+      if (i < window_.size()) diagonal = diagonal.cwiseMax(g[i].diagonal().cwiseAbs());
     }
-    const auto at = std::max_element(est.begin(), est.end()) - est.begin();
-    w.s = candidates_[static_cast<std::size_t>(at)];
-    w.estimate = est[static_cast<std::size_t>(at)] / w.scale;
+    Worst w;
+    w.scale = (diagonal * diagonal.transpose()).cwiseSqrt();
+    std::size_t at = 0;
+    for (std::size_t i = 0; i < candidates_.size(); ++i) {
+      const double e = entry_error(b[i], g[i], w.scale);
+      if (e > w.estimate) {
+        w.estimate = e;
+        at = i;
+      }
+    }
+    w.s = candidates_[at];
     w.scale *= std::numbers::pi;
-    w.galerkin = std::numbers::pi * G(w.s);
+    w.galerkin = std::numbers::pi * g[at];
     // Every rank computed this from the same reduced matrices, but the next point is factored collectively: rank 0's
     // choice is everyone's, so that rounding can never send two ranks to different points.
-    double shared[5] = {w.s, w.estimate, w.scale, w.galerkin.real(), w.galerkin.imag()};
-    MPI_Bcast(shared, 5, MPI_DOUBLE, 0, comm_);
-    return {shared[0], shared[1], shared[2], {shared[3], shared[4]}};
+    std::vector<double> shared{w.s, w.estimate};
+    for (Eigen::Index k = 0; k < p * p; ++k) {
+      shared.push_back(w.scale.data()[k]);
+      shared.push_back(w.galerkin.data()[k].real());
+      shared.push_back(w.galerkin.data()[k].imag());
+    }
+    MPI_Bcast(shared.data(), static_cast<int>(shared.size()), MPI_DOUBLE, 0, comm_);
+    w.s = shared[0];
+    w.estimate = shared[1];
+    for (Eigen::Index k = 0; k < p * p; ++k) {
+      const auto at_k = static_cast<std::size_t>(2 + 3 * k);
+      w.scale.data()[k] = shared[at_k];
+      w.galerkin.data()[k] = {shared[at_k + 1], shared[at_k + 2]};
+    }
+    return w;
   }
 
-  // |R(s) − R_G(s)| / scale by a forced solve, rank 0's value for every rank (it decides whether to stop).
-  double measured_error(double s, cd before, double scale) {
-    double e = std::abs(forced(s) - before) / scale;
+  // R(s) − R_G(s) by a forced solve, relative to the scales: rank 0's value for every rank (it decides whether to
+  // stop).
+  double measured_error(double s, const Eigen::MatrixXcd& before, const Eigen::MatrixXd& scale) {
+    double e = entry_error(forced(s), before, scale);
     MPI_Bcast(&e, 1, MPI_DOUBLE, 0, comm_);
     return e;
   }
@@ -288,6 +341,7 @@ class Greedy {
   ShiftedSolver solver_;
   MPI_Comm comm_;
   std::vector<double> window_, candidates_;
+  std::vector<Vec> inputs_;
   PVec x_, v_;
 };
 
@@ -307,7 +361,7 @@ KrylovReduction krylov_reduction(const ViscousForms& forms, const std::vector<do
   for (const cd s : options.exact_at) greedy.expand(s, options.vectors_per_point);
   for (;;) {
     const auto worst = greedy.worst();
-    const cd before = worst.galerkin;
+    const Eigen::MatrixXcd& before = worst.galerkin;
     if (worst.estimate <= options.tolerance) {
       // The estimate says done: a forced solve where it is largest says whether it is right. If not, that point
       // (factored already) is expanded like any other and the search goes on.
@@ -315,7 +369,7 @@ KrylovReduction krylov_reduction(const ViscousForms& forms, const std::vector<do
       out.check_error = greedy.measured_error(worst.s, before, worst.scale);
       if (out.check_error <= options.tolerance) {
         out.estimate = worst.estimate;
-        out.scale = worst.scale;
+        out.scale = worst.scale(0, 0);
         break;
       }
     }
@@ -323,14 +377,14 @@ KrylovReduction krylov_reduction(const ViscousForms& forms, const std::vector<do
       // Out of points: the table is still the best this basis gives, marked by its error (the caller says so).
       out.within_tolerance = false;
       out.estimate = worst.estimate;
-      out.scale = worst.scale;
+      out.scale = worst.scale(0, 0);
       out.check_point = worst.s;
       out.check_error = greedy.measured_error(worst.s, before, worst.scale);
       break;
     }
-    const cd R = greedy.expand(worst.s, options.vectors_per_point);
+    const Eigen::MatrixXcd R = greedy.expand(worst.s, options.vectors_per_point);
     out.points.push_back(worst.s);
-    out.point_errors.push_back(std::abs(R - before) / worst.scale);
+    out.point_errors.push_back(entry_error(R, before, worst.scale));
     if (progress)
       progress(fmt::format("krylov response: point {} at s = {:.6g}: estimated {:.2g}, measured {:.2g} of max|R|; {} "
                            "vectors", out.points.size(), worst.s, worst.estimate, out.point_errors.back(),

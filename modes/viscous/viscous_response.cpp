@@ -20,16 +20,21 @@ std::complex<double> moment_of(Vec f, Vec x) { return std::numbers::pi * block_b
 
 std::vector<std::shared_ptr<PVec>> forced_solutions(const ViscousForms& forms,
                                                     const std::vector<std::complex<double>>& sigmas,
-                                                    const ResponseProgress& progress) {
+                                                    const ResponseProgress& progress, bool offset_too) {
+  if (offset_too && !forms.offset_coupling) throw std::logic_error("offset solutions need a free surface's coupling");
   std::vector<std::shared_ptr<PVec>> out;
   ShiftedSolver solver(forms);
-  for (const auto sigma : sigmas) {
+  const auto solve = [&](Vec input) {
     auto x = std::make_shared<PVec>();
     petsc_check(VecDuplicate(forms.coupling, x->out()), "VecDuplicate");
-    solver.factor(sigma);
-    solver.solve(forms.coupling, *x);
+    solver.solve(input, *x);
     out.push_back(std::move(x));
-    if (progress) progress(out.size(), sigmas.size());
+  };
+  for (std::size_t k = 0; k < sigmas.size(); ++k) {
+    solver.factor(sigmas[k]);
+    solve(forms.coupling);
+    if (offset_too) solve(forms.offset_coupling);
+    if (progress) progress(k + 1, sigmas.size());
   }
   return out;
 }

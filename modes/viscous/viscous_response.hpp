@@ -51,10 +51,11 @@ class ForcedResponse {
 };
 
 // The forced solutions x(σ) = (σ𝓜 − A)⁻¹ f themselves, in the block form of viscous_forms.hpp (distributed like the
-// forms), one per σ: the responses' fields, a Galerkin basis (galerkin_response.hpp). R(σ) = π fᵀx(σ).
+// forms), one per σ: the responses' fields, a Galerkin basis (galerkin_response.hpp). R(σ) = π fᵀx(σ). With
+// `offset_too` (forms with a free surface) each σ gives two, x(σ) then (σ𝓜 − A)⁻¹ g for the offset coupling g.
 std::vector<std::shared_ptr<PVec>> forced_solutions(const ViscousForms& forms,
                                                     const std::vector<std::complex<double>>& sigmas,
-                                                    const ResponseProgress& progress = {});
+                                                    const ResponseProgress& progress = {}, bool offset_too = false);
 
 // A cavity's forms: meshes it (viscous_mesh_defaults must have resolved `mesh`) and assembles at `ekman` with z
 // measured from the fluid centroid. Assemble once, then call viscous_response as often as needed (the response

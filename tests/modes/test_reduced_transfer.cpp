@@ -64,3 +64,28 @@ TEST(ReducedTransfer, DefectivePencilFallsBackToHessenberg) {
   EXPECT_FALSE(t.pole_residue());
   EXPECT_LT(err, 1e-10);
 }
+
+// Two inputs (a partially filled tank's coupling and offset coupling): the matrix Lᵀ(σ𝓜 − 𝒜)⁻¹R, entry by entry, on
+// both paths (a random pencil: pole–residue; a Jordan block: Hessenberg) against direct solves.
+TEST(ReducedTransfer, TwoInputsGiveTheTransferMatrix) {
+  std::srand(5);
+  const int m = 24;
+  Eigen::MatrixXcd J = Eigen::MatrixXcd::Zero(m, m);
+  for (int k = 0; k < m; ++k) J(k, k) = cd(0.4, 0.2);
+  for (int k = 0; k + 1 < m; ++k) J(k, k + 1) = 1.0;
+  const Eigen::MatrixXcd P = Eigen::MatrixXcd::Random(m, m) + 3.0 * Eigen::MatrixXcd::Identity(m, m);
+  const Eigen::MatrixXcd L = Eigen::MatrixXcd::Random(m, 2), R = Eigen::MatrixXcd::Random(m, 2);
+  const Eigen::MatrixXcd M = Eigen::MatrixXcd::Identity(m, m) + 0.1 * Eigen::MatrixXcd::Random(m, m);
+  for (const Eigen::MatrixXcd& A : {Eigen::MatrixXcd(Eigen::MatrixXcd::Random(m, m)), Eigen::MatrixXcd(P * J * P.inverse())}) {
+    const ReducedTransfer t(M, A, L, R);
+    double worst = 0;
+    for (const cd s : {cd(0.3, 0.0), cd(-1.2, 0.01), cd(2.5, -0.4)}) {
+      const Eigen::MatrixXcd want = L.transpose() * (s * M - A).partialPivLu().solve(R);
+      worst = std::max(worst, (t.matrix(s) - want).cwiseAbs().maxCoeff() / want.cwiseAbs().maxCoeff());
+      EXPECT_EQ(t(s), t.matrix(s)(0, 0));
+    }
+    std::printf("two inputs, pole-residue form %s: worst entry error %.2e\n", t.pole_residue() ? "taken" : "refused",
+                worst);
+    EXPECT_LT(worst, 1e-10);
+  }
+}
