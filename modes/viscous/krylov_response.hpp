@@ -12,6 +12,9 @@
 // R_B − R_G = π x_Bᵀ r_G (x_B = X c_B, r_G the Galerkin residual) is the dual-weighted residual estimate of R_G's
 // error, at O(m²) per frequency (reduced_transfer.hpp). The next expansion point is the candidate frequency where
 // it is largest; a forced solve there measures R_G's true error before the point is added.
+// Forms with a free surface have a second input, the offset coupling g (viscous_forms.hpp): every point then adds the
+// Krylov vectors of S⁻¹g too, R is the 2 × 2 matrix of R_ff, R_fg, R_gg, and the estimate and the checks are taken
+// entry by entry against each entry's scale (docs/viscous.md, "Response tables of a partially filled tank").
 #pragma once
 
 #include "galerkin_projection.hpp"

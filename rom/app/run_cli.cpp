@@ -40,9 +40,13 @@ int run_nonlinear(const Scene& scene, const std::string& out_file) {
     std::cout << "energy: not an integral with fluid tanks in the nonlinear model (docs/rom.md, \"Nonlinear chain\")\n";
     return 0;
   }
-  std::cout << "energy: H(0) = " << h.base.H.front() << ", H(end) = " << h.base.H.back() << ", "
-            << (damped ? "largest relative increase per sample " : "largest relative drift ") << h.base.max_energy_drift
-            << "; angular momentum " << (chain.free_chain ? "(vector)" : "(about the vertical through O_1)")
+  std::cout << "energy: H(0) = " << h.base.H.front() << ", H(end) = " << h.base.H.back() << ", ";
+  if (!std::isnan(h.base.work_balance))
+    std::cout << "H(t) - H(0) = the work of the moments, forces and field less the friction's to " << h.base.work_balance
+              << " of H's scale (trapezoid rule on the output samples; Batyr (11))";
+  else
+    std::cout << (damped ? "largest relative increase per sample " : "largest relative drift ") << h.base.max_energy_drift;
+  std::cout << "; angular momentum " << (chain.free_chain ? "(vector)" : "(about the vertical through O_1)")
             << ": largest relative drift " << h.max_momentum_drift << "\n";
   return 0;
 }

@@ -252,6 +252,39 @@ Vector3d chain_angular_momentum(const NonlinearChain& c, const ChainState& s) {
   return L;
 }
 
+bool nonconservative(const NonlinearChain& c) {
+  for (const ChainJoint& j : c.joints)
+    if (j.friction != 0 || j.axial_friction != 0) return true;
+  for (const ChainBody& b : c.bodies)
+    if (b.axial_moment != 0 || !b.space_moment.isZero() || (b.frequency > 0 && !b.harmonic_moment.isZero()) ||
+        b.pitch_damping != 0 || b.magnus != 0 || !b.space_force.isZero() ||
+        (b.force_frequency > 0 && !b.harmonic_force.isZero()))
+      return true;
+  return c.field_frequency > 0 && !c.field_harmonic.isZero();
+}
+
+double nonconservative_power(const NonlinearChain& c, const ChainState& s) {
+  // The moments the equations of motion take (add_external_moments, joint_torques), without what has a potential in
+  // chain_energy: the joints' elastic moments and the static aerodynamic moment. A force's moment about O_k and its
+  // reactions S_j × F below make Σ τ_k·Ω_k its power relative to O_1; the free chain's O_1 moves with v1.
+  NonlinearChain loads = c;
+  for (ChainJoint& j : loads.joints) j.stiffness = 0;
+  for (ChainBody& b : loads.bodies) b.static_moment = 0;
+  const Frames f = frames(loads, s);
+  std::vector<Vector3d> tau = joint_torques(loads, f);
+  add_external_moments(loads, f, s.t, tau);
+  double P = 0;
+  for (int k = 0; k < c.size(); ++k) P += tau[k].dot(f.Omega[k]);
+  if (c.free_chain) P += total_force(c, s.t).dot(s.v1);
+  const Vector3d harmonic = std::sin(6.283185307179586 * c.field_frequency * s.t) * c.field_harmonic;
+  if (!harmonic.isZero()) {
+    std::vector<Vector3d> x, v;
+    centres(c, s, f, x, v);
+    for (int k = 0; k < c.size(); ++k) P += c.bodies[k].mass * harmonic.dot(v[k]);
+  }
+  return P;
+}
+
 namespace {
 
 using Vs = std::vector<Vector3d>;

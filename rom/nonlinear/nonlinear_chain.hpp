@@ -123,6 +123,13 @@ ChainRates chain_rates(const NonlinearChain& chain, const ChainState& state);
 double chain_energy(const NonlinearChain& chain, const ChainState& state);
 Eigen::Vector3d chain_angular_momentum(const NonlinearChain& chain, const ChainState& state);
 
+// The power (W) of every load the energy above does not hold (Batyr's energy balance (11), docs/rom.md, "Nonlinear
+// chain"): the external moments and forces at their points (the static aerodynamic moment apart: its potential is in
+// the energy), joint friction, and the field's time-varying part on every mass. dH/dt is this power for a chain without
+// fluid; `nonconservative` says whether the chain has any such load.
+double nonconservative_power(const NonlinearChain& chain, const ChainState& state);
+bool nonconservative(const NonlinearChain& chain);
+
 // Symmetry axis n_k = R_k e3 of every body in space.
 std::vector<Eigen::Vector3d> chain_axes(const ChainState& state);
 

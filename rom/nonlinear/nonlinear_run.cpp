@@ -182,6 +182,7 @@ class NonlinearRecorder {
         L0_(chain_angular_momentum(chain, initial)),
         damped_(std::any_of(chain.joints.begin(), chain.joints.end(),
                             [](const ChainJoint& j) { return j.friction > 0 || j.axial_friction > 0; })),
+        loaded_(nonconservative(chain) && chain.fluid_modes() == 0),
         previous_H_(H0_) {
     h_.method_used = "nonlinear-rkmk-dp54";
     h_.u.resize(samples, n_);
@@ -197,6 +198,7 @@ class NonlinearRecorder {
     h_.max_energy_drift =
         std::max(h_.max_energy_drift, damped_ ? (H - previous_H_) / H_scale_ : std::abs(H - H0_) / H_scale_);
     previous_H_ = H;
+    if (loaded_) balance(t, H, s);
     const Vector3d L = chain_angular_momentum(chain_, s);
     // Conserved: the whole vector for the free chain, its vertical component about O_1 for the fixed one.
     const double change = chain_.free_chain ? (L - L0_).norm() : std::abs(L.z() - L0_.z());
@@ -221,8 +223,20 @@ class NonlinearRecorder {
   const int n_;
   const double H0_, H_scale_;
   const Vector3d L0_;
-  const bool damped_;
+  const bool damped_, loaded_;
   double previous_H_;
+  double previous_t_ = 0, previous_P_ = 0, work_ = 0;
+
+  // Batyr's energy balance (11): H(t) − H(0) = W(t), the work of the loads the energy does not hold
+  // (nonconservative_power), by the trapezoid rule on the output samples; the largest gap relative to H's scale.
+  void balance(double t, double H, const ChainState& s) {
+    const double P = nonconservative_power(chain_, s);
+    if (h_.t.size() > 1) work_ += 0.5 * (P + previous_P_) * (t - previous_t_);
+    previous_t_ = t;
+    previous_P_ = P;
+    const double gap = std::abs(H - H0_ - work_) / H_scale_;
+    h_.work_balance = std::isnan(h_.work_balance) ? gap : std::max(h_.work_balance, gap);
+  }
 };
 
 // Advances s from t to t_out by Dormand-Prince steps on the chain's Lie group (chain_step_dp), each accepted when its
