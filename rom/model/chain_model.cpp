@@ -1,6 +1,7 @@
 #include "chain_model.hpp"
 
 #include "base_translation.hpp"
+#include "field_gradient.hpp"
 
 #include "galerkin_fluid.hpp"
 #include "mode_table.hpp"
@@ -262,6 +263,14 @@ void require_linear_scene(const Scene& scene) {
   if (scene.field && !scene.free_chain && scene.field->frequency > 0 && scene.field->harmonic[2] != 0)
     fail(scene, "field.harmonic", "a time-varying axial field changes the chain's stiffness with time (a parametric "
          "chain, e.g. a vibrating support): the nonlinear model only ([run] model = \"nonlinear\")");
+  if (scene.field && scene.field->has_gradient()) {
+    if (scene.free_chain)
+      fail(scene, "field.gradient", "a field varying in space on a free chain is in the nonlinear model only ([run] model "
+           "= \"nonlinear\")");
+    if (const std::string why = gradient_asymmetry(*scene.field); !why.empty())
+      fail(scene, "field.gradient", why + ": the linearised chain (26) needs a gradient symmetric about the spin axis "
+           "(diag(g, g, g_z)); only [run] model = \"nonlinear\" takes any symmetric gradient");
+  }
   for (std::size_t k = 0; k < scene.size(); ++k) {
     const BodySpec& b = scene.bodies[k];
     if (b.B && *b.B != b.A)
@@ -323,6 +332,9 @@ BodyModel body_model(const Scene& scene, int k, TableCache* tables, bool linear_
          scene.field->harmonic[1] != 0))
       fail(scene, "field", "a transverse field moves a partially filled tank's free surface, which the chain does not "
            "model yet (body[" + std::to_string(k + 1) + "]'s tank; an axial field is taken, as gravity is)");
+    if (b.free_surface && scene.field && scene.field->has_gradient())
+      fail(scene, "field.gradient", "a field varying in space moves a partially filled tank's free surface, which the "
+           "chain does not model yet (body[" + std::to_string(k + 1) + "]'s tank)");
     if (b.free_surface && (k > 0 || scene.free_chain) && bs.cavity->static_correction)
       fail(scene, "body[" + std::to_string(k + 1) + "].cavity.static_correction",
            "not modelled for a partially filled tank on a body whose joint moves (its remainder would couple to the "
@@ -402,6 +414,7 @@ void set_stiffness_friction_gyro(const Scene& scene, ChainModel& cm) {
   // A constant axial field f_z (m/s², docs/rom.md "A uniform force field") acts as gravity −f_z would: −a_k g → +a_k f_z.
   if (scene.field && !scene.free_chain)
     for (int k = 0; k < n; ++k) cm.K(k, k) += cm.a[k] * scene.field->space[2];
+  add_gradient_stiffness(scene, cm);  // a field varying in space (field_gradient.hpp)
   // A constant axial force F_z at `at` on body k (docs/rom.md, "External forces"): its potential −F·x_P, to second order
   // ½F_z(at |u_k|² + Σ_{j<k} s_j |u_j|²), stiffens each tilt that lowers the point as gravity's −m g does.
   for (int k = 0; k < n; ++k)

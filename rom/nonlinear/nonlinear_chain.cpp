@@ -94,6 +94,36 @@ void add_external_moments(const NonlinearChain& c, const Frames& f, double t, st
   }
 }
 
+// The joints O_k in space, from O_1 up the chain.
+std::vector<Vector3d> joint_points(const NonlinearChain& c, const ChainState& s, const Frames& f) {
+  std::vector<Vector3d> O;
+  Vector3d r = s.r1;
+  for (int k = 0; k < c.size(); ++k) {
+    O.push_back(r);
+    r += f.S[k];
+  }
+  return O;
+}
+
+// The field's gradient part G x on every body (NonlinearChain::field_gradient): its moment about O_k — the force
+// m G x_c at the centre, m ρ_k × G O_k, and ∫ r × G r dm = −vee(G J_k) (J_k about O_k: the second moments' isotropic
+// part drops out) —, the reactions S_j × F on the bodies below; returns Σ F (the free chain's centre of mass).
+Vector3d add_gradient_loads(const NonlinearChain& c, const ChainState& s, const Frames& f, std::vector<Vector3d>& tau) {
+  Vector3d total = Vector3d::Zero();
+  if (c.field_gradient.isZero()) return total;
+  const Matrix3d& G = c.field_gradient;
+  const std::vector<Vector3d> O = joint_points(c, s, f);
+  for (int k = 0; k < c.size(); ++k) {
+    const double m = c.bodies[k].mass;
+    const Vector3d F = m * G * (O[k] + f.rho[k]);
+    const Matrix3d P = G * f.J[k];
+    tau[k] += m * f.rho[k].cross(G * O[k]) - Vector3d(P(2, 1) - P(1, 2), P(0, 2) - P(2, 0), P(1, 0) - P(0, 1));
+    for (int j = 0; j < k; ++j) tau[j] += f.S[j].cross(F);
+    total += F;
+  }
+  return total;
+}
+
 // Σ_k F_k(t): what the free chain's centre of mass feels besides gravity.
 Vector3d total_force(const NonlinearChain& c, double t) {
   Vector3d F = Vector3d::Zero();
@@ -163,6 +193,7 @@ ChainRates chain_rates(const NonlinearChain& c, const ChainState& s) {
   for (int k = 0; k < n; ++k) d[k] = b[k] + f.Omega[k].cross(f.Omega[k].cross(f.rho[k]));
   std::vector<Vector3d> tau = joint_torques(c, f);
   add_external_moments(c, f, s.t, tau);
+  const Vector3d gradient_force = add_gradient_loads(c, s, f, tau);
   std::vector<int> first_mode(n + 1, 0);  // body k's modes are zeta[first_mode[k] .. first_mode[k + 1])
   for (int k = 0; k < n; ++k) first_mode[k + 1] = first_mode[k] + static_cast<int>(c.bodies[k].fluid.size());
 
@@ -193,7 +224,7 @@ ChainRates chain_rates(const NonlinearChain& c, const ChainState& s) {
   }
   if (c.free_chain) {
     M.block<3, 3>(3 * n, 3 * n) = mu[0] * Matrix3d::Identity();
-    Vector3d r = mu[0] * g + total_force(c, s.t);
+    Vector3d r = mu[0] * g + total_force(c, s.t) + gradient_force;
     for (int j = 0; j < n; ++j) r -= c.bodies[j].mass * d[j];
     rhs.segment<3>(3 * n) = r;
   }
@@ -234,6 +265,15 @@ double chain_energy(const NonlinearChain& c, const ChainState& s) {
     E += c.bodies[k].static_moment * f.n[k].z();  // the static aerodynamic moment's potential: −n × ∂V/∂n = M_α e_z × n
     const Vector3d n_prev = k > 0 ? f.n[k - 1] : Vector3d::UnitZ();
     E += c.joints[k].stiffness * (1 - f.n[k].dot(n_prev));
+  }
+  if (!c.field_gradient.isZero()) {  // −½ ∫ xᵀG x dm, x = O_k + r: m O_kᵀGO_k + 2m O_kᵀGρ_k + tr(G I2), I2 = ½ tr J − J
+    const Matrix3d& G = c.field_gradient;
+    const std::vector<Vector3d> O = joint_points(c, s, f);
+    for (int k = 0; k < c.size(); ++k) {
+      const double m = c.bodies[k].mass;
+      const Matrix3d I2 = 0.5 * f.J[k].trace() * Matrix3d::Identity() - f.J[k];
+      E -= 0.5 * (m * O[k].dot(G * O[k]) + 2 * m * O[k].dot(G * f.rho[k]) + (G * I2).trace());
+    }
   }
   return E;
 }

@@ -90,6 +90,10 @@ struct NonlinearChain {
   // A uniform force field besides gravity (m/s², on every mass; the scene's [field]): field + sin(2π f t) field_harmonic.
   Eigen::Vector3d field = Eigen::Vector3d::Zero(), field_harmonic = Eigen::Vector3d::Zero();
   double field_frequency = 0;         // Hz
+  // The field's non-uniform part G x (1/s², symmetric: a potential's), x from the space origin: on each body the force
+  // m G x_c and the moment about O_k, m ρ × G O_k + Σ ε (J G) (a gravity-gradient moment), its potential
+  // −½ ∫ xᵀG x dm in the energy (docs/rom.md, "A field that varies in space").
+  Eigen::Matrix3d field_gradient = Eigen::Matrix3d::Zero();
   // The acceleration field every mass feels at time t: gravity and the field.
   Eigen::Vector3d acceleration(double t) const {
     return Eigen::Vector3d(0, 0, -gravity) + field + std::sin(6.283185307179586 * field_frequency * t) * field_harmonic;

@@ -35,6 +35,7 @@ double energy_scale(const NonlinearChain& c, const ChainState& s) {
   NonlinearChain no_potential = c;
   no_potential.gravity = 0;
   no_potential.field.setZero();
+  no_potential.field_gradient.setZero();
   for (auto& j : no_potential.joints) j.stiffness = 0;
   const double kinetic = chain_energy(no_potential, s);
   return kinetic + std::abs(chain_energy(c, s) - kinetic);
@@ -74,6 +75,8 @@ NonlinearChain nonlinear_chain(const Scene& scene) {
     c.field_harmonic = Vector3d(scene.field->harmonic.data());
     c.field_frequency = scene.field->frequency;
   }
+  if (scene.field)  // a gradient does turn a free chain (a satellite's gravity-gradient moment)
+    c.field_gradient = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(scene.field->gradient.data());
   // Totals with the frozen fluid and the kept modes, as the linear model has them (chain_model.hpp).
   const ChainModel model = build_model(scene, nullptr, false);
   const std::size_t n = scene.size();

@@ -187,12 +187,41 @@ ForceSpec parse_force(Ctx& c, const toml::table& ft, const std::string& wf) {
 }
 
 // [field]: a uniform body-force field, m/s².
+// A 3 × 3 matrix [[..], [..], [..]] (row-major), or zeros when absent.
+std::array<double, 9> get_matrix3(const Ctx& c, const toml::table& t, const std::string& key, const std::string& where) {
+  std::array<double, 9> m{};
+  const toml::node* node = t.get(key);
+  if (!node) return m;
+  const toml::array* rows = node->as_array();
+  if (!rows || rows->size() != 3) c.fail(where, "must be a 3 x 3 matrix [[xx, xy, xz], [yx, yy, yz], [zx, zy, zz]]");
+  for (std::size_t i = 0; i < 3; ++i) {
+    const toml::array* row = (*rows)[i].as_array();
+    if (!row || row->size() != 3) c.fail(where, "must be a 3 x 3 matrix [[xx, xy, xz], [yx, yy, yz], [zx, zy, zz]]");
+    for (std::size_t j = 0; j < 3; ++j) m[3 * i + j] = finite_number(c, (*row)[j], where);
+  }
+  return m;
+}
+
+// The gradient of a potential field is symmetric; a field with a curl would drive the liquid's vorticity, which the
+// frozen liquid (Batyr's generalised Zhukovsky theorem) does not describe.
+void check_symmetric(const Ctx& c, const std::array<double, 9>& g, const std::string& where) {
+  double scale = 0;
+  for (const double x : g) scale = std::max(scale, std::abs(x));
+  for (int i = 0; i < 3; ++i)
+    for (int j = i + 1; j < 3; ++j)
+      if (std::abs(g[3 * i + j] - g[3 * j + i]) > 1e-12 * scale)
+        c.fail(where, "is not symmetric: only a potential field's gradient is modelled (a field with a curl would "
+                      "stir the liquid, which the frozen liquid of Batyr's generalised Zhukovsky theorem does not take)");
+}
+
 FieldSpec parse_field(Ctx& c, const toml::table& ft) {
-  check_keys(c, ft, "field", {"space", "harmonic", "frequency"});
+  check_keys(c, ft, "field", {"space", "harmonic", "frequency", "gradient"});
   FieldSpec f;
   f.space = get_vector3(c, ft, "space", "field.space");
   f.harmonic = get_vector3(c, ft, "harmonic", "field.harmonic");
   f.frequency = get_number(c, ft, "frequency", "field.frequency", Sign::nonneg, false).value_or(0.0);
+  f.gradient = get_matrix3(c, ft, "gradient", "field.gradient");
+  check_symmetric(c, f.gradient, "field.gradient");
   if (ft.get("harmonic") && !ft.get("frequency")) c.fail("field.frequency", "missing: a harmonic field needs it (Hz)");
   return f;
 }

@@ -91,9 +91,18 @@ struct RunSpec {
 // A uniform body-force field (Batyr's f(t, x), uniform in space): an acceleration in m/s² acting on every mass
 // besides gravity, `space` constant plus `harmonic` · sin(2π frequency t) — the inertial force of a support's or a
 // craft's acceleration (docs/rom.md, "A uniform force field").
+// `gradient` G (1/s², row-major, symmetric) adds the non-uniform part G x, x from the space origin (O_1 of a fixed
+// chain): a potential field's first-order variation, e.g. an orbit's gravity gradient (docs/rom.md, "A field that
+// varies in space").
 struct FieldSpec {
   std::array<double, 3> space{0, 0, 0}, harmonic{0, 0, 0};
   double frequency = 0;  // Hz
+  std::array<double, 9> gradient{};
+  bool has_gradient() const {
+    for (const double g : gradient)
+      if (g != 0) return true;
+    return false;
+  }
 };
 
 struct Scene {

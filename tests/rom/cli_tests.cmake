@@ -113,6 +113,10 @@ rom_cli(bad_force ARGS run;bad_force.toml;-o;out_bad_force.h5 EXPECT_EXIT 1
         MATCH "^chain-rom: error: [^\n]*body\\[1\\]\\.force\\.at: " NO_FILE out_bad_force.h5)
 rom_cli(bad_field ARGS run;bad_field.toml;-o;out_bad_field.h5 EXPECT_EXIT 1
         MATCH "^chain-rom: error: [^\n]*field\\.harmonic: a time-varying axial field changes the chain's stiffness" NO_FILE out_bad_field.h5)
+rom_cli(bad_gradient ARGS run;bad_gradient.toml;-o;out_bad_gradient.h5 EXPECT_EXIT 1
+        MATCH "^chain-rom: error: [^\n]*field\\.gradient: is not symmetric: only a potential field's gradient" NO_FILE out_bad_gradient.h5)
+rom_cli(bad_gradient_axis ARGS spectrum;bad_gradient_axis.toml EXPECT_EXIT 1
+        MATCH "^chain-rom: error: [^\n]*field\\.gradient: has xx != yy: the linearised chain \\(26\\) needs a gradient symmetric")
 rom_cli(bad_nonlinear_tilt ARGS run;bad_nonlinear_tilt.toml;-o;out_bad_nl_tilt.h5 EXPECT_EXIT 1
         MATCH "^chain-rom: error: [^\n]*initial\\.tilt\\[1\\]: Krylov angles beta = Re u = 2, [^\n]*outside" NO_FILE out_bad_nl_tilt.h5)
 # The linear run measures its own validity against the nonlinear chain (with its tanks) and warns past 1 %.

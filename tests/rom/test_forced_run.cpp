@@ -12,8 +12,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <tuple>
 
 using namespace rc::rom;
 using cd = std::complex<double>;
@@ -317,5 +319,87 @@ TEST(ForcedRun, NonlinearEnergyChangesByTheWorkOfItsLoads) {
     EXPECT_LT(balance[1], 1e-3);
     EXPECT_GT(balance[0] / balance[1], 3.5);
     EXPECT_LT(balance[0] / balance[1], 4.5);
+  }
+}
+
+namespace {
+// pendulums_in_field's chain in a field varying in space besides gravity: the gradient diag(g_t, g_t, g_z) (symmetric
+// about the spin axis, as the linear model needs) and a harmonic transverse field to drive it; tilts and transverse
+// parts times `scale`.
+std::string pendulums_in_gradient(double scale, const std::string& model = "method = \"exact\"\n") {
+  const auto num = [](double x) { return std::to_string(x); };
+  return "[system]\nkind = \"fixed\"\ngravity = 9.81\n[support]\nfriction = 0.05\n[field]\n"
+         "gradient = [[-20.0, 0.0, 0.0], [0.0, -20.0, 0.0], [0.0, 0.0, 40.0]]\nharmonic = [" + num(0.05 * scale) +
+         ", " + num(0.04 * scale) + ", 0.0]\nfrequency = 0.8\n"
+         "[[body]]\nmass = 2.0\nA = 0.05\nC = 0.03\ncom = -0.1\nnext_joint = -0.3\nspin = 30.0\n"
+         "[[body]]\nmass = 1.0\nA = 0.02\nC = 0.01\ncom = -0.12\nspin = 20.0\n"
+         "[[joint]]\nstiffness = 3.0\nfriction = 0.02\n"
+         "[initial]\ntilt = [[" + num(0.002 * scale) + ", 0.0], [" + num(-0.001 * scale) + ", 0.001]]\n"
+         "[run]\nt_end = 5.0\noutput_step = 0.01\ntolerance = 1e-11\n" + model;
+}
+}  // namespace
+
+// A field varying in space, f = G x (the scene's [field] gradient; docs/rom.md, "A field that varies in space"). (1)
+// A body pivoted at its centre of mass in an orbit's gravity gradient along the local vertical, G = n²(3 e_z e_zᵀ − I):
+// the linear chain's characteristic equation is A σ² + C ω σ − 3n²(A − C) = 0 — a prolate body (A > C) librates at
+// n √(3(A − C)/A) without spin, an oblate one is thrown over (Beletsky's gravity-gradient libration); (2) two pendulums
+// in a gradient besides gravity, driven by a harmonic field: the linear run is the nonlinear chain at small amplitude,
+// the difference falling as the amplitude squared; (3) the nonlinear chain keeps its energy (kinetic, gravity's,
+// the gradient's potential −½∫xᵀGx dm) with a general symmetric G and bodies with B ≠ A, fixed and free.
+TEST(ForcedRun, FieldGradientIsTheGravityGradientsClosedFormAndTheNonlinearChains) {
+  const double n = 0.5;
+  for (const auto& [A, C, spin] : {std::tuple{0.05, 0.03, 0.0}, std::tuple{0.05, 0.03, 2.0},
+                                   std::tuple{0.02, 0.03, 0.0}, std::tuple{0.02, 0.03, 1.0}}) {
+    const std::string text = "[system]\nkind = \"fixed\"\ngravity = 0.0\n[field]\ngradient = [[" +
+                             std::to_string(-n * n) + ", 0.0, 0.0], [0.0, " + std::to_string(-n * n) +
+                             ", 0.0], [0.0, 0.0, " + std::to_string(2 * n * n) + "]]\n[[body]]\nmass = 3.0\nA = " +
+                             std::to_string(A) + "\nC = " + std::to_string(C) + "\ncom = 0.0\nspin = " +
+                             std::to_string(spin) + "\n";
+    const Spectrum sp = compute_spectrum(build_model(parse_scene_text(text, ".", "gravity-gradient")));
+    const double Cw = C * spin, K = 3 * n * n * (A - C);
+    const cd disc = std::sqrt(cd(Cw * Cw + 4 * A * K));
+    std::vector<cd> exact = {(-Cw + disc) / (2 * A), (-Cw - disc) / (2 * A)};
+    std::vector<cd> got;
+    for (const auto& r : sp.roots) got.push_back(r.sigma);
+    ASSERT_EQ(got.size(), 2u);
+    const auto by_real = [](cd a, cd b) { return a.real() != b.real() ? a.real() < b.real() : a.imag() < b.imag(); };
+    std::sort(got.begin(), got.end(), by_real);
+    std::sort(exact.begin(), exact.end(), by_real);
+    const double err = std::max(std::abs(got[0] - exact[0]), std::abs(got[1] - exact[1])) / std::abs(exact[0]);
+    std::printf("  A = %.2f, C = %.2f, spin %.1f: roots %.10f%+.10fi, %.10f%+.10fi; closed form to %.1e (%s)\n", A, C,
+                spin, got[0].real(), got[0].imag(), got[1].real(), got[1].imag(), err,
+                sp.stable ? "stable" : "unstable");
+    EXPECT_LT(err, 1e-12);
+    EXPECT_EQ(sp.stable, Cw * Cw + 4 * A * K > 0);
+  }
+  const std::vector<double> rel = linear_against_nonlinear(pendulums_in_gradient);
+  std::printf("  two pendulums in a gradient: halving tilts and field, the difference falls by %.2f (amplitude "
+              "squared: 4)\n", rel[0] / rel[1]);
+  EXPECT_LT(rel[1], 1e-3);
+  EXPECT_GT(rel[0] / rel[1], 3.5);
+  for (const std::string kind : {"fixed", "free"}) {
+    const std::string text =
+        "[system]\nkind = \"" + kind + "\"\ngravity = 0.0\n[field]\n"
+        "gradient = [[-3.0, 0.4, 0.2], [0.4, -2.0, -0.3], [0.2, -0.3, 5.0]]\n"
+        "[[body]]\nmass = 2.0\nA = 0.05\nB = 0.04\nC = 0.03\ncom = -0.1\nnext_joint = -0.3\nspin = 30.0\n"
+        "[[body]]\nmass = 1.0\nA = 0.02\nC = 0.01\ncom = -0.12\nspin = 20.0\n[[joint]]\nstiffness = 3.0\n"
+        "[initial]\ntilt = [[0.3, 0.0], [-0.2, 0.1]]\n"
+        "[run]\nmodel = \"nonlinear\"\nt_end = 2.0\noutput_step = 0.01\ntolerance = 1e-11\n";
+    const Scene s = parse_scene_text(text, ".", "gradient-energy");
+    const NonlinearChain chain = nonlinear_chain(s);
+    const NonlinearHistory h = integrate_nonlinear(chain, nonlinear_initial_state(s, chain), s.run);
+    std::printf("  nonlinear %s chain in a general gradient, tilts to %.2f rad: energy drift %.1e (H from %.6f to "
+                "%.6f)\n", kind.c_str(), h.base.u.cwiseAbs().maxCoeff(), h.base.max_energy_drift, h.base.H.front(),
+                h.base.H.back());
+    EXPECT_LT(h.base.max_energy_drift, 1e-8);
+    // The gradient must matter: without it the tilts go elsewhere.
+    std::string plain = text;
+    plain.replace(plain.find("gradient = "), plain.find("\n[[body]]") - plain.find("gradient = "), "");
+    const Scene s0 = parse_scene_text(plain, ".", "gradient-energy-without");
+    const NonlinearChain c0 = nonlinear_chain(s0);
+    const NonlinearHistory h0 = integrate_nonlinear(c0, nonlinear_initial_state(s0, c0), s0.run);
+    const double moved = (h.base.u - h0.base.u).cwiseAbs().maxCoeff() / h0.base.u.cwiseAbs().maxCoeff();
+    std::printf("    without the gradient the tilts differ by %.2f of their largest\n", moved);
+    EXPECT_GT(moved, 1e-2);
   }
 }
