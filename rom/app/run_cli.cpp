@@ -20,6 +20,16 @@
 namespace rc::rom::app {
 namespace {
 
+// Loads from outside the chain that turn it (its angular momentum then changes): moments, forces, aerodynamics, a
+// transverse or varying field. Gravity and an axial field keep a fixed chain's L_z, and turn no free chain.
+bool external_loads(const NonlinearChain& c) {
+  for (const ChainBody& b : c.bodies)
+    if (b.axial_moment != 0 || !b.space_moment.isZero() || !b.harmonic_moment.isZero() || b.static_moment != 0 ||
+        b.pitch_damping != 0 || b.magnus != 0 || !b.space_force.isZero() || !b.harmonic_force.isZero())
+      return true;
+  return c.field.x() != 0 || c.field.y() != 0 || !c.field_harmonic.isZero() || !c.field_gradient.isZero();
+}
+
 int run_nonlinear(const Scene& scene, const std::string& out_file) {
   const NonlinearChain chain = nonlinear_chain(scene);
   const NonlinearHistory h = integrate_nonlinear(chain, nonlinear_initial_state(scene, chain), scene.run);
@@ -46,8 +56,11 @@ int run_nonlinear(const Scene& scene, const std::string& out_file) {
               << " of H's scale (trapezoid rule on the output samples; Batyr (11))";
   else
     std::cout << (damped ? "largest relative increase per sample " : "largest relative drift ") << h.base.max_energy_drift;
-  std::cout << "; angular momentum " << (chain.free_chain ? "(vector)" : "(about the vertical through O_1)")
-            << ": largest relative drift " << h.max_momentum_drift << "\n";
+  if (external_loads(chain))
+    std::cout << "; angular momentum: not an integral under the external moments, forces and fields\n";
+  else
+    std::cout << "; angular momentum " << (chain.free_chain ? "(vector)" : "(about the vertical through O_1)")
+              << ": largest relative drift " << h.max_momentum_drift << "\n";
   return 0;
 }
 
