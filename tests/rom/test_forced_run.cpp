@@ -143,18 +143,24 @@ TEST(ForcedRun, ForcesAreTheNonlinearChainsAtSmallAmplitude) {
 }
 
 namespace {
-// forced_pendulums' chain in a uniform field instead of the force: a constant part (transverse and axial) and a
-// harmonic transverse one; tilts and transverse parts times `scale`.
-std::string pendulums_in_field(double scale, const std::string& model = "method = \"exact\"\n") {
+// forced_pendulums' chain (no force) with the field `field` (its [field] keys); tilts times `scale`.
+std::string pendulums_with_field(const std::string& field, double scale, const std::string& model) {
   const auto num = [](double x) { return std::to_string(x); };
-  return "[system]\nkind = \"fixed\"\ngravity = 9.81\n[support]\nfriction = 0.05\n[field]\nspace = [" +
-         num(0.03 * scale) + ", " + num(-0.02 * scale) + ", -2.0]\nharmonic = [" + num(0.05 * scale) + ", " +
-         num(0.04 * scale) + ", 0.0]\nfrequency = 0.8\n"
+  return "[system]\nkind = \"fixed\"\ngravity = 9.81\n[support]\nfriction = 0.05\n[field]\n" + field +
          "[[body]]\nmass = 2.0\nA = 0.05\nC = 0.03\ncom = -0.1\nnext_joint = -0.3\nspin = 30.0\n"
          "[[body]]\nmass = 1.0\nA = 0.02\nC = 0.01\ncom = -0.12\nspin = 20.0\n"
          "[[joint]]\nstiffness = 3.0\nfriction = 0.02\n"
          "[initial]\ntilt = [[" + num(0.002 * scale) + ", 0.0], [" + num(-0.001 * scale) + ", 0.001]]\n"
          "[run]\nt_end = 5.0\noutput_step = 0.01\ntolerance = 1e-11\n" + model;
+}
+
+// In a uniform field: a constant part (transverse and axial) and a harmonic transverse one; tilts and transverse parts
+// times `scale`.
+std::string pendulums_in_field(double scale, const std::string& model = "method = \"exact\"\n") {
+  const auto num = [](double x) { return std::to_string(x); };
+  return pendulums_with_field("space = [" + num(0.03 * scale) + ", " + num(-0.02 * scale) + ", -2.0]\nharmonic = [" +
+                                  num(0.05 * scale) + ", " + num(0.04 * scale) + ", 0.0]\nfrequency = 0.8\n",
+                              scale, model);
 }
 }  // namespace
 
@@ -323,19 +329,13 @@ TEST(ForcedRun, NonlinearEnergyChangesByTheWorkOfItsLoads) {
 }
 
 namespace {
-// pendulums_in_field's chain in a field varying in space besides gravity: the gradient diag(g_t, g_t, g_z) (symmetric
-// about the spin axis, as the linear model needs) and a harmonic transverse field to drive it; tilts and transverse
-// parts times `scale`.
+// In a field varying in space besides gravity: the gradient diag(g_t, g_t, g_z) (symmetric about the spin axis, as the
+// linear model needs) and a harmonic transverse field to drive it; tilts and transverse parts times `scale`.
 std::string pendulums_in_gradient(double scale, const std::string& model = "method = \"exact\"\n") {
   const auto num = [](double x) { return std::to_string(x); };
-  return "[system]\nkind = \"fixed\"\ngravity = 9.81\n[support]\nfriction = 0.05\n[field]\n"
-         "gradient = [[-20.0, 0.0, 0.0], [0.0, -20.0, 0.0], [0.0, 0.0, 40.0]]\nharmonic = [" + num(0.05 * scale) +
-         ", " + num(0.04 * scale) + ", 0.0]\nfrequency = 0.8\n"
-         "[[body]]\nmass = 2.0\nA = 0.05\nC = 0.03\ncom = -0.1\nnext_joint = -0.3\nspin = 30.0\n"
-         "[[body]]\nmass = 1.0\nA = 0.02\nC = 0.01\ncom = -0.12\nspin = 20.0\n"
-         "[[joint]]\nstiffness = 3.0\nfriction = 0.02\n"
-         "[initial]\ntilt = [[" + num(0.002 * scale) + ", 0.0], [" + num(-0.001 * scale) + ", 0.001]]\n"
-         "[run]\nt_end = 5.0\noutput_step = 0.01\ntolerance = 1e-11\n" + model;
+  return pendulums_with_field("gradient = [[-20.0, 0.0, 0.0], [0.0, -20.0, 0.0], [0.0, 0.0, 40.0]]\nharmonic = [" +
+                                  num(0.05 * scale) + ", " + num(0.04 * scale) + ", 0.0]\nfrequency = 0.8\n",
+                              scale, model);
 }
 }  // namespace
 
