@@ -7,6 +7,7 @@
 #include "free_surface_quadratic.hpp"
 #include "partial_fill_cylinder.hpp"
 #include "partial_fill_table.hpp"
+#include "offset_rows.hpp"
 #include "passivity_scan.hpp"
 #include "ideal_response.hpp"
 #include "petsc_handles.hpp"
@@ -20,6 +21,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -143,6 +145,9 @@ int world_ranks() {
 // `kept`, the frequencies it holds are read from it and every new solve is added to it as soon as it is made. With
 // `split` (forms assembled on PETSC_COMM_SELF under mpirun) each rank solves every ranks-th frequency on its own
 // and the answers are summed over the ranks: the frequencies, not the matrices, are shared out.
+// A partially filled tank's response about a point at height −c below the liquid's centroid.
+std::complex<double> about(const OffsetResponse& r, double c) { return r.ff + 2 * c * r.fg + c * c * r.gg; }
+
 CavityResponse viscous_cavity_response(const ResponseRequest& req, const ViscousForms& forms, Progress& lines,
                                        const std::string& label, const std::string& left_of = "",
                                        ResponseSamples* kept = nullptr, bool split = false) {
@@ -161,7 +166,7 @@ CavityResponse viscous_cavity_response(const ResponseRequest& req, const Viscous
     std::vector<double> mine(2 * missing.size(), 0.0), all(2 * missing.size(), 0.0);
     for (std::size_t i = static_cast<std::size_t>(rank); i < missing.size(); i += static_cast<std::size_t>(ranks)) {
       const std::size_t k = missing[i];
-      const std::complex<double> R = response(req.sigmas[k]);
+      const std::complex<double> R = req.offset == 0 ? response(req.sigmas[k]) : about(response.with_offset(req.sigmas[k]), req.offset);
       mine[2 * i] = R.real();
       mine[2 * i + 1] = R.imag();
       if (kept && !split) kept->add(req.sigmas[k], R);
@@ -550,6 +555,119 @@ std::string passivity_phrase(const RationalFit& fit, double lo, double hi) {
 
 }  // namespace
 
+namespace {
+
+// One rational fit of R on the request's window (at its offset with a free surface), refined where it errs or is not
+// passive; throws (fit_failure) when the error stays above max_error.
+struct WindowedFit {
+  RationalFit fit;
+  double error = 0;
+  int refinements = 0;
+  std::size_t samples = 0;      // on the window, after the refinements
+  std::complex<double> tail_R;  // R at the tail's last frequency (s R(s) there is the residues' sum)
+  CavityResponse first;         // the first samples' response (method, unknowns)
+};
+
+WindowedFit fit_on_window(const ResponseRequest& req, const ViscousForms& forms, ResponseSamples& kept, bool split,
+                          const std::vector<double>& tail, double max_error, Progress& lines) {
+  ResponseRequest all = req;
+  for (const double t : tail) all.sigmas.emplace_back(t, 0.0);
+  const auto solve_start = std::chrono::steady_clock::now();
+  WindowedFit out;
+  out.first = viscous_cavity_response(all, forms, lines, "response fit: first samples",
+                                      " for the first samples (refinements may follow)", &kept, split);
+  WindowRefinement refinement(req, forms, kept, split, out.first, tail, max_error, lines);
+  refinement.refine_by_error();
+  refinement.refine_for_passivity();
+  const double lo = req.sigmas.front().real(), hi = req.sigmas.back().real();
+  out.samples = refinement.window_s.size();
+  if (!(refinement.w.error <= max_error))
+    throw std::runtime_error(fit_failure(lo, hi, refinement.w.error, max_error, refinement.refinements,
+                                         out.samples + tail.size(), out.samples, kept, solve_start));
+  out.fit = refinement.w.fit;
+  out.error = refinement.w.error;
+  out.refinements = refinement.refinements;
+  out.tail_R = out.first.R.back();
+  return out;
+}
+
+// The offsets (table units) at which a partially filled tank's response is fitted: R(c) is quadratic in c, so three
+// fits determine it at every c by Lagrange interpolation, ℓ_i(c) = α_i + β_i c + γ_i c² (docs/viscous.md, "Response
+// tables of a partially filled tank").
+constexpr std::array<double, 3> kFitOffsets{-1.0, 0.0, 1.0};
+constexpr std::array<std::array<double, 3>, 3> kLagrange{{{0.0, -0.5, 0.5}, {1.0, 0.0, -1.0}, {0.0, 0.5, 0.5}}};
+
+// A partially filled tank's three fits as rows: fit i's pole p with residue r contributes r ℓ_i(c)/(s − p), a residue
+// matrix r [[α_i, β_i/2], [β_i/2, γ_i]] written as two rows (offset_rows). Returns the residues' sum about the centroid.
+std::complex<double> add_offset_pseudo_modes(ModeTable& t, const std::array<WindowedFit, 3>& fits, double err) {
+  std::complex<double> sum = 0;
+  for (std::size_t i = 0; i < fits.size(); ++i)
+    for (std::size_t j = 0; j < fits[i].fit.poles.size(); ++j) {
+      const std::complex<double> p = fits[i].fit.poles[j], r = fits[i].fit.residues[j];
+      const auto& l = kLagrange[i];
+      for (const OffsetRow& row : offset_rows(r * l[0], r * (0.5 * l[1]), r * l[2])) {
+        if (row.a == 0.0 && row.t == 0.0) continue;
+        const std::complex<double> E = 2.0 * row.a * row.a;
+        t.lambda.push_back(p.real());
+        t.kappa.push_back(2 / p.real());
+        t.decay.push_back(p.imag());
+        t.E.push_back(E.real());
+        t.E_imag.push_back(E.imag());
+        t.a.push_back(row.a.real());
+        t.a_imag.push_back(row.a.imag());
+        t.N2.push_back(1.0);
+        t.residual.push_back(std::max(err, std::numeric_limits<double>::epsilon()));
+        t.free_surface.t.push_back(row.t.real());
+        t.free_surface.t_imag.push_back(row.t.imag());
+      }
+      sum += r * l[0];
+    }
+  return sum;
+}
+
+// `cavity-modes response --fill --fit`: the three fits at kFitOffsets, each refined and scanned as a filled cavity's
+// fit is; their forced solves are not kept in FILE.h5.samples (its key is the filled response's).
+ModeTable partially_filled_fit_table(const ResponseRequest& req, double max_error, const std::vector<double>& tail,
+                                     bool split, Progress& lines, std::chrono::steady_clock::time_point start) {
+  const ViscousForms forms = assemble_cavity_forms(geometry::partially_filled(req.shape, req.fill), req.mesh, req.ekman,
+                                                   split ? PETSC_COMM_SELF : PETSC_COMM_WORLD);
+  ResponseSamples none;
+  std::array<WindowedFit, 3> fits;
+  for (std::size_t i = 0; i < fits.size(); ++i) {
+    ResponseRequest at = req;
+    at.offset = kFitOffsets[i];
+    fits[i] = fit_on_window(at, forms, none, split, tail, max_error, lines);
+  }
+  const double lo = req.sigmas.front().real(), hi = req.sigmas.back().real();
+  double err = 0;
+  std::string each;
+  for (std::size_t i = 0; i < fits.size(); ++i) {
+    err = std::max(err, fits[i].error);
+    each += fmt::format("{}c = {:g}: AAA degree {}, {} poles kept, {} dropped, {} samples, {} refinements, error {:.2g}, "
+                        "{}", i ? "; " : "", kFitOffsets[i], fits[i].fit.aaa_degree, fits[i].fit.poles.size(),
+                        fits[i].fit.dropped_poles, fits[i].samples, fits[i].refinements, fits[i].error,
+                        passivity_phrase(fits[i].fit, lo, hi));
+  }
+  ModeTable t = response_table_start(req, fits[1].first.unknowns);
+  t.fit_error = err;
+  const std::complex<double> sum = add_offset_pseudo_modes(t, fits, err);
+  t.coverage = t.sum_rule > 0 ? sum.real() / t.sum_rule : 1.0;
+  t.normalisation = "pseudo-modes of three rational fits of a partially filled tank's R(c) about points at heights "
+                    "-c = 1, 0, -1 below the liquid's centroid, combined by their quadratic interpolation in c: each "
+                    "pole's residue matrix as two rows, 2 (a + c t)^2 each (docs/viscous.md, \"Response tables of a "
+                    "partially filled tank\")";
+  t.solver = fmt::format("AAA rational fits of R(c) on [{:g}, {:g}] and {} beyond it up to |s| = {:.3g} at c = -1, 0, "
+                         "1 ({}); sum of residues about the centroid {:.9g}{:+.9g}i, A_f + K2 - J_zh = {:.9g}; R by {}",
+                         lo, hi, tail.size(), std::abs(tail.back()), each, sum.real(), sum.imag(), t.sum_rule,
+                         fits[1].first.method);
+  t.tolerance = 1e-10;
+  t.sort_by_energy();
+  t.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return t;
+}
+
+}  // namespace
+
 ModeTable response_fit_table(const ResponseRequest& req, double max_error) {
   const auto start = std::chrono::steady_clock::now();
   check_response_window(req, "a response-fit table");
@@ -558,32 +676,22 @@ ModeTable response_fit_table(const ResponseRequest& req, double max_error) {
   // fit"): without samples there AAA may spend a pole far off with a huge residue on the window's near-constant
   // background, a pseudo-mode whose coupling E would swamp the chain's inertia. So R is also sampled on a
   // geometric tail on both sides (response_tail), which the fit matches but the window's error does not count.
-  ResponseRequest all = req;
   const double lo = req.sigmas.front().real(), hi = req.sigmas.back().real();
   const std::vector<double> tail = response_tail(lo, hi);
-  for (const double t : tail) all.sigmas.emplace_back(t, 0.0);
   // Under mpirun the frequencies are shared out, each rank with the whole problem (a response table solves 100 and
   // more of them, which a distributed factorisation on 2 cores does not speed up).
   const bool split = world_ranks() > 1;
   Progress lines(stderr_on_root);  // one clock for the whole fit: assembly, first samples, refinements
+  if (req.fill < 1) return partially_filled_fit_table(req, max_error, tail, split, lines, start);
   const ViscousForms forms =  // once, for every refinement
       assemble_cavity_forms(req.shape, req.mesh, req.ekman, split ? PETSC_COMM_SELF : PETSC_COMM_WORLD);
   // Every forced solve is kept as it is made: a fit that misses its tolerance, or a stopped run, loses none of them.
   ResponseSamples kept = kept_samples(req, forms);
-  const auto solve_start = std::chrono::steady_clock::now();
-  const CavityResponse R = viscous_cavity_response(all, forms, lines, "response fit: first samples",
-                                                   " for the first samples (refinements may follow)", &kept, split);
-  WindowRefinement refinement(req, forms, kept, split, R, tail, max_error, lines);
-  refinement.refine_by_error();
-  refinement.refine_for_passivity();
-  const RationalFit& fit = refinement.w.fit;
-  const double err = refinement.w.error;
-  const std::size_t samples = refinement.window_s.size();
-  if (!(err <= max_error))
-    throw std::runtime_error(fit_failure(lo, hi, err, max_error, refinement.refinements, samples + tail.size(),
-                                         samples, kept, solve_start));
+  const WindowedFit w = fit_on_window(req, forms, kept, split, tail, max_error, lines);
+  const RationalFit& fit = w.fit;
+  const double err = w.error;
 
-  ModeTable t = response_table_start(req, R.unknowns);
+  ModeTable t = response_table_start(req, w.first.unknowns);
   t.fit_error = err;
   const std::complex<double> sum = add_pseudo_modes(t, fit, err);
   t.coverage = t.sum_rule > 0 ? sum.real() / t.sum_rule : 1.0;
@@ -592,10 +700,10 @@ ModeTable response_fit_table(const ResponseRequest& req, double max_error) {
   t.solver = fmt::format("AAA rational fit of R(s) (degree {}, {} poles kept, {} dropped) on every other of {} real "
                          "samples in [{:g}, {:g}] ({} given, {} refinements where the fit erred) and {} beyond it up to |s| = {:.3g}, max error between the window's samples {:.2g}; "
                          "{}; sum of residues {:.9g}{:+.9g}i, s R(s) at s = {:.3g}: {:.9g}, A_f - J_zh = {:.9g}; R by {}",
-                         fit.aaa_degree, fit.poles.size(), fit.dropped_poles, samples, lo, hi, n,
-                         refinement.refinements, tail.size(), std::abs(tail.back()), err,
+                         fit.aaa_degree, fit.poles.size(), fit.dropped_poles, w.samples, lo, hi, n,
+                         w.refinements, tail.size(), std::abs(tail.back()), err,
                          passivity_phrase(fit, lo, hi), sum.real(), sum.imag(), tail.back(),
-                         (tail.back() * R.R.back()).real(), t.sum_rule, R.method);
+                         (tail.back() * w.tail_R).real(), t.sum_rule, w.first.method);
   if (kept.read() > 0) t.solver += fmt::format(" ({} forced solves were at hand from an earlier run's kept samples)",
                                                kept.read());
   t.tolerance = 1e-10;

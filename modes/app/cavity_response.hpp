@@ -23,6 +23,9 @@ struct ResponseRequest {
   double ekman = 0;             // 0: ideal fluid
   bool separable = false;       // ideal cylinder: the separable mode sum instead of forced solves
   double fill = 1;              // below 1 a partially filled tank: R about the liquid's centroid and its offset parts
+  // A partially filled tank's response fit: R about a point at height −offset below the centroid (table units),
+  // R_ff + 2c R_fg + c² R_gg; 0: about the centroid.
+  double offset = 0;
   std::vector<std::complex<double>> sigmas;
   // A Krylov response table's frequencies where its R must be the fluid's own (viscous/krylov_response.hpp).
   std::vector<std::complex<double>> exact_at;

@@ -332,12 +332,9 @@ void check_section_fill(const TableRequest& req) {
 }
 
 // `cavity-modes response --fill`: R and its offset parts as CSV, ideal or viscous, served (three complex numbers a
-// line), or the Krylov response table (docs/viscous.md, "Response tables of a partially filled tank").
+// line), or a response table (docs/viscous.md, "Response tables of a partially filled tank").
 void check_response_fill(const TableRequest& req, const ViscousOptions& viscous, const std::string& output) {
   if (!(req.fill < 1)) return;
-  if (ends_with(output, ".h5") && viscous.fit)
-    throw CommandLineError("--fill --fit: a partially filled tank's response table is the Krylov one (leave out --fit; "
-                           "-o FILE.csv gives R and its offset parts)");
   check_section_fill(req);
 }
 
