@@ -603,23 +603,9 @@ std::complex<double> add_offset_pseudo_modes(ModeTable& t, const std::array<Wind
   std::complex<double> sum = 0;
   for (std::size_t i = 0; i < fits.size(); ++i)
     for (std::size_t j = 0; j < fits[i].fit.poles.size(); ++j) {
-      const std::complex<double> p = fits[i].fit.poles[j], r = fits[i].fit.residues[j];
+      const std::complex<double> r = fits[i].fit.residues[j];
       const auto& l = kLagrange[i];
-      for (const OffsetRow& row : offset_rows(r * l[0], r * (0.5 * l[1]), r * l[2])) {
-        if (row.a == 0.0 && row.t == 0.0) continue;
-        const std::complex<double> E = 2.0 * row.a * row.a;
-        t.lambda.push_back(p.real());
-        t.kappa.push_back(2 / p.real());
-        t.decay.push_back(p.imag());
-        t.E.push_back(E.real());
-        t.E_imag.push_back(E.imag());
-        t.a.push_back(row.a.real());
-        t.a_imag.push_back(row.a.imag());
-        t.N2.push_back(1.0);
-        t.residual.push_back(std::max(err, std::numeric_limits<double>::epsilon()));
-        t.free_surface.t.push_back(row.t.real());
-        t.free_surface.t_imag.push_back(row.t.imag());
-      }
+      add_offset_rows(t, fits[i].fit.poles[j], r * l[0], r * (0.5 * l[1]), r * l[2], err);
       sum += r * l[0];
     }
   return sum;

@@ -13,7 +13,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <iostream>
 #include <limits>
@@ -140,22 +139,7 @@ cd add_ritz_rows(ModeTable& t, const GalerkinReduction& red, double residual) {
 cd add_offset_ritz_rows(ModeTable& t, const GalerkinReduction& red, double residual) {
   cd sum = 0;
   for (std::size_t l = 0; l < red.lambda.size(); ++l) {
-    const cd p = red.lambda[l];
-    for (const OffsetRow& r : offset_rows(red.residue[l], red.residue_fg[l], red.residue_gg[l])) {
-      if (r.a == 0.0 && r.t == 0.0) continue;
-      const cd E = 2.0 * r.a * r.a;
-      t.lambda.push_back(p.real());
-      t.kappa.push_back(2 / p.real());
-      t.decay.push_back(std::max(p.imag(), 0.0));
-      t.E.push_back(E.real());
-      t.E_imag.push_back(E.imag());
-      t.a.push_back(r.a.real());
-      t.a_imag.push_back(r.a.imag());
-      t.N2.push_back(1.0);
-      t.residual.push_back(std::max(residual, std::numeric_limits<double>::epsilon()));
-      t.free_surface.t.push_back(r.t.real());
-      t.free_surface.t_imag.push_back(r.t.imag());
-    }
+    add_offset_rows(t, red.lambda[l], red.residue[l], red.residue_fg[l], red.residue_gg[l], residual);
     sum += red.residue[l];
   }
   return sum;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace rc::modes {
 
@@ -22,6 +23,24 @@ std::array<OffsetRow, 2> offset_rows(cd ff, cd fg, cd gg) {
   for (OffsetRow& r : rows)
     if (r.a.real() < 0 || (r.a.real() == 0 && r.a.imag() < 0)) r = {-r.a, -r.t};
   return rows;
+}
+
+void add_offset_rows(ModeTable& t, cd pole, cd ff, cd fg, cd gg, double residual) {
+  for (const OffsetRow& row : offset_rows(ff, fg, gg)) {
+    if (row.a == 0.0 && row.t == 0.0) continue;
+    const cd E = 2.0 * row.a * row.a;
+    t.lambda.push_back(pole.real());
+    t.kappa.push_back(2 / pole.real());
+    t.decay.push_back(std::max(pole.imag(), 0.0));  // ≥ 0 up to rounding: a passive reduction's poles
+    t.E.push_back(E.real());
+    t.E_imag.push_back(E.imag());
+    t.a.push_back(row.a.real());
+    t.a_imag.push_back(row.a.imag());
+    t.N2.push_back(1.0);
+    t.residual.push_back(std::max(residual, std::numeric_limits<double>::epsilon()));
+    t.free_surface.t.push_back(row.t.real());
+    t.free_surface.t_imag.push_back(row.t.imag());
+  }
 }
 
 }  // namespace rc::modes
