@@ -6,11 +6,15 @@
 # (the default) and with --target 1.0 (no survey), timed; each against Kore's reference. Writes
 # OUT/kore_peer_<date>.csv and prints it.
 #   KORE_DIR=/path/to/kore bash bench/kore_peer.sh [BUILD_DIR] [OUT]
+# SHAPES="shell sphere" (default shell: Kore's test; sphere: its full-sphere case, ricb = 0) and EKMANS (default
+# "1e-3 1e-4") choose the cases; SHELL_SIZES / SPHERE_SIZES our mesh ladder beyond the default mesh. The errors are
+# against Kore's reference eigenvalue (the shell at 1e-3) or Kore's own one-rank run; OUT/kore_peer_<date>.png plots
+# error against run time for both codes (bench/plot_kore_peer.py).
 # Kore is optional: without KORE_DIR (a checkout of github.com/repepo/kore) or without its Debian needs
 # (python3-petsc4py-complex python3-slepc4py-complex python3-mpi4py) the script says so and runs ours alone.
 set -euo pipefail
 if [ "${1:-}" = "--help" ] || [ "${1:-}" = "-h" ]; then
-  sed -n '2,10p' "$0" | sed 's/^# \{0,1\}//'
+  sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'
   exit 0
 fi
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
@@ -54,7 +58,8 @@ fi
 kore() {  # ekman ranks
   local ek=$1 n=$2 dir=$work/kore
   rm -rf "$dir" && mkdir -p "$dir" && cp -r "$KORE_DIR/bin" "$dir/bin"
-  sed "s/^Ek = .*/Ek = $ek/" "$KORE_DIR/tests/spinover/params.spinover" > "$dir/bin/parameters.py"
+  sed -e "s/^Ek = .*/Ek = $ek/" -e "s/^ricb = .*/ricb = $RICB/" "$KORE_DIR/tests/spinover/params.spinover" \
+    > "$dir/bin/parameters.py"
   local t0 t
   t0=$(now)
   (cd "$dir" && "$PY" ./bin/submatrices.py "$n" > sub.log 2>&1 && mpiexec -n "$n" "$PY" ./bin/assemble.py > asm.log 2>&1 &&
@@ -66,27 +71,36 @@ i = np.argmax(d[:, 0]); print('%.17g %.17g' % (-d[i, 0], d[i, 1]))")
   [ -n "${REF_F[$ek]:-}" ] || { REF_F[$ek]=$freq; REF_D[$ek]=$decay; }
   local N
   N=$(grep -o "N = [0-9]*" "$dir/sub.log" | head -1 | tr -d ' ')
-  row "$ek" kore "spectral ${N:-};np=$n" "$t" "$freq" "$decay" >> "$csv.tmp"
+  row "$ek" kore "$SHAPE;spectral ${N:-};np=$n" "$t" "$freq" "$decay" >> "$csv.tmp"
 }
 ours() {  # ekman setting, then cavity-modes arguments
   local ek=$1 setting=$2
   shift 2
   local t0 t
   t0=$(now)
-  env -u PETSC_DIR -u SLEPC_DIR "$MODES" section "$ROOT/data/sections/shell.geo" --ekman "$ek" --no-convergence-check \
+  env -u PETSC_DIR -u SLEPC_DIR "$MODES" "${CAVITY[@]}" --ekman "$ek" --no-convergence-check \
     "$@" -o "$work/ours.h5" > "$work/ours.txt" 2>&1 || { tail -2 "$work/ours.txt" >&2; return; }
   t=$(since "$t0")
   read -r freq decay ndof < <(/usr/bin/python3 -c "import h5py, numpy as np
 f = h5py.File('$work/ours.h5'); m = f['modes']; i = int(np.argmin(np.abs(m['lambda'][:] - 1)))
 print(repr(m['lambda'][i]), repr(m['decay'][i]), f.attrs['ndof'])")
-  row "$ek" cavity-modes "$setting;$ndof unknowns" "$t" "$freq" "$decay" >> "$csv.tmp"
+  row "$ek" cavity-modes "$SHAPE;$setting;$ndof unknowns" "$t" "$freq" "$decay" >> "$csv.tmp"
 }
-for ek in ${EKMANS:-1e-3 1e-4}; do
-  if [ "$have_kore" = 1 ]; then kore "$ek" 1; kore "$ek" 2; fi
-  ours "$ek" "P6 default mesh;ideal survey" --modes 1
-  ours "$ek" "P6 default mesh;--target 1.0" --target 1.0
-  ours "$ek" "P6 h 0.1;--target 1.0" --target 1.0 --mesh-size 0.1
-  ours "$ek" "P6 h 0.08;--target 1.0" --target 1.0 --mesh-size 0.08
+for SHAPE in ${SHAPES:-shell}; do
+  if [ "$SHAPE" = shell ]; then
+    RICB=0.35 CAVITY=(section "$ROOT/data/sections/shell.geo") SIZES=${SHELL_SIZES:-0.1 0.08}
+  else
+    RICB=0 CAVITY=(sphere --radius 1) SIZES=${SPHERE_SIZES:-0.125 0.0625}
+  fi
+  for ek in ${EKMANS:-1e-3 1e-4}; do
+    unset "REF_F[$ek]" "REF_D[$ek]"
+    [ "$SHAPE:$ek" != shell:1e-3 ] || { REF_F[1e-3]=1.005733690103750355; REF_D[1e-3]=0.1019947097016500742; }
+    if [ "$have_kore" = 1 ]; then kore "$ek" 1; kore "$ek" 2; fi
+    ours "$ek" "P6 default mesh;ideal survey" --modes 1
+    ours "$ek" "P6 default mesh;--target 1.0" --target 1.0
+    for h in $SIZES; do ours "$ek" "P6 h $h;--target 1.0" --target 1.0 --mesh-size "$h"; done
+  done
 done
 mv "$csv.tmp" "$csv"
 column -s, -t < "$csv"
+/usr/bin/python3 "$ROOT/bench/plot_kore_peer.py" "$csv" "${csv%.csv}.png" || echo "no plot (matplotlib?)" >&2
