@@ -7,16 +7,6 @@
 
 namespace rc::modes {
 
-std::complex<double> GalerkinReduction::response(std::complex<double> s, double c) const {
-  std::complex<double> r = 0;
-  for (std::size_t l = 0; l < lambda.size(); ++l) {
-    std::complex<double> e = residue[l];
-    if (!residue_fg.empty()) e += 2 * c * residue_fg[l] + c * c * residue_gg[l];
-    r += e / (s - lambda[l]);
-  }
-  return r;
-}
-
 OffsetResponse GalerkinReduction::entries(std::complex<double> s) const {
   OffsetResponse r{0, 0, 0};
   for (std::size_t l = 0; l < lambda.size(); ++l) {

@@ -29,10 +29,8 @@ struct GalerkinReduction {
   // A free surface (the projection's offset set): the residues of R_fg and R_gg at each Ritz value, R_fg's made
   // symmetric (docs/viscous.md, "Response tables of a partially filled tank"); empty otherwise.
   std::vector<std::complex<double>> residue_fg, residue_gg;
-  // R_G(s) = Σ Ẽ_l/(s − λ_l); with a free surface R_G about a point at height −c below the centroid,
-  // Σ (Ẽ_l + 2c Ẽ_fg,l + c² Ẽ_gg,l)/(s − λ_l).
-  std::complex<double> response(std::complex<double> s, double c = 0) const;
-  // R_G's entries R_ff (= response(s)), R_fg, R_gg at s (the last two 0 without a free surface).
+  // R_G's entries at s: R_ff = Σ Ẽ_l/(s − λ_l), and with a free surface R_fg, R_gg (else 0); about a point at height
+  // −c below the centroid R_G = R_ff + 2c R_fg + c² R_gg.
   OffsetResponse entries(std::complex<double> s) const;
 };
 

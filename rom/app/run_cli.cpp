@@ -20,16 +20,6 @@
 namespace rc::rom::app {
 namespace {
 
-// Loads from outside the chain that turn it (its angular momentum then changes): moments, forces, aerodynamics, a
-// transverse or varying field. Gravity and an axial field keep a fixed chain's L_z, and turn no free chain.
-bool external_loads(const NonlinearChain& c) {
-  for (const ChainBody& b : c.bodies)
-    if (b.axial_moment != 0 || !b.space_moment.isZero() || !b.harmonic_moment.isZero() || b.static_moment != 0 ||
-        b.pitch_damping != 0 || b.magnus != 0 || !b.space_force.isZero() || !b.harmonic_force.isZero())
-      return true;
-  return c.field.x() != 0 || c.field.y() != 0 || !c.field_harmonic.isZero() || !c.field_gradient.isZero();
-}
-
 int run_nonlinear(const Scene& scene, const std::string& out_file) {
   const NonlinearChain chain = nonlinear_chain(scene);
   const NonlinearHistory h = integrate_nonlinear(chain, nonlinear_initial_state(scene, chain), scene.run);

@@ -296,11 +296,15 @@ bool nonconservative(const NonlinearChain& c) {
   for (const ChainJoint& j : c.joints)
     if (j.friction != 0 || j.axial_friction != 0) return true;
   for (const ChainBody& b : c.bodies)
-    if (b.axial_moment != 0 || !b.space_moment.isZero() || (b.frequency > 0 && !b.harmonic_moment.isZero()) ||
-        b.pitch_damping != 0 || b.magnus != 0 || !b.space_force.isZero() ||
-        (b.force_frequency > 0 && !b.harmonic_force.isZero()))
-      return true;
+    if (b.loaded()) return true;
   return c.field_frequency > 0 && !c.field_harmonic.isZero();
+}
+
+bool external_loads(const NonlinearChain& c) {
+  for (const ChainBody& b : c.bodies)
+    if (b.loaded() || b.static_moment != 0) return true;
+  return c.field.x() != 0 || c.field.y() != 0 || (c.field_frequency > 0 && !c.field_harmonic.isZero()) ||
+         !c.field_gradient.isZero();
 }
 
 double nonconservative_power(const NonlinearChain& c, const ChainState& s) {

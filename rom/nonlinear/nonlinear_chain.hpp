@@ -69,6 +69,12 @@ struct ChainBody {
   Eigen::Vector3d force(double t) const {
     return space_force + std::sin(6.283185307179586 * force_frequency * t) * harmonic_force;
   }
+  // Whether moments, forces, pitch damping or Magnus act on it (the static aerodynamic moment apart: it has a
+  // potential).
+  bool loaded() const {
+    return axial_moment != 0 || !space_moment.isZero() || (frequency > 0 && !harmonic_moment.isZero()) ||
+           pitch_damping != 0 || magnus != 0 || !space_force.isZero() || (force_frequency > 0 && !harmonic_force.isZero());
+  }
   std::vector<ChainFluidMode> fluid;  // the kept modes of its cavity, then the static correction's
   int kept_modes = 0;                 // how many of `fluid` are the table's kept modes
   // Σ E of the kept modes + the static correction: the transverse inertia the fluid does not carry rigidly
@@ -133,6 +139,9 @@ Eigen::Vector3d chain_angular_momentum(const NonlinearChain& chain, const ChainS
 // fluid; `nonconservative` says whether the chain has any such load.
 double nonconservative_power(const NonlinearChain& chain, const ChainState& state);
 bool nonconservative(const NonlinearChain& chain);
+// Whether anything from outside turns the chain (its angular momentum then changes): body loads, the static
+// aerodynamic moment, a transverse, harmonic or varying field. Gravity and an axial field keep a fixed chain's L_z.
+bool external_loads(const NonlinearChain& chain);
 
 // Symmetry axis n_k = R_k e3 of every body in space.
 std::vector<Eigen::Vector3d> chain_axes(const ChainState& state);
