@@ -236,10 +236,65 @@ ModeTable::FreeSurface read_free_surface(hid_t root) {
   return f;
 }
 
+// /volume: a 3-D cavity's tensors and per-mode coupling tensors.
+void write_volume(hid_t root, const ModeTable::Volume& v) {
+  Hid g(H5Gcreate2(root, "volume", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+  put_double(g.get(), "tilt", v.tilt);
+  for (const auto& [name, data] : {std::pair{"centroid", &v.centroid}, {"inertia", &v.inertia},
+                                   {"zhukovsky", &v.zhukovsky}, {"sum_rule", &v.sum_rule},
+                                   {"geostrophic_re", &v.geostrophic_re}, {"geostrophic_im", &v.geostrophic_im},
+                                   {"coupling_re", &v.coupling_re}, {"coupling_im", &v.coupling_im}})
+    put_vector(g.get(), name, *data, H5T_NATIVE_DOUBLE);
+}
+
+ModeTable::Volume read_volume(hid_t root) {
+  Hid g(H5Gopen2(root, "volume", H5P_DEFAULT), H5Gclose);
+  if (!g.ok()) throw std::runtime_error("cannot open /volume");
+  ModeTable::Volume v;
+  v.tilt = get_double(g.get(), "tilt");
+  for (const auto& [name, data] : {std::pair{"centroid", &v.centroid}, {"inertia", &v.inertia},
+                                   {"zhukovsky", &v.zhukovsky}, {"sum_rule", &v.sum_rule},
+                                   {"geostrophic_re", &v.geostrophic_re}, {"geostrophic_im", &v.geostrophic_im},
+                                   {"coupling_re", &v.coupling_re}, {"coupling_im", &v.coupling_im}})
+    *data = get_vector<double>(g.get(), name, H5T_NATIVE_DOUBLE, true);
+  return v;
+}
+
+// /volume: sizes, finiteness, Hermitian coupling tensors whose transverse trace is the row's E.
+void validate_volume(const ModeTable& t) {
+  const auto& v = t.volume_cavity;
+  if (!v.present()) {
+    if (!v.coupling_re.empty()) throw std::runtime_error("/volume/coupling_re in a table without /volume");
+    return;
+  }
+  const std::size_t n = t.E.size();
+  if (v.centroid.size() != 3 || v.inertia.size() != 9 || v.zhukovsky.size() != 9 || v.sum_rule.size() != 9 ||
+      v.geostrophic_re.size() != 9 || v.geostrophic_im.size() != 9 || v.coupling_re.size() != 9 * n ||
+      v.coupling_im.size() != 9 * n)
+    throw std::runtime_error("/volume: a tensor does not hold 9 entries (per mode for the couplings)");
+  for (const auto* d : {&v.centroid, &v.inertia, &v.zhukovsky, &v.sum_rule, &v.geostrophic_re, &v.geostrophic_im,
+                        &v.coupling_re, &v.coupling_im})
+    for (double x : *d)
+      if (!std::isfinite(x)) throw std::runtime_error("/volume holds a non-finite value");
+  if (t.viscous() || t.free_surface.present()) throw std::runtime_error("/volume in a viscous or partially filled table");
+  for (std::size_t m = 0; m < n; ++m) {
+    const double* re = &v.coupling_re[9 * m];
+    const double* im = &v.coupling_im[9 * m];
+    const double scale = std::max(re[0] + re[4] + re[8], 1e-300);
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k)
+        if (std::abs(re[3 * j + k] - re[3 * k + j]) + std::abs(im[3 * j + k] + im[3 * k + j]) > 1e-9 * scale)
+          throw std::runtime_error("/volume: the coupling tensor of mode " + std::to_string(m) + " is not Hermitian");
+    if (std::abs(re[0] + re[4] - t.E[m]) > 1e-9 * std::max(t.E[m], scale))
+      throw std::runtime_error("/volume: mode " + std::to_string(m) + "'s E is not H_xx + H_yy");
+  }
+}
+
 // The root attributes (docs/physics.md §4).
 void write_root_attributes(hid_t root, const ModeTable& t) {
   put_string(root, "format", kModeTableFormat);
-  put_long(root, "version", t.free_surface.present() ? kFreeSurfaceTableVersion : kModeTableVersion);
+  put_long(root, "version", t.volume_cavity.present() ? kVolumeTableVersion
+                            : t.free_surface.present() ? kFreeSurfaceTableVersion : kModeTableVersion);
   put_string(root, "shape", t.shape);
   std::string dims;
   for (const auto& [k, v] : t.dimensions) {
@@ -319,6 +374,7 @@ void write_optional_groups(hid_t root, const ModeTable& t) {
     }
   }
   if (t.free_surface.present()) write_free_surface(root, t.free_surface);
+  if (t.volume_cavity.present()) write_volume(root, t.volume_cavity);
   if (!t.geometry_source.empty() || !t.command_line.empty()) {
     Hid prov(H5Gcreate2(root, "provenance", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
     put_text(prov.get(), "geometry_source", t.geometry_source);
@@ -329,7 +385,7 @@ void write_optional_groups(hid_t root, const ModeTable& t) {
 
 // The root attributes (docs/physics.md §4); every one checked for its class and for one element (get_double, ...).
 void read_root_attributes(hid_t root, ModeTable& t) {
-  if (get_long(root, "version") > kFreeSurfaceTableVersion)
+  if (get_long(root, "version") > kVolumeTableVersion)
     throw std::runtime_error("mode table version is newer than this program understands");
   t.shape = get_string(root, "shape");
   if (has_attr(root, "dimension_names")) {
@@ -413,6 +469,7 @@ void read_optional_groups(hid_t root, ModeTable& t) {
       t.galerkin.dissipation_mismatch = get_double(gal.get(), "dissipation_mismatch");
   }
   if (H5Lexists(root, "free_surface", H5P_DEFAULT) > 0) t.free_surface = read_free_surface(root);
+  if (H5Lexists(root, "volume", H5P_DEFAULT) > 0) t.volume_cavity = read_volume(root);
   if (H5Lexists(root, "provenance", H5P_DEFAULT) > 0) {
     Hid prov(H5Gopen2(root, "provenance", H5P_DEFAULT), H5Gclose);
     t.geometry_source = get_text(prov.get(), "geometry_source");
@@ -471,6 +528,7 @@ void ModeTable::validate() const {
   if (bands.lo.size() != nb || bands.hi.size() != nb || bands.lambda_mean.size() != nb)
     throw std::runtime_error("/bands datasets differ in length");
   validate_galerkin(*this);
+  validate_volume(*this);
   for (double x : {volume, A_f, C_f, J_zh, sum_rule, coverage})
     if (!std::isfinite(x)) throw std::runtime_error("a root attribute holds a non-finite value");
   for (const auto* column : {&kappa, &lambda, &E, &a, &N2, &decay, &E_imag, &a_imag})
@@ -544,6 +602,12 @@ void ModeTable::sort_by_energy() {
   permute(galerkin.coupling_re); permute(galerkin.coupling_im);
   permute(free_surface.t);
   permute(free_surface.t_imag);
+  for (auto* m : {&volume_cavity.coupling_re, &volume_cavity.coupling_im}) {
+    if (m->size() != 9 * idx.size()) continue;
+    const auto old = *m;
+    for (std::size_t k = 0; k < idx.size(); ++k)
+      std::copy(old.begin() + 9 * idx[k], old.begin() + 9 * idx[k] + 9, m->begin() + 9 * k);
+  }
   const std::size_t n = idx.size();
   for (auto* m : {&galerkin.gram_re, &galerkin.gram_im, &galerkin.viscous_re, &galerkin.viscous_im}) {
     if (m->size() != n * n) continue;

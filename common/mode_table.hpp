@@ -16,6 +16,9 @@ inline constexpr const char* kModeTableFormat = "cavity-mode-table";
 // a reader that does not know the free surface refuses it instead of reading it as a filled tank's.
 inline constexpr int kModeTableVersion = 2;
 inline constexpr int kFreeSurfaceTableVersion = 3;
+// Version 4 is written only for a 3-D cavity's table (/volume), for the same reason: a reader that knows only
+// axisymmetric tanks refuses it. Every earlier version stays readable.
+inline constexpr int kVolumeTableVersion = 4;
 
 struct ModeTable {
   // --- root attributes -------------------------------------------------------------------
@@ -99,6 +102,22 @@ struct ModeTable {
     bool present() const { return radius > 0; }
     double K(double c) const { return K2 + 2 * c * K1 + c * c * K0; }
   } free_surface;
+  // --- /volume (3-D cavities without axial symmetry, optional; docs/volume.md §5): the modes are those with
+  // λ > 0 of the complex problem (a mode at −λ is the complex conjugate of one of them: the same real motion), and
+  // each carries its Hermitian coupling tensor H = c cᴴ (c_k = ∫ (e_k × r)·V, ‖V‖ = 1, r from the centroid; summed
+  // over a cluster), 9 complex entries row-major per mode. The /modes rows then hold E = H_xx + H_yy (the transverse
+  // coupling; an axisymmetric cavity's m = 1 E), a = √(E/2), N2 = 1. Tensors are 3 × 3 row-major, about the centroid,
+  // in the spin frame (z the spin axis): the frozen fluid's inertia, Zhukovsky's inertia, and their difference
+  // sum_rule = Σ over every mode of both signs of H (the tensor sum rule); geostrophic: the part of it at λ = 0.
+  // Root A_f = (I_xx + I_yy)/2, C_f = I_zz, J_zh = (J_xx + J_yy)/2.
+  struct Volume {
+    std::vector<double> centroid;  // 3
+    double tilt = 0;               // built-in shapes: the angle of the shape's own axis against z (radians)
+    std::vector<double> inertia, zhukovsky, sum_rule, geostrophic_re, geostrophic_im;  // 9 each
+    std::vector<double> coupling_re, coupling_im;                                      // 9 per mode
+    bool present() const { return !inertia.empty(); }
+  } volume_cavity;
+
   // The sum over every mode of E about O (= E for a filled tank, whatever c): A_f(O) + K(O) − J_zh(O).
   double sum_rule_about(double c) const;
 

@@ -2,6 +2,7 @@
 // order is by construction the one of the meshes gmsh writes.
 #include "gmsh_session.hpp"
 #include "meridian_mesh.hpp"
+#include "volume_mesh.hpp"
 
 #include <gmsh.h>
 
@@ -114,6 +115,23 @@ ReferenceEdge build_edge(int order, int degree) {
   return e;
 }
 
+// gmsh's reference tetrahedron is ours: weights sum to 1/6.
+ReferenceTetrahedron build_tetrahedron(int order, int degree) {
+  const auto [g, b] = detail::with_gmsh("reference_tetrahedron", [&](detail::GmshSession&) {
+    GmshRule rule = gauss_rule(gmsh::model::mesh::getElementType("Tetrahedron", 1), degree);
+    Basis basis = lagrange_basis(gmsh::model::mesh::getElementType("Tetrahedron", order), rule.uvw);
+    return std::pair{rule, basis};
+  });
+  ReferenceTetrahedron t;
+  t.order = order;
+  t.nodes_per_element = (order + 1) * (order + 2) * (order + 3) / 6;
+  t.weights = g.weights;
+  t.N = b.N;
+  t.dN = b.dN;
+  for (std::size_t q = 0; q < g.weights.size(); ++q) t.points.push_back({g.uvw[3 * q], g.uvw[3 * q + 1], g.uvw[3 * q + 2]});
+  return t;
+}
+
 // Elements are built once per (order, degree) and copied out: FE assembly asks for them often and
 // each build costs a gmsh session.
 template <class Element>
@@ -140,6 +158,11 @@ std::vector<double> triangle_basis_at(int order, const std::vector<std::array<do
   return detail::with_gmsh("triangle_basis_at", [&](detail::GmshSession&) {
     return lagrange_basis(gmsh::model::mesh::getElementType("Triangle", order), uvw).N;
   });
+}
+
+ReferenceTetrahedron reference_tetrahedron(int order, int quadrature_degree) {
+  check_arguments("reference_tetrahedron", order, quadrature_degree);
+  return cached(order, quadrature_degree, build_tetrahedron);
 }
 
 ReferenceEdge reference_edge(int order, int quadrature_degree) {

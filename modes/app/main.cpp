@@ -23,6 +23,7 @@
 #include "table_comparison.hpp"
 #include "table_provenance.hpp"
 #include "viscous_table.hpp"
+#include "volume_command.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -548,8 +549,21 @@ void check_command_name(CLI::App& app, const std::vector<std::string>& ours) {
   });
   if (ours.size() > 1 && ours[1][0] != '-' && !known)
     throw std::runtime_error("unknown shape or command '" + ours[1] +
-                             "' (expected sphere, spheroid, cylinder, cone, section, response, info or compare)");
+                             "' (expected sphere, spheroid, cylinder, cone, section, ellipsoid, volume, response, info or compare)");
 }
+
+// The pass-through PETSc words as PetscInitialize takes them (argc, argv with its closing null).
+struct PetscArguments {
+  explicit PetscArguments(std::vector<std::string>& words) {
+    for (auto& a : words) pointers.push_back(a.data());
+    argc = static_cast<int>(pointers.size());
+    pointers.push_back(nullptr);
+    argv = pointers.data();
+  }
+  std::vector<char*> pointers;
+  int argc = 0;
+  char** argv = nullptr;
+};
 
 // Parses; returns -1 when parsed, else the exit code (help printed, or a command-line error: 2).
 int parse_command_line(CLI::App& app, std::vector<std::string>& words) {
@@ -602,10 +616,17 @@ int run(int argc, char** argv) {
   CompareRequest compare_request;
   CLI::App* info = add_info_command(app, info_request);
   CLI::App* compare = add_compare_command(app, compare_request);
+  rc::modes::VolumeCommands volumes(app);
   check_command_name(app, args.ours);
   if (const int code = parse_command_line(app, args.ours); code >= 0) return code;
   if (info->parsed()) return run_info(info_request);
   if (compare->parsed()) return run_compare(compare_request);
+  if (volumes.parsed()) {
+    if (response) throw CommandLineError("response takes an axisymmetric shape (3-D cavities: tables only so far)");
+    PetscArguments petsc(args.petsc);
+    rc::modes::PetscSession session(&petsc.argc, &petsc.argv);
+    return volumes.run(command_line);
+  }
 
   CLI::App* table_command = shapes.parsed()->app;
   refuse_extras(*table_command, response);
@@ -617,12 +638,8 @@ int run(int argc, char** argv) {
   else check_response_fill(req, viscous, output);
   choose_method(*table_command, method, fields, req);
 
-  int petsc_argc = static_cast<int>(args.petsc.size());
-  std::vector<char*> petsc_argv;
-  for (auto& a : args.petsc) petsc_argv.push_back(a.data());
-  petsc_argv.push_back(nullptr);
-  char** pargv = petsc_argv.data();
-  rc::modes::PetscSession session(&petsc_argc, &pargv);
+  PetscArguments petsc(args.petsc);
+  rc::modes::PetscSession session(&petsc.argc, &petsc.argv);
   if (response) return run_response(req, viscous, is_viscous, viscous_settings, method, output, command_line);
   return run_table(req, is_viscous, viscous_settings, fields, output, command_line);
 }

@@ -7,16 +7,40 @@
 
 namespace rc::modes {
 
+namespace {
+
+std::string tensor_line(const char* name, const std::vector<double>& T) {
+  return fmt::format("  {:<12} [{:.9g} {:.9g} {:.9g}; {:.9g} {:.9g} {:.9g}; {:.9g} {:.9g} {:.9g}]\n", name, T[0], T[1],
+                     T[2], T[3], T[4], T[5], T[6], T[7], T[8]);
+}
+
+// A 3-D table's tensors and each mode's coupling to the three axes (|c_k|² = H_kk).
+std::string volume_text(const ModeTable& t) {
+  const auto& v = t.volume_cavity;
+  std::string s = fmt::format("3-D cavity (docs/volume.md): centroid ({:.9g}, {:.9g}, {:.9g}), tilt {:g} rad; tensors "
+                              "about the centroid, spin axis z:\n", v.centroid[0], v.centroid[1], v.centroid[2], v.tilt);
+  s += tensor_line("inertia", v.inertia) + tensor_line("zhukovsky", v.zhukovsky) + tensor_line("sum_rule", v.sum_rule) +
+       tensor_line("geostrophic", v.geostrophic_re);
+  s += "  coupling of each mode below to rotation about x, y, z (H_xx, H_yy, H_zz; E = H_xx + H_yy):\n";
+  for (std::size_t i = 0; i < t.size(); ++i)
+    s += fmt::format("  {:>4} {:.9e} {:.9e} {:.9e}\n", i + 1, v.coupling_re[9 * i], v.coupling_re[9 * i + 4],
+                     v.coupling_re[9 * i + 8]);
+  return s;
+}
+
+}  // namespace
+
 std::string table_text(const ModeTable& t) {
   std::string dims;
   for (const auto& [k, v] : t.dimensions) dims += fmt::format(" {}={:g}", k, v);
   std::string s = fmt::format(
-      "{}{}: order {}, h = {:g}{}, {} dofs, m = {}\n"
+      "{}{}: order {}, h = {:g}{}, {} dofs, {}\n"
       "volume {:.12g}  centroid_z {:.6g}  A_f {:.12g}  C_f {:.12g}\n"
       "J_zh {:.12g}  sum rule {} {:.12g}  coverage {:.10f}\n"
       "solver: {} (tol {:g}), {:.2f} s\n",
       t.shape, dims, t.fe_order, t.mesh_h,
-      t.mesh_h_radial > 0 ? fmt::format(" (axial; structured, radial h = {:g})", t.mesh_h_radial) : std::string(), t.ndof, t.m, t.volume, t.centroid_z, t.A_f, t.C_f, t.J_zh,
+      t.mesh_h_radial > 0 ? fmt::format(" (axial; structured, radial h = {:g})", t.mesh_h_radial) : std::string(), t.ndof,
+      t.volume_cavity.present() ? std::string("3-D (no axial symmetry)") : fmt::format("m = {}", t.m), t.volume, t.centroid_z, t.A_f, t.C_f, t.J_zh,
       t.free_surface.present() ? "A_f + K2 - J_zh" : "A_f - J_zh", t.sum_rule, t.coverage, t.solver, t.tolerance,
       t.wall_seconds);
   if (t.free_surface.present())
@@ -26,6 +50,7 @@ std::string table_text(const ModeTable& t) {
                      "below the centroid a mode couples with a + c t (docs/physics.md §2, \"Partially filled tanks\")\n",
                      t.free_surface.fill, t.free_surface.radius, t.free_surface.K0, t.free_surface.K1,
                      t.free_surface.K2, t.free_surface.J1, t.free_surface.J2);
+  if (t.volume_cavity.present()) s += volume_text(t);
   if (t.viscous())
     s += fmt::format("viscous: Ekman number {:g}, wall element {:g}; each mode decays as exp(-decay t), its coupling "
                      "residue is E + i E_imag (docs/viscous.md)\n", t.ekman, t.mesh_h_wall);

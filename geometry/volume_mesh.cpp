@@ -1,0 +1,281 @@
+// mesh_volume: build (OpenCASCADE kernel) or read the 3-D cavity, mesh it into high-order tetrahedra, and turn
+// gmsh's tagged data into the compact, checked VolumeMesh the 3-D solver consumes.
+#include "volume_mesh.hpp"
+
+#include "gmsh_session.hpp"
+
+#include <gmsh.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <unordered_map>
+
+namespace rc::geometry {
+namespace {
+
+namespace occ = gmsh::model::occ;
+
+constexpr int kMaxOrder = 6;
+constexpr double kDefaultSizeFraction = 0.25;  // default size = this × smallest dimension
+constexpr double kMaxCellsPerExtent = 400;      // finer would mean > ~1e8 tetrahedra
+
+std::string number(double v) {
+  std::ostringstream os;
+  os.precision(10);
+  os << v;
+  return os.str();
+}
+
+const std::map<std::string, std::vector<std::string>>& required_dims() {
+  static const std::map<std::string, std::vector<std::string>> dims = {
+      {"ellipsoid", {"a", "b", "c"}}, {"cylinder", {"radius", "height"}}, {"volume", {}}};
+  return dims;
+}
+
+double smallest_dimension(const VolumeShapeSpec& shape) {
+  double d = INFINITY;
+  for (const auto& [name, v] : shape.dims) d = std::min(d, name == "height" ? v / 2 : v);
+  return d;
+}
+
+// gmsh::model::getBoundingBox over the whole model.
+double model_extent() {
+  double x0, y0, z0, x1, y1, z1;
+  gmsh::model::getBoundingBox(-1, -1, x0, y0, z0, x1, y1, z1);
+  return std::max({x1 - x0, y1 - y0, z1 - z0});
+}
+
+double model_smallest_side() {
+  double x0, y0, z0, x1, y1, z1;
+  gmsh::model::getBoundingBox(-1, -1, x0, y0, z0, x1, y1, z1);
+  return std::min({x1 - x0, y1 - y0, z1 - z0}) / 2;
+}
+
+void check_options(const MeshOptions& options) {
+  if (options.order < 1 || options.order > kMaxOrder)
+    throw std::runtime_error("3-D mesh order " + std::to_string(options.order) + " is outside 1.." +
+                             std::to_string(kMaxOrder));
+  if (!std::isfinite(options.size) || options.size < 0)
+    throw std::runtime_error("mesh size " + number(options.size) + " must be positive and finite (0 = default)");
+  if (!std::isfinite(options.wall_size) || options.wall_size < 0)
+    throw std::runtime_error("wall mesh size " + number(options.wall_size) + " must be positive and finite (0 = none)");
+  if (!std::isfinite(options.wall_growth) || options.wall_growth <= 0 || options.wall_growth > 10)
+    throw std::runtime_error("wall size growth " + number(options.wall_growth) + " must be in (0, 10]");
+}
+
+// The fluid volume of a built-in shape, with its own axis along z, then tilted about x.
+int build_shape(const VolumeShapeSpec& shape) {
+  const auto& d = shape.dims;
+  int tag = -1;
+  if (shape.kind == "ellipsoid") {
+    tag = occ::addSphere(0, 0, 0, 1);
+    occ::dilate({{3, tag}}, 0, 0, 0, d.at("a"), d.at("b"), d.at("c"));
+  } else {
+    const double h = d.at("height");
+    tag = occ::addCylinder(0, 0, -h / 2, 0, 0, h, d.at("radius"));
+  }
+  if (shape.tilt != 0) occ::rotate({{3, tag}}, 0, 0, 0, 1, 0, 0, shape.tilt);
+  occ::synchronize();
+  gmsh::model::setPhysicalName(3, gmsh::model::addPhysicalGroup(3, {tag}), "fluid");
+  return tag;
+}
+
+// A user's file: .geo/.msh with a 3-D group "fluid", or CAD whose every volume is fluid.
+void open_volume(const VolumeShapeSpec& shape, const std::string& where, detail::GmshSession& session) {
+  const std::string ext = shape.file.extension().string();
+  const bool cad = ext == ".step" || ext == ".stp" || ext == ".brep";
+  if (!cad && ext != ".geo" && ext != ".msh")
+    throw std::runtime_error(where + ": expected a .geo, .msh, .step, .stp or .brep file");
+  if (std::filesystem::is_directory(shape.file) || !std::ifstream(shape.file))
+    throw std::runtime_error(where + ": cannot read the file");
+  if (cad) {
+    std::vector<std::pair<int, int>> volumes;
+    occ::importShapes(shape.file.string(), volumes);
+    occ::synchronize();
+    std::vector<int> tags;
+    for (const auto& [dim, tag] : volumes)
+      if (dim == 3) tags.push_back(tag);
+    if (tags.empty()) throw std::runtime_error(where + ": the file holds no volume");
+    gmsh::model::setPhysicalName(3, gmsh::model::addPhysicalGroup(3, tags), "fluid");
+  } else {
+    gmsh::open(shape.file.string());
+  }
+  session.throw_if_error(where);
+}
+
+int fluid_group(const std::string& where) {
+  gmsh::vectorpair groups;
+  gmsh::model::getPhysicalGroups(groups, 3);
+  for (const auto& [dim, tag] : groups) {
+    std::string name;
+    gmsh::model::getPhysicalName(dim, tag, name);
+    if (name == "fluid") return tag;
+  }
+  throw std::runtime_error(where + ": no 3D physical group named 'fluid'");
+}
+
+// Isotropic grading towards the wall (MeshOptions::wall_size, wall_growth): elements of wall_size on the wall
+// surfaces, growing by wall_growth per unit distance up to `size`. The geometry error of isoparametric elements
+// lives on the wall, so this buys accuracy at the cost of surface, not volume, elements.
+void grade_towards_wall(const MeshOptions& options, double size, const std::string& where) {
+  if (options.wall_size <= 0 || options.wall_size >= size) return;
+  if (model_extent() / options.wall_size > kMaxCellsPerExtent)
+    throw std::runtime_error(where + ": wall mesh size " + number(options.wall_size) + " is too small");
+  gmsh::vectorpair surfaces;
+  gmsh::model::getEntities(surfaces, 2);
+  std::vector<double> tags;
+  for (const auto& [dim, tag] : surfaces) tags.push_back(tag);
+  namespace field = gmsh::model::mesh::field;
+  const int distance = field::add("Distance");
+  field::setNumbers(distance, "SurfacesList", tags);
+  const int threshold = field::add("Threshold");
+  field::setNumber(threshold, "InField", distance);
+  field::setNumber(threshold, "SizeMin", options.wall_size);
+  field::setNumber(threshold, "SizeMax", size);
+  field::setNumber(threshold, "DistMin", 0);
+  field::setNumber(threshold, "DistMax", (size - options.wall_size) / std::max(options.wall_growth, 1e-3));
+  field::setAsBackgroundMesh(threshold);
+}
+
+void generate(int order, double size, const std::string& where, const MeshOptions& options) {
+  if (model_extent() / size > kMaxCellsPerExtent)
+    throw std::runtime_error(where + ": mesh size " + number(size) + " is too small for a model of extent " +
+                             number(model_extent()));
+  grade_towards_wall(options, size, where);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", size);
+  gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
+  gmsh::model::mesh::generate(3);
+  // After the linear mesh: setOrder puts the new boundary nodes on the CAD surfaces. A coarse mesh's curved
+  // elements can fold where a boundary face bends into a thin element; gmsh's high-order optimiser (elastic
+  // analogy, then untangling; boundary nodes stay on the surfaces) unfolds them.
+  gmsh::model::mesh::setOrder(order);
+  if (order > 1) gmsh::model::mesh::optimize("HighOrder");
+}
+
+struct GmshTets {
+  int order = 0;
+  std::vector<std::size_t> tets;
+  std::unordered_map<std::size_t, std::array<double, 3>> coords;
+};
+
+GmshTets read_tets(const std::string& where) {
+  std::vector<int> entities;
+  gmsh::model::getEntitiesForPhysicalGroup(3, fluid_group(where), entities);
+  GmshTets g;
+  int type = -1;
+  for (int e : entities) {
+    std::vector<int> types;
+    gmsh::model::mesh::getElementTypes(types, 3, e);
+    for (int t : types) {
+      std::string name;
+      int dim = 0, order = 0, num_nodes = 0, num_primary = 0;
+      std::vector<double> local;
+      gmsh::model::mesh::getElementProperties(t, name, dim, order, num_nodes, local, num_primary);
+      if (name.rfind("Tetrahedron", 0) != 0 || order < 1 || order > kMaxOrder ||
+          num_nodes != (order + 1) * (order + 2) * (order + 3) / 6 || (type >= 0 && t != type))
+        throw std::runtime_error(where + ": 'fluid' elements are '" + name +
+                                 "', expected complete Lagrange tetrahedra of one order 1.." + std::to_string(kMaxOrder));
+      type = t;
+      g.order = order;
+    }
+    std::vector<std::size_t> tags, nodes;
+    if (type >= 0) gmsh::model::mesh::getElementsByType(type, tags, nodes, e);
+    g.tets.insert(g.tets.end(), nodes.begin(), nodes.end());
+  }
+  if (g.tets.empty()) throw std::runtime_error(where + ": no tetrahedra in physical group 'fluid'");
+  std::vector<std::size_t> tags;
+  std::vector<double> xyz, param;
+  gmsh::model::mesh::getNodes(tags, xyz, param, -1, -1, false, false);
+  for (std::size_t i = 0; i < tags.size(); ++i) g.coords[tags[i]] = {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
+  return g;
+}
+
+GmshTets mesh_in_gmsh(const VolumeShapeSpec& shape, const MeshOptions& options, const std::string& where,
+                      double& size) {
+  return detail::with_gmsh(where, [&](detail::GmshSession& session) {
+    gmsh::model::add("volume");
+    if (shape.kind == "volume")
+      open_volume(shape, where, session);
+    else
+      build_shape(shape);
+    session.throw_if_error(where);
+    if (shape.kind == "volume" && shape.file.extension() == ".msh") {
+      size = 0;
+      return read_tets(where);
+    }
+    size = options.size > 0 ? options.size
+                            : kDefaultSizeFraction * (shape.kind == "volume" ? model_smallest_side()
+                                                                              : smallest_dimension(shape));
+    generate(options.order, size, where, options);
+    session.throw_if_error(where);
+    return read_tets(where);
+  });
+}
+
+// det(d(x,y,z)/d(u,v,w)) > 0 at every point of a rule finer than any FE use.
+void check_jacobians(const VolumeMesh& m, const std::string& where) {
+  const ReferenceTetrahedron ref = reference_tetrahedron(m.order, 2 * m.order);
+  const int npe = m.nodes_per_element;
+  for (std::size_t t = 0; t < m.num_tetrahedra(); ++t) {
+    const int* v = &m.tetrahedra[t * npe];
+    for (std::size_t q = 0; q < ref.weights.size(); ++q) {
+      double j[3][3] = {};
+      for (int a = 0; a < npe; ++a)
+        for (int c = 0; c < 3; ++c)
+          for (int d = 0; d < 3; ++d) j[c][d] += m.nodes[v[a]][c] * ref.dN[(q * npe + a) * 3 + d];
+      const double det = j[0][0] * (j[1][1] * j[2][2] - j[1][2] * j[2][1]) -
+                         j[0][1] * (j[1][0] * j[2][2] - j[1][2] * j[2][0]) +
+                         j[0][2] * (j[1][0] * j[2][1] - j[1][1] * j[2][0]);
+      if (!(det > 0))
+        throw std::runtime_error(where + ": tetrahedron " + std::to_string(t) + " near (" + number(m.nodes[v[0]][0]) +
+                                 ", " + number(m.nodes[v[0]][1]) + ", " + number(m.nodes[v[0]][2]) +
+                                 ") is inverted; use a smaller mesh size or a lower order");
+    }
+  }
+}
+
+}  // namespace
+
+void check_volume_shape(const VolumeShapeSpec& shape) {
+  const auto it = required_dims().find(shape.kind);
+  if (it == required_dims().end())
+    throw std::runtime_error("unknown 3-D shape '" + shape.kind + "' (expected ellipsoid, cylinder or volume)");
+  for (const auto& name : it->second) {
+    const auto d = shape.dims.find(name);
+    if (d == shape.dims.end()) throw std::runtime_error(shape.kind + ": missing dimension '" + name + "'");
+    if (!std::isfinite(d->second) || d->second <= 0)
+      throw std::runtime_error(shape.kind + ": dimension '" + name + "' = " + number(d->second) +
+                               " must be positive and finite");
+  }
+  if (!std::isfinite(shape.tilt)) throw std::runtime_error(shape.kind + ": the tilt must be finite");
+  if (shape.kind == "volume" && shape.tilt != 0)
+    throw std::runtime_error("volume: a file's cavity is placed by the file itself (no --tilt)");
+}
+
+VolumeMesh mesh_volume(const VolumeShapeSpec& shape, const MeshOptions& options) {
+  check_volume_shape(shape);
+  check_options(options);
+  const std::string where = shape.kind == "volume" ? "volume '" + shape.file.string() + "'" : shape.kind;
+  double size = 0;
+  const GmshTets g = mesh_in_gmsh(shape, options, where, size);
+  VolumeMesh m;
+  m.order = g.order;
+  m.nodes_per_element = (g.order + 1) * (g.order + 2) * (g.order + 3) / 6;
+  m.size = size;
+  std::unordered_map<std::size_t, int> index;  // nodes numbered in order of first use (assembly locality)
+  for (std::size_t tag : g.tets) {
+    auto [it, is_new] = index.try_emplace(tag, static_cast<int>(m.nodes.size()));
+    if (is_new) m.nodes.push_back(g.coords.at(tag));
+    m.tetrahedra.push_back(it->second);
+  }
+  check_jacobians(m, where);
+  return m;
+}
+
+}  // namespace rc::geometry

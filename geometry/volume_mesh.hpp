@@ -1,0 +1,58 @@
+// Three-dimensional cavities (no axial symmetry), meshed with the gmsh C++ API into high-order isoparametric
+// Lagrange tetrahedra. The spin axis is z. Coordinates are the shape's own; the solver measures every lever arm
+// from the fluid's centroid afterwards.
+//
+//   ellipsoid  semi-axes a (x), b (y), c (z)      centre at the origin
+//   cylinder   radius, height (full)              axis z, z in [-height/2, height/2]
+//   volume     a user .geo/.msh file with a 3-D physical group "fluid", or a CAD .step/.stp/.brep file whose
+//              every volume is fluid (gmsh's OpenCASCADE kernel)
+// tilt rotates a built-in shape's own axis about x by that angle (radians) against the spin axis z.
+#pragma once
+
+#include "meridian_mesh.hpp"
+
+#include <array>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace rc::geometry {
+
+struct VolumeShapeSpec {
+  std::string kind;                    // ellipsoid | cylinder | volume
+  std::map<std::string, double> dims;  // ellipsoid: a, b, c; cylinder: radius, height
+  std::filesystem::path file;          // volume only
+  double tilt = 0.0;                   // radians, built-in shapes only
+};
+
+struct VolumeMesh {
+  int order = 0;                             // Lagrange order of every tetrahedron
+  int nodes_per_element = 0;                 // (p+1)(p+2)(p+3)/6
+  std::vector<std::array<double, 3>> nodes;  // (x, y, z) of every node, 0-based
+  std::vector<int> tetrahedra;               // nodes_per_element node indices per tetrahedron, gmsh local order
+  double size = 0.0;                         // element size requested
+  std::size_t num_tetrahedra() const { return tetrahedra.size() / nodes_per_element; }
+};
+
+// Builds, meshes and returns the cavity. Throws std::runtime_error with a one-line cause on bad input (unknown kind,
+// a missing or non-positive dimension, an unreadable file, no 3-D "fluid", an inverted element).
+// options.order 1..4 (3-D elements above 4 cost more than they give), options.size 0 = 1/4 of the smallest dimension.
+VolumeMesh mesh_volume(const VolumeShapeSpec& shape, const MeshOptions& options);
+
+// The checks of mesh_volume on the shape alone.
+void check_volume_shape(const VolumeShapeSpec& shape);
+
+// The reference tetrahedron (0,0,0),(1,0,0),(0,1,0),(0,0,1) of a given order with a Gauss rule exact to `degree`,
+// in the local node order of VolumeMesh::tetrahedra.
+struct ReferenceTetrahedron {
+  int order = 0;
+  int nodes_per_element = 0;
+  std::vector<std::array<double, 3>> points;  // (u, v, w)
+  std::vector<double> weights;                // sum = 1/6
+  std::vector<double> N;                      // N[q * nodes_per_element + a]
+  std::vector<double> dN;                     // dN[(q * nodes_per_element + a) * 3 + d]
+};
+ReferenceTetrahedron reference_tetrahedron(int order, int quadrature_degree);
+
+}  // namespace rc::geometry

@@ -1,0 +1,105 @@
+#include "volume_command.hpp"
+
+#include "mode_table_report.hpp"
+#include "petsc_handles.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <numbers>
+#include <sstream>
+#include <stdexcept>
+
+namespace rc::modes {
+namespace {
+
+void add_common_options(CLI::App* cmd, int& order, double& size, double& wall_size, double& wall_growth,
+                        double& floor, std::string& output) {
+  cmd->add_option("--order", order, "Lagrange order of the tetrahedra, 1..6 (default 4)");
+  cmd->add_option("--mesh-size", size, "element size (default 0.4 of the smallest dimension)");
+  cmd->add_option("--wall-size", wall_size, "element size on the wall, graded to --mesh-size inside (the geometry "
+                                            "error lives on the wall; docs/volume.md §4)");
+  cmd->add_option("--wall-growth", wall_growth, "growth of the element size per unit distance from the wall (default 1)");
+  cmd->add_option("--floor", floor, "keep modes whose coupling tensor's trace exceeds this fraction of the sum rule's "
+                                    "(default 1e-4)");
+  cmd->add_option("-o,--output", output, "mode table to write (HDF5)")->required();
+}
+
+std::string text_of(const std::string& file) {
+  std::ifstream in(file);
+  std::ostringstream os;
+  os << in.rdbuf();
+  return os.str();
+}
+
+void print_report(const VolumeTableResult& r) {
+  std::cout << table_text(r.table);
+  const auto& s = r.survey;
+  std::cout << "3-D survey: " << s.columns << " basis vectors; tensor sum rule: the rule's weights sum to I_f - J_zh to "
+            << r.sum_rule_mismatch << " (relative)"
+            << (s.shifts > 0 ? "; " + std::to_string(s.shifts) + " shift-and-invert run(s)" : std::string()) << "\n";
+  if (!s.unsettled.empty()) {
+    double weight = 0;
+    for (const auto& m : s.unsettled) weight += (m.H(0, 0) + m.H(1, 1)).real();
+    std::cout << "NOT CONVERGED: " << s.unsettled.size() << " heavy cluster(s) of transverse weight " << weight
+              << " did not settle within the basis budget; they are not in the table\n";
+  }
+  std::cout << std::flush;
+}
+
+}  // namespace
+
+VolumeCommands::VolumeCommands(CLI::App& app) {
+  ellipsoid_ = app.add_subcommand("ellipsoid", "3-D: triaxial ellipsoid, semi-axes a (x), b (y), c (z, the spin axis): "
+                                               "its 3-D mode table (docs/volume.md)");
+  ellipsoid_->add_option("--a", a_, "semi-axis along x")->required();
+  ellipsoid_->add_option("--b", b_, "semi-axis along y")->required();
+  ellipsoid_->add_option("--c", c_, "semi-axis along z")->required();
+  ellipsoid_->add_option("--tilt", tilt_degrees_, "angle (degrees) of the ellipsoid's c axis against the spin axis, "
+                                                  "turned about x");
+  add_common_options(ellipsoid_, order_, size_, wall_size_, wall_growth_, floor_, output_);
+  volume_ = app.add_subcommand("volume", "3-D: the user's cavity (.geo/.msh with a 3-D physical group \"fluid\", or "
+                                         "CAD .step/.stp/.brep): its 3-D mode table (docs/volume.md)");
+  volume_->add_option("file", file_, "geometry file")->required();
+  add_common_options(volume_, order_, size_, wall_size_, wall_growth_, floor_, output_);
+}
+
+bool VolumeCommands::parsed() const { return ellipsoid_->parsed() || volume_->parsed(); }
+
+VolumeTableRequest VolumeCommands::resolve() const {
+  VolumeTableRequest r;
+  if (ellipsoid_->parsed()) {
+    r.shape = {"ellipsoid", {{"a", a_}, {"b", b_}, {"c", c_}}, {}, tilt_degrees_ * std::numbers::pi / 180};
+  } else {
+    r.shape = {"volume", {}, file_, 0};
+  }
+  geometry::check_volume_shape(r.shape);
+  if (!(floor_ > 0 && floor_ < 1)) throw std::runtime_error("--floor must be in (0, 1)");
+  r.mesh.order = order_;
+  r.mesh.size = size_;
+  if (size_ == 0 && ellipsoid_->parsed()) r.mesh.size = kVolumeDefaultSizeFraction * std::min({a_, b_, c_});
+  r.mesh.wall_size = wall_size_;
+  r.mesh.wall_growth = wall_growth_;
+  r.survey.floor = floor_;
+
+  return r;
+}
+
+int VolumeCommands::run(const std::string& command_line) const {
+  const VolumeTableRequest request = resolve();
+  VolumeTableResult result = make_volume_table(request);
+  result.table.command_line = command_line;
+  if (request.shape.kind == "volume") {
+    result.table.geometry_source = request.shape.file.filename().string();
+    result.table.geometry_text = text_of(request.shape.file.string());
+  } else {
+    std::ostringstream os;
+    os << "ellipsoid a=" << a_ << " b=" << b_ << " c=" << c_ << " tilt=" << tilt_degrees_ << "deg";
+    result.table.geometry_source = os.str();
+  }
+  write_mode_table(result.table, output_);
+  if (is_root_rank()) print_report(result);
+  return 0;
+}
+
+}  // namespace rc::modes

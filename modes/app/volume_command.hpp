@@ -1,0 +1,35 @@
+// The 3-D shape commands of cavity-modes (docs/volume.md): `ellipsoid --a --b --c [--tilt DEG]` and
+// `volume FILE` (.geo/.msh with a 3-D group "fluid", or CAD .step/.stp/.brep), each writing an ideal 3-D mode table.
+// The request is resolved here, once; make_volume_table gets only what it needs.
+#pragma once
+
+#include "volume_table.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+namespace rc::modes {
+
+class VolumeCommands {
+ public:
+  explicit VolumeCommands(CLI::App& app);
+  VolumeCommands(const VolumeCommands&) = delete;
+  VolumeCommands& operator=(const VolumeCommands&) = delete;
+
+  bool parsed() const;
+  static bool is_volume_command(const std::string& name) { return name == "ellipsoid" || name == "volume"; }
+  // Checks the parsed options (one-line errors), computes and writes the table, prints its report. Inside a PETSc
+  // session.
+  int run(const std::string& command_line) const;
+
+ private:
+  VolumeTableRequest resolve() const;
+  CLI::App *ellipsoid_ = nullptr, *volume_ = nullptr;
+  double a_ = 0, b_ = 0, c_ = 0, tilt_degrees_ = 0;
+  std::string file_, output_;
+  int order_ = kVolumeDefaultOrder;
+  double size_ = 0, wall_size_ = 0, wall_growth_ = 1.0, floor_ = 1e-4;
+};
+
+}  // namespace rc::modes

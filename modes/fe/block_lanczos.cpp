@@ -1,0 +1,96 @@
+#include "block_lanczos.hpp"
+
+#include "progress.hpp"
+
+#include <Eigen/Eigenvalues>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace rc::modes {
+namespace {
+constexpr double kDeflation = 1e-10;  // a column this small against the block's scale is in the span already
+}
+
+BlockLanczos::BlockLanczos(const Eigen::VectorXd& weights, const Eigen::MatrixXd& start, int max_columns)
+    : weights_(weights), basis_(start.rows(), std::max<Eigen::Index>(max_columns, start.cols())),
+      T_(Eigen::MatrixXd::Zero(basis_.cols(), basis_.cols())) {
+  double scale = 0;
+  for (Eigen::Index j = 0; j < start.cols(); ++j)
+    scale = std::max(scale, std::sqrt(start.col(j).dot(weights_.cwiseProduct(start.col(j)))));
+  if (!(scale > 0)) throw std::invalid_argument("block Lanczos: zero start block");
+  R0_ = append_block(start, scale);
+  if (R0_.rows() == 0) throw std::invalid_argument("block Lanczos: zero start block");
+  block_begin_ = 0;
+  block_end_ = used_;
+}
+
+Eigen::MatrixXd BlockLanczos::append_block(Eigen::MatrixXd U, double scale) {
+  Eigen::MatrixXd coef = Eigen::MatrixXd::Zero(U.cols(), U.cols());  // rows: new columns
+  const Eigen::Index first = used_;
+  Eigen::Index kept = 0;
+  for (Eigen::Index j = 0; j < U.cols(); ++j) {
+    Eigen::VectorXd u = U.col(j);
+    for (int pass = 0; pass < 2; ++pass) {
+      const auto Q = basis_.leftCols(used_);
+      const Eigen::VectorXd h = Q.transpose() * weights_.cwiseProduct(u);
+      u.noalias() -= Q * h;
+      // The coefficients on this block's own new columns are B's entries (the rest is T's or reorthogonalisation).
+      for (Eigen::Index i = first; i < used_; ++i) coef(i - first, j) += h(i);
+    }
+    const double norm = std::sqrt(u.dot(weights_.cwiseProduct(u)));
+    if (!(norm > kDeflation * scale) || used_ >= basis_.cols()) continue;
+    basis_.col(used_++) = u / norm;
+    coef(kept++, j) = norm;
+  }
+  return coef.topRows(kept);
+}
+
+bool BlockLanczos::step(const Apply& apply) {
+  if (exhausted_ || block_end_ >= basis_.cols()) return false;
+  progress_tick();
+  const Eigen::Index b = block_end_ - block_begin_;
+  Eigen::MatrixXd U(basis_.rows(), b);
+  Eigen::VectorXd out;
+  double scale = 0;
+  for (Eigen::Index j = 0; j < b; ++j) {
+    apply(basis_.col(block_begin_ + j), out);
+    U.col(j) = out;
+    scale = std::max(scale, std::sqrt(out.dot(weights_.cwiseProduct(out))));
+  }
+  // T's columns of this block: the projections on every basis vector so far (full orthogonalisation).
+  const auto Q = basis_.leftCols(used_);
+  const Eigen::MatrixXd H = Q.transpose() * weights_.asDiagonal() * U;
+  T_.block(0, block_begin_, used_, b) = H;
+  U.noalias() -= Q * H;
+  const Eigen::Index before = used_;
+  last_B_ = append_block(U, std::max(scale, 1e-300));
+  if (used_ == before) { exhausted_ = true; last_B_.resize(0, b); return false; }
+  block_begin_ = before;
+  block_end_ = used_;
+  return used_ < basis_.cols();
+}
+
+std::vector<BlockGaussNode> BlockLanczos::rule() const {
+  // The blocks already applied: columns [0, block_begin_) have their T columns (all of them when exhausted).
+  const Eigen::Index k = exhausted_ ? used_ : block_begin_;
+  if (k == 0) return {};
+  // Column j of T holds the projections on the basis that existed when block j was applied, i.e. T's upper triangle
+  // and diagonal blocks (the next block's coefficients B_j are its transposed upper block): mirror the upper part.
+  Eigen::MatrixXd T = T_.topLeftCorner(k, k).triangularView<Eigen::Upper>();
+  T.triangularView<Eigen::StrictlyLower>() = T.transpose().triangularView<Eigen::StrictlyLower>();
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(T);
+  if (es.info() != Eigen::Success) throw std::runtime_error("block Lanczos: projected eigen-solve failed");
+  const Eigen::Index b0 = R0_.rows(), last = k - last_B_.cols();
+  std::vector<BlockGaussNode> nodes(k);
+  for (Eigen::Index i = 0; i < k; ++i) {
+    nodes[i].lambda = es.eigenvalues()(i);
+    nodes[i].weight = R0_.transpose() * es.eigenvectors().col(i).head(b0);
+    nodes[i].residual = exhausted_ || last_B_.size() == 0
+                            ? 0.0
+                            : (last_B_ * es.eigenvectors().col(i).segment(last, last_B_.cols())).norm();
+  }
+  return nodes;
+}
+
+}  // namespace rc::modes

@@ -1,0 +1,49 @@
+// The scalar Lagrange finite-element space on a 3-D cavity (tetrahedra, isoparametric): one degree of freedom per
+// mesh node except one, where p = 0 (a pressure is defined up to a constant; pinning one node takes the constant
+// out of the Neumann stiffness and out of the Poincaré pencil, where it would be an eigenvector for every λ).
+#pragma once
+
+#include "volume_mesh.hpp"
+
+#include <span>
+#include <vector>
+
+namespace rc::modes {
+
+// Values at the quadrature points of one tetrahedron, in physical coordinates.
+struct VolumeQuadrature {
+  std::vector<double> x, y, z, w;    // w = reference weight · |det J|
+  std::vector<double> N;             // N[q * npe + a]
+  std::vector<double> dNx, dNy, dNz; // [q * npe + a]
+};
+
+class VolumeSpace {
+ public:
+  // quadrature_degree = 0 picks 2·order + 1 (curved boundary elements; measured enough in docs/volume.md).
+  explicit VolumeSpace(geometry::VolumeMesh mesh, int quadrature_degree = 0);
+
+  int ndof() const { return ndof_; }
+  int order() const { return mesh_.order; }
+  int nodes_per_element() const { return mesh_.nodes_per_element; }
+  std::size_t num_elements() const { return mesh_.num_tetrahedra(); }
+  std::size_t num_quadrature_points() const { return num_elements() * ref_.weights.size(); }
+  const geometry::VolumeMesh& mesh() const { return mesh_; }
+
+  // Global dof of each local node of element e; -1 for the pinned node.
+  std::span<const int> element_dofs(std::size_t e) const {
+    return {dofs_.data() + e * mesh_.nodes_per_element, static_cast<std::size_t>(mesh_.nodes_per_element)};
+  }
+  // Node of each dof.
+  int dof_node(int dof) const { return dof + 1; }
+
+  // Fills `out` with the quadrature data of element e (reused buffer). Throws on a non-positive Jacobian.
+  void quadrature(std::size_t e, VolumeQuadrature& out) const;
+
+ private:
+  geometry::VolumeMesh mesh_;
+  geometry::ReferenceTetrahedron ref_;
+  int ndof_ = 0;
+  std::vector<int> dofs_;
+};
+
+}  // namespace rc::modes

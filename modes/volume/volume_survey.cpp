@@ -1,0 +1,237 @@
+#include "volume_survey.hpp"
+
+#include "lanczos.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace rc::modes {
+namespace {
+
+using Complex3 = Eigen::Vector3cd;
+
+// The complex coupling of a real-form Ritz vector from its weights against (w_x, w_y, w_z, i w_x, i w_y, i w_z):
+// ⟨(w, 0), z⟩ = Re c and ⟨(0, w), z⟩ = Im c.
+Complex3 coupling(const BlockGaussNode& n) {
+  Complex3 c;
+  for (int k = 0; k < 3; ++k) c(k) = {n.weight(k), n.weight(3 + k)};
+  return c;
+}
+
+// Clusters of a rule sorted by λ: Ritz values within the merge width. Each complex mode is two real Ritz vectors z
+// and iz with couplings c and ic, so a cluster's H = ½ Σ c cᴴ.
+std::vector<VolumeMode> clusters(std::vector<BlockGaussNode> rule, double width) {
+  std::sort(rule.begin(), rule.end(), [](const auto& a, const auto& b) { return a.lambda < b.lambda; });
+  std::vector<VolumeMode> out;
+  std::vector<double> sum_l, sum_l2, sum_w;
+  for (const auto& n : rule) {
+    const Complex3 c = coupling(n);
+    const Hermitian3 H = 0.5 * c * c.adjoint();
+    const double w = H.trace().real();
+    if (out.empty() || !within_width(n.lambda, out.back().lambda, width)) {
+      out.push_back({});
+      out.back().lambda = n.lambda;
+      sum_l.push_back(0); sum_l2.push_back(0); sum_w.push_back(0);
+    }
+    VolumeMode& m = out.back();
+    m.H += H;
+    m.residual = std::max(m.residual, n.residual);
+    ++m.members;
+    sum_w.back() += w; sum_l.back() += w * n.lambda; sum_l2.back() += w * n.lambda * n.lambda;
+    if (sum_w.back() > 0) m.lambda = sum_l.back() / sum_w.back();
+  }
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    out[i].members = (out[i].members + 1) / 2;  // real Ritz values come in pairs
+    if (sum_w[i] > 0) out[i].spread = std::sqrt(std::max(0.0, sum_l2[i] / sum_w[i] - out[i].lambda * out[i].lambda));
+  }
+  return out;
+}
+
+double relative_change(const Hermitian3& a, const Hermitian3& b) {
+  const double n = a.norm();
+  return n > 0 ? (a - b).norm() / n : 0.0;
+}
+
+// The heavy clusters in [lo, hi], with their change against the previous check's clusters.
+std::vector<VolumeMode> watched(const std::vector<VolumeMode>& now, const std::vector<VolumeMode>& before, double lo,
+                                double hi, double heavy) {
+  std::vector<VolumeMode> out;
+  for (VolumeMode m : now) {
+    if (m.lambda < lo || m.lambda > hi || m.H.trace().real() < heavy) continue;
+    m.dlambda = m.dH = std::numeric_limits<double>::infinity();
+    for (const auto& b : before)
+      if (std::abs(b.lambda - m.lambda) < m.dlambda) {
+        m.dlambda = std::abs(b.lambda - m.lambda);
+        m.dH = relative_change(m.H, b.H);
+      }
+    out.push_back(m);
+  }
+  return out;
+}
+
+// Stopped moving: λ and H changed less than the tolerances between two checks.
+bool still(const VolumeMode& m, const VolumeSurveySettings& s) {
+  return m.dlambda <= s.lambda_tolerance * lambda_scale(m.lambda) && m.dH <= s.weight_tolerance;
+}
+
+// A mode: still, and its Ritz vector an eigenvector (a Gauss node can stop moving long before that in a dense
+// spectrum; its λ is good to about the residual² over the gap).
+bool settled(const VolumeMode& m, const VolumeSurveySettings& s) {
+  return still(m, s) && m.residual <= s.residual_tolerance * lambda_scale(m.lambda);
+}
+
+struct RuleRun {
+  std::vector<VolumeMode> all, watch;  // the last rule's clusters; the watched ones with their last change
+  int columns = 0;
+  bool exhausted = false;
+};
+
+// Block Lanczos until every heavy cluster in [lo, hi] has settled or the budget is spent; `map` takes the operator's
+// Ritz value to λ (the identity for A, σ + 1/θ for (A − σ)⁻¹).
+// residual_map: the operator's Ritz residual to a bound on ‖(A − λ) z‖.
+// `done`: when every watched cluster is still (the plain rule, whose nodes then go to shifts) or settled (a shift).
+template <class Map, class ResidualMap>
+RuleRun run_rule(const VolumeVelocity& V, const Eigen::MatrixXd& start, const BlockLanczos::Apply& apply, int columns,
+                 Map map, ResidualMap residual_map, double lo, double hi, double heavy, const VolumeSurveySettings& s,
+                 bool (*done)(const VolumeMode&, const VolumeSurveySettings&)) {
+  BlockLanczos lanczos(V.weights(), start, columns);
+  RuleRun run;
+  std::vector<VolumeMode> before;
+  bool more = true;
+  for (int block = 1; more; ++block) {
+    more = lanczos.step(apply);
+    if (block % s.check_every != 0 && more) continue;
+    auto rule = lanczos.rule();
+    for (auto& n : rule) {
+      const double theta = n.lambda;
+      n.lambda = map(theta);
+      n.residual = residual_map(theta, n.residual);
+    }
+    run.all = clusters(std::move(rule), s.merge_width);
+    if (lanczos.exhausted()) before = run.all;  // the rule is exact
+    run.watch = watched(run.all, before, lo, hi, heavy);
+    before = run.all;
+    if (block > s.check_every &&
+        std::all_of(run.watch.begin(), run.watch.end(), [&](const auto& m) { return done(m, s); }))
+      break;
+  }
+  run.columns = lanczos.columns();
+  run.exhausted = lanczos.exhausted();
+  return run;
+}
+
+// Q(σ) = σ² M + 2σ (iG) − 4 Kz in its real form.
+PMat shifted_pencil(const PoincareForms& real, double sigma) {
+  PMat Q;
+  petsc_check(MatDuplicate(real.M, MAT_COPY_VALUES, Q.out()), "MatDuplicate");
+  petsc_check(MatScale(Q, sigma * sigma), "MatScale");
+  petsc_check(MatAXPY(Q, -4.0, real.Kz, SUBSET_NONZERO_PATTERN), "MatAXPY");
+  petsc_check(MatAXPY(Q, 2 * sigma, real.Gc, DIFFERENT_NONZERO_PATTERN), "MatAXPY");
+  petsc_check(MatSetOption(Q, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
+  return Q;
+}
+
+// The settled heavy clusters of a shift-and-invert run at σ within its window.
+RuleRun shift_invert_run(const VolumeVelocity& V, const PoincareForms& real, const Eigen::MatrixXd& start,
+                         double sigma, double heavy, const VolumeSurveySettings& s) {
+  const PMat Q = shifted_pencil(real, sigma);
+  const StiffnessSolver factor(Q, "shift_", fmt::format("the 3-D Q(sigma) at sigma = {:.9g}", sigma));
+  const double c = sigma * (sigma * sigma - 4);
+  std::vector<double> g, p;
+  Eigen::VectorXd t;
+  const auto apply = [&](const Eigen::VectorXd& u, Eigen::VectorXd& v) {
+    v = u;
+    VolumeVelocity::shifted_coriolis_inverse(sigma, v);
+    V.divergence(v, g);
+    for (double& x : g) x *= c;
+    factor.solve(g, p);
+    t.setZero(v.size());
+    V.add_gradient(p, 1.0, t);
+    VolumeVelocity::shifted_coriolis_inverse(sigma, t);
+    v += t;
+  };
+  const double half = s.window * lambda_scale(sigma);
+  // (A − σ)⁻¹z = θz + r gives (A − λ)z = −(A − σ) r / θ, of norm <= ‖A − σ‖ ‖r‖/|θ| <= (2 + |σ|) ‖r‖/|θ|.
+  return run_rule(
+      V, start, apply, s.shift_columns, [sigma](double theta) { return sigma + 1 / theta; },
+      [sigma](double theta, double r) { return (2 + std::abs(sigma)) * r / std::abs(theta); }, sigma - half,
+      sigma + half, heavy, s, settled);
+}
+
+// Keeps the first of modes within the merge width of each other (two shifts' windows may hold the same mode).
+void dedupe(std::vector<VolumeMode>& modes, double width) {
+  std::vector<VolumeMode> kept;
+  for (const auto& m : modes)
+    if (std::none_of(kept.begin(), kept.end(), [&](const auto& x) { return within_width(m.lambda, x.lambda, width); }))
+      kept.push_back(m);
+  modes = std::move(kept);
+}
+
+}  // namespace
+
+Eigen::Matrix3d rotation_gram(const VolumeVelocity& V, const std::vector<Eigen::VectorXd>& w) {
+  Eigen::Matrix3d g;
+  for (int j = 0; j < 3; ++j)
+    for (int k = 0; k < 3; ++k) g(j, k) = w[j].dot(V.weights().cwiseProduct(w[k]));
+  return g;
+}
+
+VolumeSurvey survey_volume_modes(const VolumeVelocity& V, const StiffnessSolver& M, const VolumeForms& forms,
+                                 const VolumeSurveySettings& s) {
+  Eigen::MatrixXd start(V.size(), 6);
+  for (int k = 0; k < 3; ++k) {
+    Eigen::VectorXd w = V.rotation_field(k);
+    V.project(M, w);
+    start.col(k) = w;
+    start.col(3 + k) = VolumeVelocity::times_i(w);
+  }
+  Eigen::VectorXd t;
+  const auto apply = [&](const Eigen::VectorXd& in, Eigen::VectorXd& out) {  // out = P_H S in
+    V.coriolis(in, t);
+    V.project(M, t);
+    out = t;
+  };
+  const double mass = 0.5 * (start.transpose() * V.weights().asDiagonal() * start).trace();
+  const double heavy = s.floor * mass;
+  const RuleRun plain = run_rule(
+      V, start, apply, s.max_columns, [](double l) { return l; }, [](double, double r) { return r; }, s.lambda_floor,
+      std::numeric_limits<double>::infinity(), heavy, s, still);
+  VolumeSurvey out;
+  std::vector<VolumeMode> pending;
+  // A plain node may stop moving before its Ritz vector is an eigenvector (settled() asks for a small residual too):
+  // the shift-and-invert run then resolves it.
+  for (const auto& m : plain.watch) (settled(m, s) ? out.modes : pending).push_back(m);
+
+  if (!pending.empty()) {
+    const PoincareForms real = real_form_pencil(forms);
+    for (const auto& node : pending) {
+      bool found = false;
+      for (const auto& m : out.modes) found = found || within_width(node.lambda, m.lambda, s.window);
+      if (found) continue;  // an earlier shift's window resolved it
+      // Just off the node: σ must not be an eigenvalue (Q(σ) singular).
+      const double sigma = node.lambda * (1 + 1e-4);
+      const RuleRun run = shift_invert_run(V, real, start, sigma, heavy, s);
+      ++out.shifts;
+
+
+      // Nothing heavy near σ: the plain node was a Gauss-rule average over light eigenvalues, not a mode.
+      for (const auto& m : run.watch) (settled(m, s) ? out.modes : out.unsettled).push_back(m);
+      dedupe(out.modes, s.merge_width);
+      dedupe(out.unsettled, s.merge_width);
+    }
+  }
+  for (const auto& m : plain.all) {
+    out.total += m.H;
+    if (std::abs(m.lambda) <= s.lambda_floor) out.geostrophic += m.H;
+  }
+  const auto transverse = [](const VolumeMode& m) { return (m.H(0, 0) + m.H(1, 1)).real(); };
+  std::sort(out.modes.begin(), out.modes.end(), [&](const auto& a, const auto& b) { return transverse(a) > transverse(b); });
+  out.columns = plain.columns;
+  out.exhausted = plain.exhausted;
+  return out;
+}
+
+}  // namespace rc::modes

@@ -1,0 +1,108 @@
+#include "volume_table.hpp"
+
+#include "progress.hpp"
+#include "volume_forms.hpp"
+#include "volume_velocity.hpp"
+#include "volume_zhukovsky.hpp"
+
+#include <chrono>
+#include <cmath>
+
+namespace rc::modes {
+namespace {
+
+std::vector<double> flat(const Tensor3& t) {
+  std::vector<double> v;
+  for (const auto& row : t) v.insert(v.end(), row.begin(), row.end());
+  return v;
+}
+
+std::vector<double> flat(const Eigen::Matrix3d& t) {
+  std::vector<double> v;
+  for (int j = 0; j < 3; ++j)
+    for (int k = 0; k < 3; ++k) v.push_back(t(j, k));
+  return v;
+}
+
+void add_rows(ModeTable& t, const VolumeSurvey& survey) {
+  for (const auto& m : survey.modes) {
+    const double E = (m.H(0, 0) + m.H(1, 1)).real();
+    t.lambda.push_back(m.lambda);
+    t.kappa.push_back(2 / m.lambda);
+    t.E.push_back(E);
+    t.a.push_back(std::sqrt(E / 2));
+    t.N2.push_back(1.0);
+    t.residual.push_back(m.residual);
+    t.spread.push_back(m.spread);
+    t.members.push_back(m.members);
+    const Hermitian3 H = 0.5 * (m.H + m.H.adjoint());  // Hermitian to rounding; exactly so in the file
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) {
+        t.volume_cavity.coupling_re.push_back(H(j, k).real());
+        t.volume_cavity.coupling_im.push_back(H(j, k).imag());
+      }
+  }
+}
+
+std::string solver_text(const VolumeSurvey& s) {
+  return "block Lanczos Gauss rule of the coupling measure (P_H S, " + std::to_string(s.columns) +
+         " basis vectors, plain; docs/volume.md §2)";
+}
+
+}  // namespace
+
+VolumeTableResult make_volume_table(const VolumeTableRequest& request) {
+  const auto start = std::chrono::steady_clock::now();
+  VolumeSpace space(geometry::mesh_volume(request.shape, request.mesh));
+
+  const VolumeIntegrals fluid = integrate_volume(space);
+  const VolumeForms forms = assemble_volume_forms(space);
+  const StiffnessSolver M(forms.M, "stiff_", "the 3-D stiffness matrix");
+  const VolumeVelocity V(space, fluid.centroid);
+  const Tensor3 J = zhukovsky_tensor(V, M);
+  VolumeTableResult out;
+  out.survey = survey_volume_modes(V, M, forms, request.survey);
+
+  ModeTable& t = out.table;
+  t.shape = request.shape.kind;
+  t.dimensions = request.shape.dims;
+  t.fe_order = space.order();
+  t.mesh_h = space.mesh().size;
+  t.ndof = space.ndof();
+  t.volume = fluid.volume;
+  t.centroid_z = fluid.centroid[2];
+  t.A_f = 0.5 * (fluid.inertia[0][0] + fluid.inertia[1][1]);
+  t.C_f = fluid.inertia[2][2];
+  t.J_zh = 0.5 * (J[0][0] + J[1][1]);
+  t.sum_rule = t.A_f - t.J_zh;
+  t.solver = solver_text(out.survey);
+  t.tolerance = request.survey.lambda_tolerance;
+  t.normalisation = "3-D: H = c c^H with c_k = int (e_k x r).V, |V| = 1 (docs/volume.md); a = sqrt(E/2), N2 = 1";
+  auto& v = t.volume_cavity;
+  v.centroid.assign(fluid.centroid.begin(), fluid.centroid.end());
+  v.tilt = request.shape.tilt;
+  v.inertia = flat(fluid.inertia);
+  v.zhukovsky = flat(J);
+  Tensor3 P{};
+  double scale = 0, worst = 0;
+  for (int j = 0; j < 3; ++j) {
+    for (int k = 0; k < 3; ++k) P[j][k] = fluid.inertia[j][k] - J[j][k];
+    scale += P[j][j];
+  }
+  for (int j = 0; j < 3; ++j)
+    for (int k = 0; k < 3; ++k) worst = std::max(worst, std::abs(out.survey.total(j, k) - P[j][k]));
+  out.sum_rule_mismatch = worst / scale;
+  v.sum_rule = flat(P);
+  v.geostrophic_re = flat(Eigen::Matrix3d(out.survey.geostrophic.real()));
+  v.geostrophic_im = flat(Eigen::Matrix3d(out.survey.geostrophic.imag()));
+  add_rows(t, out.survey);
+  double kept = 0;
+  for (double E : t.E) kept += E;
+  t.coverage = t.sum_rule > 0 ? kept / t.sum_rule : 0;
+  t.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  t.sort_by_energy();
+  t.validate();
+  return out;
+}
+
+}  // namespace rc::modes

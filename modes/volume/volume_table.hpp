@@ -1,0 +1,31 @@
+// A 3-D cavity's ideal mode table, end to end (docs/volume.md): mesh → forms → the block Lanczos survey of the
+// coupling's matrix measure → Zhukovsky's tensor → the table (common/mode_table.hpp, /volume). The request is resolved
+// once by the command (modes/app/volume_command.*); this layer takes only what it needs.
+#pragma once
+
+#include "mode_table.hpp"
+#include "volume_mesh.hpp"
+#include "volume_survey.hpp"
+
+namespace rc::modes {
+
+struct VolumeTableRequest {
+  geometry::VolumeShapeSpec shape;
+  geometry::MeshOptions mesh;  // order, size (0: default), wall_size/wall_growth
+  VolumeSurveySettings survey;
+};
+
+struct VolumeTableResult {
+  ModeTable table;
+  VolumeSurvey survey;
+  double sum_rule_mismatch = 0;  // max |Σ H over the rule − (I_f − J_zh)| / trace(I_f − J_zh)
+};
+
+// The element size taken when request.mesh.size is 0: 0.4 of a built-in shape's smallest dimension (docs/volume.md
+// §4); a file's own smallest half-side.
+inline constexpr double kVolumeDefaultSizeFraction = 0.4;
+inline constexpr int kVolumeDefaultOrder = 4;
+
+VolumeTableResult make_volume_table(const VolumeTableRequest& request);
+
+}  // namespace rc::modes
