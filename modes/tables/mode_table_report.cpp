@@ -135,7 +135,8 @@ nlohmann::json modes_json(const ModeTable& t) {
 std::string table_json(const ModeTable& t) {
   nlohmann::json j;
   j["format"] = kModeTableFormat;
-  j["version"] = t.free_surface.present() ? kFreeSurfaceTableVersion : kModeTableVersion;
+  j["version"] = t.volume_cavity.present() ? kVolumeTableVersion
+                 : t.free_surface.present() ? kFreeSurfaceTableVersion : kModeTableVersion;
   j["shape"] = t.shape;
   for (const auto& [k, v] : t.dimensions) j[k] = v;
   j["fe_order"] = t.fe_order;
@@ -169,6 +170,12 @@ std::string table_json(const ModeTable& t) {
     const auto& f = t.free_surface;
     j["free_surface"] = {{"fill", f.fill}, {"radius", f.radius}, {"K0", f.K0}, {"K1", f.K1}, {"K2", f.K2},
                          {"J1", f.J1}, {"J2", f.J2}, {"t", f.t}};
+  }
+  if (t.volume_cavity.present()) {
+    const auto& v = t.volume_cavity;
+    j["cavity_3d"] = {{"centroid", v.centroid}, {"tilt", v.tilt}, {"inertia", v.inertia}, {"zhukovsky", v.zhukovsky},
+                   {"sum_rule", v.sum_rule}, {"geostrophic_re", v.geostrophic_re},
+                   {"geostrophic_im", v.geostrophic_im}, {"coupling_re", v.coupling_re}, {"coupling_im", v.coupling_im}};
   }
   if (!t.geometry_source.empty() || !t.command_line.empty())
     j["provenance"] = {{"geometry_source", t.geometry_source}, {"geometry_text", t.geometry_text},

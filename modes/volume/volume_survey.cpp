@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 
 namespace rc::modes {
@@ -89,14 +90,14 @@ struct RuleRun {
   bool exhausted = false;
 };
 
-// Block Lanczos until every heavy cluster in [lo, hi] has settled or the budget is spent; `map` takes the operator's
-// Ritz value to λ (the identity for A, σ + 1/θ for (A − σ)⁻¹).
-// residual_map: the operator's Ritz residual to a bound on ‖(A − λ) z‖.
-// `done`: when every watched cluster is still (the plain rule, whose nodes then go to shifts) or settled (a shift).
+// Block Lanczos until `finished` says so of the heavy clusters in [lo, hi] (with their last change) or the budget is
+// spent; `map` takes the operator's Ritz value to λ (the identity for A, σ + 1/θ for (A − σ)⁻¹), `residual_map` its
+// Ritz residual to a bound on ‖(A − λ) z‖.
+using Finished = std::function<bool(const std::vector<VolumeMode>&)>;
 template <class Map, class ResidualMap>
 RuleRun run_rule(const VolumeVelocity& V, const Eigen::MatrixXd& start, const BlockLanczos::Apply& apply, int columns,
                  Map map, ResidualMap residual_map, double lo, double hi, double heavy, const VolumeSurveySettings& s,
-                 bool (*done)(const VolumeMode&, const VolumeSurveySettings&)) {
+                 const Finished& finished) {
   BlockLanczos lanczos(V.weights(), start, columns);
   RuleRun run;
   std::vector<VolumeMode> before;
@@ -114,9 +115,7 @@ RuleRun run_rule(const VolumeVelocity& V, const Eigen::MatrixXd& start, const Bl
     if (lanczos.exhausted()) before = run.all;  // the rule is exact
     run.watch = watched(run.all, before, lo, hi, heavy);
     before = run.all;
-    if (block > s.check_every &&
-        std::all_of(run.watch.begin(), run.watch.end(), [&](const auto& m) { return done(m, s); }))
-      break;
+    if (block > s.check_every && finished(run.watch)) break;
   }
   run.columns = lanczos.columns();
   run.exhausted = lanczos.exhausted();
@@ -134,7 +133,22 @@ PMat shifted_pencil(const PoincareForms& real, double sigma) {
   return Q;
 }
 
-// The settled heavy clusters of a shift-and-invert run at σ within its window.
+// The heavy clusters of `watch` within the smallest window about σ that holds any: s.window · max(|σ|, 0.1), widened
+// ×4 up to kWidenings times (a plain Gauss node stands for weight spread over eigenvalues near it, not at it).
+constexpr int kWidenings = 4;
+std::vector<VolumeMode> nearest_heavy(const std::vector<VolumeMode>& watch, double sigma, const VolumeSurveySettings& s) {
+  double half = s.window * lambda_scale(sigma);
+  for (int k = 0; k <= kWidenings; ++k, half *= 4) {
+    std::vector<VolumeMode> in;
+    for (const auto& m : watch)
+      if (std::abs(m.lambda - sigma) <= half) in.push_back(m);
+    if (!in.empty()) return in;
+  }
+  return {};
+}
+
+// A shift-and-invert run at σ: until the heavy clusters nearest σ (nearest_heavy) have settled. Returns them (settled
+// or not) in `watch`.
 RuleRun shift_invert_run(const VolumeVelocity& V, const PoincareForms& real, const Eigen::MatrixXd& start,
                          double sigma, double heavy, const VolumeSurveySettings& s) {
   const PMat Q = shifted_pencil(real, sigma);
@@ -153,12 +167,20 @@ RuleRun shift_invert_run(const VolumeVelocity& V, const PoincareForms& real, con
     VolumeVelocity::shifted_coriolis_inverse(sigma, t);
     v += t;
   };
-  const double half = s.window * lambda_scale(sigma);
+  double widest = s.window * lambda_scale(sigma);
+  for (int k = 0; k < kWidenings; ++k) widest *= 4;
+  const Finished finished = [&](const std::vector<VolumeMode>& watch) {
+    const auto near = nearest_heavy(watch, sigma, s);
+    // Nothing heavy in the widest window: the plain node was a Gauss average over light eigenvalues, not a mode.
+    return std::all_of(near.begin(), near.end(), [&](const auto& m) { return settled(m, s); });
+  };
   // (A − σ)⁻¹z = θz + r gives (A − λ)z = −(A − σ) r / θ, of norm <= ‖A − σ‖ ‖r‖/|θ| <= (2 + |σ|) ‖r‖/|θ|.
-  return run_rule(
+  RuleRun run = run_rule(
       V, start, apply, s.shift_columns, [sigma](double theta) { return sigma + 1 / theta; },
-      [sigma](double theta, double r) { return (2 + std::abs(sigma)) * r / std::abs(theta); }, sigma - half,
-      sigma + half, heavy, s, settled);
+      [sigma](double theta, double r) { return (2 + std::abs(sigma)) * r / std::abs(theta); }, sigma - widest,
+      sigma + widest, heavy, s, finished);
+  run.watch = nearest_heavy(run.watch, sigma, s);
+  return run;
 }
 
 // Keeps the first of modes within the merge width of each other (two shifts' windows may hold the same mode).
@@ -198,7 +220,9 @@ VolumeSurvey survey_volume_modes(const VolumeVelocity& V, const StiffnessSolver&
   const double heavy = s.floor * mass;
   const RuleRun plain = run_rule(
       V, start, apply, s.max_columns, [](double l) { return l; }, [](double, double r) { return r; }, s.lambda_floor,
-      std::numeric_limits<double>::infinity(), heavy, s, still);
+      std::numeric_limits<double>::infinity(), heavy, s, [&](const std::vector<VolumeMode>& watch) {
+        return std::all_of(watch.begin(), watch.end(), [&](const auto& m) { return still(m, s); });
+      });
   VolumeSurvey out;
   std::vector<VolumeMode> pending;
   // A plain node may stop moving before its Ritz vector is an eigenvector (settled() asks for a small residual too):
@@ -207,16 +231,22 @@ VolumeSurvey survey_volume_modes(const VolumeVelocity& V, const StiffnessSolver&
 
   if (!pending.empty()) {
     const PoincareForms real = real_form_pencil(forms);
+    // Heaviest first; a node near a mode already found that carries 100 times its weight is that mode's leakage in
+    // the plain rule (its shift would only settle the same mode again, slowly, from afar).
+    std::sort(pending.begin(), pending.end(),
+              [](const auto& a, const auto& b) { return a.H.trace().real() > b.H.trace().real(); });
+    const double widest = s.window * std::pow(4.0, kWidenings);
     for (const auto& node : pending) {
-      bool found = false;
-      for (const auto& m : out.modes) found = found || within_width(node.lambda, m.lambda, s.window);
-      if (found) continue;  // an earlier shift's window resolved it
+      const bool leakage = std::any_of(out.modes.begin(), out.modes.end(), [&](const auto& m) {
+        return within_width(node.lambda, m.lambda, widest) && m.H.trace().real() >= 100 * node.H.trace().real();
+      });
+      const bool resolved = std::any_of(out.modes.begin(), out.modes.end(),
+                                        [&](const auto& m) { return within_width(node.lambda, m.lambda, s.window); });
+      if (leakage || resolved) continue;
       // Just off the node: σ must not be an eigenvalue (Q(σ) singular).
       const double sigma = node.lambda * (1 + 1e-4);
       const RuleRun run = shift_invert_run(V, real, start, sigma, heavy, s);
       ++out.shifts;
-
-
       // Nothing heavy near σ: the plain node was a Gauss-rule average over light eigenvalues, not a mode.
       for (const auto& m : run.watch) (settled(m, s) ? out.modes : out.unsettled).push_back(m);
       dedupe(out.modes, s.merge_width);

@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# The 3-D commands of cavity-modes (docs/volume.md): a small ellipsoid table and a user's volume file end to end
+# with info, every bad-input case giving a one-line error, a non-zero exit and no file, and chain-rom's one-line
+# refusal of a 3-D table (its tanks are axisymmetric until the general chain lands).
+set -u
+source "$(cd "$(dirname "$0")" && pwd)/cli_checks.sh"
+BIN=$1
+VOLUMES=$2
+ROM=$3
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+
+"$BIN" ellipsoid --help > help.txt 2>&1 && grep -q -- "--tilt" help.txt && ok "ellipsoid --help" || bad "ellipsoid --help"
+if "$BIN" ellipsoid --a 1 --b 0.8 --c 0.6 --order 3 --mesh-size 0.3 -o ell.h5 > run.txt 2>&1 &&
+   "$BIN" info ell.h5 > info.txt 2>&1 && grep -q "3-D (no axial symmetry)" info.txt && grep -q "zhukovsky" info.txt &&
+   "$BIN" info ell.h5 --json | python3 -c 'import json,sys; d=json.load(sys.stdin); assert d["version"] == 4 and len(d["cavity_3d"]["coupling_re"]) == 9 * len(d["modes"]["E"]), d["version"]'; then
+  ok "ellipsoid table, info, version 4 ($(grep -m1 'lambda' -A1 info.txt | tail -1 | tr -s ' '))"
+else
+  bad "ellipsoid table: $(tail -3 run.txt info.txt)"
+fi
+if "$BIN" volume "$VOLUMES/box.geo" --order 2 --mesh-size 0.4 -o box.h5 > box.txt 2>&1 && grep -q "geometry: box.geo" box.txt; then
+  ok "volume box.geo ($(grep -m1 coverage box.txt))"
+else
+  bad "volume box.geo: $(tail -3 box.txt)"
+fi
+
+expect_error "negative semi-axis" "dimension 'a' = -1" "$BIN" ellipsoid --a -1 --b 1 --c 1 -o out.h5
+expect_error "NaN semi-axis" "nan" "$BIN" ellipsoid --a 1 --b nan --c 1 -o out.h5
+expect_error "missing semi-axis" "--c" "$BIN" ellipsoid --a 1 --b 1 -o out.h5
+expect_error "3-D order too high" "order 7 is outside 1..6" "$BIN" ellipsoid --a 1 --b 1 --c 1 --order 7 -o out.h5
+expect_error "infinite tilt" "tilt must be finite" "$BIN" ellipsoid --a 1 --b 1 --c 1 --tilt inf -o out.h5
+expect_error "bad floor" "--floor must be in (0, 1)" "$BIN" ellipsoid --a 1 --b 1 --c 1 --floor 2 -o out.h5
+expect_error "unreadable volume" "cannot read" "$BIN" volume "$work/none.geo" -o out.h5
+expect_error "volume of another kind" "expected a .geo" "$BIN" volume help.txt -o out.h5
+echo 'SetFactory("OpenCASCADE"); Box(1) = {0, 0, 0, 1, 1, 1};' > nogroup.geo
+expect_error "volume without a fluid group" "no 3D physical group named 'fluid'" "$BIN" volume nogroup.geo -o out.h5
+expect_error "tilt on a volume file" "--tilt" "$BIN" volume "$VOLUMES/box.geo" --tilt 10 -o out.h5
+expect_error "3-D response" "response takes an axisymmetric shape" "$BIN" response ellipsoid --a 1 --b 1 --c 1 -o out.csv
+
+if [ -f ell.h5 ]; then
+  cat > scene.toml <<SCENE
+[system]
+kind = "fixed"
+gravity = 9.81
+[[body]]
+mass = 2.0
+A = 0.05
+C = 0.08
+com = 0.05
+spin = 200.0
+[body.cavity]
+table = "ell.h5"
+density = 1000.0
+scale = 0.04
+center = 0.05
+SCENE
+  expect_error "chain-rom refuses a 3-D table" "3-D cavity's table" "$ROM" spectrum scene.toml
+fi
+finish
