@@ -212,3 +212,40 @@ TEST(ModeTable, NonFiniteModesAreRefusedAndTablesAreChecksummed) {
   EXPECT_NE(read_error(p).find("non-finite"), std::string::npos) << read_error(p);
   fs::remove(p);
 }
+
+TEST(ModeTable, VolumeTensorsRoundTripAndAreChecked) {
+  // A 3-D table (/volume, version 4): the per-mode Hermitian coupling tensors sort with their rows; a tensor that is
+  // not Hermitian, or whose transverse trace is not the row's E, is refused.
+  auto t = sample();
+  t.converged.clear(); t.dlambda.clear(); t.dE.clear();
+  auto& v = t.volume_cavity;
+  v.centroid = {0.1, 0, 0};
+  v.tilt = 0.5;
+  v.inertia = {2.5, 0, 0, 0, 2.5, 0, 0, 0, 3.1};
+  v.zhukovsky = {0.3, 0, 0, 0, 0.3, 0, 0, 0, 0};
+  v.sum_rule = {2.2, 0, 0, 0, 2.2, 0, 0, 0, 3.1};
+  v.geostrophic_re = v.geostrophic_im = std::vector<double>(9, 0.0);
+  // H = c cᴴ with c = (√(E/2), i√(E/2), 0): H_xy = −i E/2.
+  for (double E : t.E) {
+    const double h = E / 2;
+    const std::vector<double> re = {h, 0, 0, 0, h, 0, 0, 0, 0}, im = {0, -h, 0, h, 0, 0, 0, 0, 0};
+    v.coupling_re.insert(v.coupling_re.end(), re.begin(), re.end());
+    v.coupling_im.insert(v.coupling_im.end(), im.begin(), im.end());
+  }
+  t.sort_by_energy();
+  fs::path p = fs::temp_directory_path() / "rc_mode_table_volume.h5";
+  rc::write_mode_table(t, p);
+  const auto r = rc::read_mode_table(p);
+  ASSERT_TRUE(r.volume_cavity.present());
+  EXPECT_DOUBLE_EQ(r.volume_cavity.tilt, 0.5);
+  EXPECT_DOUBLE_EQ(r.volume_cavity.coupling_re[0], 2.0544 / 2);  // sorted by E with its row
+  EXPECT_DOUBLE_EQ(r.volume_cavity.coupling_im[1], -2.0544 / 2);
+  fs::remove(p);
+  auto bad = t;
+  bad.volume_cavity.coupling_im[3] = 0;  // H_yx no longer conj(H_xy)
+  EXPECT_THROW(rc::write_mode_table(bad, p), std::runtime_error);
+  bad = t;
+  bad.volume_cavity.coupling_re[0] *= 2;  // H_xx + H_yy is not E
+  EXPECT_THROW(rc::write_mode_table(bad, p), std::runtime_error);
+  EXPECT_FALSE(fs::exists(p));
+}
