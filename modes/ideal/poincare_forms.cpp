@@ -1,5 +1,7 @@
 #include "poincare_forms.hpp"
 
+#include "sparsity.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -9,24 +11,6 @@ namespace rc::modes {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-// Exact nonzero count per row from element connectivity, so that assembly never reallocates.
-std::vector<PetscInt> row_nonzeros(const FESpace& space) {
-  std::vector<std::vector<int>> cols(space.ndof());
-  for (std::size_t e = 0; e < space.num_elements(); ++e) {
-    auto dofs = space.element_dofs(e);
-    for (int i : dofs)
-      if (i >= 0)
-        for (int j : dofs)
-          if (j >= 0) cols[i].push_back(j);
-  }
-  std::vector<PetscInt> nnz(space.ndof());
-  for (int i = 0; i < space.ndof(); ++i) {
-    std::sort(cols[i].begin(), cols[i].end());
-    nnz[i] = std::unique(cols[i].begin(), cols[i].end()) - cols[i].begin();
-  }
-  return nnz;
-}
 
 PMat create_matrix(int n, const std::vector<PetscInt>& nnz) {
   PMat A;

@@ -1,27 +1,12 @@
 #include "volume_forms.hpp"
 
+#include "sparsity.hpp"
+
 #include <algorithm>
 #include <vector>
 
 namespace rc::modes {
 namespace {
-
-std::vector<PetscInt> row_nonzeros(const VolumeSpace& space) {
-  std::vector<std::vector<int>> cols(space.ndof());
-  for (std::size_t e = 0; e < space.num_elements(); ++e) {
-    const auto dofs = space.element_dofs(e);
-    for (int i : dofs)
-      if (i >= 0)
-        for (int j : dofs)
-          if (j >= 0) cols[i].push_back(j);
-  }
-  std::vector<PetscInt> nnz(space.ndof());
-  for (int i = 0; i < space.ndof(); ++i) {
-    std::sort(cols[i].begin(), cols[i].end());
-    nnz[i] = std::unique(cols[i].begin(), cols[i].end()) - cols[i].begin();
-  }
-  return nnz;
-}
 
 PMat create_matrix(int n, const std::vector<PetscInt>& nnz) {
   PMat A;
