@@ -19,7 +19,7 @@ namespace {
 namespace occ = gmsh::model::occ;
 
 constexpr int kMaxOrder = 6;
-constexpr double kDefaultSizeFraction = 0.25;  // default size = this × smallest dimension
+constexpr double kDefaultSizeFraction = 0.4;  // default size = this × smallest dimension (or half-side of a file)
 constexpr double kMaxCellsPerExtent = 400;      // finer would mean > ~1e8 tetrahedra
 
 std::string number(double v) {

@@ -37,7 +37,8 @@ struct VolumeMesh {
 
 // Builds, meshes and returns the cavity. Throws std::runtime_error with a one-line cause on bad input (unknown kind,
 // a missing or non-positive dimension, an unreadable file, no 3-D "fluid", an inverted element).
-// options.order 1..4 (3-D elements above 4 cost more than they give), options.size 0 = 1/4 of the smallest dimension.
+// options.order 1..6, options.size 0 = 0.4 of the smallest dimension (semi-axis, radius, half-height; a file's
+// smallest half-side of its bounding box), options.wall_size > 0 grades the size towards the wall.
 VolumeMesh mesh_volume(const VolumeShapeSpec& shape, const MeshOptions& options);
 
 // The checks of mesh_volume on the shape alone.

@@ -77,7 +77,6 @@ VolumeTableRequest VolumeCommands::resolve() const {
   if (!(floor_ > 0 && floor_ < 1)) throw std::runtime_error("--floor must be in (0, 1)");
   r.mesh.order = order_;
   r.mesh.size = size_;
-  if (size_ == 0 && ellipsoid_->parsed()) r.mesh.size = kVolumeDefaultSizeFraction * std::min({a_, b_, c_});
   r.mesh.wall_size = wall_size_;
   r.mesh.wall_growth = wall_growth_;
   r.survey.floor = floor_;

@@ -21,9 +21,7 @@ struct VolumeTableResult {
   double sum_rule_mismatch = 0;  // max |Σ H over the rule − (I_f − J_zh)| / trace(I_f − J_zh)
 };
 
-// The element size taken when request.mesh.size is 0: 0.4 of a built-in shape's smallest dimension (docs/volume.md
-// §4); a file's own smallest half-side.
-inline constexpr double kVolumeDefaultSizeFraction = 0.4;
+// The order taken by the commands (docs/volume.md); the default size is the mesher's (geometry/volume_mesh.hpp).
 inline constexpr int kVolumeDefaultOrder = 4;
 
 VolumeTableResult make_volume_table(const VolumeTableRequest& request);

@@ -31,6 +31,7 @@ expect_error "missing semi-axis" "--c" "$BIN" ellipsoid --a 1 --b 1 -o out.h5
 expect_error "3-D order too high" "order 7 is outside 1..6" "$BIN" ellipsoid --a 1 --b 1 --c 1 --order 7 -o out.h5
 expect_error "infinite tilt" "tilt must be finite" "$BIN" ellipsoid --a 1 --b 1 --c 1 --tilt inf -o out.h5
 expect_error "bad floor" "--floor must be in (0, 1)" "$BIN" ellipsoid --a 1 --b 1 --c 1 --floor 2 -o out.h5
+expect_error "a mesh beyond the machine's memory" "more than this machine's" "$BIN" ellipsoid --a 1 --b 1 --c 1 --order 6 --mesh-size 0.12 -o out.h5
 expect_error "unreadable volume" "cannot read" "$BIN" volume "$work/none.geo" -o out.h5
 expect_error "volume of another kind" "expected a .geo" "$BIN" volume help.txt -o out.h5
 echo 'SetFactory("OpenCASCADE"); Box(1) = {0, 0, 0, 1, 1, 1};' > nogroup.geo
