@@ -86,6 +86,13 @@ VolumeTableRequest VolumeCommands::resolve() const {
 
 int VolumeCommands::run(const std::string& command_line) const {
   const VolumeTableRequest request = resolve();
+  // Every rank would compute the same table on its own and write the same file: refused until the 3-D matrices are
+  // distributed (docs/volume.md §6).
+  PetscMPIInt ranks = 1;
+  MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
+  if (ranks > 1)
+    throw std::runtime_error("3-D tables run on one process so far (docs/volume.md, \"What is not done yet\"): run "
+                             "without mpirun");
   VolumeTableResult result = make_volume_table(request);
   result.table.command_line = command_line;
   if (request.shape.kind == "volume") {

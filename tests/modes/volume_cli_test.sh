@@ -38,6 +38,16 @@ echo 'SetFactory("OpenCASCADE"); Box(1) = {0, 0, 0, 1, 1, 1};' > nogroup.geo
 expect_error "volume without a fluid group" "no 3D physical group named 'fluid'" "$BIN" volume nogroup.geo -o out.h5
 expect_error "tilt on a volume file" "--tilt" "$BIN" volume "$VOLUMES/box.geo" --tilt 10 -o out.h5
 expect_error "3-D response" "response takes an axisymmetric shape" "$BIN" response ellipsoid --a 1 --b 1 --c 1 -o out.csv
+if command -v mpirun > /dev/null; then
+  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+  rm -f out.h5
+  if ! mpirun -n 2 "$BIN" ellipsoid --a 1 --b 1 --c 1 --order 2 -o out.h5 > mpi.txt 2>&1 && grep -q "run on one process so far" mpi.txt &&
+     [ ! -f out.h5 ]; then
+    ok "mpirun -n 2 refused in one line, no file"
+  else
+    bad "mpirun -n 2: $(tail -2 mpi.txt)"
+  fi
+fi
 
 if [ -f ell.h5 ]; then
   cat > scene.toml <<SCENE
