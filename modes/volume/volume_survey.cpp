@@ -192,6 +192,38 @@ void dedupe(std::vector<VolumeMode>& modes, double width) {
   modes = std::move(kept);
 }
 
+// Every plain node that is not a mode yet, by a shift-and-invert run just off it (survey_volume_modes' step 3).
+void resolve_by_shifts(const VolumeVelocity& V, const VolumeForms& forms, const Eigen::MatrixXd& start,
+                       std::vector<VolumeMode> pending, double heavy, const VolumeSurveySettings& s, VolumeSurvey& out) {
+  const PoincareForms real = real_form_pencil(forms);
+  // Heaviest first; a node near a mode already found that carries 100 times its weight is that mode's leakage in
+  // the plain rule (its shift would only settle the same mode again, slowly, from afar).
+  std::sort(pending.begin(), pending.end(),
+            [](const auto& a, const auto& b) { return a.H.trace().real() > b.H.trace().real(); });
+  const double widest = s.window * std::pow(4.0, kWidenings);
+  for (const auto& node : pending) {
+    const bool leakage = std::any_of(out.modes.begin(), out.modes.end(), [&](const auto& m) {
+      return within_width(node.lambda, m.lambda, widest) && m.H.trace().real() >= 100 * node.H.trace().real();
+    });
+    const bool resolved = std::any_of(out.modes.begin(), out.modes.end(),
+                                      [&](const auto& m) { return within_width(node.lambda, m.lambda, s.window); });
+    if (leakage || resolved) continue;
+    // Just off the node: σ must not be an eigenvalue (Q(σ) singular).
+    const double sigma = node.lambda * (1 + 1e-4);
+    const RuleRun run = shift_invert_run(V, real, start, sigma, heavy, s);
+    ++out.shifts;
+    // An empty watch: nothing heavy near σ, the plain node was a Gauss average over light eigenvalues, not a mode.
+    for (const auto& m : run.watch) (settled(m, s) ? out.modes : out.unsettled).push_back(m);
+    dedupe(out.modes, s.merge_width);
+    dedupe(out.unsettled, s.merge_width);
+  }
+  // A cluster one shift left unsettled may have settled in another's window.
+  std::erase_if(out.unsettled, [&](const VolumeMode& u) {
+    return std::any_of(out.modes.begin(), out.modes.end(),
+                       [&](const auto& m) { return within_width(u.lambda, m.lambda, s.merge_width); });
+  });
+}
+
 }  // namespace
 
 Eigen::Matrix3d rotation_gram(const VolumeVelocity& V, const std::vector<Eigen::VectorXd>& w) {
@@ -229,30 +261,7 @@ VolumeSurvey survey_volume_modes(const VolumeVelocity& V, const StiffnessSolver&
   // the shift-and-invert run then resolves it.
   for (const auto& m : plain.watch) (settled(m, s) ? out.modes : pending).push_back(m);
 
-  if (!pending.empty()) {
-    const PoincareForms real = real_form_pencil(forms);
-    // Heaviest first; a node near a mode already found that carries 100 times its weight is that mode's leakage in
-    // the plain rule (its shift would only settle the same mode again, slowly, from afar).
-    std::sort(pending.begin(), pending.end(),
-              [](const auto& a, const auto& b) { return a.H.trace().real() > b.H.trace().real(); });
-    const double widest = s.window * std::pow(4.0, kWidenings);
-    for (const auto& node : pending) {
-      const bool leakage = std::any_of(out.modes.begin(), out.modes.end(), [&](const auto& m) {
-        return within_width(node.lambda, m.lambda, widest) && m.H.trace().real() >= 100 * node.H.trace().real();
-      });
-      const bool resolved = std::any_of(out.modes.begin(), out.modes.end(),
-                                        [&](const auto& m) { return within_width(node.lambda, m.lambda, s.window); });
-      if (leakage || resolved) continue;
-      // Just off the node: σ must not be an eigenvalue (Q(σ) singular).
-      const double sigma = node.lambda * (1 + 1e-4);
-      const RuleRun run = shift_invert_run(V, real, start, sigma, heavy, s);
-      ++out.shifts;
-      // Nothing heavy near σ: the plain node was a Gauss-rule average over light eigenvalues, not a mode.
-      for (const auto& m : run.watch) (settled(m, s) ? out.modes : out.unsettled).push_back(m);
-      dedupe(out.modes, s.merge_width);
-      dedupe(out.unsettled, s.merge_width);
-    }
-  }
+  if (!pending.empty()) resolve_by_shifts(V, forms, start, std::move(pending), heavy, s, out);
   for (const auto& m : plain.all) {
     out.total += m.H;
     if (std::abs(m.lambda) <= s.lambda_floor) out.geostrophic += m.H;
