@@ -93,7 +93,8 @@ int VolumeCommands::run(const std::string& command_line) const {
   if (ranks > 1)
     throw std::runtime_error("3-D tables run on one process so far (docs/volume.md, \"What is not done yet\"): run "
                              "without mpirun");
-  VolumeTableResult result = make_volume_table(request);
+  VolumeTableResult result =
+      make_volume_table(request, [](const std::string& line) { if (is_root_rank()) std::cerr << line << "\n"; });
   result.table.command_line = command_line;
   if (request.shape.kind == "volume") {
     result.table.geometry_source = request.shape.file.filename().string();

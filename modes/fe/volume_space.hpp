@@ -19,7 +19,7 @@ struct VolumeQuadrature {
 
 class VolumeSpace {
  public:
-  // quadrature_degree = 0 picks 2·order + 1 (curved boundary elements; measured enough in docs/volume.md).
+  // quadrature_degree = 0 picks 2·order + 1 (curved boundary elements; measured enough: docs/volume.md §1).
   explicit VolumeSpace(geometry::VolumeMesh mesh, int quadrature_degree = 0);
 
   int ndof() const { return ndof_; }

@@ -1,6 +1,7 @@
 #include "volume_survey.hpp"
 
 #include "lanczos.hpp"
+#include "progress.hpp"
 
 #include <fmt/format.h>
 
@@ -210,6 +211,7 @@ void resolve_by_shifts(const VolumeVelocity& V, const VolumeForms& forms, const 
     if (leakage || resolved) continue;
     // Just off the node: σ must not be an eigenvalue (Q(σ) singular).
     const double sigma = node.lambda * (1 + 1e-4);
+    progress_tick();
     const RuleRun run = shift_invert_run(V, real, start, sigma, heavy, s);
     ++out.shifts;
     // An empty watch: nothing heavy near σ, the plain node was a Gauss average over light eigenvalues, not a mode.

@@ -68,10 +68,14 @@ std::string solver_text(const VolumeSurvey& s) {
 
 }  // namespace
 
-VolumeTableResult make_volume_table(const VolumeTableRequest& request) {
+VolumeTableResult make_volume_table(const VolumeTableRequest& request,
+                                    const std::function<void(const std::string&)>& progress) {
   const auto start = std::chrono::steady_clock::now();
+  Progress lines(progress);
+  lines.step("meshing the 3-D cavity");
   VolumeSpace space(geometry::mesh_volume(request.shape, request.mesh));
   refuse_beyond_memory(space);
+  lines.step(fmt::format("forms and the stiffness factorisation: {} unknowns", space.ndof()));
 
   const VolumeIntegrals fluid = integrate_volume(space);
   const VolumeForms forms = assemble_volume_forms(space);
@@ -79,6 +83,7 @@ VolumeTableResult make_volume_table(const VolumeTableRequest& request) {
   const VolumeVelocity V(space, fluid.centroid);
   const Tensor3 J = zhukovsky_tensor(V, M);
   VolumeTableResult out;
+  lines.step("block Lanczos survey of the coupling measure");
   out.survey = survey_volume_modes(V, M, forms, request.survey);
 
   ModeTable& t = out.table;

@@ -7,6 +7,9 @@
 #include "volume_mesh.hpp"
 #include "volume_survey.hpp"
 
+#include <functional>
+#include <string>
+
 namespace rc::modes {
 
 struct VolumeTableRequest {
@@ -24,6 +27,8 @@ struct VolumeTableResult {
 // The order taken by the commands (docs/volume.md); the default size is the mesher's (geometry/volume_mesh.hpp).
 inline constexpr int kVolumeDefaultOrder = 4;
 
-VolumeTableResult make_volume_table(const VolumeTableRequest& request);
+// `progress` receives a line per phase and at least every 5 s while working (fe/progress.hpp); none by default.
+VolumeTableResult make_volume_table(const VolumeTableRequest& request,
+                                    const std::function<void(const std::string&)>& progress = {});
 
 }  // namespace rc::modes
