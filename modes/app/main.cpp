@@ -580,6 +580,15 @@ int parse_command_line(CLI::App& app, std::vector<std::string>& words) {
   return -1;
 }
 
+// `cavity-modes ellipsoid|volume ...`: a 3-D cavity's table (docs/volume.md).
+int run_volume(const rc::modes::VolumeCommands& volumes, bool response, std::vector<std::string>& petsc_words,
+               const std::string& command_line) {
+  if (response) throw CommandLineError("response takes an axisymmetric shape (3-D cavities: tables only so far)");
+  PetscArguments petsc(petsc_words);
+  rc::modes::PetscSession session(&petsc.argc, &petsc.argv);
+  return volumes.run(command_line);
+}
+
 int run(int argc, char** argv) {
   const std::string command_line = rc::modes::quoted_command_line(std::vector<std::string>(argv, argv + argc));
   if (const std::string empty = rc::empty_argument_error(argc, argv); !empty.empty()) {
@@ -621,12 +630,7 @@ int run(int argc, char** argv) {
   if (const int code = parse_command_line(app, args.ours); code >= 0) return code;
   if (info->parsed()) return run_info(info_request);
   if (compare->parsed()) return run_compare(compare_request);
-  if (volumes.parsed()) {
-    if (response) throw CommandLineError("response takes an axisymmetric shape (3-D cavities: tables only so far)");
-    PetscArguments petsc(args.petsc);
-    rc::modes::PetscSession session(&petsc.argc, &petsc.argv);
-    return volumes.run(command_line);
-  }
+  if (volumes.parsed()) return run_volume(volumes, response, args.petsc, command_line);
 
   CLI::App* table_command = shapes.parsed()->app;
   refuse_extras(*table_command, response);
