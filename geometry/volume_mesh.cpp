@@ -31,13 +31,13 @@ std::string number(double v) {
 
 const std::map<std::string, std::vector<std::string>>& required_dims() {
   static const std::map<std::string, std::vector<std::string>> dims = {
-      {"ellipsoid", {"a", "b", "c"}}, {"cylinder", {"radius", "height"}}, {"volume", {}}};
+      {"ellipsoid", {"a", "b", "c"}}, {"volume", {}}};
   return dims;
 }
 
 double smallest_dimension(const VolumeShapeSpec& shape) {
   double d = INFINITY;
-  for (const auto& [name, v] : shape.dims) d = std::min(d, name == "height" ? v / 2 : v);
+  for (const auto& [name, v] : shape.dims) d = std::min(d, v);
   return d;
 }
 
@@ -69,14 +69,8 @@ void check_options(const MeshOptions& options) {
 // The fluid volume of a built-in shape, with its own axis along z, then tilted about x.
 int build_shape(const VolumeShapeSpec& shape) {
   const auto& d = shape.dims;
-  int tag = -1;
-  if (shape.kind == "ellipsoid") {
-    tag = occ::addSphere(0, 0, 0, 1);
-    occ::dilate({{3, tag}}, 0, 0, 0, d.at("a"), d.at("b"), d.at("c"));
-  } else {
-    const double h = d.at("height");
-    tag = occ::addCylinder(0, 0, -h / 2, 0, 0, h, d.at("radius"));
-  }
+  const int tag = occ::addSphere(0, 0, 0, 1);
+  occ::dilate({{3, tag}}, 0, 0, 0, d.at("a"), d.at("b"), d.at("c"));
   if (shape.tilt != 0) occ::rotate({{3, tag}}, 0, 0, 0, 1, 0, 0, shape.tilt);
   occ::synchronize();
   gmsh::model::setPhysicalName(3, gmsh::model::addPhysicalGroup(3, {tag}), "fluid");
@@ -245,7 +239,7 @@ void check_jacobians(const VolumeMesh& m, const std::string& where) {
 void check_volume_shape(const VolumeShapeSpec& shape) {
   const auto it = required_dims().find(shape.kind);
   if (it == required_dims().end())
-    throw std::runtime_error("unknown 3-D shape '" + shape.kind + "' (expected ellipsoid, cylinder or volume)");
+    throw std::runtime_error("unknown 3-D shape '" + shape.kind + "' (expected ellipsoid or volume)");
   for (const auto& name : it->second) {
     const auto d = shape.dims.find(name);
     if (d == shape.dims.end()) throw std::runtime_error(shape.kind + ": missing dimension '" + name + "'");

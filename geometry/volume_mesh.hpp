@@ -3,10 +3,9 @@
 // from the fluid's centroid afterwards.
 //
 //   ellipsoid  semi-axes a (x), b (y), c (z)      centre at the origin
-//   cylinder   radius, height (full)              axis z, z in [-height/2, height/2]
 //   volume     a user .geo/.msh file with a 3-D physical group "fluid", or a CAD .step/.stp/.brep file whose
 //              every volume is fluid (gmsh's OpenCASCADE kernel)
-// tilt rotates a built-in shape's own axis about x by that angle (radians) against the spin axis z.
+// tilt rotates the ellipsoid's own axis about x by that angle (radians) against the spin axis z.
 #pragma once
 
 #include "meridian_mesh.hpp"
@@ -20,8 +19,8 @@
 namespace rc::geometry {
 
 struct VolumeShapeSpec {
-  std::string kind;                    // ellipsoid | cylinder | volume
-  std::map<std::string, double> dims;  // ellipsoid: a, b, c; cylinder: radius, height
+  std::string kind;                    // ellipsoid | volume
+  std::map<std::string, double> dims;  // ellipsoid: a, b, c
   std::filesystem::path file;          // volume only
   double tilt = 0.0;                   // radians, built-in shapes only
 };
@@ -37,7 +36,7 @@ struct VolumeMesh {
 
 // Builds, meshes and returns the cavity. Throws std::runtime_error with a one-line cause on bad input (unknown kind,
 // a missing or non-positive dimension, an unreadable file, no 3-D "fluid", an inverted element).
-// options.order 1..6, options.size 0 = 0.4 of the smallest dimension (semi-axis, radius, half-height; a file's
+// options.order 1..6, options.size 0 = 0.4 of the smallest dimension (semi-axis; a file's
 // smallest half-side of its bounding box), options.wall_size > 0 grades the size towards the wall.
 VolumeMesh mesh_volume(const VolumeShapeSpec& shape, const MeshOptions& options);
 

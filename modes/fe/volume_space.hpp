@@ -26,15 +26,12 @@ class VolumeSpace {
   int order() const { return mesh_.order; }
   int nodes_per_element() const { return mesh_.nodes_per_element; }
   std::size_t num_elements() const { return mesh_.num_tetrahedra(); }
-  std::size_t num_quadrature_points() const { return num_elements() * ref_.weights.size(); }
   const geometry::VolumeMesh& mesh() const { return mesh_; }
 
   // Global dof of each local node of element e; -1 for the pinned node.
   std::span<const int> element_dofs(std::size_t e) const {
     return {dofs_.data() + e * mesh_.nodes_per_element, static_cast<std::size_t>(mesh_.nodes_per_element)};
   }
-  // Node of each dof.
-  int dof_node(int dof) const { return dof + 1; }
 
   // Fills `out` with the quadrature data of element e (reused buffer). Throws on a non-positive Jacobian.
   void quadrature(std::size_t e, VolumeQuadrature& out) const;

@@ -228,13 +228,6 @@ void resolve_by_shifts(const VolumeVelocity& V, const VolumeForms& forms, const 
 
 }  // namespace
 
-Eigen::Matrix3d rotation_gram(const VolumeVelocity& V, const std::vector<Eigen::VectorXd>& w) {
-  Eigen::Matrix3d g;
-  for (int j = 0; j < 3; ++j)
-    for (int k = 0; k < 3; ++k) g(j, k) = w[j].dot(V.weights().cwiseProduct(w[k]));
-  return g;
-}
-
 VolumeSurvey survey_volume_modes(const VolumeVelocity& V, const StiffnessSolver& M, const VolumeForms& forms,
                                  const VolumeSurveySettings& s) {
   Eigen::MatrixXd start(V.size(), 6);
@@ -271,7 +264,6 @@ VolumeSurvey survey_volume_modes(const VolumeVelocity& V, const StiffnessSolver&
   const auto transverse = [](const VolumeMode& m) { return (m.H(0, 0) + m.H(1, 1)).real(); };
   std::sort(out.modes.begin(), out.modes.end(), [&](const auto& a, const auto& b) { return transverse(a) > transverse(b); });
   out.columns = plain.columns;
-  out.exhausted = plain.exhausted;
   return out;
 }
 

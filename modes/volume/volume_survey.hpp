@@ -57,11 +57,7 @@ struct VolumeSurvey {
   Hermitian3 total = Hermitian3::Zero();        // Σ H over every node (= Gram(w))
   Hermitian3 geostrophic = Hermitian3::Zero();  // Σ H over |λ| <= lambda_floor
   int columns = 0;
-  bool exhausted = false;
 };
-
-// Gram matrix of the three real fields w_k (the transverse and axial P_H(e_k × r)).
-Eigen::Matrix3d rotation_gram(const VolumeVelocity& V, const std::vector<Eigen::VectorXd>& w);
 
 // The plain rule first (A itself: an isolated mode such as an ellipsoid's spin-over settles in a few blocks); a heavy
 // node that does not settle is then resolved by shift-and-invert block Lanczos on (A − σ)⁻¹ with σ just off it,
