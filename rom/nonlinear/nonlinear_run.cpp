@@ -83,6 +83,10 @@ NonlinearChain nonlinear_chain(const Scene& scene) {
   for (std::size_t k = 0; k < n; ++k) {
     const BodySpec& b = scene.bodies[k];
     const BodyModel& t = model.bodies[k];
+    if (b.Ixy != 0 || b.Ixz != 0 || b.Iyz != 0)
+      throw SceneError(scene.file.string() + ": body[" + std::to_string(k + 1) + "].Ixy: products of inertia are in "
+                       "the general linear chain only so far (chain-rom spectrum); the nonlinear chain takes principal "
+                       "axes (A, B, C)");
     // The cavity is axisymmetric: its frozen fluid adds the same to both transverse moments.
     ChainBody body;
     body.mass = t.m;

@@ -239,12 +239,16 @@ AeroSpec parse_aero(Ctx& c, const toml::table& at, const std::string& wa) {
 // [[body]] k of n (0-based): its inertias, spin, cavity and moments.
 BodySpec parse_body(Ctx& c, const toml::table& bt, std::size_t k, std::size_t n, const std::filesystem::path& base) {
   const std::string w = "body[" + std::to_string(k + 1) + "]";
-  check_keys(c, bt, w, {"mass", "A", "B", "C", "com", "next_joint", "spin", "cavity", "moment", "force", "aero"});
+  check_keys(c, bt, w, {"mass", "A", "B", "C", "Ixy", "Ixz", "Iyz", "com", "next_joint", "spin", "cavity", "moment",
+                         "force", "aero"});
   BodySpec b;
   b.mass = *get_number(c, bt, "mass", w + ".mass", Sign::nonneg, true);
   b.A = *get_number(c, bt, "A", w + ".A", Sign::nonneg, true);
   b.B = get_number(c, bt, "B", w + ".B", Sign::nonneg, false);
   b.C = *get_number(c, bt, "C", w + ".C", Sign::nonneg, true);
+  b.Ixy = get_number(c, bt, "Ixy", w + ".Ixy", Sign::any, false).value_or(0.0);
+  b.Ixz = get_number(c, bt, "Ixz", w + ".Ixz", Sign::any, false).value_or(0.0);
+  b.Iyz = get_number(c, bt, "Iyz", w + ".Iyz", Sign::any, false).value_or(0.0);
   b.com = *get_number(c, bt, "com", w + ".com", Sign::any, true);
   auto nj = get_number(c, bt, "next_joint", w + ".next_joint", Sign::any, k + 1 < n);
   b.next_joint = nj.value_or(0.0);

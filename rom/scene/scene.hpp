@@ -61,8 +61,13 @@ struct AeroSpec {
 struct BodySpec {
   double mass = 0;        // shell mass
   double A = 0;           // shell transverse inertia about O_k
-  std::optional<double> B;  // the second transverse moment about O_k (nonlinear model only; default A)
+  std::optional<double> B;  // the second transverse moment about O_k (default A; B != A: the general chain or the
+                            // nonlinear model, docs/rom.md "Bodies and tanks without axial symmetry")
   double C = 0;           // shell axial inertia
+  // The shell's inertia tensor's off-diagonal entries about O_k in its axes (kg m², I_xy = −∫xy dm): a tank tilted
+  // against the spin axis is balanced by them (the general chain only; 0 by default).
+  double Ixy = 0, Ixz = 0, Iyz = 0;
+  bool asymmetric() const { return (B && *B != A) || Ixy != 0 || Ixz != 0 || Iyz != 0; }
   double com = 0;         // O_k -> shell centre of mass
   double next_joint = 0;  // s_k
   double spin = 0;        // omega_k0, rad/s

@@ -1,0 +1,173 @@
+#include "general_chain.hpp"
+
+#include "general_system.hpp"
+
+#include <cmath>
+#include <optional>
+#include <sstream>
+#include <string>
+
+namespace rc::rom {
+namespace {
+
+[[noreturn]] void fail(const Scene& s, const std::string& key, const std::string& cause) {
+  throw SceneError(s.file.string() + ": " + key + ": " + cause);
+}
+
+std::string body_key(int k) { return "body[" + std::to_string(k + 1) + "]"; }
+
+const rc::ModeTable& read_table(const Scene& scene, int k, TableCache& tables) {
+  try {
+    return tables.get(scene.bodies[k].cavity->table);
+  } catch (const std::exception& e) {
+    fail(scene, body_key(k) + ".cavity.table", e.what());
+  }
+}
+
+// The general chain's scope so far: one spin for all (else the coefficients are periodic in every common frame), the
+// chain's own inertia, gravity, joints and ideal modal tanks.
+void require_general_scene(const Scene& scene) {
+  const std::string later = " (docs/rom.md, \"Bodies and tanks without axial symmetry\")";
+  if (scene.field) fail(scene, "field", "a force field is not in the chain without axial symmetry yet" + later);
+  for (int k = 0; k < static_cast<int>(scene.size()); ++k) {
+    const BodySpec& b = scene.bodies[k];
+    const double w0 = scene.bodies[0].spin;
+    if (std::abs(b.spin - w0) > 1e-12 * std::abs(w0))
+      fail(scene, body_key(k) + ".spin", "differs from body[1]'s: a chain without axial symmetry whose bodies spin at "
+           "different rates has periodic coefficients in every frame (a Floquet problem), not modelled yet; give "
+           "every body the same spin" + later);
+    if (b.aero) fail(scene, body_key(k) + ".aero", "aerodynamic moments are not in the chain without axial symmetry yet" + later);
+    if (b.moment) fail(scene, body_key(k) + ".moment", "external moments are not in the chain without axial symmetry yet" + later);
+    if (b.force) fail(scene, body_key(k) + ".force", "external forces are not in the chain without axial symmetry yet" + later);
+    if (!b.cavity) continue;
+    const CavitySpec& cav = *b.cavity;
+    if (cav.viscosity) fail(scene, body_key(k) + ".cavity.viscosity", "viscous tanks are not in the chain without axial symmetry yet" + later);
+    if (cav.galerkin) fail(scene, body_key(k) + ".cavity.reduction", "the Galerkin reduction is not in the chain without axial symmetry yet" + later);
+    if (cav.static_correction) fail(scene, body_key(k) + ".cavity.static_correction", "the static correction is not in the chain without axial symmetry yet" + later);
+    if (!cav.companion.empty()) fail(scene, body_key(k) + ".cavity.companion", "companion tables are not in the chain without axial symmetry yet" + later);
+  }
+}
+
+// Shell k's inertia tensor about O_k in its axes.
+Eigen::Matrix3d shell_inertia(const BodySpec& b) {
+  Eigen::Matrix3d I;
+  I << b.A, b.Ixy, b.Ixz, b.Ixy, b.B.value_or(b.A), b.Iyz, b.Ixz, b.Iyz, b.C;
+  return I;
+}
+
+// The scene as (26) sees it: every 3-D tank's frozen fluid folded into its shell (mass, centre of mass, inertia), each
+// body's transverse inertia replaced by its mean Ā_k. Returns each body's full tensor (3-D tanks' frozen fluid in it,
+// an axisymmetric tank's left to the chain model) in `inertia` and the 3-D tanks in `tanks`.
+Scene axisymmetric_part(const Scene& scene, TableCache& tables, std::vector<Eigen::Matrix3d>& inertia,
+                        std::vector<std::optional<VolumeTank>>& tanks) {
+  Scene folded = scene;
+  for (int k = 0; k < static_cast<int>(scene.size()); ++k) {
+    BodySpec& b = folded.bodies[k];
+    Eigen::Matrix3d I = shell_inertia(b);
+    tanks.emplace_back();
+    if (b.cavity) {
+      const rc::ModeTable& t = read_table(scene, k, tables);
+      if (t.free_surface.present())
+        fail(scene, body_key(k) + ".cavity.table", "a partially filled tank is not in the chain without axial "
+             "symmetry yet (docs/rom.md, \"Bodies and tanks without axial symmetry\")");
+      if (t.volume_cavity.present()) {
+        const VolumeTank tank = volume_tank(scene, k, t);
+        b.com = (b.mass * b.com + tank.mass * tank.center) / (b.mass + tank.mass);
+        b.mass += tank.mass;
+        I += tank.inertia;
+        b.cavity.reset();
+        tanks.back() = tank;
+      }
+    }
+    b.A = 0.5 * (I(0, 0) + I(1, 1));
+    b.B.reset();
+    b.C = I(2, 2);
+    b.Ixy = b.Ixz = b.Iyz = 0;
+    const double products = std::hypot(I(0, 2), I(1, 2));
+    if (products > 1e-9 * I.trace()) {
+      std::ostringstream os;
+      os << "the body with its frozen liquid has products of inertia I_xz, I_yz = " << I(0, 2) << ", " << I(1, 2)
+         << " kg m^2 about its joint: it cannot spin steadily about its axis; balance them with the shell's Ixz, Iyz";
+      fail(scene, body_key(k) + ".Ixz", os.str());
+    }
+    inertia.push_back(I);
+  }
+  return folded;
+}
+
+// A 2 × 2 block of the real form: the complex scalar a + ib acting on v = q_x − i q_y is a I − b J on q.
+Eigen::Matrix2d real_block(double a, double b) {
+  Eigen::Matrix2d m;
+  m << a, b, -b, a;
+  return m;
+}
+
+// (26) carried into the turning frame (u = e^{−iω0t} v): M v̈ + (i(G − 2ω0 M) + D) v̇ + (K − ω0² M + ω0 G − iω0 D) v,
+// each complex coefficient as its real block; then each body's anisotropy and, with axial rates, the spins' block
+// (axial_rotation.hpp: C_k ψ̈_k + axial friction).
+void set_matrices(const ChainModel& cm, const std::vector<Eigen::Matrix3d>& inertia, GeneralChain& g) {
+  const int n = g.n, d = g.dim_q();
+  const double w = g.spin;
+  g.M.setZero(d, d);
+  g.C.setZero(d, d);
+  g.K.setZero(d, d);
+  for (int k = 0; k < n; ++k)
+    for (int i = 0; i < n; ++i) {
+      const double G = (k == i) ? cm.G[k] : 0.0, M = cm.M(k, i), D = cm.D(k, i);
+      g.M.block<2, 2>(2 * k, 2 * i) = real_block(M, 0);
+      g.C.block<2, 2>(2 * k, 2 * i) = real_block(D, G - 2 * w * M);
+      g.K.block<2, 2>(2 * k, 2 * i) = real_block(cm.K(k, i) - w * w * M + w * G, -w * D);
+    }
+  for (int k = 0; k < n; ++k) {
+    const Eigen::Matrix2d I_tt = inertia[k].topLeftCorner<2, 2>();
+    const Eigen::Matrix2d Delta = I_tt - 0.5 * I_tt.trace() * Eigen::Matrix2d::Identity();
+    g.M.block<2, 2>(2 * k, 2 * k) -= Delta;
+    g.K.block<2, 2>(2 * k, 2 * k) -= w * w * Delta;
+  }
+  if (!g.axial) return;
+  for (int k = 0; k < n; ++k) g.M(2 * n + k, 2 * n + k) = cm.bodies[k].C;
+  g.C.bottomRightCorner(n, n) = cm.axial.D;
+}
+
+}  // namespace
+
+bool needs_general_chain(const Scene& scene, TableCache& tables) {
+  for (int k = 0; k < static_cast<int>(scene.size()); ++k) {
+    const BodySpec& b = scene.bodies[k];
+    if (b.asymmetric()) return true;
+    if (b.cavity && read_table(scene, k, tables).volume_cavity.present()) return true;
+  }
+  return false;
+}
+
+GeneralChain build_general_chain(const Scene& scene, TableCache* tables) {
+  require_general_scene(scene);
+  TableCache own;
+  TableCache& cache = tables ? *tables : own;
+  std::vector<Eigen::Matrix3d> inertia;
+  std::vector<std::optional<VolumeTank>> tanks;
+  const Scene folded = axisymmetric_part(scene, cache, inertia, tanks);
+  const ChainModel cm = build_model(folded, &cache);
+  GeneralChain g;
+  g.n = cm.n;
+  g.spin = scene.bodies[0].spin;
+  g.free_chain = scene.free_chain;
+  for (const auto& t : tanks) g.axial = g.axial || t.has_value();
+  g.dissipative = cm.has_friction() || (g.axial && cm.axial.D.cwiseAbs().maxCoeff() > 0);
+  // A body's tilt modes of an axisymmetric tank: H_xx = H_yy = E/2, H_xy = −iE/2 for an m = 1 mode (docs/volume.md
+  // §1; measured on a 3-D spheroid's table), so c = √(E/2) (1, i, 0).
+  for (int k = 0; k < g.n; ++k) {
+    for (const FluidMode& md : cm.modes)
+      if (md.body == k)
+        g.modes.push_back({k, md.table_index, md.lambda,
+                           std::sqrt(md.E / 2) * Eigen::Vector3cd(1, std::complex<double>(0, 1), 0)});
+    g.geostrophic.push_back(tanks[k] ? tanks[k]->geostrophic : Eigen::Matrix3d::Zero());
+    if (tanks[k]) g.modes.insert(g.modes.end(), tanks[k]->modes.begin(), tanks[k]->modes.end());
+    g.coverage.push_back(tanks[k] ? tanks[k]->coverage : cm.bodies[k].has_fluid ? cm.bodies[k].coverage : 1.0);
+  }
+  set_matrices(cm, inertia, g);
+  check_effective_inertia(scene, g);
+  return g;
+}
+
+}  // namespace rc::rom

@@ -1,0 +1,47 @@
+// The linear chain without axial symmetry (docs/rom.md, "Bodies and tanks without axial symmetry"): bodies with
+// B ≠ A or products of inertia, tanks from 3-D tables (docs/volume.md). Such a body's coefficients are constant only
+// in a frame that turns with it, so the chain is written in the frame F turning at the bodies' common spin ω0 about the
+// vertical, in real coordinates: q_k = (n_x, n_y) the tip of body k's axis in F (u_k = e^{−iω0t}(q_x − i q_y), u the
+// complex tilt of (26)), and, when a tank ties the tilt to the spin, the bodies' axial rates ψ̇_k. Without the fluid's
+// modes the chain is the second-order system
+//   M Q̈ + C Q̇ + K Q = 0,
+// (26) carried into F for the axisymmetric part (docs/rom.md gives the algebra) plus each body's anisotropy
+// Δ_k = I_tt − Ā_k I (the transverse inertia tensor less its mean): −Δ_k (q̈_k + ω0² q_k). The modes enter through
+// each body's relative angular momentum h_k (general_system.hpp).
+#pragma once
+
+#include "chain_model.hpp"
+#include "scene.hpp"
+#include "volume_tank.hpp"
+
+#include <Eigen/Dense>
+
+#include <vector>
+
+namespace rc::rom {
+
+struct GeneralChain {
+  int n = 0;
+  double spin = 0;          // ω0 (rad/s), common to every body
+  bool axial = false;       // the axial rates are coordinates (some tank is 3-D: its modes may couple to the spin)
+  bool free_chain = false;
+  Eigen::MatrixXd M, C, K;  // in Q = (q_1, …, q_n[, ψ_1, …, ψ_n]): the frozen fluid's inertia included, no modes
+  std::vector<Eigen::Matrix3d> geostrophic;  // per body: the 3-D tanks' λ = 0 weight (kg m²), else 0
+  std::vector<GeneralMode> modes;            // every tank's kept modes, body by body
+  std::vector<double> coverage;              // per body with a tank: its kept share of the sum rule (1 without tank)
+  bool dissipative = false;                  // joint or axial friction: roots leave the real axis
+  int dim_q() const { return (axial ? 3 : 2) * n; }
+  int n_modes() const { return static_cast<int>(modes.size()); }
+};
+
+// True when the scene needs the general chain: some body with B ≠ A or products of inertia, or a tank whose table is
+// 3-D. Reads the tables through `tables` (throws SceneError naming the key on a table that cannot be read).
+bool needs_general_chain(const Scene& scene, TableCache& tables);
+
+// Throws SceneError naming the key for what the general chain does not take yet (different spins — a periodic
+// problem —, aerodynamic, external moments and forces, fields, viscous or Galerkin tanks, partial fills), for a body
+// whose products of inertia with its frozen fluid do not vanish (it cannot spin steadily about its axis), and when the
+// effective inertia with the modes' share taken out is not positive definite.
+GeneralChain build_general_chain(const Scene& scene, TableCache* tables = nullptr);
+
+}  // namespace rc::rom

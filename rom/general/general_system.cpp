@@ -1,0 +1,124 @@
+#include "general_system.hpp"
+
+#include "balancing.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace rc::rom {
+namespace {
+
+// The maps of general_system.hpp between the coordinates Q, the bodies' 3-vectors (3 per body) and the fluid's Z.
+struct FluidMaps {
+  Eigen::MatrixXd P, R;    // 3n × dim_q: δω = P Q̇ + R Q
+  Eigen::MatrixXd S;       // dim_q × 3n: ω0 on each body's transverse components
+  Eigen::MatrixXd N, G;    // 3n × 3n, block diagonal: the fluid that does not follow the body; the geostrophic part
+  Eigen::MatrixXd W;       // 3n × 2m: Z ↦ h = Σ 2 Re(z c)
+  Eigen::MatrixXd Chat;    // 2m × 3n: x ↦ (Re, Im) of c̄·x
+  Eigen::MatrixXd Lambda;  // 2m × 2m: z ↦ iλ z
+};
+
+FluidMaps fluid_maps(const GeneralChain& g) {
+  const int n = g.n, d = g.dim_q(), m = g.n_modes();
+  const double w = g.spin;
+  FluidMaps f;
+  f.P.setZero(3 * n, d);
+  f.R.setZero(3 * n, d);
+  f.S.setZero(d, 3 * n);
+  f.N.setZero(3 * n, 3 * n);
+  f.G.setZero(3 * n, 3 * n);
+  Eigen::Matrix2d J;
+  J << 0, -1, 1, 0;
+  for (int k = 0; k < n; ++k) {
+    f.P.block<2, 2>(3 * k, 2 * k) = J;
+    if (g.axial) f.P(3 * k + 2, 2 * n + k) = 1;
+    f.R.block<2, 2>(3 * k, 2 * k) = -w * Eigen::Matrix2d::Identity();
+    f.S.block<2, 2>(2 * k, 3 * k) = w * Eigen::Matrix2d::Identity();
+    f.G.block<3, 3>(3 * k, 3 * k) = g.geostrophic[k];
+  }
+  f.N = f.G;
+  f.W.setZero(3 * n, 2 * m);
+  f.Chat.setZero(2 * m, 3 * n);
+  f.Lambda.setZero(2 * m, 2 * m);
+  for (int l = 0; l < m; ++l) {
+    const GeneralMode& md = g.modes[l];
+    const Eigen::Vector3d re = md.c.real(), im = md.c.imag();
+    f.N.block<3, 3>(3 * md.body, 3 * md.body) += 2 * (re * re.transpose() + im * im.transpose());
+    f.W.block<3, 1>(3 * md.body, 2 * l) = 2 * re;
+    f.W.block<3, 1>(3 * md.body, 2 * l + 1) = -2 * im;
+    f.Chat.block<1, 3>(2 * l, 3 * md.body) = re.transpose();
+    f.Chat.block<1, 3>(2 * l + 1, 3 * md.body) = -im.transpose();
+    f.Lambda(2 * l, 2 * l + 1) = -md.lambda;
+    f.Lambda(2 * l + 1, 2 * l) = md.lambda;
+  }
+  return f;
+}
+
+}  // namespace
+
+Eigen::MatrixXd effective_inertia(const GeneralChain& g) {
+  const FluidMaps f = fluid_maps(g);
+  return g.M - f.P.transpose() * f.N * f.P;
+}
+
+void check_effective_inertia(const Scene& scene, const GeneralChain& g) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(effective_inertia(g), Eigen::EigenvaluesOnly);
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> em(g.M, Eigen::EigenvaluesOnly);
+  const double lo = es.eigenvalues().minCoeff(), hi = em.eigenvalues().cwiseAbs().maxCoeff();
+  if (!(lo > 1e-13 * std::max(hi, 1e-300))) {
+    std::ostringstream os;
+    os << "the effective inertia (the frozen fluid less what its modes take) is not positive definite (smallest "
+          "eigenvalue " << lo << " kg m^2): the shell carries no inertia beyond what the fluid modes take";
+    throw SceneError(scene.file.string() + ": body: " + os.str());
+  }
+}
+
+GeneralSystem build_general_system(const GeneralChain& g) {
+  const FluidMaps f = fluid_maps(g);
+  const int nq = 2 * g.n, d = g.dim_q(), nz = 2 * g.n_modes();
+  const Eigen::MatrixXd Pt = f.P.transpose();
+  const Eigen::MatrixXd Meff = g.M - Pt * f.N * f.P;
+  const Eigen::MatrixXd Ceff = g.C - Pt * f.N * f.R - f.S * f.G * f.P;
+  const Eigen::MatrixXd Keff = (g.K - f.S * f.G * f.R).leftCols(nq);  // the angles ψ never enter
+  const Eigen::MatrixXd Bz = Pt * f.W * f.Lambda + f.S * f.W;
+  const Eigen::LDLT<Eigen::MatrixXd> Minv(Meff);
+  const Eigen::MatrixXd Xq = -Minv.solve(Keff), Xv = -Minv.solve(Ceff), Xz = -Minv.solve(Bz);
+  GeneralSystem sys;
+  const double stiff = (Xq.rows() > 0) ? Xq.norm() : 0.0;
+  sys.s = stiff > 0 ? std::sqrt(stiff) : std::max(std::abs(g.spin), 1.0);
+  sys.B.setZero(nq + d + nz, nq + d + nz);
+  sys.B.block(0, nq, nq, nq) = sys.s * Eigen::MatrixXd::Identity(nq, nq);
+  sys.B.block(nq, 0, d, nq) = Xq / sys.s;
+  sys.B.block(nq, nq, d, d) = Xv;
+  sys.B.block(nq, nq + d, d, nz) = Xz;
+  const Eigen::MatrixXd CP = f.Chat * f.P;
+  sys.B.block(nq + d, 0, nz, nq) = -CP * Xq / sys.s;
+  sys.B.block(nq + d, nq, nz, d) = -CP * Xv - f.Chat * f.R;
+  sys.B.block(nq + d, nq + d, nz, nz) = f.Lambda - CP * Xz;
+  return sys;
+}
+
+GeneralSpectrum general_spectrum(const GeneralChain& g) {
+  GeneralSystem sys = build_general_system(g);
+  balance_in_place(sys.B);
+  const Eigen::EigenSolver<Eigen::MatrixXd> es(sys.B, false);
+  if (es.info() != Eigen::Success)
+    throw std::runtime_error("the general chain's eigen-solver did not converge (" + std::to_string(sys.dim()) +
+                             " states)");
+  GeneralSpectrum sp;
+  for (Eigen::Index i = 0; i < es.eigenvalues().size(); ++i) {
+    const std::complex<double> mu = es.eigenvalues()[i];
+    sp.roots.emplace_back(mu.imag(), -mu.real());  // σ = −iμ
+    sp.scale = std::max(sp.scale, std::abs(sp.roots.back()));
+  }
+  std::sort(sp.roots.begin(), sp.roots.end(), [](auto a, auto b) {
+    return a.real() != b.real() ? a.real() < b.real() : a.imag() < b.imag();
+  });
+  for (const auto& r : sp.roots) sp.growth = std::max(sp.growth, -r.imag());
+  sp.stable = !(sp.growth > 1e-8 * sp.scale);
+  return sp;
+}
+
+}  // namespace rc::rom

@@ -1,0 +1,49 @@
+// The general chain's first-order form and its roots (docs/rom.md, "Bodies and tanks without axial symmetry").
+// Body k's angular velocity in its own frame is ω0 e_z + δω_k, δω_k = P_k Q̇ + R_k Q with
+//   δω_t = J q̇_k − ω0 q_k  (J = e_z ×),   δω_z = ψ̇_k,
+// and its fluid's relative angular momentum h_k = Σ_l 2 Re(z_l c_l) − G_k δω_k (G_k the geostrophic weight: fluid at
+// λ = 0 that stays at rest while the body turns) reacts on it as the moment −(ḣ_k + ω0 e_z × h_k), which in the
+// coordinates Q is T_k ḣ_k + S_k h_k with T_k = P_kᵀ and S_k = ω0 on q_k. With each mode's ż = iλ z − c̄·δω̇:
+//   (M − Σ PᵀN P) Q̈ = −(C − Σ(PᵀN R + S G P)) Q̇ − (K − Σ S G R) Q − Σ(PᵀW Λ + S W) Z,
+//   Ż = Λ Z − Ĉ (P Q̈ + R Q̇),
+// N_k = Σ_l 2 Re(c_l c_lᴴ) + G_k (the fluid that does not follow the body: with every mode kept, the frozen fluid's
+// inertia less Zhukovsky's), Z = (Re z_l, Im z_l), W and Ĉ the real forms of z ↦ 2 Re(z c) and x ↦ c̄·x. The state is
+// y = (s q, Q̇, Z) (the axial angles ψ never enter: only their rates) and a root σ (y ∝ e^{iσt}) is σ = −i·eig(B),
+// in the frame turning with the bodies.
+#pragma once
+
+#include "general_chain.hpp"
+
+#include <Eigen/Dense>
+
+#include <complex>
+#include <vector>
+
+namespace rc::rom {
+
+struct GeneralSystem {
+  Eigen::MatrixXd B;   // y' = B y
+  double s = 1;        // q is carried as s q
+  int dim() const { return static_cast<int>(B.rows()); }
+};
+
+// The inertia the bodies' accelerations see with the modes' share taken out, M − Σ_k P_kᵀ N_k P_k.
+Eigen::MatrixXd effective_inertia(const GeneralChain& g);
+
+// Throws SceneError (key "body") when effective_inertia is not positive definite: the shells must carry inertia of
+// their own beyond what the fluid's modes take.
+void check_effective_inertia(const Scene& scene, const GeneralChain& g);
+
+GeneralSystem build_general_system(const GeneralChain& g);
+
+struct GeneralSpectrum {
+  std::vector<std::complex<double>> roots;  // σ (rad/s) in the turning frame, ascending real part
+  double scale = 0;                         // the largest |σ|
+  double growth = 0;                        // max(0, −Im σ): the fastest growth rate (1/s)
+  bool stable = true;                       // no root below the real axis beyond 1e-8 · scale
+};
+
+// Throws std::runtime_error when the eigen-solver does not converge.
+GeneralSpectrum general_spectrum(const GeneralChain& g);
+
+}  // namespace rc::rom

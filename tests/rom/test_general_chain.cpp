@@ -1,0 +1,230 @@
+// The chain without axial symmetry (rom/general/, docs/rom.md "Bodies and tanks without axial symmetry") against
+// (a) the axisymmetric chain (26) it must reproduce, (b) Euler's and Poisson's equations of a heavy rigid body with
+// A ≠ B, and (c) the Poincaré–Hough top: a shell with an ellipsoidal cavity of ideal fluid in uniform vorticity, its
+// linearised equations written independently of the modal table (Poincaré 1910; Hough 1895; docs/volume.md §3).
+#include "ellipsoid_closed_form.hpp"
+#include "general_chain.hpp"
+#include "general_system.hpp"
+#include "rom_test_util.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+namespace rc::rom::test {
+namespace {
+
+using Roots = std::vector<std::complex<double>>;
+
+Eigen::Matrix3d cross(const Eigen::Vector3d& u) {  // [u]× x = u × x
+  Eigen::Matrix3d m;
+  m << 0, -u(2), u(1), u(2), 0, -u(0), -u(1), u(0), 0;
+  return m;
+}
+
+Roots general_roots(const std::string& text) {
+  return general_spectrum(build_general_chain(parse_scene_text(text, test_dir(), "test-scene"))).roots;
+}
+
+// σ = −i eig(M⁻¹A) of M ẋ = A x.
+Roots roots_of_pencil(const Eigen::MatrixXd& M, const Eigen::MatrixXd& A) {
+  const Eigen::EigenSolver<Eigen::MatrixXd> es(M.lu().solve(A), false);
+  Roots r;
+  for (Eigen::Index i = 0; i < es.eigenvalues().size(); ++i)
+    r.emplace_back(es.eigenvalues()[i].imag(), -es.eigenvalues()[i].real());
+  return r;
+}
+
+// (a) Every root σ of (26) (u ∝ e^{iσt}) is, in the frame turning at ω0, the pair σ + ω0 and −(σ̄ + ω0) of the real
+// system (u = e^{−iω0t}(q_x − i q_y)).
+Roots turned(const Roots& sigma, double w) {
+  Roots out;
+  for (const auto& s : sigma) {
+    out.push_back(s + w);
+    out.push_back(-std::conj(s) - w);
+  }
+  return out;
+}
+
+std::string axisymmetric_chain(bool free_chain, double spin) {
+  std::vector<Body> b(3);
+  b[0].table = spheroid_file(1, 0.6);
+  b[0].density = 900;
+  b[0].center = 0.2;
+  b[2].table = "four_modes.h5";
+  if (!std::filesystem::exists(test_dir() / b[2].table)) write_table(four_mode_table(), test_dir() / b[2].table);
+  b[1].A = 0.2;
+  b[1].C = 0.3;
+  for (Body& x : b) x.spin = spin;
+  return scene_text(b, {{2.0, 0.01}, {1.5, 0.0}}, 9.81, free_chain, 0.02);
+}
+
+TEST(GeneralChain, ReproducesTheAxisymmetricChain) {
+  for (const bool free_chain : {false, true})
+    for (const double spin : {30.0, -12.0}) {
+      const std::string text = axisymmetric_chain(free_chain, spin);
+      const Roots expected = turned(roots_of(compute_spectrum(model_of(text))), spin);
+      const Roots got = general_roots(text);
+      const double err = root_set_distance(got, expected, spectral_radius(expected));
+      std::printf("axisymmetric chain (%s, spin %g): %zu roots, largest distance %.2e of the spectral radius\n",
+                  free_chain ? "free" : "fixed", spin, got.size(), err);
+      EXPECT_LT(err, 1e-11);
+    }
+}
+
+// A heavy rigid body on a fixed point, its principal axes turned by the products of inertia, spinning about its axis
+// (Euler and Poisson in its frame): I δω̇ + ω0 e_z × I δω − (I ω0 e_z) × δω = −m g c e_z × δγ, δγ̇ = −ω0 e_z × δγ + e_z × δω.
+Roots euler_poisson(const Eigen::Matrix3d& I, double w, double mgc) {
+  const Eigen::Vector3d ez = Eigen::Vector3d::UnitZ();
+  Eigen::MatrixXd M = Eigen::MatrixXd::Identity(6, 6), A = Eigen::MatrixXd::Zero(6, 6);
+  M.topLeftCorner<3, 3>() = I;
+  A.topLeftCorner<3, 3>() = -w * cross(ez) * I + cross(I * w * ez);
+  A.topRightCorner<3, 3>() = -mgc * cross(ez);
+  A.bottomLeftCorner<3, 3>() = cross(ez);
+  A.bottomRightCorner<3, 3>() = -w * cross(ez);
+  return drop_smallest(roots_of_pencil(M, A), 2);  // δω_z and δγ_z: the spin's own zeros
+}
+
+TEST(GeneralChain, HeavyBodyWithUnequalMomentsIsEulerPoisson) {
+  // A ≠ B with a product I_xy: C the largest moment (a fast top sleeps: every root real), then C between the
+  // transverse principal moments (0.0741, 0.1259: the intermediate axis, unstable at any spin).
+  struct Case { double C; bool stable; };
+  for (const Case& k : {Case{0.2, true}, Case{0.1, false}}) {
+    const double A = 0.12, B = 0.08, Ixy = 0.01, m = 2, com = 0.15, g = 9.81, spin = 25;
+    const std::string text = "[system]\nkind = \"fixed\"\ngravity = 9.81\n[[body]]\nmass = 2\nA = 0.12\nB = 0.08\n"
+                             "Ixy = 0.01\nC = " + num(k.C) + "\ncom = 0.15\nspin = " + num(spin) + "\n";
+    Eigen::Matrix3d I;
+    I << A, Ixy, 0, Ixy, B, 0, 0, 0, k.C;  // the scene's moments are about the fixed point O
+    const Roots expected = euler_poisson(I, spin, m * g * com);
+    const GeneralSpectrum sp = general_spectrum(build_general_chain(parse_scene_text(text, test_dir(), "t")));
+    const double err = root_set_distance(sp.roots, expected, spectral_radius(expected));
+    std::printf("heavy body A %g B %g Ixy %g C %g spin %g: %s, growth %.4g 1/s, roots against Euler-Poisson %.2e\n",
+                A, B, Ixy, k.C, spin, sp.stable ? "stable" : "unstable", sp.growth, err);
+    EXPECT_LT(err, 1e-12);
+    EXPECT_EQ(sp.stable, k.stable);
+  }
+}
+
+// (c) The Poincaré–Hough top: a shell (tensor I_s about O) with an ellipsoidal cavity (semi-axes a, b, c, the
+// ellipsoid turned by `tilt` about x, centre at d on the axis) of ideal fluid, spinning at ω0 about z, gravity on the
+// total mass at c_tot. Fluid in the ellipsoid's frame (R: ellipsoid → body): V = D(ω_f × D⁻¹r), its angular momentum
+// R Hf ω_f, Hf = (2m/5) diag(bc, ac, ab), its vorticity K ω_f obeying K ω̇_f = −2ω0 D [D⁻¹Ω]× ω_f − 2 Rᵀ δω̇.
+struct Top {
+  double a = 1, b = 0.8, c = 0.6, tilt = 0, rho = 1000, L = 0.1, d = 0.05;
+  double mass = 3, com = 0.1, A = 0.2, B = 0.15, C = 0.12, spin = 20, g = 9.81;
+};
+
+Eigen::Matrix3d rotation(double tilt) { return Eigen::AngleAxisd(tilt, Eigen::Vector3d::UnitX()).toRotationMatrix(); }
+
+// The frozen fluid's tensor about O in the body frame (SI units).
+Eigen::Matrix3d frozen_fluid(const Top& t, double& mf) {
+  const double a = t.a * t.L, b = t.b * t.L, c = t.c * t.L;
+  mf = t.rho * 4 * std::numbers::pi * a * b * c / 3;
+  const Eigen::Matrix3d R = rotation(t.tilt);
+  Eigen::Matrix3d I = R * (mf / 5 * Eigen::Vector3d(b * b + c * c, a * a + c * c, a * a + b * b)).asDiagonal() *
+                      R.transpose();
+  I(0, 0) += mf * t.d * t.d;
+  I(1, 1) += mf * t.d * t.d;
+  return I;
+}
+
+Roots poincare_hough(const Top& t) {
+  double mf = 0;
+  const Eigen::Matrix3d If = frozen_fluid(t, mf);
+  Eigen::Matrix3d Is;  // the shell, balanced against the tilted ellipsoid's products
+  Is << t.A, 0, -If(0, 2), 0, t.B, -If(1, 2), -If(0, 2), -If(1, 2), t.C;
+  const Eigen::Matrix3d I = Is + If, R = rotation(t.tilt);
+  const double a = t.a * t.L, b = t.b * t.L, c = t.c * t.L, w = t.spin;
+  const Eigen::Vector3d ez = Eigen::Vector3d::UnitZ(), d(a, b, c), Omega = R.transpose() * ez;
+  const Eigen::Matrix3d D = d.asDiagonal(), Dinv = d.cwiseInverse().asDiagonal();
+  const Eigen::Matrix3d K = Eigen::Vector3d((b * b + c * c) / (b * c), (a * a + c * c) / (a * c),
+                                            (a * a + b * b) / (a * b)).asDiagonal();
+  const Eigen::Matrix3d Hf = (2 * mf / 5 * Eigen::Vector3d(b * c, a * c, a * b)).asDiagonal();
+  const double mgc = t.g * (t.mass * t.com + mf * t.d);
+  Eigen::MatrixXd M = Eigen::MatrixXd::Identity(9, 9), A = Eigen::MatrixXd::Zero(9, 9);
+  M.block<3, 3>(0, 0) = I;
+  M.block<3, 3>(0, 3) = R * Hf;
+  M.block<3, 3>(3, 0) = 2 * R.transpose();
+  M.block<3, 3>(3, 3) = K;
+  A.block<3, 3>(0, 0) = -w * cross(ez) * I + cross(I * w * ez);
+  A.block<3, 3>(0, 3) = -w * cross(ez) * R * Hf;
+  A.block<3, 3>(0, 6) = -mgc * cross(ez);
+  A.block<3, 3>(3, 3) = -2 * w * D * cross(Dinv * Omega);
+  A.block<3, 3>(6, 0) = cross(ez);
+  A.block<3, 3>(6, 6) = -w * cross(ez);
+  return drop_smallest(roots_of_pencil(M, A), 2);  // δγ_z and the geostrophic vortex's level: zeros of their own
+}
+
+// The same top as a scene, its tank the closed form's table (docs/volume.md §5), written as cavity-modes writes one.
+std::string top_scene(const Top& t) {
+  const modes::EllipsoidModes e = modes::ellipsoid_modes(t.a, t.b, t.c, t.tilt);
+  rc::ModeTable tab;
+  tab.shape = "ellipsoid";
+  tab.dimensions = {{"a", t.a}, {"b", t.b}, {"c", t.c}};
+  tab.m = 1;
+  tab.volume = e.mass;
+  const auto flat = [](const Eigen::Matrix3d& m) {
+    std::vector<double> v;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) v.push_back(m(i, j));
+    return v;
+  };
+  auto& v = tab.volume_cavity;
+  v.centroid = {0, 0, 0};
+  v.tilt = t.tilt;
+  v.inertia = flat(e.inertia);
+  v.zhukovsky = flat(e.zhukovsky);
+  v.sum_rule = flat(e.inertia - e.zhukovsky);
+  v.geostrophic_re = flat(e.geostrophic);
+  v.geostrophic_im = flat(Eigen::Matrix3d::Zero());
+  v.coupling_re = flat(e.H.real());
+  v.coupling_im = flat(e.H.imag());
+  tab.A_f = 0.5 * (e.inertia(0, 0) + e.inertia(1, 1));
+  tab.C_f = e.inertia(2, 2);
+  tab.J_zh = 0.5 * (e.zhukovsky(0, 0) + e.zhukovsky(1, 1));
+  tab.sum_rule = tab.A_f - tab.J_zh;
+  tab.coverage = 1;
+  tab.solver = "closed form (docs/volume.md §3)";
+  tab.normalisation = "N2 = 1, a = sqrt(E/2)";
+  const double E = (e.H(0, 0) + e.H(1, 1)).real();
+  tab.lambda = {e.lambda};
+  tab.kappa = {2 / e.lambda};
+  tab.E = {E};
+  tab.a = {std::sqrt(E / 2)};
+  tab.N2 = {1};
+  tab.residual = {0};
+  const std::string name = "ellipsoid_" + num(t.tilt) + ".h5";
+  write_table(tab, test_dir() / name);
+  double mf = 0;
+  const Eigen::Matrix3d If = frozen_fluid(t, mf);
+  std::ostringstream os;
+  os << "[system]\nkind = \"fixed\"\ngravity = " << num(t.g) << "\n[[body]]\nmass = " << num(t.mass)
+     << "\nA = " << num(t.A) << "\nB = " << num(t.B) << "\nC = " << num(t.C) << "\nIxz = " << num(-If(0, 2))
+     << "\nIyz = " << num(-If(1, 2)) << "\ncom = " << num(t.com) << "\nspin = " << num(t.spin)
+     << "\n[body.cavity]\ntable = \"" << name << "\"\ndensity = " << num(t.rho) << "\nscale = " << num(t.L)
+     << "\ncenter = " << num(t.d) << "\n";
+  return os.str();
+}
+
+TEST(GeneralChain, PoincareHoughTopIsTheClosedForm) {
+  std::vector<Top> tops(4);
+  tops[1].tilt = 0.5;                      // the tank tilted: the tilt and the spin coupled through the fluid
+  tops[2].g = 0;                           // free (no gravity): the steady tilt's roots ±ω0
+  tops[3].spin = 3;                        // slow: the heavy top falls
+  tops[3].A = 0.05;
+  tops[3].B = 0.04;
+  for (const Top& t : tops) {
+    const Roots expected = poincare_hough(t);
+    const GeneralSpectrum sp = general_spectrum(build_general_chain(parse_scene_text(top_scene(t), test_dir(), "t")));
+    const double err = root_set_distance(sp.roots, expected, spectral_radius(expected));
+    std::printf("Poincare-Hough top (tilt %g, g %g, spin %g): %zu roots, growth %.4g 1/s, against the closed form %.2e\n",
+                t.tilt, t.g, t.spin, sp.roots.size(), sp.growth, err);
+    EXPECT_LT(err, 1e-10);
+    EXPECT_EQ(sp.stable, t.spin > 10);  // the slow heavy top falls
+  }
+}
+
+}  // namespace
+}  // namespace rc::rom::test
