@@ -6,6 +6,7 @@
 #include "companion_check.hpp"
 #include "confirm_command.hpp"
 #include "external_programs.hpp"
+#include "general_output.hpp"
 #include "output.hpp"
 #include "scene.hpp"
 #include "spectrum.hpp"
@@ -23,6 +24,20 @@ void add_cavity_modes_option(CLI::App* cmd, ConfirmRequest& req, const char* whe
 }
 
 int confirm_exit(const Scene& scene, const ConfirmRequest& req) { return confirm_roots(scene, req, std::cout) > 0 ? 3 : 0; }
+
+// A chain without axial symmetry (rom/general/): its own model and roots; confirm is for viscous tanks, which it
+// does not take.
+template <class Options>
+int general_spectrum_command(const Scene& scene, TableCache& tables, const Options& o) {
+  if (o.confirm)
+    throw SceneError(scene.file.string() + ": --confirm: a chain without axial symmetry has no viscous tanks to "
+                     "confirm (docs/rom.md, \"Bodies and tanks without axial symmetry\")");
+  const GeneralChain g = build_general_chain(scene, &tables);
+  const GeneralSpectrum sp = general_spectrum(g);
+  if (o.json) std::cout << general_spectrum_json(g, sp) << "\n";
+  else print_general_spectrum(std::cout, g, sp);
+  return 0;
+}
 
 }  // namespace
 
@@ -43,6 +58,8 @@ Command add_spectrum_command(CLI::App& app) {
   add_cavity_modes_option(cmd, o->confirm_request, "with --confirm: ");
   return {cmd, [o] {
             const Scene scene = parse_scene(o->scene);
+            TableCache tables;
+            if (needs_general_chain(scene, tables)) return general_spectrum_command(scene, tables, *o);
             if (o->confirm) {
               o->confirm_request.json = o->json;
               return confirm_exit(scene, o->confirm_request);

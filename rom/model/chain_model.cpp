@@ -55,8 +55,8 @@ const rc::ModeTable& cavity_table(const Scene& scene, const std::string& w, cons
     fail(scene, w + ".table", e.what());
   }
   if (table->volume_cavity.present())
-    fail(scene, w + ".table", "a 3-D cavity's table (no axial symmetry): the chain takes axisymmetric tanks only so far "
-         "(docs/volume.md, \"What is not done yet\")");
+    fail(scene, w + ".table", "a 3-D cavity's table (no axial symmetry): `chain-rom spectrum` takes it (the chain "
+         "without axial symmetry, docs/rom.md); this command takes axisymmetric tanks only so far");
   return *table;
 }
 
@@ -281,9 +281,10 @@ void require_linear_scene(const Scene& scene) {
   }
   for (std::size_t k = 0; k < scene.size(); ++k) {
     const BodySpec& b = scene.bodies[k];
-    if (b.B && *b.B != b.A)
-      fail(scene, "body[" + std::to_string(k + 1) + "].B", "differs from A: the linearised chain (26) needs "
-           "axisymmetric bodies; only [run] model = \"nonlinear\" takes B != A");
+    if (b.asymmetric())
+      fail(scene, "body[" + std::to_string(k + 1) + (b.B && *b.B != b.A ? "].B" : "].Ixy"), "a body without axial "
+           "symmetry: the linearised chain (26) needs axisymmetric bodies; `chain-rom spectrum` takes it (the chain "
+           "without axial symmetry, docs/rom.md), and [run] model = \"nonlinear\" takes B != A");
     // Transverse moments are the forced (26) (forced_solution.hpp); axial ones drive the spins' own states
     // (axial_rotation.hpp).
     if (b.aero && scene.free_chain)

@@ -104,7 +104,9 @@ endif()
 rom_cli(run_nonlinear ARGS run;nonlinear_chain.toml;-o;out_nonlinear.h5 EXPECT_EXIT 0
         MATCH "wrote out_nonlinear.h5: 5001 samples, model nonlinear[^\n]*\nenergy: [^\n]*angular momentum")
 rom_cli(nonlinear_scene_linear_spectrum ARGS spectrum;nonlinear_chain.toml EXPECT_EXIT 1
-        MATCH "^chain-rom: error: [^\n]*body\\[1\\]\\.B: differs from A[^\n]*\n?$")
+        MATCH "^chain-rom: error: [^\n]*body\\[2\\]\\.spin: differs from body\\[1\\]'s: a chain without axial symmetry[^\n]*\n?$")
+rom_cli(asymmetric_linear_run ARGS run;asymmetric_linear_run.toml;-o;out_nl_linear.csv EXPECT_EXIT 1
+        MATCH "^chain-rom: error: [^\n]*body\\[1\\]\\.B: a body without axial symmetry[^\n]*\n?$" NO_FILE out_nl_linear.csv)
 rom_cli(run_nonlinear_tank ARGS run;nonlinear_tank.toml;-o;out_nl_tank.h5 EXPECT_EXIT 0
         MATCH "wrote out_nl_tank.h5: 101 samples, model nonlinear[^\n]*\nenergy: not an integral with fluid tanks")
 rom_cli(bad_moment ARGS run;bad_moment.toml;-o;out_bad_moment.h5 EXPECT_EXIT 1

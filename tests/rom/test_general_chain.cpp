@@ -2,7 +2,7 @@
 // (a) the axisymmetric chain (26) it must reproduce, (b) Euler's and Poisson's equations of a heavy rigid body with
 // A ≠ B, and (c) the Poincaré–Hough top: a shell with an ellipsoidal cavity of ideal fluid in uniform vorticity, its
 // linearised equations written independently of the modal table (Poincaré 1910; Hough 1895; docs/volume.md §3).
-#include "ellipsoid_closed_form.hpp"
+#include "ellipsoid_table.hpp"
 #include "general_chain.hpp"
 #include "general_system.hpp"
 #include "rom_test_util.hpp"
@@ -159,44 +159,8 @@ Roots poincare_hough(const Top& t) {
 
 // The same top as a scene, its tank the closed form's table (docs/volume.md §5), written as cavity-modes writes one.
 std::string top_scene(const Top& t) {
-  const modes::EllipsoidModes e = modes::ellipsoid_modes(t.a, t.b, t.c, t.tilt);
-  rc::ModeTable tab;
-  tab.shape = "ellipsoid";
-  tab.dimensions = {{"a", t.a}, {"b", t.b}, {"c", t.c}};
-  tab.m = 1;
-  tab.volume = e.mass;
-  const auto flat = [](const Eigen::Matrix3d& m) {
-    std::vector<double> v;
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) v.push_back(m(i, j));
-    return v;
-  };
-  auto& v = tab.volume_cavity;
-  v.centroid = {0, 0, 0};
-  v.tilt = t.tilt;
-  v.inertia = flat(e.inertia);
-  v.zhukovsky = flat(e.zhukovsky);
-  v.sum_rule = flat(e.inertia - e.zhukovsky);
-  v.geostrophic_re = flat(e.geostrophic);
-  v.geostrophic_im = flat(Eigen::Matrix3d::Zero());
-  v.coupling_re = flat(e.H.real());
-  v.coupling_im = flat(e.H.imag());
-  tab.A_f = 0.5 * (e.inertia(0, 0) + e.inertia(1, 1));
-  tab.C_f = e.inertia(2, 2);
-  tab.J_zh = 0.5 * (e.zhukovsky(0, 0) + e.zhukovsky(1, 1));
-  tab.sum_rule = tab.A_f - tab.J_zh;
-  tab.coverage = 1;
-  tab.solver = "closed form (docs/volume.md §3)";
-  tab.normalisation = "N2 = 1, a = sqrt(E/2)";
-  const double E = (e.H(0, 0) + e.H(1, 1)).real();
-  tab.lambda = {e.lambda};
-  tab.kappa = {2 / e.lambda};
-  tab.E = {E};
-  tab.a = {std::sqrt(E / 2)};
-  tab.N2 = {1};
-  tab.residual = {0};
   const std::string name = "ellipsoid_" + num(t.tilt) + ".h5";
-  write_table(tab, test_dir() / name);
+  write_table(ellipsoid_table(t.a, t.b, t.c, t.tilt), test_dir() / name);
   double mf = 0;
   const Eigen::Matrix3d If = frozen_fluid(t, mf);
   std::ostringstream os;
