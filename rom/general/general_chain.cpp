@@ -16,6 +16,8 @@ namespace {
 
 std::string body_key(int k) { return "body[" + std::to_string(k + 1) + "]"; }
 
+constexpr double kProductTolerance = 1e-5;
+
 const rc::ModeTable& read_table(const Scene& scene, int k, TableCache& tables) {
   try {
     return tables.get(scene.bodies[k].cavity->table);
@@ -83,11 +85,14 @@ Scene axisymmetric_part(const Scene& scene, TableCache& tables, std::vector<Eige
     b.B.reset();
     b.C = I(2, 2);
     b.Ixy = b.Ixz = b.Iyz = 0;
+    // A 3-D table's tensor holds the mesh's error (products ~1e-6 of the trace on an upright ellipsoid at the default
+    // order): below 1e-5 of the trace the products are taken as that error and dropped (the spin stays steady).
     const double products = std::hypot(I(0, 2), I(1, 2));
-    if (products > 1e-9 * I.trace()) {
+    if (products > kProductTolerance * I.trace()) {
       std::ostringstream os;
       os << "the body with its frozen liquid has products of inertia I_xz, I_yz = " << I(0, 2) << ", " << I(1, 2)
-         << " kg m^2 about its joint: it cannot spin steadily about its axis; balance them with the shell's Ixz, Iyz";
+         << " kg m^2 about its joint (more than " << kProductTolerance << " of its inertia's trace): it cannot spin "
+         << "steadily about its axis; balance them with the shell's Ixz, Iyz";
       fail(scene, body_key(k) + ".Ixz", os.str());
     }
     inertia.push_back(I);
