@@ -26,9 +26,8 @@ void print_general_spectrum(std::ostream& os, const GeneralChain& g, const Gener
      << (g.axial ? "; the spins' rates are coordinates too (a 3-D tank's modes may couple to the spin)" : "") << "\n";
   os << "roots sigma (e^{i sigma t}) in the frame turning with the bodies: the motion in space has sigma -+ spin "
         "too (docs/rom.md, \"Bodies and tanks without axial symmetry\")\n";
-  for (int k = 0; k < g.n; ++k)
-    if (g.coverage[k] < 1 - 1e-9)
-      os << "body " << k + 1 << ": its tank's kept modes cover " << g.coverage[k] << " of the sum rule\n";
+  for (const auto& [k, share] : g.coverage)
+    if (share < 1 - 1e-9) os << "body " << k + 1 << ": a tank's kept modes cover " << share << " of its sum rule\n";
   if (!g.dissipative) {
     os << "stable: " << (sp.stable ? "yes" : "no") << " (|Im sigma| <= " << tolerance(sp) << " counts as real)\n";
     os << "margin (largest |Im sigma|): " << margin(sp) << " rad/s\n";
@@ -59,7 +58,8 @@ std::string general_spectrum_json(const GeneralChain& g, const GeneralSpectrum& 
   j["margin"] = margin(sp);
   j["tolerance"] = tolerance(sp);
   j["fluid_modes"] = g.n_modes();
-  j["coverage"] = g.coverage;
+  j["coverage"] = nlohmann::ordered_json::array();  // [body (1-based), share] per tank
+  for (const auto& [k, share] : g.coverage) j["coverage"].push_back({k + 1, share});
   return j.dump();
 }
 

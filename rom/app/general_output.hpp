@@ -13,7 +13,7 @@ namespace rc::rom {
 void print_general_spectrum(std::ostream& os, const GeneralChain& g, const GeneralSpectrum& sp);
 
 // {"model": "general", "frame": "turning", "spin", "roots": [[re, im], ...], "stable", "growth", "margin",
-//  "tolerance", "fluid_modes", "coverage": [per body]}
+//  "tolerance", "fluid_modes", "coverage": [[body, share] per tank]}
 std::string general_spectrum_json(const GeneralChain& g, const GeneralSpectrum& sp);
 
 }  // namespace rc::rom

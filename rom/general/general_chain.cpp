@@ -1,9 +1,9 @@
 #include "general_chain.hpp"
 
 #include "general_system.hpp"
+#include "general_tank.hpp"
 
 #include <cmath>
-#include <optional>
 #include <sstream>
 #include <string>
 
@@ -18,16 +18,16 @@ std::string body_key(int k) { return "body[" + std::to_string(k + 1) + "]"; }
 
 constexpr double kProductTolerance = 1e-5;
 
-const rc::ModeTable& read_table(const Scene& scene, int k, TableCache& tables) {
+const rc::ModeTable& read_table(const Scene& scene, const std::string& key, const CavitySpec& cav, TableCache& tables) {
   try {
-    return tables.get(scene.bodies[k].cavity->table);
+    return tables.get(cav.table);
   } catch (const std::exception& e) {
-    fail(scene, body_key(k) + ".cavity.table", e.what());
+    fail(scene, key + ".table", e.what());
   }
 }
 
 // The general chain's scope so far: one spin for all (else the coefficients are periodic in every common frame), the
-// chain's own inertia, gravity, joints and ideal modal tanks.
+// chain's own inertia, gravity, joints and ideal modal tanks (general_tank.hpp checks each tank's keys).
 void require_general_scene(const Scene& scene) {
   const std::string later = " (docs/rom.md, \"Bodies and tanks without axial symmetry\")";
   if (scene.field) fail(scene, "field", "a force field is not in the chain without axial symmetry yet" + later);
@@ -41,12 +41,6 @@ void require_general_scene(const Scene& scene) {
     if (b.aero) fail(scene, body_key(k) + ".aero", "aerodynamic moments are not in the chain without axial symmetry yet" + later);
     if (b.moment) fail(scene, body_key(k) + ".moment", "external moments are not in the chain without axial symmetry yet" + later);
     if (b.force) fail(scene, body_key(k) + ".force", "external forces are not in the chain without axial symmetry yet" + later);
-    if (!b.cavity) continue;
-    const CavitySpec& cav = *b.cavity;
-    if (cav.viscosity) fail(scene, body_key(k) + ".cavity.viscosity", "viscous tanks are not in the chain without axial symmetry yet" + later);
-    if (cav.galerkin) fail(scene, body_key(k) + ".cavity.reduction", "the Galerkin reduction is not in the chain without axial symmetry yet" + later);
-    if (cav.static_correction) fail(scene, body_key(k) + ".cavity.static_correction", "the static correction is not in the chain without axial symmetry yet" + later);
-    if (!cav.companion.empty()) fail(scene, body_key(k) + ".cavity.companion", "companion tables are not in the chain without axial symmetry yet" + later);
   }
 }
 
@@ -57,44 +51,66 @@ Eigen::Matrix3d shell_inertia(const BodySpec& b) {
   return I;
 }
 
-// The scene as (26) sees it: every 3-D tank's frozen fluid folded into its shell (mass, centre of mass, inertia), each
-// body's transverse inertia replaced by its mean Ā_k. Returns each body's full tensor (3-D tanks' frozen fluid in it,
-// an axisymmetric tank's left to the chain model) in `inertia` and the 3-D tanks in `tanks`.
+// Body k's tanks: [body.cavity] and every further [[body.cavity]], each with its scene key.
+std::vector<std::pair<CavitySpec, std::string>> body_tanks(const BodySpec& b, int k) {
+  std::vector<std::pair<CavitySpec, std::string>> out;
+  if (!b.cavity) return out;
+  const bool several = !b.more_cavities.empty();
+  out.emplace_back(*b.cavity, body_key(k) + (several ? ".cavity[1]" : ".cavity"));
+  for (std::size_t i = 0; i < b.more_cavities.size(); ++i)
+    out.emplace_back(b.more_cavities[i], body_key(k) + ".cavity[" + std::to_string(i + 2) + "]");
+  return out;
+}
+
+// A body spins steadily about its axis only with its centre of mass on it and no products I_xz, I_yz about its joint
+// (else gravity or the spin's centrifugal moments turn it). A 3-D table's tensor holds the mesh's error (products
+// ~1e-6 of the trace on an upright ellipsoid at the default order): below kProductTolerance of the trace the products
+// are taken as that error and dropped.
+void require_balanced(const Scene& scene, int k, const Eigen::Matrix3d& I, const Eigen::Vector2d& first_moment,
+                      double mass_arm) {
+  if (first_moment.norm() > 1e-6 * mass_arm) {
+    std::ostringstream os;
+    os << "the body's centre of mass with its tanks lies off its axis (mass times offset " << first_moment.transpose()
+       << " kg m): it cannot spin steadily about its axis; place the tanks in balance";
+    fail(scene, body_key(k) + ".cavity.offset", os.str());
+  }
+  if (std::hypot(I(0, 2), I(1, 2)) > kProductTolerance * I.trace()) {
+    std::ostringstream os;
+    os << "the body with its frozen liquid has products of inertia I_xz, I_yz = " << I(0, 2) << ", " << I(1, 2)
+       << " kg m^2 about its joint (more than " << kProductTolerance << " of its inertia's trace): it cannot spin "
+       << "steadily about its axis; balance them with the shell's Ixz, Iyz";
+    fail(scene, body_key(k) + ".Ixz", os.str());
+  }
+}
+
+// The scene as (26) sees it: every tank's frozen fluid folded into its shell (mass, centre of mass on the axis,
+// inertia), each body's transverse inertia replaced by its mean Ā_k. Returns each body's full tensor in `inertia` and
+// its tanks in `tanks`.
 Scene axisymmetric_part(const Scene& scene, TableCache& tables, std::vector<Eigen::Matrix3d>& inertia,
-                        std::vector<std::optional<VolumeTank>>& tanks) {
+                        std::vector<std::vector<GeneralTank>>& tanks) {
   Scene folded = scene;
   for (int k = 0; k < static_cast<int>(scene.size()); ++k) {
     BodySpec& b = folded.bodies[k];
     Eigen::Matrix3d I = shell_inertia(b);
+    Eigen::Vector2d first_moment = Eigen::Vector2d::Zero();
+    double mass_arm = 0;
     tanks.emplace_back();
-    if (b.cavity) {
-      const rc::ModeTable& t = read_table(scene, k, tables);
-      if (t.free_surface.present())
-        fail(scene, body_key(k) + ".cavity.table", "a partially filled tank is not in the chain without axial "
-             "symmetry yet (docs/rom.md, \"Bodies and tanks without axial symmetry\")");
-      if (t.volume_cavity.present()) {
-        const VolumeTank tank = volume_tank(scene, k, t);
-        b.com = (b.mass * b.com + tank.mass * tank.center) / (b.mass + tank.mass);
-        b.mass += tank.mass;
-        I += tank.inertia;
-        b.cavity.reset();
-        tanks.back() = tank;
-      }
+    for (const auto& [cav, key] : body_tanks(scene.bodies[k], k)) {
+      const GeneralTank tank = general_tank(scene, k, cav, key, read_table(scene, key, cav, tables));
+      b.com = (b.mass * b.com + tank.mass * tank.centroid.z()) / (b.mass + tank.mass);
+      b.mass += tank.mass;
+      first_moment += tank.mass * tank.centroid.head<2>();
+      mass_arm += tank.mass * tank.centroid.norm();
+      I += tank.inertia;
+      tanks.back().push_back(tank);
     }
+    b.cavity.reset();
+    b.more_cavities.clear();
+    require_balanced(scene, k, I, first_moment, mass_arm);
     b.A = 0.5 * (I(0, 0) + I(1, 1));
     b.B.reset();
     b.C = I(2, 2);
     b.Ixy = b.Ixz = b.Iyz = 0;
-    // A 3-D table's tensor holds the mesh's error (products ~1e-6 of the trace on an upright ellipsoid at the default
-    // order): below 1e-5 of the trace the products are taken as that error and dropped (the spin stays steady).
-    const double products = std::hypot(I(0, 2), I(1, 2));
-    if (products > kProductTolerance * I.trace()) {
-      std::ostringstream os;
-      os << "the body with its frozen liquid has products of inertia I_xz, I_yz = " << I(0, 2) << ", " << I(1, 2)
-         << " kg m^2 about its joint (more than " << kProductTolerance << " of its inertia's trace): it cannot spin "
-         << "steadily about its axis; balance them with the shell's Ixz, Iyz";
-      fail(scene, body_key(k) + ".Ixz", os.str());
-    }
     inertia.push_back(I);
   }
   return folded;
@@ -139,8 +155,9 @@ void set_matrices(const ChainModel& cm, const std::vector<Eigen::Matrix3d>& iner
 bool needs_general_chain(const Scene& scene, TableCache& tables) {
   for (int k = 0; k < static_cast<int>(scene.size()); ++k) {
     const BodySpec& b = scene.bodies[k];
-    if (b.asymmetric()) return true;
-    if (b.cavity && read_table(scene, k, tables).volume_cavity.present()) return true;
+    if (b.asymmetric() || !b.more_cavities.empty()) return true;
+    for (const auto& [cav, key] : body_tanks(b, k))
+      if (cav.offset || read_table(scene, key, cav, tables).volume_cavity.present()) return true;
   }
   return false;
 }
@@ -150,26 +167,24 @@ GeneralChain build_general_chain(const Scene& scene, TableCache* tables) {
   TableCache own;
   TableCache& cache = tables ? *tables : own;
   std::vector<Eigen::Matrix3d> inertia;
-  std::vector<std::optional<VolumeTank>> tanks;
+  std::vector<std::vector<GeneralTank>> tanks;
   const Scene folded = axisymmetric_part(scene, cache, inertia, tanks);
-  const ChainModel cm = build_model(folded, &cache);
+  const ChainModel cm = build_model(folded, &cache);  // the shells with their frozen fluid: (26) without tanks
   GeneralChain g;
   g.n = cm.n;
   g.spin = scene.bodies[0].spin;
   g.free_chain = scene.free_chain;
-  for (const auto& t : tanks) g.axial = g.axial || t.has_value();
-  g.dissipative = cm.has_friction() || (g.axial && cm.axial.D.cwiseAbs().maxCoeff() > 0);
-  // A body's tilt modes of an axisymmetric tank: H_xx = H_yy = E/2, H_xy = −iE/2 for an m = 1 mode (docs/volume.md
-  // §1; measured on a 3-D spheroid's table), so c = √(E/2) (1, i, 0).
   for (int k = 0; k < g.n; ++k) {
-    for (const FluidMode& md : cm.modes)
-      if (md.body == k)
-        g.modes.push_back({k, md.table_index, md.lambda,
-                           std::sqrt(md.E / 2) * Eigen::Vector3cd(1, std::complex<double>(0, 1), 0)});
-    g.geostrophic.push_back(tanks[k] ? tanks[k]->geostrophic : Eigen::Matrix3d::Zero());
-    if (tanks[k]) g.modes.insert(g.modes.end(), tanks[k]->modes.begin(), tanks[k]->modes.end());
-    g.coverage.push_back(tanks[k] ? tanks[k]->coverage : cm.bodies[k].has_fluid ? cm.bodies[k].coverage : 1.0);
+    Eigen::Matrix3d geostrophic = Eigen::Matrix3d::Zero();
+    for (const GeneralTank& t : tanks[k]) {
+      g.axial = g.axial || t.three_d;
+      geostrophic += t.geostrophic;
+      g.modes.insert(g.modes.end(), t.modes.begin(), t.modes.end());
+      g.coverage.emplace_back(k, t.coverage);
+    }
+    g.geostrophic.push_back(geostrophic);
   }
+  g.dissipative = cm.has_friction() || (g.axial && cm.axial.D.cwiseAbs().maxCoeff() > 0);
   set_matrices(cm, inertia, g);
   check_effective_inertia(scene, g);
   return g;

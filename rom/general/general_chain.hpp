@@ -12,10 +12,11 @@
 
 #include "chain_model.hpp"
 #include "scene.hpp"
-#include "volume_tank.hpp"
+#include "general_tank.hpp"
 
 #include <Eigen/Dense>
 
+#include <utility>
 #include <vector>
 
 namespace rc::rom {
@@ -28,14 +29,14 @@ struct GeneralChain {
   Eigen::MatrixXd M, C, K;  // in Q = (q_1, …, q_n[, ψ_1, …, ψ_n]): the frozen fluid's inertia included, no modes
   std::vector<Eigen::Matrix3d> geostrophic;  // per body: the 3-D tanks' λ = 0 weight (kg m²), else 0
   std::vector<GeneralMode> modes;            // every tank's kept modes, body by body
-  std::vector<double> coverage;              // per body with a tank: its kept share of the sum rule (1 without tank)
+  std::vector<std::pair<int, double>> coverage;  // per tank, body by body: (body, its kept share of the sum rule)
   bool dissipative = false;                  // joint or axial friction: roots leave the real axis
   int dim_q() const { return (axial ? 3 : 2) * n; }
   int n_modes() const { return static_cast<int>(modes.size()); }
 };
 
-// True when the scene needs the general chain: some body with B ≠ A or products of inertia, or a tank whose table is
-// 3-D. Reads the tables through `tables` (throws SceneError naming the key on a table that cannot be read).
+// True when the scene needs the general chain: some body with B ≠ A or products of inertia, several tanks, a tank off
+// its body's axis or a tank whose table is 3-D. Reads the tables through `tables` (throws SceneError naming the key on a table that cannot be read).
 bool needs_general_chain(const Scene& scene, TableCache& tables);
 
 // Throws SceneError naming the key for what the general chain does not take yet (different spins — a periodic

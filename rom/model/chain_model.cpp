@@ -328,6 +328,12 @@ BodyModel body_model(const Scene& scene, int k, TableCache* tables, bool linear_
   b.omega = bs.spin;
   b.s = (k + 1 < n) ? bs.next_joint : 0.0;
   double m = bs.mass, first = bs.mass * bs.com, A = bs.A, C = bs.C;
+  const std::string only_general = ": `chain-rom spectrum` takes it (the chain without axial symmetry, docs/rom.md); "
+                                   "the chain (26) and this command take one tank on the body's axis";
+  if (!bs.more_cavities.empty())
+    fail(scene, "body[" + std::to_string(k + 1) + "].cavity", "several tanks on one body" + only_general);
+  if (bs.cavity && bs.cavity->offset)
+    fail(scene, "body[" + std::to_string(k + 1) + "].cavity.offset", "a tank off the body's axis" + only_general);
   if (bs.cavity) {
     add_fluid(scene, k, *bs.cavity, b, modes, tables);
     const double d = b.fluid_center;

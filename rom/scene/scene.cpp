@@ -98,7 +98,7 @@ std::vector<std::complex<double>> get_complex_array(const Ctx& c, const toml::ta
 CavitySpec parse_cavity(const Ctx& c, const toml::table& t, const std::string& where,
                         const std::filesystem::path& base) {
   check_keys(c, t, where, {"table", "companion", "density", "scale", "center", "origin", "modes", "coverage",
-                           "static_correction", "viscosity", "reduction"});
+                           "static_correction", "viscosity", "reduction", "offset"});
   CavitySpec cav;
   const toml::node* tab = t.get("table");
   if (!tab) c.fail(where + ".table", "missing");
@@ -119,6 +119,12 @@ CavitySpec parse_cavity(const Ctx& c, const toml::table& t, const std::string& w
   if (!center && !cav.origin)
     c.fail(where + ".center", "missing (or give origin: O_k -> the table's z = 0, and the centroid follows from the table)");
   cav.center = center.value_or(0.0);
+  if (const toml::node* o = t.get("offset")) {
+    const toml::array* arr = o->as_array();
+    if (!arr || arr->size() != 2) c.fail(where + ".offset", "must be an array of two numbers [x, y] (m)");
+    cav.offset = std::array<double, 2>{finite_number(c, (*arr)[0], where + ".offset"),
+                                       finite_number(c, (*arr)[1], where + ".offset")};
+  }
   if (const toml::node* m = t.get("modes")) {
     if (!m->is_integer()) c.fail(where + ".modes", "must be an integer");
     auto v = m->as_integer()->get();
@@ -236,6 +242,25 @@ AeroSpec parse_aero(Ctx& c, const toml::table& at, const std::string& wa) {
   return a;
 }
 
+// [body.cavity] (one tank) or [[body.cavity]] (several: the first in `cavity`, the others in `more_cavities`).
+void parse_cavities(Ctx& c, const toml::table& bt, const std::string& w, const std::filesystem::path& base, BodySpec& b) {
+  const toml::node* node = bt.get("cavity");
+  if (!node) return;
+  if (const toml::array* arr = node->as_array()) {
+    for (std::size_t i = 0; i < arr->size(); ++i) {
+      const std::string wi = w + ".cavity[" + std::to_string(i + 1) + "]";
+      const toml::table* ct = (*arr)[i].as_table();
+      if (!ct) c.fail(wi, "must be a table");
+      CavitySpec cav = parse_cavity(c, *ct, wi, base);
+      if (i == 0) b.cavity = cav;
+      else b.more_cavities.push_back(cav);
+    }
+    return;
+  }
+  if (!node->is_table()) c.fail(w + ".cavity", "must be a table ([body.cavity]) or an array of tables ([[body.cavity]])");
+  b.cavity = parse_cavity(c, *node->as_table(), w + ".cavity", base);
+}
+
 // [[body]] k of n (0-based): its inertias, spin, cavity and moments.
 BodySpec parse_body(Ctx& c, const toml::table& bt, std::size_t k, std::size_t n, const std::filesystem::path& base) {
   const std::string w = "body[" + std::to_string(k + 1) + "]";
@@ -253,7 +278,7 @@ BodySpec parse_body(Ctx& c, const toml::table& bt, std::size_t k, std::size_t n,
   auto nj = get_number(c, bt, "next_joint", w + ".next_joint", Sign::any, k + 1 < n);
   b.next_joint = nj.value_or(0.0);
   b.spin = get_number(c, bt, "spin", w + ".spin", Sign::any, false).value_or(0.0);
-  if (const toml::table* ct = sub_table(c, bt, "cavity", w + ".cavity")) b.cavity = parse_cavity(c, *ct, w + ".cavity", base);
+  parse_cavities(c, bt, w, base, b);
   if (const toml::table* mt = sub_table(c, bt, "moment", w + ".moment")) b.moment = parse_moment(c, *mt, w + ".moment");
   if (const toml::table* ft = sub_table(c, bt, "force", w + ".force")) b.force = parse_force(c, *ft, w + ".force");
   if (const toml::table* at = sub_table(c, bt, "aero", w + ".aero")) b.aero = parse_aero(c, *at, w + ".aero");

@@ -32,6 +32,9 @@ struct CavitySpec {
                                    // ekman = nu/(spin scale^2) (docs/rom.md, "Viscous tanks")
   bool galerkin = false;           // reduction = "galerkin": the kept modes as a Galerkin basis, with the fluid's
                                    // energy and dissipation (docs/rom.md, "Galerkin tanks"); "modal" (default): not
+  // The centroid's distance from the body's axis, (x, y) in the body's axes (m): a tank off the axis (the chain without
+  // axial symmetry only, docs/rom.md "Bodies and tanks without axial symmetry").
+  std::optional<std::array<double, 2>> offset;
 };
 
 // An external moment on a body (N m; nonlinear model only): `axial` about the body's axis, `space` fixed in space,
@@ -72,6 +75,8 @@ struct BodySpec {
   double next_joint = 0;  // s_k
   double spin = 0;        // omega_k0, rad/s
   std::optional<CavitySpec> cavity;
+  std::vector<CavitySpec> more_cavities;  // [[body.cavity]] beyond the first: several tanks on one body (the chain
+                                          // without axial symmetry only)
   std::optional<MomentSpec> moment;
   std::optional<ForceSpec> force;
   std::optional<AeroSpec> aero;

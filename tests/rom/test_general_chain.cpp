@@ -107,87 +107,167 @@ TEST(GeneralChain, HeavyBodyWithUnequalMomentsIsEulerPoisson) {
   }
 }
 
-// (c) The Poincaré–Hough top: a shell (tensor I_s about O) with an ellipsoidal cavity (semi-axes a, b, c, the
-// ellipsoid turned by `tilt` about x, centre at d on the axis) of ideal fluid, spinning at ω0 about z, gravity on the
-// total mass at c_tot. Fluid in the ellipsoid's frame (R: ellipsoid → body): V = D(ω_f × D⁻¹r), its angular momentum
-// R Hf ω_f, Hf = (2m/5) diag(bc, ac, ab), its vorticity K ω_f obeying K ω̇_f = −2ω0 D [D⁻¹Ω]× ω_f − 2 Rᵀ δω̇.
+// (c) The Poincaré–Hough top: a shell (tensor I_s about O) with ellipsoidal cavities (semi-axes a, b, c, each turned
+// by `tilt` about x, its centre at `at`) of ideal fluid, spinning at ω0 about z, gravity on the total mass. Each fluid
+// in its ellipsoid's frame (R: ellipsoid → body): V = D(ω_f × D⁻¹r), its angular momentum R Hf ω_f (the same about any
+// point: the flow carries no momentum), Hf = (2m/5) diag(bc, ac, ab), its vorticity K ω_f obeying
+// K ω̇_f = −2ω0 D [D⁻¹Ω]× ω_f − 2 Rᵀ δω̇ (the uniform translation of an off-axis tank only adds a pressure gradient).
+struct Tank {
+  double a = 1, b = 0.8, c = 0.6, tilt = 0;
+  Eigen::Vector3d at{0, 0, 0.05};
+};
 struct Top {
-  double a = 1, b = 0.8, c = 0.6, tilt = 0, rho = 1000, L = 0.1, d = 0.05;
+  std::vector<Tank> tanks{Tank{}};
+  double rho = 1000, L = 0.1;
   double mass = 3, com = 0.1, A = 0.2, B = 0.15, C = 0.12, spin = 20, g = 9.81;
 };
 
 Eigen::Matrix3d rotation(double tilt) { return Eigen::AngleAxisd(tilt, Eigen::Vector3d::UnitX()).toRotationMatrix(); }
 
-// The frozen fluid's tensor about O in the body frame (SI units).
-Eigen::Matrix3d frozen_fluid(const Top& t, double& mf) {
-  const double a = t.a * t.L, b = t.b * t.L, c = t.c * t.L;
-  mf = t.rho * 4 * std::numbers::pi * a * b * c / 3;
+// A tank's mass and frozen tensor about O in the body frame (SI units): the parallel-axis theorem in 3-D.
+Eigen::Matrix3d frozen_fluid(const Top& top, const Tank& t, double& mf) {
+  const double a = t.a * top.L, b = t.b * top.L, c = t.c * top.L;
+  mf = top.rho * 4 * std::numbers::pi * a * b * c / 3;
   const Eigen::Matrix3d R = rotation(t.tilt);
-  Eigen::Matrix3d I = R * (mf / 5 * Eigen::Vector3d(b * b + c * c, a * a + c * c, a * a + b * b)).asDiagonal() *
-                      R.transpose();
-  I(0, 0) += mf * t.d * t.d;
-  I(1, 1) += mf * t.d * t.d;
-  return I;
+  return R * (mf / 5 * Eigen::Vector3d(b * b + c * c, a * a + c * c, a * a + b * b)).asDiagonal() * R.transpose() +
+         mf * (t.at.squaredNorm() * Eigen::Matrix3d::Identity() - t.at * t.at.transpose());
 }
 
-Roots poincare_hough(const Top& t) {
-  double mf = 0;
-  const Eigen::Matrix3d If = frozen_fluid(t, mf);
-  Eigen::Matrix3d Is;  // the shell, balanced against the tilted ellipsoid's products
-  Is << t.A, 0, -If(0, 2), 0, t.B, -If(1, 2), -If(0, 2), -If(1, 2), t.C;
-  const Eigen::Matrix3d I = Is + If, R = rotation(t.tilt);
-  const double a = t.a * t.L, b = t.b * t.L, c = t.c * t.L, w = t.spin;
-  const Eigen::Vector3d ez = Eigen::Vector3d::UnitZ(), d(a, b, c), Omega = R.transpose() * ez;
-  const Eigen::Matrix3d D = d.asDiagonal(), Dinv = d.cwiseInverse().asDiagonal();
-  const Eigen::Matrix3d K = Eigen::Vector3d((b * b + c * c) / (b * c), (a * a + c * c) / (a * c),
-                                            (a * a + b * b) / (a * b)).asDiagonal();
-  const Eigen::Matrix3d Hf = (2 * mf / 5 * Eigen::Vector3d(b * c, a * c, a * b)).asDiagonal();
-  const double mgc = t.g * (t.mass * t.com + mf * t.d);
-  Eigen::MatrixXd M = Eigen::MatrixXd::Identity(9, 9), A = Eigen::MatrixXd::Zero(9, 9);
+// The shell's products that balance the tanks' (Ixz, Iyz) and the body's tensor with its frozen fluid.
+Eigen::Matrix3d body_inertia(const Top& top, Eigen::Vector2d& balance, double& mgc) {
+  Eigen::Matrix3d If = Eigen::Matrix3d::Zero();
+  mgc = top.mass * top.com;
+  for (const Tank& t : top.tanks) {
+    double mf = 0;
+    If += frozen_fluid(top, t, mf);
+    mgc += mf * t.at.z();
+  }
+  mgc *= top.g;
+  balance = Eigen::Vector2d(-If(0, 2), -If(1, 2));
+  Eigen::Matrix3d Is;
+  Is << top.A, 0, balance(0), 0, top.B, balance(1), balance(0), balance(1), top.C;
+  return Is + If;
+}
+
+Roots poincare_hough(const Top& top) {
+  Eigen::Vector2d balance;
+  double mgc = 0;
+  const Eigen::Matrix3d I = body_inertia(top, balance, mgc);
+  const int nt = static_cast<int>(top.tanks.size()), dim = 6 + 3 * nt, g0 = 3 + 3 * nt;  // δω, ω_f per tank, δγ
+  const double w = top.spin;
+  const Eigen::Vector3d ez = Eigen::Vector3d::UnitZ();
+  Eigen::MatrixXd M = Eigen::MatrixXd::Identity(dim, dim), A = Eigen::MatrixXd::Zero(dim, dim);
   M.block<3, 3>(0, 0) = I;
-  M.block<3, 3>(0, 3) = R * Hf;
-  M.block<3, 3>(3, 0) = 2 * R.transpose();
-  M.block<3, 3>(3, 3) = K;
   A.block<3, 3>(0, 0) = -w * cross(ez) * I + cross(I * w * ez);
-  A.block<3, 3>(0, 3) = -w * cross(ez) * R * Hf;
-  A.block<3, 3>(0, 6) = -mgc * cross(ez);
-  A.block<3, 3>(3, 3) = -2 * w * D * cross(Dinv * Omega);
-  A.block<3, 3>(6, 0) = cross(ez);
-  A.block<3, 3>(6, 6) = -w * cross(ez);
-  return drop_smallest(roots_of_pencil(M, A), 2);  // δγ_z and the geostrophic vortex's level: zeros of their own
+  A.block<3, 3>(0, g0) = -mgc * cross(ez);
+  A.block<3, 3>(g0, 0) = cross(ez);
+  A.block<3, 3>(g0, g0) = -w * cross(ez);
+  for (int i = 0; i < nt; ++i) {
+    const Tank& t = top.tanks[i];
+    double mf = 0;
+    frozen_fluid(top, t, mf);
+    const double a = t.a * top.L, b = t.b * top.L, c = t.c * top.L;
+    const Eigen::Matrix3d R = rotation(t.tilt);
+    const Eigen::Vector3d d(a, b, c), Omega = R.transpose() * ez;
+    const Eigen::Matrix3d D = d.asDiagonal(), Dinv = d.cwiseInverse().asDiagonal();
+    const Eigen::Matrix3d K = Eigen::Vector3d((b * b + c * c) / (b * c), (a * a + c * c) / (a * c),
+                                              (a * a + b * b) / (a * b)).asDiagonal();
+    const Eigen::Matrix3d Hf = (2 * mf / 5 * Eigen::Vector3d(b * c, a * c, a * b)).asDiagonal();
+    const int f = 3 + 3 * i;
+    M.block<3, 3>(0, f) = R * Hf;
+    M.block<3, 3>(f, 0) = 2 * R.transpose();
+    M.block<3, 3>(f, f) = K;
+    A.block<3, 3>(0, f) = -w * cross(ez) * R * Hf;
+    A.block<3, 3>(f, f) = -2 * w * D * cross(Dinv * Omega);
+  }
+  // δγ_z and each geostrophic vortex's level: zeros of their own.
+  return drop_smallest(roots_of_pencil(M, A), 1 + static_cast<std::size_t>(nt));
 }
 
-// The same top as a scene, its tank the closed form's table (docs/volume.md §5), written as cavity-modes writes one.
-std::string top_scene(const Top& t) {
-  const std::string name = "ellipsoid_" + num(t.tilt) + ".h5";
-  write_table(ellipsoid_table(t.a, t.b, t.c, t.tilt), test_dir() / name);
-  double mf = 0;
-  const Eigen::Matrix3d If = frozen_fluid(t, mf);
+// The same top as a scene, each tank the closed form's table (docs/volume.md §5), written as cavity-modes writes one.
+std::string top_scene(const Top& top) {
+  Eigen::Vector2d balance;
+  double mgc = 0;
+  body_inertia(top, balance, mgc);
   std::ostringstream os;
-  os << "[system]\nkind = \"fixed\"\ngravity = " << num(t.g) << "\n[[body]]\nmass = " << num(t.mass)
-     << "\nA = " << num(t.A) << "\nB = " << num(t.B) << "\nC = " << num(t.C) << "\nIxz = " << num(-If(0, 2))
-     << "\nIyz = " << num(-If(1, 2)) << "\ncom = " << num(t.com) << "\nspin = " << num(t.spin)
-     << "\n[body.cavity]\ntable = \"" << name << "\"\ndensity = " << num(t.rho) << "\nscale = " << num(t.L)
-     << "\ncenter = " << num(t.d) << "\n";
+  os << "[system]\nkind = \"fixed\"\ngravity = " << num(top.g) << "\n[[body]]\nmass = " << num(top.mass)
+     << "\nA = " << num(top.A) << "\nB = " << num(top.B) << "\nC = " << num(top.C) << "\nIxz = " << num(balance(0))
+     << "\nIyz = " << num(balance(1)) << "\ncom = " << num(top.com) << "\nspin = " << num(top.spin) << "\n";
+  for (const Tank& t : top.tanks) {
+    const std::string name = "ellipsoid_" + num(t.a) + "_" + num(t.b) + "_" + num(t.c) + "_" + num(t.tilt) + ".h5";
+    write_table(ellipsoid_table(t.a, t.b, t.c, t.tilt), test_dir() / name);
+    os << "[[body.cavity]]\ntable = \"" << name << "\"\ndensity = " << num(top.rho) << "\nscale = " << num(top.L)
+       << "\ncenter = " << num(t.at.z()) << "\noffset = [" << num(t.at.x()) << ", " << num(t.at.y()) << "]\n";
+  }
   return os.str();
 }
 
 TEST(GeneralChain, PoincareHoughTopIsTheClosedForm) {
-  std::vector<Top> tops(4);
-  tops[1].tilt = 0.5;                      // the tank tilted: the tilt and the spin coupled through the fluid
+  std::vector<Top> tops(5);
+  tops[1].tanks[0].tilt = 0.5;             // the tank tilted: the tilt and the spin coupled through the fluid
   tops[2].g = 0;                           // free (no gravity): the steady tilt's roots ±ω0
   tops[3].spin = 3;                        // slow: the heavy top falls
   tops[3].A = 0.05;
   tops[3].B = 0.04;
+  // A spacecraft's two tanks off the axis, on opposite sides (the centre of mass stays on the axis), one tilted and
+  // one a different ellipsoid turned the other way: their products cancel only with the shell's balance.
+  Tank left, right;
+  left.at = Eigen::Vector3d(0.15, 0.05, 0.08);
+  right.at = -left.at + Eigen::Vector3d(0, 0, 2 * 0.08);
+  left.tilt = 0.3;
+  right = Tank{1, 0.8, 0.6, -0.3, right.at};
+  tops[4].tanks = {left, right};
   for (const Top& t : tops) {
     const Roots expected = poincare_hough(t);
     const GeneralSpectrum sp = general_spectrum(build_general_chain(parse_scene_text(top_scene(t), test_dir(), "t")));
     const double err = root_set_distance(sp.roots, expected, spectral_radius(expected));
-    std::printf("Poincare-Hough top (tilt %g, g %g, spin %g): %zu roots, growth %.4g 1/s, against the closed form %.2e\n",
-                t.tilt, t.g, t.spin, sp.roots.size(), sp.growth, err);
+    std::printf("Poincare-Hough top (%zu tank%s, first tilted %g, g %g, spin %g): %zu roots, growth %.4g 1/s, against "
+                "the closed form %.2e\n", t.tanks.size(), t.tanks.size() > 1 ? "s off the axis" : "", t.tanks[0].tilt,
+                t.g, t.spin, sp.roots.size(), sp.growth, err);
     EXPECT_LT(err, 1e-10);
     EXPECT_EQ(sp.stable, t.spin > 10);  // the slow heavy top falls
   }
+}
+
+// What the general chain cannot model is refused in one line naming the key; what (26) cannot, too.
+TEST(GeneralChain, RefusesWhatItDoesNotModel) {
+  const auto refusal = [](const std::string& text, bool general) -> std::string {
+    try {
+      const Scene scene = parse_scene_text(text, test_dir(), "t");
+      if (general) build_general_chain(scene);
+      else build_model(scene);
+    } catch (const SceneError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  Top one;
+  one.tanks[0].at = Eigen::Vector3d(0.1, 0, 0.05);  // alone off the axis: the centre of mass leaves it
+  EXPECT_NE(refusal(top_scene(one), true).find("cavity.offset: the body's centre of mass with its tanks lies off its "
+                                               "axis"), std::string::npos) << refusal(top_scene(one), true);
+  Top tilted;
+  tilted.tanks[0].tilt = 0.5;
+  std::string unbalanced = top_scene(tilted);
+  unbalanced.replace(unbalanced.find("Iyz = "), 6, "Iyz = 0.0\n# ");  // drop the shell's balance
+  EXPECT_NE(refusal(unbalanced, true).find("Ixz: the body with its frozen liquid has products of inertia"),
+            std::string::npos) << refusal(unbalanced, true);
+  const std::string two_spins = "[system]\nkind = \"fixed\"\ngravity = 9.81\n[[body]]\nmass = 1\nA = 0.1\nB = 0.2\n"
+                                "C = 0.3\ncom = 0.1\nnext_joint = 0.3\nspin = 10\n[[body]]\nmass = 1\nA = 0.1\nC = 0.2\n"
+                                "com = 0.1\nspin = 11\n[[joint]]\nstiffness = 0.0\n";
+  EXPECT_NE(refusal(two_spins, true).find("body[2].spin: differs from body[1]'s"), std::string::npos)
+      << refusal(two_spins, true);
+  Top pair;
+  pair.tanks = {Tank{}, Tank{}};
+  pair.tanks[0].at = Eigen::Vector3d(0.2, 0, 0);
+  pair.tanks[1].at = Eigen::Vector3d(-0.2, 0, 0);
+  EXPECT_EQ(refusal(top_scene(pair), true), "");  // balanced: the general chain takes it
+  // (26) with an axisymmetric shell (B = A): one tank on the axis only.
+  pair.B = one.B = pair.A;
+  one.tanks[0].at = Eigen::Vector3d(0.1, 0, 0);  // level with O: no products to balance
+  EXPECT_NE(refusal(top_scene(pair), false).find("several tanks on one body"), std::string::npos)
+      << refusal(top_scene(pair), false);
+  EXPECT_NE(refusal(top_scene(one), false).find("cavity.offset: a tank off the body's axis"), std::string::npos)
+      << refusal(top_scene(one), false);
 }
 
 }  // namespace

@@ -1,0 +1,133 @@
+#include "general_tank.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace rc::rom {
+namespace {
+
+[[noreturn]] void fail(const Scene& s, const std::string& key, const std::string& cause) {
+  throw SceneError(s.file.string() + ": " + key + ": " + cause);
+}
+
+using RowMajor3d = Eigen::Matrix<double, 3, 3, Eigen::RowMajor>;
+
+Eigen::Matrix3d tensor(const std::vector<double>& v) { return Eigen::Map<const RowMajor3d>(v.data()); }
+
+// A row's coupling tensor H: the 3-D table's, or an axisymmetric m = 1 row's E/2 (1, i, 0)(1, i, 0)ᴴ.
+Eigen::Matrix3cd row_coupling(const rc::ModeTable& t, std::size_t l) {
+  Eigen::Matrix3cd H = Eigen::Matrix3cd::Zero();
+  if (!t.volume_cavity.present()) {
+    const Eigen::Vector3cd c = std::sqrt(t.E[l] / 2) * Eigen::Vector3cd(1, std::complex<double>(0, 1), 0);
+    return c * c.adjoint();
+  }
+  const rc::ModeTable::Volume& v = t.volume_cavity;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) H(i, j) = {v.coupling_re[9 * l + 3 * i + j], v.coupling_im[9 * l + 3 * i + j]};
+  return H;
+}
+
+// What the general chain takes of a tank so far: an ideal modal tank, filled.
+void require_ideal_modal(const Scene& scene, const std::string& w, const CavitySpec& cav, const rc::ModeTable& t) {
+  const std::string later = " is not in the chain without axial symmetry yet (docs/rom.md, \"Bodies and tanks "
+                            "without axial symmetry\")";
+  if (cav.viscosity || t.viscous()) fail(scene, w + ".viscosity", "a viscous tank" + later);
+  if (cav.static_correction) fail(scene, w + ".static_correction", "the static correction" + later);
+  if (cav.galerkin) fail(scene, w + ".reduction", "the Galerkin reduction" + later);
+  if (!cav.companion.empty()) fail(scene, w + ".companion", "a companion table" + later);
+  if (t.free_surface.present()) fail(scene, w + ".table", "a partially filled tank" + later);
+  if (t.m != 1) fail(scene, w + ".table", cav.table.string() + " holds m = " + std::to_string(t.m) +
+                                  " modes; only m = 1 modes couple to the tilt");
+}
+
+// The rows kept, heaviest E first: every one that couples, or the first `modes`, or as many as reach `coverage` of
+// the sum rule (a 3-D table's λ = 0 weight counted as kept). Returns the coverage reached in `covered`.
+std::vector<int> kept_rows(const Scene& scene, const std::string& w, const CavitySpec& cav, const rc::ModeTable& t,
+                           double& covered) {
+  const double total = t.sum_rule, tiny = 1e-14 * std::max(std::abs(total), 1e-300);
+  std::vector<int> idx;
+  for (std::size_t l = 0; l < t.size(); ++l)
+    if (row_coupling(t, l).trace().real() > tiny) idx.push_back(static_cast<int>(l));
+  std::stable_sort(idx.begin(), idx.end(), [&](int i, int j) { return t.E[i] > t.E[j]; });
+  const double geostrophic = t.volume_cavity.present() ? tensor(t.volume_cavity.geostrophic_re).topLeftCorner<2, 2>().trace() / 2 : 0.0;
+  std::size_t keep = idx.size();
+  if (cav.modes) {
+    if (static_cast<std::size_t>(*cav.modes) > idx.size())
+      fail(scene, w + ".modes", std::to_string(*cav.modes) + " requested, the table " + cav.table.filename().string() +
+                                    " holds " + std::to_string(idx.size()) + " coupling modes");
+    keep = *cav.modes;
+  } else if (cav.coverage) {
+    double acc = geostrophic;
+    keep = 0;
+    while (keep < idx.size() && acc < *cav.coverage * total * (1 - 1e-12)) acc += t.E[idx[keep++]];
+    if (acc < *cav.coverage * total * (1 - 1e-12)) {
+      std::ostringstream os;
+      os << "coverage " << *cav.coverage << " not reachable: the table's modes cover " << acc / total;
+      fail(scene, w + ".coverage", os.str());
+    }
+  }
+  idx.resize(keep);
+  covered = geostrophic;
+  for (const int l : idx) covered += t.E[l];
+  covered /= total;
+  return idx;
+}
+
+// A row's H = Σ_j μ_j u_j u_jᴴ as rank-one couplings c_j = √μ_j u_j (one per discrete copy the row's cluster sums).
+void add_row_modes(int k, int row, const Eigen::Matrix3cd& H, double lambda, double unit, GeneralTank& tank) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3cd> es(H);
+  const double top = es.eigenvalues().maxCoeff();
+  for (int j = 0; j < 3; ++j) {
+    const double mu = es.eigenvalues()[j];
+    if (!(mu > 1e-12 * top)) continue;
+    tank.modes.push_back({k, row, lambda, std::sqrt(mu * unit) * es.eigenvectors().col(j)});
+  }
+}
+
+// The frozen fluid about its centroid and its λ = 0 weight, in the table's units.
+void table_tensors(const rc::ModeTable& t, Eigen::Matrix3d& inertia, Eigen::Matrix3d& geostrophic) {
+  if (t.volume_cavity.present()) {
+    inertia = tensor(t.volume_cavity.inertia);
+    geostrophic = tensor(t.volume_cavity.geostrophic_re);
+    geostrophic = 0.5 * (geostrophic + geostrophic.transpose()).eval();  // real symmetric up to the table's rounding
+  } else {
+    inertia = Eigen::Vector3d(t.A_f, t.A_f, t.C_f).asDiagonal();
+    geostrophic = Eigen::Vector3d(0, 0, t.C_f).asDiagonal();
+  }
+}
+
+}  // namespace
+
+GeneralTank general_tank(const Scene& scene, int k, const CavitySpec& cav, const std::string& w,
+                         const rc::ModeTable& t) {
+  require_ideal_modal(scene, w, cav, t);
+  const double L = cav.scale, unit = cav.density * std::pow(L, 5);  // ρL⁵: the table's inertias to kg m²
+  GeneralTank tank;
+  tank.three_d = t.volume_cavity.present();
+  tank.mass = cav.density * L * L * L * t.volume;
+  const Eigen::Vector3d offset = cav.offset ? Eigen::Vector3d((*cav.offset)[0], (*cav.offset)[1], 0) : Eigen::Vector3d::Zero();
+  const Eigen::Vector3d centroid = tank.three_d ? Eigen::Vector3d(t.volume_cavity.centroid.data()) :
+                                                  Eigen::Vector3d(0, 0, t.centroid_z);
+  tank.centroid = cav.origin ? Eigen::Vector3d(offset + Eigen::Vector3d(0, 0, *cav.origin) + L * centroid) :
+                               Eigen::Vector3d(offset + Eigen::Vector3d(0, 0, cav.center));
+  Eigen::Matrix3d inertia, geostrophic;
+  table_tensors(t, inertia, geostrophic);
+  // About O_k: the parallel-axis theorem, m (|d|² I − d dᵀ).
+  const Eigen::Vector3d& d = tank.centroid;
+  tank.inertia = unit * inertia + tank.mass * (d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose());
+  tank.geostrophic = unit * geostrophic;
+  double covered = 0;
+  for (const int l : kept_rows(scene, w, cav, t, covered))
+    add_row_modes(k, l, row_coupling(t, l), scene.bodies[k].spin * t.lambda[l], unit, tank);
+  tank.coverage = covered;
+  if (!tank.inertia.allFinite() || !(tank.mass > 0) || !tank.geostrophic.allFinite())
+    fail(scene, w + ".table", "non-physical table (volume or inertia not positive and finite)");
+  for (const GeneralMode& md : tank.modes)
+    if (!std::isfinite(md.lambda) || !md.c.allFinite())
+      fail(scene, w + ".table", "a mode scaled to the body's spin and scale overflows double precision (row " +
+                                    std::to_string(md.table_row + 1) + ")");
+  return tank;
+}
+
+}  // namespace rc::rom

@@ -1,0 +1,48 @@
+// A tank in a body of the chain without axial symmetry (docs/rom.md, "Bodies and tanks without axial symmetry"):
+// its frozen fluid as a 3 × 3 inertia tensor about the body's joint O_k, the weight of the fluid that stays at rest
+// while the body turns (λ = 0), and each kept mode as a frequency with a complex coupling vector. From a 3-D table
+// (cavity-modes ellipsoid / volume: docs/volume.md §5) or an axisymmetric one, anywhere on or off the body's axis.
+#pragma once
+
+#include "mode_table.hpp"
+#include "scene.hpp"
+
+#include <Eigen/Dense>
+
+#include <string>
+#include <vector>
+
+namespace rc::rom {
+
+// One fluid mode of the general chain: the flow z V e^{iλt} in its body's frame (its conjugate at −λ is the same real
+// motion), forced by the body's angular acceleration and moving the body through its angular momentum
+// (docs/rom.md, "Bodies and tanks without axial symmetry"):
+//   ż = iλ z − c̄·δω̇,   h = 2 Re(z c)   (c_j = ρ∫(e_j × r)·V, ρ∫|V|² = 1, so that H = c cᴴ in kg m²).
+struct GeneralMode {
+  int body = 0;             // 0-based body index
+  int table_row = 0;        // the table's row it comes from
+  double lambda = 0;        // rad/s: ω_k0 λ_table (Kononov (21))
+  Eigen::Vector3cd c;       // kg^{1/2} m
+};
+
+struct GeneralTank {
+  bool three_d = false;     // from a 3-D table (its modes may couple to the spin)
+  double mass = 0;          // kg
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();  // O_k -> the fluid's centroid, body axes (m)
+  Eigen::Matrix3d inertia;  // the frozen fluid's inertia tensor about O_k (kg m²), body axes
+  Eigen::Matrix3d geostrophic;  // the λ = 0 weight (kg m², real symmetric): fluid that does not follow the body
+  std::vector<GeneralMode> modes;
+  double coverage = 0;      // the kept rows' E (and the λ = 0 weight's transverse half) over the table's sum rule
+};
+
+// Body k's tank `cav` (scene key `where`) from its table. Rows kept as for an axisymmetric tank (every coupling one,
+// or the first `modes` by E, or as many as reach `coverage` of the sum rule); a 3-D row's H is split into rank-one
+// couplings (a row sums a cluster of discrete copies: H = Σ c cᴴ); an axisymmetric m = 1 row is c = √(E/2) (1, i, 0)
+// (H_xy = −i H_xx, measured on a 3-D spheroid's table), its frozen fluid diag(A_f, A_f, C_f) and its λ = 0 weight
+// the axial C_f (ideal fluid does not spin up). Placement: the centroid at (offset, center), or with `origin` the
+// table's origin at (offset, origin). Throws SceneError naming the key for a viscous tank, the static correction, a
+// Galerkin reduction, a companion table or a partially filled tank (not in the general chain yet).
+GeneralTank general_tank(const Scene& scene, int k, const CavitySpec& cav, const std::string& where,
+                         const rc::ModeTable& t);
+
+}  // namespace rc::rom
