@@ -15,6 +15,10 @@ namespace rc::rom {
 
 // Verdict from the roots sigma (their largest modulus is the spectral radius of B).
 Verdict verdict_from_roots(const ChainModel& m, const Eigen::VectorXcd& sigma) {
+  return verdict_of_roots(sigma, m.dissipative());
+}
+
+Verdict verdict_of_roots(const Eigen::VectorXcd& sigma, bool dissipative) {
   Verdict v;
   double radius = 0;
   for (Eigen::Index j = 0; j < sigma.size(); ++j) radius = std::max(radius, std::abs(sigma[j]));
@@ -23,7 +27,7 @@ Verdict verdict_from_roots(const ChainModel& m, const Eigen::VectorXcd& sigma) {
   // faster than it turns (Im sigma > |Re sigma|: overdamped joints, the heavily damped pseudo-modes of a
   // response-fit table at |sigma| ~ 1e4) says nothing about the accuracy of the slow near-real roots, and let
   // into the scale it made 1.7e-3 1/s of growth on a body root count as neutral (docs/rom.md, "Viscous tanks").
-  if (m.dissipative()) {
+  if (dissipative) {
     double oscillating = 0;
     for (Eigen::Index j = 0; j < sigma.size(); ++j)
       if (sigma[j].imag() <= std::abs(sigma[j].real())) oscillating = std::max(oscillating, std::abs(sigma[j]));
@@ -37,7 +41,7 @@ Verdict verdict_from_roots(const ChainModel& m, const Eigen::VectorXcd& sigma) {
     v.margin = std::max(v.margin, std::abs(im));
     if (std::abs(im) > v.tolerance) ++v.nonreal;
   }
-  if (!m.dissipative()) {
+  if (!dissipative) {
     // Without friction Kononov's necessary condition: all roots real.
     v.growth = sigma.size() ? -std::numeric_limits<double>::infinity() : 0.0;
     for (Eigen::Index j = 0; j < sigma.size(); ++j) v.growth = std::max(v.growth, -sigma[j].imag());

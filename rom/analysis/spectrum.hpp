@@ -93,6 +93,8 @@ Verdict compute_verdict(const ChainModel& m);
 // roots by the eigen-solver (no eigenvectors), and the verdict of a complete set of roots.
 Eigen::VectorXcd verdict_roots(const ChainModel& m);
 Verdict verdict_from_roots(const ChainModel& m, const Eigen::VectorXcd& sigma);
+// The same for any chain's roots: `dissipative` as ChainModel::dissipative() (the chain without axial symmetry's too).
+Verdict verdict_of_roots(const Eigen::VectorXcd& sigma, bool dissipative);
 // The size of the oscillating roots the verdict's tolerance is relative to (tolerance = kRealTolerance * radius).
 inline double verdict_radius(const Verdict& v) { return v.radius; }
 

@@ -1,5 +1,7 @@
 #include "sweep.hpp"
 
+#include "general_system.hpp"
+
 #include "atomic_file.hpp"
 
 #include "root_tracking.hpp"
@@ -294,6 +296,12 @@ void plan_lines(long n1, long n2, int threads, bool track, Line& first, std::vec
 void evaluate_point(const Scene& s, TableCache& tables, bool track, SweepPoint& pt, LineState& st,
                     std::string& fallback_why) {
   try {
+    if (needs_general_chain(s, tables)) {  // the chain without axial symmetry: its own roots, no tracking
+      pt.verdict = general_spectrum(build_general_chain(s, &tables)).verdict;
+      pt.ok = true;
+      st = LineState{};
+      return;
+    }
     const ChainModel m = build_model(s, &tables);
     Eigen::VectorXcd roots;
     if (track && st.last.size() > 0) {
@@ -330,7 +338,8 @@ namespace {
 // Every table must be in the cache before threads share it (get() then only reads): the scene's own, then every
 // member of a swept family.
 void load_tables(const Scene& base, TableCache& tables, const SweepAxis& a1, const std::optional<SweepAxis>& a2) {
-  (void)build_model(base, &tables);
+  if (needs_general_chain(base, tables)) (void)build_general_chain(base, &tables);
+  else (void)build_model(base, &tables);
   for (const SweepAxis* ax : {&a1, a2 ? &*a2 : nullptr}) {
     if (!ax || !ax->key.is_table()) continue;
     for (int i = 0; i < ax->steps; ++i) {

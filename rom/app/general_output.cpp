@@ -2,23 +2,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include <algorithm>
 #include <iomanip>
 
 namespace rc::rom {
-namespace {
-
-double margin(const GeneralSpectrum& sp) {
-  double m = 0;
-  for (const auto& r : sp.roots) m = std::max(m, std::abs(r.imag()));
-  return m;
-}
-
-double tolerance(const GeneralSpectrum& sp) { return 1e-8 * sp.scale; }
-
-}  // namespace
 
 void print_general_spectrum(std::ostream& os, const GeneralChain& g, const GeneralSpectrum& sp) {
+  const Verdict& v = sp.verdict;
   const auto precision = os.precision();
   os << std::setprecision(6);
   os << (g.free_chain ? "free" : "fixed") << " chain without axial symmetry, " << g.n << (g.n == 1 ? " body" : " bodies")
@@ -28,20 +17,24 @@ void print_general_spectrum(std::ostream& os, const GeneralChain& g, const Gener
         "too (docs/rom.md, \"Bodies and tanks without axial symmetry\")\n";
   for (const auto& [k, share] : g.coverage)
     if (share < 1 - 1e-9) os << "body " << k + 1 << ": a tank's kept modes cover " << share << " of its sum rule\n";
+  // The verdict as (26)'s (docs/rom.md, "Spectrum", "Verdict with dissipation").
   if (!g.dissipative) {
-    os << "stable: " << (sp.stable ? "yes" : "no") << " (|Im sigma| <= " << tolerance(sp) << " counts as real)\n";
-    os << "margin (largest |Im sigma|): " << margin(sp) << " rad/s\n";
-  } else if (sp.stable) {
-    os << "stable: yes -- no root grows by more than " << tolerance(sp) << " 1/s (joint friction)\n";
+    os << "stable: " << (v.stable ? "yes" : "no") << " (|Im sigma| <= " << v.tolerance << " counts as real)\n";
+    os << "margin (largest |Im sigma|): " << v.margin << " rad/s\n";
+  } else if (v.stable) {
+    os << "stable: yes -- no root grows by more than rounding (" << v.noise << " 1/s; joint friction), the slowest "
+       << "decays at " << -v.growth << " 1/s (" << v.at_zero << " roots at sigma = 0)\n";
   } else {
-    os << "stable: no -- the fastest root grows at " << sp.growth << " 1/s (e-folding " << 1 / sp.growth << " s)\n";
+    os << "stable: no -- " << v.growing << (v.growing == 1 ? " root grows" : " roots grow") << ", the fastest at "
+       << v.growth << " 1/s (e-folding " << 1 / v.growth << " s)\n";
   }
+  const double grows = g.dissipative ? v.noise : v.tolerance;
   os << std::setprecision(static_cast<int>(precision));
   os << "  #   Re sigma (rad/s)         Im sigma (1/s)\n";
   for (std::size_t i = 0; i < sp.roots.size(); ++i) {
     const auto r = sp.roots[i];
     os << std::setw(3) << i + 1 << "   " << std::setw(22) << std::setprecision(15) << r.real() << "   "
-       << std::setw(22) << r.imag() << (-r.imag() > tolerance(sp) ? "   grows" : "") << "\n";
+       << std::setw(22) << r.imag() << (-r.imag() > grows && std::abs(r) > v.tolerance ? "   grows" : "") << "\n";
   }
   os << std::setprecision(static_cast<int>(precision));
 }
@@ -53,10 +46,11 @@ std::string general_spectrum_json(const GeneralChain& g, const GeneralSpectrum& 
   j["spin"] = g.spin;
   j["roots"] = nlohmann::ordered_json::array();
   for (const auto& r : sp.roots) j["roots"].push_back({r.real(), r.imag()});
-  j["stable"] = sp.stable;
-  j["growth"] = sp.growth;
-  j["margin"] = margin(sp);
-  j["tolerance"] = tolerance(sp);
+  j["stable"] = sp.verdict.stable;
+  j["margin"] = sp.verdict.margin;
+  j["growth"] = sp.verdict.growth;
+  j["growing"] = sp.verdict.growing;
+  j["tolerance"] = sp.verdict.tolerance;
   j["fluid_modes"] = g.n_modes();
   j["coverage"] = nlohmann::ordered_json::array();  // [body (1-based), share] per tank
   for (const auto& [k, share] : g.coverage) j["coverage"].push_back({k + 1, share});

@@ -12,7 +12,7 @@ namespace rc::rom {
 
 void print_general_spectrum(std::ostream& os, const GeneralChain& g, const GeneralSpectrum& sp);
 
-// {"model": "general", "frame": "turning", "spin", "roots": [[re, im], ...], "stable", "growth", "margin",
+// {"model": "general", "frame": "turning", "spin", "roots": [[re, im], ...], "stable", "margin", "growth", "growing",
 //  "tolerance", "fluid_modes", "coverage": [[body, share] per tank]}
 std::string general_spectrum_json(const GeneralChain& g, const GeneralSpectrum& sp);
 

@@ -227,6 +227,62 @@ void write_nonlinear_history(const NonlinearHistory& h, int n, const fs::path& o
   });
 }
 
+namespace {
+
+void write_general_csv(const GeneralChain& g, const GeneralHistory& h, const fs::path& tmp) {
+  std::ofstream os(tmp);
+  if (!os) throw std::runtime_error(tmp.string() + ": cannot create");
+  os << std::setprecision(17) << "t";
+  for (int k = 0; k < g.n; ++k) os << ",u" << k + 1 << "_re,u" << k + 1 << "_im";
+  for (int l = 0; l < g.n_modes(); ++l) os << ",z" << g.modes[l].body + 1 << "_" << l + 1 << "_re,z" << g.modes[l].body + 1 << "_" << l + 1 << "_im";
+  for (int k = 0; k < h.spin.cols(); ++k) os << ",spin" << k + 1;
+  os << "\n";
+  for (std::size_t j = 0; j < h.t.size(); ++j) {
+    os << h.t[j];
+    for (int k = 0; k < g.n; ++k) os << ',' << h.u(j, k).real() << ',' << h.u(j, k).imag();
+    for (int l = 0; l < g.n_modes(); ++l) os << ',' << h.z(j, l).real() << ',' << h.z(j, l).imag();
+    for (int k = 0; k < h.spin.cols(); ++k) os << ',' << h.spin(j, k);
+    os << '\n';
+  }
+  os.close();
+  if (!os) throw std::runtime_error(tmp.string() + ": write failed");
+}
+
+void write_general_h5(const GeneralChain& g, const GeneralHistory& h, const fs::path& tmp) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  H5 file{H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose};
+  if (file.id < 0) throw std::runtime_error(tmp.string() + ": cannot create");
+  const hsize_t N = h.t.size(), nm = g.n_modes();
+  write_attr(file.id, "format", "chain-rom-history");
+  write_attr(file.id, "model", "general");
+  write_attr(file.id, "method", "exact (matrix exponential over each output step)");
+  write_attr(file.id, "convention",
+             "u_k = beta_k - i alpha_k (Krylov angles, rad) in space; z_l the fluid amplitude of mode l (h = 2 Re(z c), "
+             "docs/rom.md, \"Bodies and tanks without axial symmetry\")");
+  write_attr(file.id, "wall_seconds", h.wall_seconds);
+  if (!std::isnan(h.momentum_drift)) write_attr(file.id, "max_momentum_drift", h.momentum_drift);
+  write_dataset(file.id, "t", h.t, N, 0);
+  write_complex_rows(file.id, "u", h.u);
+  write_complex_rows(file.id, "z", h.z);
+  std::vector<double> body(nm), lam(nm);
+  for (hsize_t l = 0; l < nm; ++l) { body[l] = g.modes[l].body + 1; lam[l] = g.modes[l].lambda; }
+  write_dataset(file.id, "mode_body", body, nm, 0);
+  write_dataset(file.id, "mode_lambda", lam, nm, 0);
+  if (h.spin.size() > 0) {
+    const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> spin = h.spin;
+    write_dataset(file.id, "spin", std::vector<double>(spin.data(), spin.data() + spin.size()), N, spin.cols());
+  }
+}
+
+}  // namespace
+
+void write_general_history(const GeneralChain& g, const GeneralHistory& h, const fs::path& out) {
+  write_file_atomically(out, [&](const fs::path& tmp) {
+    if (lower_ext(out) == ".csv") write_general_csv(g, h, tmp);
+    else write_general_h5(g, h, tmp);
+  });
+}
+
 std::string spectrum_json(const ChainModel& m, const Spectrum& sp) {
   nlohmann::ordered_json j;  // keys in the order of docs/physics.md §4
   j["roots"] = nlohmann::ordered_json::array();

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "chain_model.hpp"
+#include "general_run.hpp"
 #include "nonlinear_run.hpp"
 #include "propagation.hpp"
 #include "spectrum.hpp"
@@ -19,6 +20,10 @@ void write_history(const ChainModel& m, const History& h, const std::filesystem:
 // The nonlinear model's history of n bodies: the same layout plus quaternion (4n per sample), spin (n) and
 // angular_momentum (3); attribute model = "nonlinear". docs/rom.md, "Nonlinear chain".
 void write_nonlinear_history(const NonlinearHistory& h, int n, const std::filesystem::path& out);
+
+// The chain without axial symmetry's history (general_run.hpp): t, u (in space), z (its modes' amplitudes), spin when
+// its spins' rates are coordinates; attribute model = "general". HDF5 unless the name ends in .csv.
+void write_general_history(const GeneralChain& g, const GeneralHistory& h, const std::filesystem::path& out);
 
 // docs/physics.md §4: {"roots": [[re, im], ...], "stable": bool, "margin": float, "det_residual": float}
 std::string spectrum_json(const ChainModel& m, const Spectrum& sp);

@@ -3,6 +3,7 @@
 #include "commands.hpp"
 
 #include "chain_model.hpp"
+#include "general_chain.hpp"
 #include "confirmed_sweep.hpp"
 #include "external_programs.hpp"
 #include "scene.hpp"
@@ -96,7 +97,8 @@ void report_failures(const SweepResult& r, const std::string& key) {
 int sweep_by_roots(const SweepOptions& o, const SweepRequest& q) {
   TableCache tables;
   // Validates the scene as given and reads its tables once; a dissipative chain's margin is a growth rate.
-  const bool growth_map = build_model(q.scene, &tables).dissipative();
+  const bool growth_map = needs_general_chain(q.scene, tables) ? build_general_chain(q.scene, &tables).dissipative
+                                                               : build_model(q.scene, &tables).dissipative();
   const SweepResult r = run_sweep(q.scene, tables, q.a1, q.a2, o.threads, [](long d, long total, double el) {
     std::fprintf(stderr, "chain-rom sweep: %ld/%ld points, %.1f s, about %.0f s left\n", d, total, el,
                  el * static_cast<double>(total - d) / static_cast<double>(d));

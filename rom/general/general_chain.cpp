@@ -185,6 +185,8 @@ GeneralChain build_general_chain(const Scene& scene, TableCache* tables) {
     g.geostrophic.push_back(geostrophic);
   }
   g.dissipative = cm.has_friction() || (g.axial && cm.axial.D.cwiseAbs().maxCoeff() > 0);
+  g.axial_inertia.resize(g.n);
+  for (int k = 0; k < g.n; ++k) g.axial_inertia[k] = cm.bodies[k].C;
   set_matrices(cm, inertia, g);
   check_effective_inertia(scene, g);
   return g;

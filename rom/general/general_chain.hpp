@@ -27,6 +27,7 @@ struct GeneralChain {
   bool axial = false;       // the axial rates are coordinates (some tank is 3-D: its modes may couple to the spin)
   bool free_chain = false;
   Eigen::MatrixXd M, C, K;  // in Q = (q_1, …, q_n[, ψ_1, …, ψ_n]): the frozen fluid's inertia included, no modes
+  Eigen::VectorXd axial_inertia;  // C_k with the frozen fluid (kg m²)
   std::vector<Eigen::Matrix3d> geostrophic;  // per body: the 3-D tanks' λ = 0 weight (kg m²), else 0
   std::vector<GeneralMode> modes;            // every tank's kept modes, body by body
   std::vector<std::pair<int, double>> coverage;  // per tank, body by body: (body, its kept share of the sum rule)

@@ -108,16 +108,16 @@ GeneralSpectrum general_spectrum(const GeneralChain& g) {
     throw std::runtime_error("the general chain's eigen-solver did not converge (" + std::to_string(sys.dim()) +
                              " states)");
   GeneralSpectrum sp;
-  for (Eigen::Index i = 0; i < es.eigenvalues().size(); ++i) {
+  Eigen::VectorXcd sigma(es.eigenvalues().size());
+  for (Eigen::Index i = 0; i < sigma.size(); ++i) {
     const std::complex<double> mu = es.eigenvalues()[i];
-    sp.roots.emplace_back(mu.imag(), -mu.real());  // σ = −iμ
-    sp.scale = std::max(sp.scale, std::abs(sp.roots.back()));
+    sigma[i] = {mu.imag(), -mu.real()};  // σ = −iμ
+    sp.roots.push_back(sigma[i]);
   }
   std::sort(sp.roots.begin(), sp.roots.end(), [](auto a, auto b) {
     return a.real() != b.real() ? a.real() < b.real() : a.imag() < b.imag();
   });
-  for (const auto& r : sp.roots) sp.growth = std::max(sp.growth, -r.imag());
-  sp.stable = !(sp.growth > 1e-8 * sp.scale);
+  sp.verdict = verdict_of_roots(sigma, g.dissipative);
   return sp;
 }
 

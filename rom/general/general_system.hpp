@@ -13,6 +13,7 @@
 #pragma once
 
 #include "general_chain.hpp"
+#include "spectrum.hpp"
 
 #include <Eigen/Dense>
 
@@ -38,9 +39,7 @@ GeneralSystem build_general_system(const GeneralChain& g);
 
 struct GeneralSpectrum {
   std::vector<std::complex<double>> roots;  // σ (rad/s) in the turning frame, ascending real part
-  double scale = 0;                         // the largest |σ|
-  double growth = 0;                        // max(0, −Im σ): the fastest growth rate (1/s)
-  bool stable = true;                       // no root below the real axis beyond 1e-8 · scale
+  Verdict verdict;                          // as (26)'s (spectrum.hpp: verdict_of_roots)
 };
 
 // Throws std::runtime_error when the eigen-solver does not converge.

@@ -29,5 +29,8 @@ struct LinearValidity {
 // `exact_linear`: the run's own history when it was propagated exactly (method "exact"), which is then not propagated
 // again.
 LinearValidity linear_validity(const Scene& scene, const ChainModel& model, const History* exact_linear = nullptr);
+// The same for tilts another linear model computed (the chain without axial symmetry, general_run.hpp): `linear` holds
+// u_k at the scene's output times (t = 0, output_step, …), one row per time.
+LinearValidity linear_validity(const Scene& scene, const History::Rows& linear);
 
 }  // namespace rc::rom

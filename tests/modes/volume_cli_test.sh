@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The 3-D commands of cavity-modes (docs/volume.md): a small ellipsoid table and a user's volume file end to end
 # with info, every bad-input case giving a one-line error, a non-zero exit and no file, and the table in chain-rom:
-# spectrum's roots (the chain without axial symmetry) against those of the closed-form table, run's one-line refusal.
+# spectrum's roots (the chain without axial symmetry) against those of the closed-form table, a run, bench's refusal.
 set -u
 source "$(cd "$(dirname "$0")" && pwd)/cli_checks.sh"
 BIN=$1
@@ -87,7 +87,13 @@ print("%.1e" % gap)'); then
   else
     bad "chain-rom spectrum with the 3-D table: $(cat rom.txt) $gap"
   fi
-  sed '/^B = /d' scene.toml > upright.toml
-  expect_error "chain-rom run refuses a 3-D table" "3-D cavity's table (no axial symmetry): \`chain-rom spectrum\` takes it" "$ROM" run upright.toml -o out.h5
+  printf '[initial]\ntilt = [[0.01, 0.0]]\n[run]\nt_end = 0.2\noutput_step = 0.01\n' >> scene.toml
+  if "$ROM" run scene.toml -o run.h5 > run_rom.txt 2>&1 && grep -q "21 samples, the chain without axial symmetry" run_rom.txt &&
+     /usr/bin/python3 -c 'import h5py; f = h5py.File("run.h5"); assert f.attrs["model"] == b"general" or f.attrs["model"] == "general"; assert f["u_re"].shape == (21, 1)'; then
+    ok "chain-rom run with the 3-D table ($(grep -m1 validity run_rom.txt))"
+  else
+    bad "chain-rom run with the 3-D table: $(cat run_rom.txt)"
+  fi
+  expect_error "chain-rom bench refuses the scene" "take it (the chain without axial symmetry, docs/rom.md)" "$ROM" bench scene.toml -o out.csv
 fi
 finish

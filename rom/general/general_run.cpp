@@ -1,0 +1,113 @@
+#include "general_run.hpp"
+
+#include "balancing.hpp"
+#include "general_system.hpp"
+
+#include <unsupported/Eigen/MatrixFunctions>
+
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+namespace rc::rom {
+namespace {
+
+using cd = std::complex<double>;
+
+// y(0) from the scene's u_k(0), u̇_k(0): in F, v = e^{iω0t}u gives v(0) = u(0), v̇(0) = u̇(0) + iω0 u(0), and
+// q = (Re v, −Im v); the spins at ω0 and the fluid at rest.
+Eigen::VectorXd initial_state(const GeneralChain& g, const GeneralSystem& sys, const Scene& scene) {
+  if (!scene.fluid.empty())
+    throw std::runtime_error(scene.file.string() + ": initial.fluid: the chain without axial symmetry starts with its "
+                             "fluid at rest (its modes are not (26)'s); leave it out");
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(sys.dim());
+  const int nq = 2 * g.n;
+  for (int k = 0; k < g.n; ++k) {
+    const cd u = scene.tilt[k], v_dot = scene.rate[k] + cd(0, g.spin) * u;
+    y[2 * k] = sys.s * u.real();
+    y[2 * k + 1] = -sys.s * u.imag();
+    y[nq + 2 * k] = v_dot.real();
+    y[nq + 2 * k + 1] = -v_dot.imag();
+  }
+  return y;
+}
+
+// One body, no gravity, field or friction: the angular momentum in space is an integral (general_run.hpp).
+bool has_momentum_integral(const GeneralChain& g, const Scene& scene) {
+  return g.n == 1 && (scene.free_chain || scene.gravity == 0) && !scene.field && !g.dissipative &&
+         scene.support_friction == 0;
+}
+
+// δL in space and the size of its largest term, from the state y at time t (general_run.hpp; docs/rom.md).
+Eigen::Vector3d angular_momentum(const GeneralChain& g, const GeneralSystem& sys, const Eigen::VectorXd& y, double t,
+                                 double& size) {
+  const double w = g.spin;
+  const Eigen::Matrix2d Mq = g.M.topLeftCorner<2, 2>(), J = (Eigen::Matrix2d() << 0, -1, 1, 0).finished();
+  const Eigen::Matrix2d I_tt = Mq.trace() * Eigen::Matrix2d::Identity() - Mq;  // the θ-frame tensor: Ā I + Δ
+  const Eigen::Vector2d q = y.head<2>() / sys.s, q_dot = y.segment<2>(2);
+  Eigen::Vector3d dw;
+  dw.head<2>() = J * q_dot - w * q;
+  dw.z() = g.axial ? y[4] : 0.0;
+  Eigen::Vector3d h = -g.geostrophic[0] * dw;
+  const int z0 = 2 + g.dim_q();
+  for (int l = 0; l < g.n_modes(); ++l) h += 2 * (cd(y[z0 + 2 * l], y[z0 + 2 * l + 1]) * g.modes[l].c).real();
+  Eigen::Vector3d L;
+  L.head<2>() = g.axial_inertia[0] * w * q + I_tt * dw.head<2>();
+  L.z() = g.axial_inertia[0] * dw.z();
+  size = std::max({L.head<2>().norm(), (I_tt * dw.head<2>()).norm(), h.norm(), std::abs(L.z())});
+  L += h;
+  const Eigen::Rotation2Dd turn(w * t);  // F turns at ω0 about the vertical
+  L.head<2>() = turn * L.head<2>().eval();
+  return L;
+}
+
+void record(const GeneralChain& g, const GeneralSystem& sys, const Eigen::VectorXd& y, double t, long j,
+            GeneralHistory& h) {
+  const int nq = 2 * g.n, d = g.dim_q();
+  for (int k = 0; k < g.n; ++k)
+    h.u(j, k) = std::exp(cd(0, -g.spin * t)) * cd(y[2 * k], -y[2 * k + 1]) / sys.s;
+  for (int l = 0; l < g.n_modes(); ++l) h.z(j, l) = cd(y[nq + d + 2 * l], y[nq + d + 2 * l + 1]);
+  if (g.axial)
+    for (int k = 0; k < g.n; ++k) h.spin(j, k) = g.spin + y[nq + 2 * g.n + k];
+}
+
+}  // namespace
+
+GeneralHistory propagate_general(const GeneralChain& g, const Scene& scene) {
+  if (scene.run.method != "exact")
+    throw std::runtime_error(scene.file.string() + ": run.method: the chain without axial symmetry is propagated "
+                             "exactly only (method = \"exact\")");
+  const auto t0 = std::chrono::steady_clock::now();
+  const GeneralSystem sys = build_general_system(g);
+  const long steps = std::lround(scene.run.t_end / scene.run.output_step) + 1;
+  const double h_step = scene.run.output_step;
+  Eigen::MatrixXd B = sys.B;
+  const Eigen::VectorXd S = balance_in_place(B);  // B = S B' S⁻¹: exp(B h) = S exp(B' h) S⁻¹
+  const Eigen::MatrixXd step = S.asDiagonal() * (B * h_step).exp() * S.cwiseInverse().asDiagonal();
+  GeneralHistory h;
+  h.u.resize(steps, g.n);
+  h.z.resize(steps, g.n_modes());
+  if (g.axial) h.spin.resize(steps, g.n);
+  Eigen::VectorXd y = initial_state(g, sys, scene);
+  const bool momentum = has_momentum_integral(g, scene);
+  double size0 = 0, largest = 0, drift = 0;
+  const Eigen::Vector3d L0 = momentum ? angular_momentum(g, sys, y, 0, size0) : Eigen::Vector3d::Zero();
+  for (long j = 0; j < steps; ++j) {
+    const double t = static_cast<double>(j) * h_step;
+    if (j > 0) y = step * y;
+    if (!y.allFinite())
+      throw std::runtime_error("the trajectory is not finite at t = " + std::to_string(t) + " s: the chain's magnitudes "
+                               "leave double precision; nothing written");
+    h.t.push_back(t);
+    record(g, sys, y, t, j, h);
+    if (!momentum) continue;
+    double size = 0;
+    drift = std::max(drift, (angular_momentum(g, sys, y, t, size) - L0).norm());
+    largest = std::max(largest, size);
+  }
+  if (momentum) h.momentum_drift = largest > 0 ? drift / largest : 0.0;
+  h.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return h;
+}
+
+}  // namespace rc::rom

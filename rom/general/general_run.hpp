@@ -1,0 +1,32 @@
+// Time histories of the chain without axial symmetry (`chain-rom run`; docs/rom.md, "Bodies and tanks without axial
+// symmetry"): general_system.hpp's first-order form propagated exactly, y_{j+1} = exp(B h) y_j over each output step
+// h, from the scene's tilts and rates (the fluid at rest), and written in (26)'s terms: u_k = e^{−iω0t}(q_x − i q_y) in
+// space.
+#pragma once
+
+#include "general_chain.hpp"
+#include "propagation.hpp"
+#include "scene.hpp"
+
+#include <limits>
+#include <vector>
+
+namespace rc::rom {
+
+struct GeneralHistory {
+  std::vector<double> t;
+  History::Rows u;       // steps × n: (26)'s complex tilts in space
+  History::Rows z;       // steps × modes: the fluid's amplitudes (general_tank.hpp: h = Σ 2 Re(z c))
+  Eigen::MatrixXd spin;  // steps × n: ω0 + ψ̇_k when the spins' rates are coordinates (3-D tanks), else empty
+  // One body without gravity, friction or field: its angular momentum perturbation in space (about O, or its centre
+  // of mass when free), conserved by the linear equations: max_t |δL(t) − δL(0)| over the largest of its terms
+  // (C ω0 n_t, I δω, h). NaN when the chain has no such integral.
+  double momentum_drift = std::numeric_limits<double>::quiet_NaN();
+  double wall_seconds = 0;
+};
+
+// Throws std::runtime_error for what the general run does not take (a method other than "exact", initial fluid
+// amplitudes) and when the trajectory leaves double precision.
+GeneralHistory propagate_general(const GeneralChain& g, const Scene& scene);
+
+}  // namespace rc::rom
