@@ -156,6 +156,26 @@ void grade_towards_wall(const MeshOptions& options, double size, const std::stri
   use_as_background(finer);
 }
 
+// Distance from (r, z) to the segment (r0, z0)–(r1, z1).
+double segment_distance(const std::array<double, 4>& s, double r, double z) {
+  const double dr = s[2] - s[0], dz = s[3] - s[1], len2 = dr * dr + dz * dz;
+  const double t = len2 > 0 ? std::clamp(((r - s[0]) * dr + (z - s[1]) * dz) / len2, 0.0, 1.0) : 0.0;
+  return std::hypot(r - s[0] - t * dr, z - s[1] - t * dz);
+}
+
+// The bands of MeshOptions as gmsh's size callback (the smaller of it and the fields' size rules): band_size within
+// band_width of a segment, growing linearly with the distance beyond.
+void refine_along_bands(const MeshOptions& options, double size) {
+  if (options.bands.empty() || !(options.band_size > 0) || options.band_size >= size) return;
+  const auto bands = options.bands;
+  const double fine = options.band_size, width = options.band_width, growth = options.band_growth;
+  gmsh::model::mesh::setSizeCallback([bands, fine, width, growth, size](int, int, double x, double y, double) {
+    double d = 1e300;
+    for (const auto& b : bands) d = std::min(d, segment_distance(b, x, y));
+    return std::min(size, fine + growth * std::max(0.0, d - width));
+  });
+}
+
 // `grading`: grade towards the wall with gmsh fields (none when the CAD model already holds the wall layers).
 void generate(int order, double size, const std::string& where, double radial_size = 0,
               const MeshOptions* grading = nullptr) {
@@ -163,6 +183,7 @@ void generate(int order, double size, const std::string& where, double radial_si
     throw std::runtime_error(where + ": mesh size " + number(size) + " is too small for a model of extent " +
                              number(model_extent()));
   if (grading) grade_towards_wall(*grading, size, where);
+  if (grading) refine_along_bands(*grading, size);
   gmsh::option::setNumber("Mesh.MeshSizeMax", size);
   // The options rule, not the sizes a .geo file gives its points (docs/geometry.md): with gmsh's default the file's
   // `lc` caps the size, so that a coarser mesh asked for (the convergence check doubles the size) came out
@@ -170,6 +191,7 @@ void generate(int order, double size, const std::string& where, double radial_si
   // --mesh-size 0.25 against 0.5).
   gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
   gmsh::model::mesh::generate(2);
+  gmsh::model::mesh::removeSizeCallback();
   // Only after the linear mesh exists: setOrder places the new edge nodes on the CAD curves
   // (exact arcs) by their parametrisation; interior nodes are interpolated.
   gmsh::model::mesh::setOrder(order);

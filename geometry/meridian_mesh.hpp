@@ -38,6 +38,11 @@ struct MeshOptions {
   double wall_size = 0.0;
   double wall_growth = 0.25;
   double wall_layer = 0.0;
+  // Refinement along segments of the meridian half-plane, each (r0, z0, r1, z1): elements of band_size within
+  // band_width of a segment, growing by band_growth per unit distance beyond it up to `size` (the internal shear
+  // layers of a viscous mode: modes/viscous/shear_layers.hpp). None when empty.
+  std::vector<std::array<double, 4>> bands = {};
+  double band_size = 0.0, band_width = 0.0, band_growth = 0.25;
 };
 
 struct MeridianMesh {

@@ -50,6 +50,7 @@ struct ViscousOptions {
   double ekman = 0;
   double wall_size = 0;
   double mesh_ekman = 0;   // the mesh as for this Ekman number (0: --ekman's); chain-rom's sweeps over spin
+  bool no_shear_layers = false;  // tables: a uniform interior, not refined along the internal shear layers
   std::string target;      // tables: the ideal frequencies to continue, instead of the survey's (--target)
   std::string sigma;       // FROM:TO:N (real parts) or a list of complex numbers
   double sigma_imag = 0;   // imaginary part of every σ
@@ -106,6 +107,9 @@ void add_viscous_options(CLI::App* cmd, ViscousOptions& viscous, bool response) 
                   "with --ekman: make the wall-layer mesh as for this Ekman number, at most --ekman (default --ekman): "
                   "one mesh for several Ekman numbers (chain-rom's sweeps over spin)");
   if (response) return;
+  cmd->add_flag("--no-shear-layers", viscous.no_shear_layers,
+                "with --ekman, a sphere at Ek <= 1e-5: do not refine the mesh along the internal shear layers from the "
+                "critical latitudes (docs/viscous.md, \"Internal shear layers\")");
   cmd->add_option("--target", viscous.target,
                   "with --ekman, a table: the damped modes nearest these frequencies lambda (a list such as 1.0,0.5, "
                   "each in (-2, 2)) instead of those of the ideal survey's clusters, which it then skips "
@@ -280,6 +284,7 @@ rc::modes::ViscousTableSettings viscous_request(const ViscousOptions& v, TableRe
   // A partially filled tank's mesh is the liquid's (its smallest dimension the layer outside the free surface).
   const auto liquid = req.fill < 1 ? rc::geometry::partially_filled(req.shape, req.fill) : req.shape;
   s.mesh = rc::modes::viscous_mesh_defaults(liquid, v.mesh_ekman > 0 ? v.mesh_ekman : v.ekman, s.mesh);
+  if (!v.no_shear_layers && req.fill >= 1) s.shear_layers_ekman = v.mesh_ekman > 0 ? v.mesh_ekman : v.ekman;
   req.mesh = {};
   req.mesh.order = 0;
   req.check_convergence = false;

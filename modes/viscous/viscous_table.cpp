@@ -1,5 +1,7 @@
 #include "viscous_table.hpp"
 
+#include "shear_layers.hpp"
+
 #include "galerkin_projection.hpp"
 #include "mesh_broadcast.hpp"
 #include "progress.hpp"
@@ -296,6 +298,7 @@ ModeTable compute_viscous_table(const geometry::ShapeSpec& shape, const ViscousT
   geometry::MeshOptions mesh = viscous_mesh_defaults(shape, s.ekman, s.mesh);
   std::vector<double> targets = ideal.lambda, energies = ideal.E;
   if (targets.empty()) throw std::runtime_error("the ideal table has no mode to continue");
+  if (s.shear_layers_ekman > 0) add_shear_layer_bands(shape, s.shear_layers_ekman, targets, mesh);
 
   Progress lines(report);  // at least every 5 s, with the time left (progress.hpp)
   auto progress = [&](const char* what) {
@@ -313,6 +316,7 @@ ModeTable compute_viscous_table(const geometry::ShapeSpec& shape, const ViscousT
     geometry::MeshOptions coarse = mesh;
     coarse.size *= 2;
     coarse.wall_size *= 2;
+    coarse.band_size *= 2;
     ViscousTableSettings check = s;
     check.solve.keep_vector = false;
     check.solve.keep_block = false;

@@ -20,6 +20,9 @@ struct ViscousTableSettings {
   ViscousSolveSettings solve;
   double convergence_tolerance = 1e-6;
   bool check_convergence = true;
+  // > 0: the mesh also follows the targets' internal shear layers as at this Ekman number (shear_layers.hpp; the
+  // command sets it to the mesh's Ekman number unless --no-shear-layers); 0: it does not.
+  double shear_layers_ekman = 0;
 };
 
 // Defaults where the settings leave 0 (docs/viscous.md, "Discretisation and solver"): order 6, interior size d/8

@@ -8,6 +8,7 @@
 #include "passivity_scan.hpp"
 #include "stokes_series.hpp"
 #include "mesh_broadcast.hpp"
+#include "shear_layers.hpp"
 #include "taylor_hood_space.hpp"
 #include "viscous_eigensolver.hpp"
 #include "viscous_response.hpp"
@@ -160,6 +161,42 @@ TEST(ViscousSphere, SpinOverModeTendsToTheBoundaryLayerLimit) {
     previous_gap = gap;
   }
   EXPECT_LE(previous_gap, 0.06);
+}
+
+// At Ek ≤ 1e-5 the spin-over mode's internal shear layers (launched from the critical latitudes ±30°, straight to the
+// opposite poles: shear_layers.hpp) limit a uniform mesh's decay; the bands along them give Kore's spectral value
+// (data/reference/kore_sphere_spinover.csv) to 1e-5, with and without them measured at Ek = 1e-5.
+TEST(ViscousSphere, ShearLayerBandsGiveTheSpectralPeersDecay) {
+  const auto rays = rc::modes::sphere_shear_layers(1.0, 1.0);
+  ASSERT_EQ(rays.size(), 2u);
+  for (const auto& r : rays) {  // from (cos 30°, ±sin 30°) to the pole (0, ∓1), along dr/dz = tan 30°
+    EXPECT_NEAR(std::hypot(r[0], r[1]), 1.0, 1e-12);
+    EXPECT_NEAR(std::abs(r[1]), 0.5, 1e-12);
+    EXPECT_NEAR(r[2], 0.0, 1e-12);
+    EXPECT_NEAR(r[3], -2 * r[1], 1e-12);
+    EXPECT_NEAR(std::abs((r[2] - r[0]) / (r[3] - r[1])), std::tan(kPi / 6), 1e-12);
+  }
+  const double ek = 1e-5, kore_decay = 0.00847039795712305, kore_lambda = 1.001192088643075;
+  double errors[2] = {0, 0};
+  for (const bool bands : {false, true}) {
+    TableRequest ideal;
+    ideal.shape = {"sphere", {{"radius", 1.0}}, {}};
+    ideal.mesh.order = 6;
+    ideal.selection.modes = 1;
+    ideal.check_convergence = false;
+    ViscousTableSettings s;
+    s.ekman = ek;
+    s.mesh.order = 0;
+    s.check_convergence = false;
+    s.shear_layers_ekman = bands ? ek : 0;
+    const ModeTable t = compute_viscous_table(ideal.shape, s, compute_mode_table(ideal), {});
+    errors[bands] = std::abs(t.decay[0] - kore_decay) / kore_decay;
+    std::printf("Ek 1e-5 %s: %ld unknowns, %.1f s: lambda %.2e, decay %.2e against Kore\n",
+                bands ? "with the shear-layer bands" : "uniform interior", t.ndof, t.wall_seconds,
+                std::abs(t.lambda[0] - kore_lambda) / kore_lambda, errors[bands]);
+  }
+  EXPECT_LT(errors[1], 1e-5);
+  EXPECT_LT(errors[1], errors[0] / 20);
 }
 
 // The cylinder has no critical latitude, so (λ − λ0)/Ek^{1/2} = λ1 + O(Ek^{1/2}) and one Richardson step on
