@@ -20,14 +20,18 @@ namespace rc::modes {
 // symmetry, ended at a pole. For the spin-over mode (λ = 1) each runs from a critical latitude (±30°) straight to the
 // opposite pole.
 std::vector<std::array<double, 4>> sphere_shear_layers(double radius, double lambda, int max_segments = 8);
+// The same in a spheroid (semi-axes a along r, c along z): critical points where the ellipse's tangent is a
+// characteristic, rays reflected at the ellipse.
+std::vector<std::array<double, 4>> spheroid_shear_layers(double a, double c, double lambda, int max_segments = 8);
 
 // The bands' rules, measured on the sphere's spin-over mode at Ek = 1e-6 against Kore (docs/benchmarks.md, "Internal
 // shear layers"): elements of 0.4 Ek^{1/5} R within 0.5 Ek^{1/5} R of the characteristics, growing by 2 per unit
 // distance beyond, from Ek = 1e-5 down.
 inline constexpr double kShearSize = 0.4, kShearWidth = 0.5, kShearGrowth = 2, kShearLayersFrom = 1e-5;
 
-// With a built-in sphere at Ek ≤ kShearLayersFrom, bands along every target's shear layers (MeshOptions::bands). Other
-// shapes: unchanged (not done yet).
+// With a built-in sphere at Ek ≤ kShearLayersFrom, bands along every target's shear layers (MeshOptions::bands; their
+// sizes times R^{3/5}, the layers' Ek_R^{1/5} R in the table's unit). Other shapes: unchanged (spheroids are traced but
+// not applied yet: shear_layers.cpp).
 void add_shear_layer_bands(const geometry::ShapeSpec& shape, double ekman, const std::vector<double>& lambdas,
                            geometry::MeshOptions& mesh);
 
