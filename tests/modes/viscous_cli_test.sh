@@ -80,6 +80,16 @@ d = max(abs(a[n][0] - b[n][0]) / abs(a[n][0]) for n in ("lambda", "decay", "E"))
 print("--target 1.0: the spin-over mode of the survey to %.1e" % d)
 assert len(b["lambda"]) == 1 and d < 1e-8
 '; then ok "--target gives the survey's damped mode"; else bad "--target: $(tail -2 targeted.txt)"; fi
+# A sphere at Ek <= 1e-5: the mesh follows the internal shear layers (more unknowns, docs/viscous.md "Internal shear
+# layers") unless --no-shear-layers.
+if "$BIN" sphere --radius 1 --ekman 1e-5 --order 3 --target 1.0 --no-convergence-check -o banded.h5 > /dev/null 2>&1 &&
+   "$BIN" sphere --radius 1 --ekman 1e-5 --order 3 --target 1.0 --no-convergence-check --no-shear-layers -o uniform.h5 \
+     > /dev/null 2>&1 && /usr/bin/python3 -c '
+import h5py
+b, u = h5py.File("banded.h5").attrs["ndof"], h5py.File("uniform.h5").attrs["ndof"]
+print("shear-layer bands: %d unknowns, uniform interior %d" % (b, u))
+assert b > 1.5 * u
+'; then ok "--ekman 1e-5 on a sphere: the shear-layer bands, --no-shear-layers"; else bad "shear-layer bands"; fi
 expect_error "--exact-at with --fit" "belongs to a Krylov response table" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:9 --fit --exact-at 0.7-0.01i -o out.h5
 expect_error "--exact-at on a CSV response" "belongs to a Krylov response table" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:9 --exact-at 0.7 -o out.csv
 expect_error "--exact-at malformed" "0.7-x" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:9 --exact-at 0.7-x -o out.h5
