@@ -211,7 +211,7 @@ Command add_run_command(CLI::App& app) {
             if (scene.run.present && scene.run.nonlinear()) return run_nonlinear(scene, o->out);
             TableCache tables;
             if (needs_general_chain(scene, tables)) return run_general(scene, tables, o->scene, o->out);
-            return run_linear(scene, build_model(scene), o->scene, o->out);
+            return run_linear(scene, build_model(scene, &tables), o->scene, o->out);
           }};
 }
 

@@ -64,7 +64,7 @@ Command add_spectrum_command(CLI::App& app) {
               o->confirm_request.json = o->json;
               return confirm_exit(scene, o->confirm_request);
             }
-            const ChainModel model = build_model(scene);
+            const ChainModel model = build_model(scene, &tables);  // the tables needs_general_chain read
             Spectrum sp = compute_spectrum(model);
             if (has_companions(scene))
               mark_companion_shifts(sp, compute_spectrum(build_model(with_companions(scene))));
