@@ -97,6 +97,11 @@ GeneralSystem build_general_system(const GeneralChain& g) {
   sys.B.block(nq + d, 0, nz, nq) = -CP * Xq / sys.s;
   sys.B.block(nq + d, nq, nz, d) = -CP * Xv - f.Chat * f.R;
   sys.B.block(nq + d, nq + d, nz, nz) = f.Lambda - CP * Xz;
+  // Values each in range can overflow together (an eigen-solver given a NaN may never return: fuzz, docs/rom.md
+  // "Limits"): refused before any solver sees them.
+  if (!sys.B.allFinite())
+    throw std::runtime_error("the chain's first-order matrix overflows double precision (masses, inertias, lengths, "
+                             "spins or gravity too large together)");
   return sys;
 }
 

@@ -35,6 +35,7 @@ Eigen::MatrixXd effective_inertia(const GeneralChain& g);
 // their own beyond what the fluid's modes take.
 void check_effective_inertia(const Scene& scene, const GeneralChain& g);
 
+// Throws std::runtime_error when its matrix is not finite (the scene's values overflow together).
 GeneralSystem build_general_system(const GeneralChain& g);
 
 struct GeneralSpectrum {
