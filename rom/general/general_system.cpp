@@ -69,8 +69,9 @@ void check_effective_inertia(const Scene& scene, const GeneralChain& g) {
   const double lo = es.eigenvalues().minCoeff(), hi = em.eigenvalues().cwiseAbs().maxCoeff();
   if (!(lo > 1e-13 * std::max(hi, 1e-300))) {
     std::ostringstream os;
-    os << "the effective inertia (the frozen fluid less what its modes take) is not positive definite (smallest "
-          "eigenvalue " << lo << " kg m^2): the shell carries no inertia beyond what the fluid modes take";
+    os << "the effective inertia (the bodies with their frozen fluid, less what its modes take) is not positive "
+          "definite (smallest eigenvalue " << lo << " kg m^2): a shell's moments and products that no body has, or a "
+          "shell that carries no inertia beyond what the fluid modes take";
     throw SceneError(scene.file.string() + ": body: " + os.str());
   }
 }
