@@ -25,8 +25,8 @@ std::vector<std::array<double, 4>> sphere_shear_layers(double radius, double lam
 std::vector<std::array<double, 4>> spheroid_shear_layers(double a, double c, double lambda, int max_segments = 8);
 
 // The bands' rules, measured on the sphere's spin-over mode at Ek = 1e-6 against Kore (docs/benchmarks.md, "Internal
-// shear layers"): elements of 0.4 Ek^{1/5} R within 0.5 Ek^{1/5} R of the characteristics, growing by 2 per unit
-// distance beyond, from Ek = 1e-5 down.
+// shear layers"): elements of 0.4 Ek^{1/5} R^{3/5} within 0.5 Ek^{1/5} R^{3/5} of the characteristics, growing by 2
+// per unit distance beyond, from Ek = 1e-5 down.
 inline constexpr double kShearSize = 0.4, kShearWidth = 0.5, kShearGrowth = 2, kShearLayersFrom = 1e-5;
 
 // With a built-in sphere at Ek ≤ kShearLayersFrom, bands along every target's shear layers (MeshOptions::bands; their
