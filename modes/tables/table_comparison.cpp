@@ -2,7 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <complex>
+#include <numeric>
 #include <stdexcept>
 
 namespace rc::modes {
@@ -38,6 +42,85 @@ void add_clusters(TableComparison& c, const ModeTable& a, const ModeTable& b) {
   }
 }
 
+double frobenius(const std::vector<double>& m) {
+  return std::sqrt(std::inner_product(m.begin(), m.end(), m.begin(), 0.0));
+}
+
+// max |a_ij − b_ij| over entries stored as parallel real and imaginary parts (im empty: real tensors).
+double largest_entry_difference(const std::vector<double>& a_re, const std::vector<double>& a_im,
+                                const std::vector<double>& b_re, const std::vector<double>& b_im) {
+  double d = 0;
+  for (std::size_t k = 0; k < a_re.size() && k < b_re.size(); ++k) {
+    const double im = a_im.empty() || b_im.empty() ? 0.0 : a_im[k] - b_im[k];
+    d = std::max(d, std::hypot(a_re[k] - b_re[k], im));
+  }
+  return d;
+}
+
+// The /volume tensors of two 3-D tables: the largest entry difference, relative to B's inertia and Zhukovsky
+// tensors' own norms, and the sum rule's and geostrophic weight's to B's sum-rule tensor (the total coupling).
+void add_tensors(TableComparison& c, const ModeTable& a, const ModeTable& b) {
+  const auto& va = a.volume_cavity;
+  const auto& vb = b.volume_cavity;
+  const double rule = std::max(frobenius(vb.sum_rule), 1e-300);
+  const auto add = [&](const char* name, const std::vector<double>& ar, const std::vector<double>& ai,
+                       const std::vector<double>& br, const std::vector<double>& bi, double scale) {
+    const double na = std::hypot(frobenius(ar), frobenius(ai)), nb = std::hypot(frobenius(br), frobenius(bi));
+    c.tensors.push_back({name, na, nb, largest_entry_difference(ar, ai, br, bi) / std::max(scale, 1e-300), true});
+  };
+  add("inertia", va.inertia, {}, vb.inertia, {}, frobenius(vb.inertia));
+  add("Zhukovsky", va.zhukovsky, {}, vb.zhukovsky, {}, frobenius(vb.zhukovsky));
+  add("sum rule I - J_zh", va.sum_rule, {}, vb.sum_rule, {}, rule);
+  add("geostrophic weight", va.geostrophic_re, va.geostrophic_im, vb.geostrophic_re, vb.geostrophic_im, rule);
+}
+
+// A 3-D table's rows gathered into groups of λ within a relative 1e-2 of their neighbours (the discrete copies
+// of one mode on a mesh without axial symmetry): E-weighted λ, total E, summed coupling tensor.
+struct ModeGroup {
+  double lambda = 0, E = 0;
+  std::vector<double> H_re = std::vector<double>(9), H_im = std::vector<double>(9);
+};
+
+std::vector<ModeGroup> mode_groups(const ModeTable& t) {
+  std::vector<std::size_t> order(t.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](auto i, auto j) { return t.lambda[i] < t.lambda[j]; });
+  std::vector<ModeGroup> groups;
+  double last = 0;
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const std::size_t r = order[k];
+    if (k == 0 || t.lambda[r] - last > 1e-2 * std::abs(last)) groups.emplace_back();
+    auto& g = groups.back();
+    g.lambda += t.E[r] * t.lambda[r];
+    g.E += t.E[r];
+    for (int e = 0; e < 9; ++e) {
+      g.H_re[e] += t.volume_cavity.coupling_re[9 * r + e];
+      g.H_im[e] += t.volume_cavity.coupling_im[9 * r + e];
+    }
+    last = t.lambda[r];
+  }
+  for (auto& g : groups) g.lambda /= std::max(g.E, 1e-300);
+  return groups;
+}
+
+// Each of A's mode groups against B's of nearest λ: λ, E and the coupling tensor (for information).
+void add_groups(TableComparison& c, const ModeTable& a, const ModeTable& b) {
+  const auto ga = mode_groups(a), gb = mode_groups(b);
+  for (std::size_t i = 0; i < ga.size() && !gb.empty(); ++i) {
+    std::size_t j = 0;
+    for (std::size_t k = 1; k < gb.size(); ++k)
+      if (std::abs(gb[k].lambda - ga[i].lambda) < std::abs(gb[j].lambda - ga[i].lambda)) j = k;
+    const auto label = [&](const char* what) { return fmt::format("group {} -> {}: {}", i + 1, j + 1, what); };
+    c.clusters.push_back({label("lambda"), ga[i].lambda, gb[j].lambda,
+                          relative(ga[i].lambda, gb[j].lambda, gb[j].lambda), false});
+    c.clusters.push_back({label("E"), ga[i].E, gb[j].E, relative(ga[i].E, gb[j].E, gb[j].E), false});
+    const double nb = std::hypot(frobenius(gb[j].H_re), frobenius(gb[j].H_im));
+    c.clusters.push_back({label("|H|"), std::hypot(frobenius(ga[i].H_re), frobenius(ga[i].H_im)), nb,
+                          largest_entry_difference(ga[i].H_re, ga[i].H_im, gb[j].H_re, gb[j].H_im) /
+                              std::max(nb, 1e-300), false});
+  }
+}
+
 }  // namespace
 
 TableComparison compare_tables(const ModeTable& a, const ModeTable& b, double tolerance) {
@@ -59,11 +142,17 @@ TableComparison compare_tables(const ModeTable& a, const ModeTable& b, double to
     for (std::size_t k = 0; k < a.bands.size(); ++k)
       c.bands.push_back({fmt::format("band [{:+.2f}, {:+.2f})", a.bands.lo[k], a.bands.hi[k]), a.bands.E[k],
                          b.bands.E[k], relative(a.bands.E[k], b.bands.E[k], b.sum_rule), true});
-  add_clusters(c, a, b);
-  for (const auto* list : {&c.integrals, &c.bands})
+  const bool volumes = a.volume_cavity.present() && b.volume_cavity.present();
+  if (volumes) {
+    add_tensors(c, a, b);
+    add_groups(c, a, b);
+  } else {
+    add_clusters(c, a, b);
+  }
+  for (const auto* list : {&c.integrals, &c.bands, &c.tensors})
     for (const auto& q : *list) {
       if (!(q.difference <= tolerance)) ++c.failing;  // NaN fails
-      if (!(q.difference <= c.worst)) { c.worst = q.difference; c.worst_name = q.name; }
+      if (!(q.difference <= c.worst) || c.worst_name.empty()) { c.worst = q.difference; c.worst_name = q.name; }
     }
   return c;
 }
@@ -98,17 +187,24 @@ std::string table_comparison_text(const TableComparison& c, const ModeTable& a, 
   if (!c.bands.empty())
     s += fmt::format("band weights (|difference| / B's A_f - J_zh; {} of {} bands hold weight):\n", weighty.size(),
                      c.bands.size()) + rows(weighty, c.tolerance, "diff/rule");
-  if (!c.clusters.empty())
+  if (!c.tensors.empty())
+    s += "3-D tensors (norms; largest entry difference / B's norm, sum rule and geostrophic weight / B's sum "
+         "rule):\n" + rows(c.tensors, c.tolerance, "diff/norm");
+  if (!c.tensors.empty() && !c.clusters.empty())
+    s += "mode groups of A (rows within 1e-2 in lambda: a mode's discrete copies) against B's of nearest lambda "
+         "(relative difference; |H| largest entry difference / B's norm; for information):\n" +
+         rows(c.clusters, c.tolerance, "rel_diff");
+  else if (!c.clusters.empty())
     s += "clusters of A against B's of nearest lambda (relative difference; for information: single clusters "
          "converge only where the spectrum is discrete, docs/trust.md):\n" + rows(c.clusters, c.tolerance, "rel_diff");
-  s += fmt::format("worst judged difference: {} {:.2e}; {} of {} integrals and band weights within {:g}\n",
-                   c.worst_name, c.worst, c.integrals.size() + c.bands.size() - c.failing,
-                   c.integrals.size() + c.bands.size(), c.tolerance);
+  const std::size_t judged = c.integrals.size() + c.bands.size() + c.tensors.size();
+  s += fmt::format("worst judged difference: {} {:.2e}; {} of {} integrals, band weights and tensors within {:g}\n",
+                   c.worst_name, c.worst, judged - c.failing, judged, c.tolerance);
   return s;
 }
 
 std::string table_comparison_failure(const TableComparison& c) {
-  return fmt::format("{} integrals or band weights differ by more than {:g}; worst: {} by {:.2e}", c.failing,
+  return fmt::format("{} integrals, band weights or tensors differ by more than {:g}; worst: {} by {:.2e}", c.failing,
                      c.tolerance, c.worst_name, c.worst);
 }
 

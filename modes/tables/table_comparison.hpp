@@ -2,7 +2,10 @@
 // two meshes, so that a refinement study is one command (docs/trust.md). It reports what converges for every
 // shape — the integrals A_f, C_f, J_zh, A_f − J_zh and the band weights of /bands — and, for information, the
 // clusters of A matched to B's of nearest λ (single clusters converge only where the spectrum is discrete:
-// spheroids and cylinders, not cones or general sections; docs/cones.md).
+// spheroids and cylinders, not cones or general sections; docs/cones.md). Two 3-D tables (docs/volume.md §5) are
+// compared in their tensors too — inertia, Zhukovsky, the sum rule, the geostrophic weight — and their modes in
+// groups: a 3-D mesh splits one mode among discrete copies a little apart, so rows within a relative 1e-2 in λ are
+// one group, its λ their E-weighted mean and its coupling the sum of their tensors.
 #pragma once
 
 #include "mode_table.hpp"
@@ -23,6 +26,7 @@ struct TableComparison {
   double tolerance = 0;
   std::vector<QuantityDifference> integrals;  // volume, A_f, C_f, J_zh, A_f − J_zh: relative to |b|
   std::vector<QuantityDifference> bands;      // band weights: |ΔE| relative to B's A_f − J_zh
+  std::vector<QuantityDifference> tensors;    // 3-D tables: the /volume tensors, largest entry difference (judged)
   std::vector<QuantityDifference> clusters;   // λ and E of A's clusters against B's nearest (not judged)
   std::vector<std::string> notes;             // differences in setup worth knowing (geometry text, order, Ek)
   std::size_t failing = 0;                    // judged quantities above the tolerance

@@ -20,6 +20,27 @@ if "$BIN" ellipsoid --a 1 --b 0.8 --c 0.6 --order 3 --mesh-size 0.3 -o ell.h5 > 
 else
   bad "ellipsoid table: $(tail -3 run.txt info.txt)"
 fi
+# compare on two 3-D tables: the tensors are judged, the modes compared in groups of discrete copies. A P3 table at
+# h 0.4 against the one at h 0.3: their spin-over groups agree to the coarse mesh (measured 1.2e-4 in lambda), the
+# tensors to 1.5e-3.
+if [ -f ell.h5 ] && "$BIN" compare ell.h5 ell.h5 --tolerance 1e-14 > same.txt 2>&1 && grep -q "3-D tensors" same.txt &&
+   grep -q "9 of 9 integrals, band weights and tensors" same.txt &&
+   "$BIN" ellipsoid --a 1 --b 0.8 --c 0.6 --order 3 --mesh-size 0.4 -o ell2.h5 > run2.txt 2>&1 &&
+   "$BIN" compare ell2.h5 ell.h5 --tolerance 1e-2 > cmp.txt 2>&1 &&
+   /usr/bin/python3 -c '
+import re, sys
+t = open("cmp.txt").read()
+g = re.search(r"group \d+ -> \d+: lambda\s+(\S+)\s+(\S+)\s+(\S+)", t)
+assert g and float(g.group(3)) < 2e-3, g and g.group(0)
+assert abs(float(g.group(2)) - 1.3719886811) < 1e-4, g.group(2)  # 2ab/sqrt((a2+c2)(b2+c2))
+for name in ("inertia", "Zhukovsky", "sum rule I - J_zh", "geostrophic weight"):
+    assert re.search(name + r"\s+\S+\s+\S+\s+\S+", t), name'; then
+  ok "compare two 3-D tables: tensors judged, spin-over group $(grep -m1 'group 1 -> 1: lambda' cmp.txt | tr -s ' ')"
+else
+  bad "compare 3-D tables: $(tail -3 same.txt cmp.txt)"
+fi
+expect_error "compare 3-D tables past the tolerance" "tensors differ by more than 1e-06" "$BIN" compare ell2.h5 ell.h5
+
 if "$BIN" volume "$VOLUMES/box.geo" --order 2 --mesh-size 0.4 -o box.h5 > box.txt 2>&1 && grep -q "geometry: box.geo" box.txt; then
   ok "volume box.geo ($(grep -m1 coverage box.txt))"
 else
