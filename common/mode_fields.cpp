@@ -74,12 +74,58 @@ std::string data_item(const std::string& h5, const std::string& dataset, const s
          "\" Precision=\"" + (integer ? "4" : "8") + "\" Format=\"HDF\">" + h5 + ":" + dataset + "</DataItem>\n";
 }
 
+// The texts of a 3-D cavity's /fields (docs/volume.md §5).
+void describe_volume_fields(hid_t fields) {
+  text_attribute(fields, "points", "mesh/points are (x, y, z) in the spin frame (z the spin axis), in the geometry's "
+                                   "coordinates (not centroid-relative)");
+  text_attribute(fields, "phase_convention",
+                 "3-D modes: the velocity is Re[(V + i V_imag) exp(i lambda t)] in the frame turning with the body "
+                 "(omega0 = 1), complex amplitudes of (V_x, V_y, V_z); p and p_imag those of the pressure P");
+  text_attribute(fields, "normalisation",
+                 "each field int |V|^2 dtau = 1; energy_density = |V_x|^2 + |V_y|^2 + |V_z|^2 per unit volume; a = "
+                 "u^H c >= 0 with c_k = int (e_k x r).V (r from the centroid) and u the unit axis of the row's "
+                 "coupling tensor's largest eigenvalue (a^2 is that eigenvalue when the row's modes were re-found)");
+  text_attribute(fields, "cluster_field",
+                 "the rotation field about u projected on the row's modes (sum over them of V_l c_l^H u / |V_l|^2), "
+                 "normalised: the flow the row carries when the body turns about u");
+}
+
+void describe_meridian_fields(hid_t fields, bool damped) {
+  text_attribute(fields, "points",
+                 "mesh/points are (r, 0, z): the meridian half-plane phi = 0, z along the symmetry axis, in the "
+                 "geometry's coordinates (not centroid-relative)");
+  if (damped) {
+    text_attribute(fields, "phase_convention",
+                   "damped modes of a viscous table: the velocity is Re[(V_r, V_phi, V_z) exp(i phi + i lambda t)] with "
+                   "complex amplitudes; V holds their real parts and V_imag their imaginary parts (no factor i "
+                   "dropped), p and p_imag those of the pressure P (docs/viscous.md, Fields)");
+    text_attribute(fields, "normalisation",
+                   "each mode as /modes: x^T M x = 1 (unconjugated) with a = (e1 x r, V) / (i sqrt(2 pi)) of "
+                   "non-negative real part; energy_density = (|V_r|^2 + |V_phi|^2 + |V_z|^2) r / (2 pi int int "
+                   "(same) r dr dz), so 2 pi int int energy_density dr dz = 1");
+    text_attribute(fields, "cluster_field", "one damped mode per /modes row");
+  } else {
+    text_attribute(fields, "phase_convention",
+                   "V = (i v_r, v_phi, i v_z) exp(i m phi) with m = 1 (docs/physics.md §2); V holds the real "
+                   "amplitudes (v_r, v_phi, v_z): the factor i of V_r and V_z is dropped. At phi = 0 these are also "
+                   "the x, y, z components. p is the real pressure amplitude of P = p exp(i phi)");
+    text_attribute(fields, "normalisation",
+                   "each mode's V has N2 = 2 pi int int (v_r^2 + v_phi^2 + v_z^2) r dr dz = 1 and a = (e1 x r, V) "
+                   ">= 0, as /modes; energy_density = (v_r^2 + v_phi^2 + v_z^2) r per unit dr dz, so 2 pi int int "
+                   "energy_density dr dz = 1");
+    text_attribute(fields, "cluster_field",
+                   "sum over the cluster's eigenpairs l of (a_l / N_l^2) V_l, normalised: the part of the coupling "
+                   "flow the cluster carries (a single mode for a one-member cluster)");
+  }
+}
+
 }  // namespace
 
 void ModeFields::validate() const {
-  const std::size_t n = num_points(), npe = static_cast<std::size_t>((order + 1) * (order + 2) / 2);
+  if (dimension != 2 && dimension != 3) throw std::runtime_error("fields: dimension is neither 2 nor 3");
+  const std::size_t n = num_points(), npe = element_nodes();
   if (points.size() != 3 * n || n == 0) throw std::runtime_error("fields: no mesh points");
-  if (cells.size() % 3 != 0 || cells.empty()) throw std::runtime_error("fields: no sub-triangles");
+  if (cells.size() % cell_nodes() != 0 || cells.empty()) throw std::runtime_error("fields: no sub-cells");
   if (order < 1 || elements.size() % npe != 0) throw std::runtime_error("fields: elements do not match the order");
   for (const auto* ids : {&cells, &elements})
     for (int c : *ids)
@@ -91,9 +137,9 @@ void ModeFields::validate() const {
     check_finite(m.p, mode_group(m.row) + "/p");
     check_finite(m.V, mode_group(m.row) + "/V");
     check_finite(m.energy_density, mode_group(m.row) + "/energy_density");
-    if (damped && (m.p_imag.size() != n || m.V_imag.size() != 3 * n))
-      throw std::runtime_error("fields: damped mode " + std::to_string(m.row) + " lacks its imaginary parts");
-    if (!damped && !(m.p_imag.empty() && m.V_imag.empty()))
+    if (complex_amplitudes() && (m.p_imag.size() != n || m.V_imag.size() != 3 * n))
+      throw std::runtime_error("fields: mode " + std::to_string(m.row) + " lacks its imaginary parts");
+    if (!complex_amplitudes() && !(m.p_imag.empty() && m.V_imag.empty()))
       throw std::runtime_error("fields: imaginary parts on an ideal mode");
     check_finite(m.p_imag, mode_group(m.row) + "/p_imag");
     check_finite(m.V_imag, mode_group(m.row) + "/V_imag");
@@ -103,40 +149,25 @@ void ModeFields::validate() const {
 void write_fields_group(hid_t file, const ModeFields& f) {
   f.validate();
   Hid fields(create_group(file, "fields"), H5Gclose);
-  text_attribute(fields.get(), "points",
-                 "mesh/points are (r, 0, z): the meridian half-plane phi = 0, z along the symmetry axis, in the "
-                 "geometry's coordinates (not centroid-relative)");
-  if (f.damped) {
-    text_attribute(fields.get(), "phase_convention",
-                   "damped modes of a viscous table: the velocity is Re[(V_r, V_phi, V_z) exp(i phi + i lambda t)] with "
-                   "complex amplitudes; V holds their real parts and V_imag their imaginary parts (no factor i "
-                   "dropped), p and p_imag those of the pressure P (docs/viscous.md, Fields)");
-    text_attribute(fields.get(), "normalisation",
-                   "each mode as /modes: x^T M x = 1 (unconjugated) with a = (e1 x r, V) / (i sqrt(2 pi)) of "
-                   "non-negative real part; energy_density = (|V_r|^2 + |V_phi|^2 + |V_z|^2) r / (2 pi int int "
-                   "(same) r dr dz), so 2 pi int int energy_density dr dz = 1");
-    text_attribute(fields.get(), "cluster_field", "one damped mode per /modes row");
+  if (f.dimension == 3) {
+    describe_volume_fields(fields.get());
   } else {
-    text_attribute(fields.get(), "phase_convention",
-                   "V = (i v_r, v_phi, i v_z) exp(i m phi) with m = 1 (docs/physics.md §2); V holds the real "
-                   "amplitudes (v_r, v_phi, v_z): the factor i of V_r and V_z is dropped. At phi = 0 these are also "
-                   "the x, y, z components. p is the real pressure amplitude of P = p exp(i phi)");
-    text_attribute(fields.get(), "normalisation",
-                   "each mode's V has N2 = 2 pi int int (v_r^2 + v_phi^2 + v_z^2) r dr dz = 1 and a = (e1 x r, V) "
-                   ">= 0, as /modes; energy_density = (v_r^2 + v_phi^2 + v_z^2) r per unit dr dz, so 2 pi int int "
-                   "energy_density dr dz = 1");
-    text_attribute(fields.get(), "cluster_field",
-                   "sum over the cluster's eigenpairs l of (a_l / N_l^2) V_l, normalised: the part of the coupling "
-                   "flow the cluster carries (a single mode for a one-member cluster)");
+    describe_meridian_fields(fields.get(), f.damped);
   }
   Hid mesh(create_group(fields.get(), "mesh"), H5Gclose);
   dataset(mesh.get(), "points", f.points, 3, H5T_NATIVE_DOUBLE);
-  dataset(mesh.get(), "cells", f.cells, 3, H5T_NATIVE_INT);
-  const std::size_t npe = (f.order + 1) * (f.order + 2) / 2;
-  dataset(mesh.get(), "elements", f.elements, npe, H5T_NATIVE_INT);
+  dataset(mesh.get(), "cells", f.cells, f.cell_nodes(), H5T_NATIVE_INT);
+  dataset(mesh.get(), "elements", f.elements, f.element_nodes(), H5T_NATIVE_INT);
   attribute(mesh.get(), "order", static_cast<long>(f.order), H5T_NATIVE_LONG);
-  text_attribute(mesh.get(), "cells_are", "straight sub-triangles (order^2 per FE triangle) through all Lagrange nodes");
-  text_attribute(mesh.get(), "elements_are", "isoparametric Lagrange triangles, gmsh local node order");
+  if (f.dimension == 3) {
+    text_attribute(mesh.get(), "cells_are", "straight sub-tetrahedra (order^3 per FE tetrahedron) through all "
+                                            "Lagrange nodes");
+    text_attribute(mesh.get(), "elements_are", "isoparametric Lagrange tetrahedra, gmsh local node order");
+  } else {
+    text_attribute(mesh.get(), "cells_are", "straight sub-triangles (order^2 per FE triangle) through all Lagrange "
+                                            "nodes");
+    text_attribute(mesh.get(), "elements_are", "isoparametric Lagrange triangles, gmsh local node order");
+  }
   for (const auto& m : f.modes) {
     Hid g(create_group(fields.get(), mode_group(m.row)), H5Gclose);
     attribute(g.get(), "modes_row", static_cast<long>(m.row), H5T_NATIVE_LONG);
@@ -147,7 +178,7 @@ void write_fields_group(hid_t file, const ModeFields& f) {
     dataset(g.get(), "p", m.p, 1, H5T_NATIVE_DOUBLE);
     dataset(g.get(), "V", m.V, 3, H5T_NATIVE_DOUBLE);
     dataset(g.get(), "energy_density", m.energy_density, 1, H5T_NATIVE_DOUBLE);
-    if (f.damped) {
+    if (f.complex_amplitudes()) {
       dataset(g.get(), "p_imag", m.p_imag, 1, H5T_NATIVE_DOUBLE);
       dataset(g.get(), "V_imag", m.V_imag, 3, H5T_NATIVE_DOUBLE);
     }
@@ -158,12 +189,17 @@ std::string fields_xdmf(const ModeFields& f, const std::string& h5_name) {
   const std::string h5 = xml_escape(h5_name);
   const std::string n = std::to_string(f.num_points()), cells = std::to_string(f.num_cells());
   std::ostringstream x;
-  x << "<?xml version=\"1.0\" ?>\n"
-    << "<!-- " << kFieldsXdmfMarker << ": the meridian half-plane (r, 0, z) and each mode's p, V (real amplitudes, "
-       "V = (i v_r, v_phi, i v_z) exp(i phi)) and kinetic-energy density; docs/modes.md \"Fields\" -->\n"
-    << "<Xdmf Version=\"3.0\">\n  <Domain>\n    <Grid Name=\"meridian\" GridType=\"Uniform\">\n"
-    << "      <Topology TopologyType=\"Triangle\" NumberOfElements=\"" << cells << "\">\n"
-    << data_item(h5, "/fields/mesh/cells", cells + " 3", true, "        ") << "      </Topology>\n"
+  const bool volume = f.dimension == 3;
+  x << "<?xml version=\"1.0\" ?>\n<!-- " << kFieldsXdmfMarker
+    << (volume ? ": the 3-D cavity's tetrahedra (x, y, z) and each mode's complex p, V (spin frame) and kinetic-energy "
+                 "density; docs/volume.md section 5 -->\n"
+               : ": the meridian half-plane (r, 0, z) and each mode's p, V (real amplitudes, V = (i v_r, v_phi, i v_z) "
+                 "exp(i phi)) and kinetic-energy density; docs/modes.md \"Fields\" -->\n")
+    << "<Xdmf Version=\"3.0\">\n  <Domain>\n    <Grid Name=\"" << (volume ? "cavity" : "meridian")
+    << "\" GridType=\"Uniform\">\n"
+    << "      <Topology TopologyType=\"" << (volume ? "Tetrahedron" : "Triangle") << "\" NumberOfElements=\"" << cells
+    << "\">\n"
+    << data_item(h5, "/fields/mesh/cells", cells + (volume ? " 4" : " 3"), true, "        ") << "      </Topology>\n"
     << "      <Geometry GeometryType=\"XYZ\">\n"
     << data_item(h5, "/fields/mesh/points", n + " 3", false, "        ") << "      </Geometry>\n";
   for (const auto& m : f.modes) {
@@ -175,7 +211,7 @@ std::string fields_xdmf(const ModeFields& f, const std::string& h5_name) {
     node_attribute("p", "Scalar", n);
     node_attribute("V", "Vector", n + " 3");
     node_attribute("energy_density", "Scalar", n);
-    if (f.damped) {
+    if (f.complex_amplitudes()) {
       node_attribute("p_imag", "Scalar", n);
       node_attribute("V_imag", "Vector", n + " 3");
     }

@@ -1,6 +1,7 @@
 // Optional /fields of a mode table (docs/physics.md §4): the meridian mesh and, for each kept mode (cluster), its
 // pressure p and velocity V at the mesh nodes, plus the XDMF companion that lets ParaView open them.
-// Layout, units and the phase convention: docs/modes.md, "Fields".
+// Layout, units and the phase convention: docs/modes.md, "Fields"; a 3-D cavity's (tetrahedra, complex amplitudes):
+// docs/volume.md §5.
 #pragma once
 
 #include <hdf5.h>
@@ -14,10 +15,15 @@ namespace rc {
 
 struct ModeFields {
   // --- /fields/mesh -----------------------------------------------------------------------------
-  std::vector<double> points;   // N × 3, row-major: (r, 0, z) of every mesh node (the half-plane φ = 0)
-  std::vector<int> cells;       // M × 3: straight sub-triangles through all Lagrange nodes (what XDMF shows)
-  int order = 0;                // Lagrange order of the FE triangles
-  std::vector<int> elements;    // the FE triangles, (order+1)(order+2)/2 nodes each, gmsh's local order
+  // dimension 2: the meridian half-plane of an axisymmetric cavity; 3: a 3-D cavity's tetrahedra, whose fields are
+  // complex amplitudes (p_imag and V_imag always present) in the spin frame.
+  int dimension = 2;
+  std::vector<double> points;   // N × 3, row-major: (r, 0, z) of every mesh node (the half-plane φ = 0); in 3-D (x, y, z)
+  std::vector<int> cells;       // M × 3: straight sub-triangles through all Lagrange nodes (what XDMF shows); in 3-D
+                                // M × 4 straight sub-tetrahedra
+  int order = 0;                // Lagrange order of the FE triangles (tetrahedra)
+  std::vector<int> elements;    // the FE triangles, (order+1)(order+2)/2 nodes each, gmsh's local order; in 3-D the
+                                // tetrahedra, (order+1)(order+2)(order+3)/6 nodes each
 
   // --- /fields/mode_<i>, i = row of /modes --------------------------------------------------------
   struct Mode {
@@ -36,8 +42,13 @@ struct ModeFields {
   // V_imag, p_imag (in each Mode) their imaginary parts; V is then the physical (V_r, V_phi, V_z), no factor i.
   bool damped = false;
 
+  bool complex_amplitudes() const { return damped || dimension == 3; }
+  std::size_t cell_nodes() const { return dimension == 3 ? 4 : 3; }
+  std::size_t element_nodes() const {
+    return dimension == 3 ? (order + 1) * (order + 2) * (order + 3) / 6 : (order + 1) * (order + 2) / 2;
+  }
   std::size_t num_points() const { return points.size() / 3; }
-  std::size_t num_cells() const { return cells.size() / 3; }
+  std::size_t num_cells() const { return cells.size() / cell_nodes(); }
   // Throws std::runtime_error if array sizes disagree, an index is out of range or a value is not finite.
   void validate() const;
 };

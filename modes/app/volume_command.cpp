@@ -2,6 +2,7 @@
 
 #include "mode_table_report.hpp"
 #include "petsc_handles.hpp"
+#include "volume_fields.hpp"
 
 #include <cmath>
 #include <fstream>
@@ -14,7 +15,7 @@ namespace rc::modes {
 namespace {
 
 void add_common_options(CLI::App* cmd, int& order, double& size, double& wall_size, double& wall_growth,
-                        double& floor, std::string& output) {
+                        double& floor, bool& fields, std::string& output) {
   cmd->add_option("--order", order, "Lagrange order of the tetrahedra, 1..6 (default 4)");
   cmd->add_option("--mesh-size", size, "element size (default 0.4 of the smallest dimension)");
   cmd->add_option("--wall-size", wall_size, "element size on the wall, graded to --mesh-size inside (the geometry "
@@ -22,6 +23,8 @@ void add_common_options(CLI::App* cmd, int& order, double& size, double& wall_si
   cmd->add_option("--wall-growth", wall_growth, "growth of the element size per unit distance from the wall (default 1)");
   cmd->add_option("--floor", floor, "keep modes whose coupling tensor's trace exceeds this fraction of the sum rule's "
                                     "(default 1e-4)");
+  cmd->add_flag("--fields", fields, "also store each row's pressure and velocity (complex) at the mesh nodes, with an "
+                                    "XDMF companion FILE.xdmf for ParaView (docs/volume.md §5)");
   cmd->add_option("-o,--output", output, "mode table to write (HDF5)")->required();
 }
 
@@ -44,6 +47,16 @@ void print_report(const VolumeTableResult& r) {
     std::cout << "NOT CONVERGED: " << s.unsettled.size() << " heavy cluster(s) of transverse weight " << weight
               << " did not settle within the basis budget; they are not in the table\n";
   }
+  if (r.fields) {
+    double worst = 0;
+    for (const auto& m : r.fields->modes) {
+      const double top = largest_coupling(r.table, m.row);
+      worst = std::max(worst, std::abs(m.a * m.a - top) / std::max(top, 1e-300));
+    }
+    std::cout << "fields: " << r.fields->modes.size() << " rows on " << r.fields->num_points()
+              << " nodes; each field's a^2 against its row's largest coupling eigenvalue: " << worst
+              << " (relative, worst row)\n";
+  }
   std::cout << std::flush;
 }
 
@@ -57,11 +70,11 @@ VolumeCommands::VolumeCommands(CLI::App& app) {
   ellipsoid_->add_option("--c", c_, "semi-axis along z")->required();
   ellipsoid_->add_option("--tilt", tilt_degrees_, "angle (degrees) of the ellipsoid's c axis against the spin axis, "
                                                   "turned about x");
-  add_common_options(ellipsoid_, order_, size_, wall_size_, wall_growth_, floor_, output_);
+  add_common_options(ellipsoid_, order_, size_, wall_size_, wall_growth_, floor_, fields_, output_);
   volume_ = app.add_subcommand("volume", "3-D: the user's cavity (.geo/.msh with a 3-D physical group \"fluid\", or "
                                          "CAD .step/.stp/.brep): its 3-D mode table (docs/volume.md)");
   volume_->add_option("file", file_, "geometry file")->required();
-  add_common_options(volume_, order_, size_, wall_size_, wall_growth_, floor_, output_);
+  add_common_options(volume_, order_, size_, wall_size_, wall_growth_, floor_, fields_, output_);
 }
 
 bool VolumeCommands::parsed() const { return ellipsoid_->parsed() || volume_->parsed(); }
@@ -80,6 +93,8 @@ VolumeTableRequest VolumeCommands::resolve() const {
   r.mesh.wall_size = wall_size_;
   r.mesh.wall_growth = wall_growth_;
   r.survey.floor = floor_;
+  r.fields = fields_;
+  if (fields_) check_companion_name(output_);
 
   return r;
 }
@@ -104,7 +119,7 @@ int VolumeCommands::run(const std::string& command_line) const {
     os << "ellipsoid a=" << a_ << " b=" << b_ << " c=" << c_ << " tilt=" << tilt_degrees_ << "deg";
     result.table.geometry_source = os.str();
   }
-  write_mode_table(result.table, output_);
+  write_mode_table(result.table, output_, result.fields ? &*result.fields : nullptr);
   if (is_root_rank()) print_report(result);
   return 0;
 }

@@ -30,6 +30,7 @@ class VolumeCommands {
   std::string file_, output_;
   int order_ = kVolumeDefaultOrder;
   double size_ = 0, wall_size_ = 0, wall_growth_ = 1.0, floor_ = 1e-4;
+  bool fields_ = false;
 };
 
 }  // namespace rc::modes

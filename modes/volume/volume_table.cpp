@@ -1,6 +1,7 @@
 #include "volume_table.hpp"
 
 #include "progress.hpp"
+#include "volume_fields.hpp"
 #include "volume_forms.hpp"
 #include "volume_velocity.hpp"
 #include "volume_zhukovsky.hpp"
@@ -125,6 +126,10 @@ VolumeTableResult make_volume_table(const VolumeTableRequest& request,
   t.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   t.sort_by_energy();
   t.validate();
+  if (request.fields) {
+    lines.step("fields: each row's modes re-found in the pressure pencil");
+    out.fields = volume_mode_fields(space, forms, fluid.centroid, t, progress);
+  }
   return out;
 }
 

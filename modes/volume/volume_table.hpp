@@ -3,11 +3,13 @@
 // once by the command (modes/app/volume_command.*); this layer takes only what it needs.
 #pragma once
 
+#include "mode_fields.hpp"
 #include "mode_table.hpp"
 #include "volume_mesh.hpp"
 #include "volume_survey.hpp"
 
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace rc::modes {
@@ -16,12 +18,14 @@ struct VolumeTableRequest {
   geometry::VolumeShapeSpec shape;
   geometry::MeshOptions mesh;  // order, size (0: default), wall_size/wall_growth
   VolumeSurveySettings survey;
+  bool fields = false;  // also each row's P and V at the mesh nodes (volume_fields.hpp)
 };
 
 struct VolumeTableResult {
   ModeTable table;
   VolumeSurvey survey;
   double sum_rule_mismatch = 0;  // max |Σ H over the rule − (I_f − J_zh)| / trace(I_f − J_zh)
+  std::optional<ModeFields> fields;  // with request.fields
 };
 
 // The order taken by the commands (docs/volume.md); the default size is the mesher's (geometry/volume_mesh.hpp).

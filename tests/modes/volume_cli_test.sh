@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The 3-D commands of cavity-modes (docs/volume.md): a small ellipsoid table and a user's volume file end to end
-# with info, every bad-input case giving a one-line error, a non-zero exit and no file, and the table in chain-rom:
-# spectrum's roots (the chain without axial symmetry) against those of the closed-form table, a run, bench's refusal.
+# with info, compare, --fields against the closed form, every bad-input case giving a one-line error, a non-zero exit
+# and no file, and the table in chain-rom: spectrum's roots (the chain without axial symmetry) against those of the closed-form table, a run, bench's refusal.
 set -u
 source "$(cd "$(dirname "$0")" && pwd)/cli_checks.sh"
 BIN=$1
@@ -40,6 +40,22 @@ else
   bad "compare 3-D tables: $(tail -3 same.txt cmp.txt)"
 fi
 expect_error "compare 3-D tables past the tolerance" "tensors differ by more than 1e-06" "$BIN" compare ell2.h5 ell.h5
+
+# --fields on tetrahedra: the heaviest row's field against the spin-over's closed form (check_volume_fields.py), the
+# XDMF companion, and no companion left when the table is rewritten without fields.
+if "$BIN" ellipsoid --a 1 --b 0.8 --c 0.6 --order 4 --mesh-size 0.4 --fields -o ellf.h5 > fields.txt 2>&1 && [ -f ellf.xdmf ] &&
+   /usr/bin/python3 "$(cd "$(dirname "$0")" && pwd)/check_volume_fields.py" ellf.h5 1 0.8 0.6 > check.txt 2>&1; then
+  ok "ellipsoid --fields: $(grep -c '^ok:' check.txt) checks against the closed form (a^2 against the row's coupling $(grep -m1 '^fields: [0-9]' fields.txt | sed 's/.*eigenvalue: //'))"
+  grep -E "linear|closed form|int" check.txt | sed 's/^/    /'
+else
+  bad "ellipsoid --fields: $(tail -3 fields.txt check.txt)"
+fi
+if "$BIN" ellipsoid --a 1 --b 0.8 --c 0.6 --order 2 --mesh-size 0.5 -o ellf.h5 > /dev/null 2>&1 && [ ! -f ellf.xdmf ]; then
+  ok "rewritten without --fields: the companion is gone"
+else
+  bad "a stale ellf.xdmf is left"
+fi
+expect_error "--fields with an .xdmf name" "must not end in .xdmf" "$BIN" ellipsoid --a 1 --b 1 --c 1 --fields -o out.xdmf
 
 if "$BIN" volume "$VOLUMES/box.geo" --order 2 --mesh-size 0.4 -o box.h5 > box.txt 2>&1 && grep -q "geometry: box.geo" box.txt; then
   ok "volume box.geo ($(grep -m1 coverage box.txt))"
