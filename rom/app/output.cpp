@@ -194,10 +194,8 @@ void write_nonlinear_h5(const NonlinearHistory& nh, int n, const fs::path& tmp) 
              "u_k = n_x - i n_y of body k's axis n_k = R_k e3 (= beta_k - i alpha_k, Krylov angles, to third order); "
              "quaternion (w, x, y, z) of R_k, body -> space; spin = Omega_k . n_k; energy, angular_momentum about "
              "O_1's start; zeta: the fluid coordinates in each body's frame: docs/rom.md, \"Nonlinear chain\"");
-  if (nh.integrals_valid) {
-    write_attr(file.id, "max_energy_drift", h.max_energy_drift);
-    write_attr(file.id, "max_momentum_drift", nh.max_momentum_drift);
-  }
+  if (nh.integrals_valid) write_attr(file.id, "max_energy_drift", h.max_energy_drift);
+  if (nh.momentum_valid) write_attr(file.id, "max_momentum_drift", nh.max_momentum_drift);
   write_attr(file.id, "steps", double(h.integrator_steps));
   write_attr(file.id, "rejected_steps", double(nh.rejected_steps));
   if (nh.viscous_tanks) write_attr(file.id, "viscous_spin_change", nh.viscous_spin_change);

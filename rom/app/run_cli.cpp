@@ -39,7 +39,11 @@ int run_nonlinear(const Scene& scene, const std::string& out_file) {
                       std::any_of(chain.bodies.begin(), chain.bodies.end(),
                                   [](const ChainBody& b) { return b.pitch_damping > 0 || b.magnus != 0; });
   if (!h.integrals_valid) {
-    std::cout << "energy: not an integral with fluid tanks in the nonlinear model (docs/rom.md, \"Nonlinear chain\")\n";
+    std::cout << "energy: not an integral with fluid tanks in the nonlinear model (docs/rom.md, \"Nonlinear chain\")";
+    if (h.momentum_valid && !external_loads(chain))
+      std::cout << "; angular momentum with the liquid's " << (chain.free_chain ? "(vector)" : "(about the vertical "
+                "through O_1)") << ": largest relative drift " << h.max_momentum_drift;
+    std::cout << "\n";
     return 0;
   }
   std::cout << "energy: H(0) = " << h.base.H.front() << ", H(end) = " << h.base.H.back() << ", ";
@@ -161,7 +165,7 @@ int run_linear(const Scene& scene, const ChainModel& model, const std::string& s
 }
 
 // The chain without axial symmetry (rom/general/): its exact propagation, its angular momentum integral when it has
-// one, and its validity against the nonlinear chain when that takes the scene (no 3-D tanks, products or offsets yet).
+// one, and its validity against the nonlinear chain.
 int run_general(const Scene& scene, TableCache& tables, const std::string& scene_file, const std::string& out) {
   if (!scene.run.present) throw std::runtime_error(scene_file + ": run: missing [run] section");
   const GeneralChain g = build_general_chain(scene, &tables);
@@ -175,18 +179,8 @@ int run_general(const Scene& scene, TableCache& tables, const std::string& scene
             << h.wall_seconds << " s\n";
   if (!std::isnan(h.momentum_drift))
     std::cout << "angular momentum in space: largest relative drift " << h.momentum_drift << "\n";
-  // The nonlinear chain takes B != A and one axisymmetric tank on a body's axis (nonlinear_run.hpp).
-  bool nonlinear_takes = true;
-  for (std::size_t k = 0; k < scene.size(); ++k)
-    nonlinear_takes = nonlinear_takes && scene.bodies[k].Ixy == 0 && scene.bodies[k].Ixz == 0 &&
-                      scene.bodies[k].Iyz == 0 && scene.bodies[k].more_cavities.empty() &&
-                      !(scene.bodies[k].cavity && (scene.bodies[k].cavity->offset ||
-                                                   tables.get(scene.bodies[k].cavity->table).volume_cavity.present()));
   LinearValidity validity;
   if (!v.stable) validity.why_not = "the scene is unstable";
-  else if (!nonlinear_takes)
-    validity.why_not = "the nonlinear chain takes no 3-D tanks, products of inertia, offsets or several tanks on a body "
-                       "yet";
   else validity = linear_validity(scene, h.u);
   if (validity.measured)
     std::cout << "validity: the nonlinear chain differs by " << validity.difference << " relative (1 % at about "

@@ -84,34 +84,20 @@ void require_balanced(const Scene& scene, int k, const Eigen::Matrix3d& I, const
 }
 
 // The scene as (26) sees it: every tank's frozen fluid folded into its shell (mass, centre of mass on the axis,
-// inertia), each body's transverse inertia replaced by its mean Ā_k. Returns each body's full tensor in `inertia` and
-// its tanks in `tanks`.
-Scene axisymmetric_part(const Scene& scene, TableCache& tables, std::vector<Eigen::Matrix3d>& inertia,
-                        std::vector<std::vector<GeneralTank>>& tanks) {
+// inertia), each body's transverse inertia replaced by its mean Ā_k.
+Scene axisymmetric_part(const Scene& scene, const std::vector<GeneralBody>& bodies) {
   Scene folded = scene;
   for (int k = 0; k < static_cast<int>(scene.size()); ++k) {
     BodySpec& b = folded.bodies[k];
-    Eigen::Matrix3d I = shell_inertia(b);
-    Eigen::Vector2d first_moment = Eigen::Vector2d::Zero();
-    double mass_arm = 0;
-    tanks.emplace_back();
-    for (const auto& [cav, key] : body_tanks(scene.bodies[k], k)) {
-      const GeneralTank tank = general_tank(scene, k, cav, key, read_table(scene, key, cav, tables));
-      b.com = (b.mass * b.com + tank.mass * tank.centroid.z()) / (b.mass + tank.mass);
-      b.mass += tank.mass;
-      first_moment += tank.mass * tank.centroid.head<2>();
-      mass_arm += tank.mass * tank.centroid.norm();
-      I += tank.inertia;
-      tanks.back().push_back(tank);
-    }
+    const Eigen::Matrix3d& I = bodies[k].inertia;
+    b.mass = bodies[k].mass;
+    b.com = bodies[k].com;
     b.cavity.reset();
     b.more_cavities.clear();
-    require_balanced(scene, k, I, first_moment, mass_arm);
     b.A = 0.5 * (I(0, 0) + I(1, 1));
     b.B.reset();
     b.C = I(2, 2);
     b.Ixy = b.Ixz = b.Iyz = 0;
-    inertia.push_back(I);
   }
   return folded;
 }
@@ -152,6 +138,31 @@ void set_matrices(const ChainModel& cm, const std::vector<Eigen::Matrix3d>& iner
 
 }  // namespace
 
+std::vector<GeneralBody> general_bodies(const Scene& scene, TableCache& tables) {
+  std::vector<GeneralBody> out;
+  for (int k = 0; k < static_cast<int>(scene.size()); ++k) {
+    const BodySpec& spec = scene.bodies[k];
+    GeneralBody b;
+    b.mass = spec.mass;
+    b.com = spec.com;
+    b.inertia = shell_inertia(spec);
+    Eigen::Vector2d first_moment = Eigen::Vector2d::Zero();
+    double mass_arm = 0;
+    for (const auto& [cav, key] : body_tanks(spec, k)) {
+      GeneralTank tank = general_tank(scene, k, cav, key, read_table(scene, key, cav, tables));
+      b.com = (b.mass * b.com + tank.mass * tank.centroid.z()) / (b.mass + tank.mass);
+      b.mass += tank.mass;
+      first_moment += tank.mass * tank.centroid.head<2>();
+      mass_arm += tank.mass * tank.centroid.norm();
+      b.inertia += tank.inertia;
+      b.tanks.push_back(std::move(tank));
+    }
+    require_balanced(scene, k, b.inertia, first_moment, mass_arm);
+    out.push_back(std::move(b));
+  }
+  return out;
+}
+
 bool needs_general_chain(const Scene& scene, TableCache& tables) {
   for (int k = 0; k < static_cast<int>(scene.size()); ++k) {
     const BodySpec& b = scene.bodies[k];
@@ -166,17 +177,16 @@ GeneralChain build_general_chain(const Scene& scene, TableCache* tables) {
   require_general_scene(scene);
   TableCache own;
   TableCache& cache = tables ? *tables : own;
-  std::vector<Eigen::Matrix3d> inertia;
-  std::vector<std::vector<GeneralTank>> tanks;
-  const Scene folded = axisymmetric_part(scene, cache, inertia, tanks);
-  const ChainModel cm = build_model(folded, &cache);  // the shells with their frozen fluid: (26) without tanks
+  const std::vector<GeneralBody> bodies = general_bodies(scene, cache);
+  const ChainModel cm = build_model(axisymmetric_part(scene, bodies), &cache);  // the shells with their frozen
+                                                                                 // fluid: (26) without tanks
   GeneralChain g;
   g.n = cm.n;
   g.spin = scene.bodies[0].spin;
   g.free_chain = scene.free_chain;
   for (int k = 0; k < g.n; ++k) {
     Eigen::Matrix3d geostrophic = Eigen::Matrix3d::Zero();
-    for (const GeneralTank& t : tanks[k]) {
+    for (const GeneralTank& t : bodies[k].tanks) {
       g.axial = g.axial || t.three_d;
       geostrophic += t.geostrophic;
       g.modes.insert(g.modes.end(), t.modes.begin(), t.modes.end());
@@ -187,6 +197,8 @@ GeneralChain build_general_chain(const Scene& scene, TableCache* tables) {
   g.dissipative = cm.has_friction() || (g.axial && cm.axial.D.cwiseAbs().maxCoeff() > 0);
   g.axial_inertia.resize(g.n);
   for (int k = 0; k < g.n; ++k) g.axial_inertia[k] = cm.bodies[k].C;
+  std::vector<Eigen::Matrix3d> inertia;
+  for (const GeneralBody& b : bodies) inertia.push_back(b.inertia);
   set_matrices(cm, inertia, g);
   check_effective_inertia(scene, g);
   return g;

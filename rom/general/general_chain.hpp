@@ -36,6 +36,17 @@ struct GeneralChain {
   int n_modes() const { return static_cast<int>(modes.size()); }
 };
 
+// A body with its tanks: mass, centre of mass along its axis, its full inertia tensor about O_k (body axes, frozen
+// liquid included) and its tanks. Throws SceneError naming the key for a table that cannot be read, a tank the
+// general chain does not take (general_tank.hpp), a centre of mass off the axis or products I_xz, I_yz (the body could
+// not spin steadily about its axis).
+struct GeneralBody {
+  double mass = 0, com = 0;
+  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
+  std::vector<GeneralTank> tanks;
+};
+std::vector<GeneralBody> general_bodies(const Scene& scene, TableCache& tables);
+
 // True when the scene needs the general chain: some body with B ≠ A or products of inertia, several tanks, a tank off
 // its body's axis or a tank whose table is 3-D. Reads the tables through `tables` (throws SceneError naming the key on a table that cannot be read).
 bool needs_general_chain(const Scene& scene, TableCache& tables);

@@ -75,13 +75,14 @@ std::vector<int> kept_rows(const Scene& scene, const std::string& w, const Cavit
 }
 
 // A row's H = Σ_j μ_j u_j u_jᴴ as rank-one couplings c_j = √μ_j u_j (one per discrete copy the row's cluster sums).
-void add_row_modes(int k, int row, const Eigen::Matrix3cd& H, double lambda, double unit, GeneralTank& tank) {
+void add_row_modes(int k, int row, const Eigen::Matrix3cd& H, double spin, double lambda_table, double unit,
+                   GeneralTank& tank) {
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3cd> es(H);
   const double top = es.eigenvalues().maxCoeff();
   for (int j = 0; j < 3; ++j) {
     const double mu = es.eigenvalues()[j];
     if (!(mu > 1e-12 * top)) continue;
-    tank.modes.push_back({k, row, lambda, std::sqrt(mu * unit) * es.eigenvectors().col(j)});
+    tank.modes.push_back({k, row, spin * lambda_table, lambda_table, std::sqrt(mu * unit) * es.eigenvectors().col(j)});
   }
 }
 
@@ -119,7 +120,7 @@ GeneralTank general_tank(const Scene& scene, int k, const CavitySpec& cav, const
   tank.geostrophic = unit * geostrophic;
   double covered = 0;
   for (const int l : kept_rows(scene, w, cav, t, covered))
-    add_row_modes(k, l, row_coupling(t, l), scene.bodies[k].spin * t.lambda[l], unit, tank);
+    add_row_modes(k, l, row_coupling(t, l), scene.bodies[k].spin, t.lambda[l], unit, tank);
   tank.coverage = covered;
   if (!tank.inertia.allFinite() || !(tank.mass > 0) || !tank.geostrophic.allFinite())
     fail(scene, w + ".table", "non-physical table (volume or inertia not positive and finite)");

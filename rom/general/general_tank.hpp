@@ -22,6 +22,7 @@ struct GeneralMode {
   int body = 0;             // 0-based body index
   int table_row = 0;        // the table's row it comes from
   double lambda = 0;        // rad/s: ω_k0 λ_table (Kononov (21))
+  double lambda_table = 0;  // λ / ω_k0 (the table's, for a unit spin)
   Eigen::Vector3cd c;       // kg^{1/2} m
 };
 

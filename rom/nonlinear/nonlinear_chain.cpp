@@ -135,7 +135,7 @@ Vector3d total_force(const NonlinearChain& c, double t) {
 
 int NonlinearChain::fluid_modes() const {
   int n = 0;
-  for (const auto& b : bodies) n += static_cast<int>(b.fluid.size());
+  for (const auto& b : bodies) n += b.modes();
   return n;
 }
 
@@ -167,15 +167,18 @@ void solve_mass_system(const NonlinearChain& c, const Eigen::MatrixXd& M, Eigen:
   }
 }
 
-// ζ̇ = i λ ζ − i Ṗ, Ṗ = ṗ − i q̇ the body-frame transverse angular acceleration, for every kept mode.
+// ζ̇ = i λ ζ − i Ṗ, Ṗ = ṗ − i q̇ the body-frame transverse angular acceleration, for every kept mode; then the modes of
+// the tanks without axial symmetry (volume_fluid.hpp).
 void add_fluid_rates(const NonlinearChain& c, const ChainState& s, const std::vector<int>& first_mode, ChainRates& out) {
   for (int k = 0; k < c.size(); ++k) {
+    const ChainBody& b = c.bodies[k];
     const std::complex<double> P_dot(out.omega_dot[k].x(), -out.omega_dot[k].y());
     const double spin = s.omega[k].z();
-    for (int l = 0; l < static_cast<int>(c.bodies[k].fluid.size()); ++l) {
-      const std::complex<double> lambda = mode_lambda(c.bodies[k].fluid[l], spin);
+    for (int l = 0; l < static_cast<int>(b.fluid.size()); ++l) {
+      const std::complex<double> lambda = mode_lambda(b.fluid[l], spin);
       out.zeta_dot.push_back(std::complex<double>(0, 1) * (lambda * s.zeta[first_mode[k] + l] - P_dot));
     }
+    volume_rates(b.volume, s.omega[k], out.omega_dot[k], s.zeta.data() + first_mode[k] + b.fluid.size(), out.zeta_dot);
   }
 }
 
@@ -195,7 +198,7 @@ ChainRates chain_rates(const NonlinearChain& c, const ChainState& s) {
   add_external_moments(c, f, s.t, tau);
   const Vector3d gradient_force = add_gradient_loads(c, s, f, tau);
   std::vector<int> first_mode(n + 1, 0);  // body k's modes are zeta[first_mode[k] .. first_mode[k + 1])
-  for (int k = 0; k < n; ++k) first_mode[k + 1] = first_mode[k] + static_cast<int>(c.bodies[k].fluid.size());
+  for (int k = 0; k < n; ++k) first_mode[k + 1] = first_mode[k] + c.bodies[k].modes();
 
   // Reused between calls (one set per thread): the stages of a run call this hundreds of thousands of times.
   thread_local Eigen::MatrixXd M;
@@ -209,12 +212,15 @@ ChainRates chain_rates(const NonlinearChain& c, const ChainState& s) {
       Matrix3d block;
       if (i < k) block = -skew(lever) * skew(f.S[i]);
       else if (i == k)
-        block = f.J[k] - above * skew(f.S[k]) * skew(f.S[k]) - fluid_inertia(c.bodies[k], s.omega[k].z(), f.n[k]);
+        block = f.J[k] - above * skew(f.S[k]) * skew(f.S[k]) - fluid_inertia(c.bodies[k], s.omega[k].z(), f.n[k]) -
+                f.R[k] * c.bodies[k].volume.share * f.R[k].transpose();
       else block = -skew(f.S[k]) * skew(mu[i + 1] * f.S[i] + c.bodies[i].mass * f.rho[i]);
       M.block<3, 3>(3 * k, 3 * i) = block;
     }
     Vector3d r = lever.cross(g) + tau[k] - f.Omega[k].cross(f.J[k] * f.Omega[k]) - m * f.rho[k].cross(b[k]) +
-                 f.R[k] * fluid_moment(c.bodies[k], s.omega[k].z(), s.zeta.data() + first_mode[k]);
+                 f.R[k] * (fluid_moment(c.bodies[k], s.omega[k].z(), s.zeta.data() + first_mode[k]) +
+                           volume_moment(c.bodies[k].volume, s.omega[k],
+                                         s.zeta.data() + first_mode[k] + c.bodies[k].fluid.size()));
     for (int j = k + 1; j < n; ++j) r -= c.bodies[j].mass * f.S[k].cross(d[j]);
     rhs.segment<3>(3 * k) = r;
     if (c.free_chain) {
@@ -288,6 +294,12 @@ Vector3d chain_angular_momentum(const NonlinearChain& c, const ChainState& s) {
     // J about the centre of mass = J about O_k − m (ρ² I − ρ ρᵀ).
     const Matrix3d Jc = f.J[k] + m * skew(f.rho[k]) * skew(f.rho[k]);
     L += Jc * f.Omega[k] + m * x[k].cross(v[k]);
+  }
+  // The liquid's relative angular momentum of the tanks without axial symmetry (the same about any point).
+  for (int k = 0, first = 0; k < c.size(); first += c.bodies[k].modes(), ++k) {
+    const ChainBody& b = c.bodies[k];
+    if (b.volume.present())
+      L += f.R[k] * volume_momentum(b.volume, s.omega[k], s.zeta.data() + first + b.fluid.size());
   }
   return L;
 }

@@ -14,6 +14,8 @@
 // system of 3n (3n + 3) equations, solved at every stage. Its small-angle limit is (26)'s M_ki (a_k s_i, A'_k).
 #pragma once
 
+#include "volume_fluid.hpp"
+
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
 
@@ -82,6 +84,12 @@ struct ChainBody {
   // static correction (for a positive spin, as ChainFluidMode's E).
   std::complex<double> fluid_E_total = 0;
   double table_spin = 0;         // a viscous tank: the spin at which the scene's viscosity gives the table's Ek; else 0
+  // Tanks without axial symmetry (3-D tables, tanks off the axis, several tanks; volume_fluid.hpp): their modes follow
+  // the `fluid` ones in the state. Such a body's axes are its principal axes, turned by `principal_turn` (rad) about
+  // e3 from the scene's (its products I_xy with the frozen liquid diagonalised; I_xz, I_yz vanish).
+  VolumeFluid volume;
+  double principal_turn = 0;
+  int modes() const { return static_cast<int>(fluid.size()) + volume.size(); }
 };
 
 struct ChainJoint {              // joint k: O_k, between body k − 1 (the support for k = 1) and body k
@@ -115,7 +123,8 @@ struct ChainState {
   std::vector<Eigen::Quaterniond> q;  // attitude of each body: body → space
   std::vector<Eigen::Vector3d> omega; // angular velocity of each body in its own frame (rad/s)
   Eigen::Vector3d r1 = Eigen::Vector3d::Zero(), v1 = Eigen::Vector3d::Zero();  // O_1 and its velocity (free chain)
-  std::vector<std::complex<double>> zeta;  // fluid coordinates, body by body, mode by mode (rad/s)
+  std::vector<std::complex<double>> zeta;  // fluid coordinates, body by body, mode by mode (rad/s; the modes of
+                                           // tanks without axial symmetry after the others: z in kg^{1/2} m rad/s)
 };
 
 struct ChainRates {

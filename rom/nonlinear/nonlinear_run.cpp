@@ -2,6 +2,7 @@
 
 #include "chain_model.hpp"
 #include "rigid_body.hpp"
+#include "volume_tanks.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -66,27 +67,17 @@ void set_external_loads(const BodySpec& b, ChainBody& body) {
 }
 }  // namespace
 
-NonlinearChain nonlinear_chain(const Scene& scene) {
-  NonlinearChain c;
-  c.free_chain = scene.free_chain;
-  c.gravity = scene.free_chain ? 0.0 : scene.gravity;  // uniform gravity does not turn a free chain (docs/scene-format.md)
-  if (scene.field && !scene.free_chain) {  // nor does a uniform field
-    c.field = Vector3d(scene.field->space.data());
-    c.field_harmonic = Vector3d(scene.field->harmonic.data());
-    c.field_frequency = scene.field->frequency;
-  }
-  if (scene.field)  // a gradient does turn a free chain (a satellite's gravity-gradient moment)
-    c.field_gradient = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(scene.field->gradient.data());
-  // Totals with the frozen fluid and the kept modes, as the linear model has them (chain_model.hpp).
+namespace {
+
+// The bodies of a chain whose tanks are axisymmetric and on their axes: totals with the frozen fluid and the kept
+// modes, as the linear model has them (chain_model.hpp).
+std::vector<ChainBody> axisymmetric_tank_bodies(const Scene& scene) {
   const ChainModel model = build_model(scene, nullptr, false);
   const std::size_t n = scene.size();
+  std::vector<ChainBody> out;
   for (std::size_t k = 0; k < n; ++k) {
     const BodySpec& b = scene.bodies[k];
     const BodyModel& t = model.bodies[k];
-    if (b.Ixy != 0 || b.Ixz != 0 || b.Iyz != 0)
-      throw SceneError(scene.file.string() + ": body[" + std::to_string(k + 1) + "].Ixy: products of inertia are in "
-                       "the general linear chain only so far (chain-rom spectrum); the nonlinear chain takes principal "
-                       "axes (A, B, C)");
     // The cavity is axisymmetric: its frozen fluid adds the same to both transverse moments.
     ChainBody body;
     body.mass = t.m;
@@ -95,7 +86,6 @@ NonlinearChain nonlinear_chain(const Scene& scene) {
     body.C = t.C;
     body.com = t.c;
     body.next_joint = k + 1 < n ? b.next_joint : 0.0;
-    set_external_loads(b, body);
     // The chain takes a viscous table's values for a positive spin (ChainFluidMode); the linear model's are for the
     // scene's spin, conjugated when it is negative.
     const auto as_positive_spin = [&](std::complex<double> E) { return b.spin < 0 ? std::conj(E) : E; };
@@ -112,8 +102,27 @@ NonlinearChain nonlinear_chain(const Scene& scene) {
     if (t.E_rem > 0 || t.E_rem_imag != 0) body.fluid.push_back({as_positive_spin({t.E_rem, t.E_rem_imag}), 0.0});
     body.fluid_E_total = as_positive_spin({t.E_kept + t.E_rem, t.E_kept_imag + t.E_rem_imag});
     if (t.ekman > 0) body.table_spin = b.spin;
-    c.bodies.push_back(body);
+    out.push_back(body);
   }
+  return out;
+}
+
+}  // namespace
+
+NonlinearChain nonlinear_chain(const Scene& scene) {
+  NonlinearChain c;
+  c.free_chain = scene.free_chain;
+  c.gravity = scene.free_chain ? 0.0 : scene.gravity;  // uniform gravity does not turn a free chain (docs/scene-format.md)
+  if (scene.field && !scene.free_chain) {  // nor does a uniform field
+    c.field = Vector3d(scene.field->space.data());
+    c.field_harmonic = Vector3d(scene.field->harmonic.data());
+    c.field_frequency = scene.field->frequency;
+  }
+  if (scene.field)  // a gradient does turn a free chain (a satellite's gravity-gradient moment)
+    c.field_gradient = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(scene.field->gradient.data());
+  TableCache tables;
+  c.bodies = needs_volume_tanks(scene, tables) ? volume_tank_bodies(scene, tables) : axisymmetric_tank_bodies(scene);
+  for (std::size_t k = 0; k < scene.size(); ++k) set_external_loads(scene.bodies[k], c.bodies[k]);
   c.joints.push_back({0.0, scene.support_friction, scene.support_axial_friction});
   for (const JointSpec& j : scene.joints) c.joints.push_back({j.stiffness, j.friction, j.axial_friction});
   return c;
@@ -134,7 +143,9 @@ ChainState nonlinear_initial_state(const Scene& scene, const NonlinearChain& cha
     }
     const double beta_dot = scene.rate[k].real(), alpha_dot = -scene.rate[k].imag();
     const Eigen::AngleAxisd first(-alpha, Vector3d::UnitX());
-    const Eigen::Quaterniond q = Eigen::Quaterniond(first) * Eigen::Quaterniond(Eigen::AngleAxisd(beta, Vector3d::UnitY()));
+    // A body taken in its principal axes (volume_tanks.hpp) is the scene's body turned about its own axis.
+    const Eigen::Quaterniond q = Eigen::Quaterniond(first) * Eigen::Quaterniond(Eigen::AngleAxisd(beta, Vector3d::UnitY())) *
+                                 Eigen::Quaterniond(Eigen::AngleAxisd(chain.bodies[k].principal_turn, Vector3d::UnitZ()));
     const Vector3d n = q * Vector3d::UnitZ();
     const Vector3d transverse = -alpha_dot * Vector3d::UnitX() + beta_dot * (first * Vector3d::UnitY());
     // The spin is the axial component of Ω: add along n what makes Ω·n = ω_k0.
@@ -150,6 +161,7 @@ ChainState nonlinear_initial_state(const Scene& scene, const NonlinearChain& cha
     const std::complex<double> P(s.omega[k].x(), -s.omega[k].y());
     for (std::size_t j = 0; j < chain.bodies[k].fluid.size(); ++j)
       s.zeta.push_back(static_cast<int>(j) < chain.bodies[k].kept_modes ? z0[l++] : std::complex<double>(0, -1) * P);
+    s.zeta.resize(s.zeta.size() + chain.bodies[k].volume.size(), 0.0);  // tanks without axial symmetry: at rest
   }
   if (chain.free_chain) {
     // The whole chain's centre of mass at rest (as the linear free chain takes it, docs/free-chain.md): O_1 moves
@@ -288,6 +300,7 @@ NonlinearHistory integrate_nonlinear(const NonlinearChain& chain, const ChainSta
   NonlinearRecorder record(chain, initial, samples, out);
   out.fluid_modes = chain.fluid_modes();
   out.integrals_valid = out.fluid_modes == 0;
+  out.momentum_valid = std::all_of(chain.bodies.begin(), chain.bodies.end(), [](const ChainBody& b) { return b.fluid.empty(); });
   out.viscous_tanks = std::any_of(chain.bodies.begin(), chain.bodies.end(), [](const ChainBody& b) { return b.table_spin != 0; });
 
   ChainState s = initial;

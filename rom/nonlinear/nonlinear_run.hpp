@@ -34,6 +34,9 @@ struct NonlinearHistory {
   // With fluid the chain has no energy integral of the bodies alone (the fluid's relative motion carries energy
   // the modal model does not write as one): energy and momentum drifts are then not reported.
   bool integrals_valid = true;
+  // The angular momentum with the liquid's relative part is an integral when every tank rides by volume_fluid.hpp
+  // (the axisymmetric tank model leaves out the axial part of Ω × h).
+  bool momentum_valid = true;
   double max_momentum_drift = 0;     // max |L − L(0)| / |L(0)| (free chain), max |L_z − L_z(0)| / |L(0)| (fixed)
   long rejected_steps = 0;
   // Largest |r − r_table| / |r_table| of a body with a viscous tank: its table holds for the Ek of the scene's spin,
