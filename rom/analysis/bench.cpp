@@ -7,9 +7,12 @@
 #include "energy.hpp"
 #include "exact_propagation.hpp"
 #include "first_order_system.hpp"
+#include "general_bench.hpp"
+#include "general_chain.hpp"
 #include "propagation.hpp"
 #include "reference_propagation.hpp"
 #include "spectrum.hpp"
+#include "work_precision.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <unsupported/Eigen/MatrixFunctions>
@@ -28,117 +31,11 @@ namespace fs = std::filesystem;
 namespace {
 using cd = std::complex<double>;
 
-double process_cpu_seconds() {
-  timespec ts{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
-
-struct Timing {
-  double wall = 0, cpu = 0;
-};
-
-// Runs f until the runs add up to min_seconds of wall time (at least once, at most 1000 times):
-// the best wall time of one run (least disturbed by other load) and the mean CPU time per run.
-template <class F>
-Timing time_runs(F&& f, double min_seconds) {
-  using clock = std::chrono::steady_clock;
-  Timing t{1e300, 0};
-  double total = 0;
-  int reps = 0;
-  const double cpu0 = process_cpu_seconds();
-  do {
-    const auto a = clock::now();
-    f();
-    const double w = std::chrono::duration<double>(clock::now() - a).count();
-    t.wall = std::min(t.wall, w);
-    total += w;
-    ++reps;
-  } while (total < min_seconds && reps < 1000);
-  t.cpu = (process_cpu_seconds() - cpu0) / reps;
-  return t;
-}
-
-double relative_error(const Eigen::VectorXcd& y, const Eigen::VectorXcd& ref) {
-  return (y - ref).norm() / ref.norm();
-}
-
-// ---- part 1: work-precision ---------------------------------------------------------------------
-
 struct WorkSetup {
   const ChainModel& m;
   FirstOrderSystem f;
-  Eigen::VectorXcd y0, ref;
-  double T = 0, rho = 0;
+  WorkProblem p;
 };
-
-// A work-precision row: appended, and shown to `progress`.
-BenchRow add_work_row(std::vector<BenchRow>& rows, const std::function<void(const BenchRow&)>& progress,
-                      const char* method, const char* parameter, double value, long steps, const Timing& tm,
-                      double error) {
-  BenchRow r;
-  r.part = "work";
-  r.method = method;
-  r.parameter = parameter;
-  r.value = value;
-  r.steps = steps;
-  r.wall_seconds = tm.wall;
-  r.cpu_seconds = tm.cpu;
-  r.error = error;
-  rows.push_back(r);
-  if (progress) progress(r);
-  return r;
-}
-
-// Stop a sweep once the error reaches the rounding floor: below 1e-14, or below 1e-9 and no longer
-// halving when the work doubles (or more).
-bool at_floor(double err, double previous) { return err < 1e-14 || (err < 1e-9 && err > 0.5 * previous); }
-
-void sweep_gauss(const WorkSetup& w, const BenchOptions& opt, std::vector<BenchRow>& rows,
-                 const std::function<void(const BenchRow&)>& progress) {
-  // rho h = 8, 4, 2, 1, 1/2, ...: 2-stage Gauss is A-stable, so every step size gives a bounded answer.
-  double previous = 1e300;
-  for (int k = -3; k < 40; ++k) {
-    const long N = std::max(1L, static_cast<long>(std::ceil(w.T * w.rho * std::ldexp(1.0, k))));
-    if (static_cast<double>(N) > opt.max_steps) break;
-    const double h = w.T / static_cast<double>(N);
-    Eigen::VectorXcd y, tmp(w.y0.size());
-    const Timing tm = time_runs([&] {
-      const Eigen::MatrixXcd P = gauss_step_matrix(w.f.B, h);
-      y = w.y0;
-      for (long j = 0; j < N; ++j) {
-        tmp.noalias() = P * y;
-        y.swap(tmp);
-      }
-    }, opt.min_seconds);
-    const BenchRow r = add_work_row(rows, progress, "gauss", "step", h, N, tm, relative_error(y, w.ref));
-    if (at_floor(r.error, previous)) break;
-    previous = r.error;
-  }
-}
-
-void sweep_rk45(const WorkSetup& w, const Scene& scene, const BenchOptions& opt, std::vector<BenchRow>& rows,
-                const std::function<void(const BenchRow&)>& progress) {
-  double previous = 1e300;
-  for (int k = 2; k <= 14; ++k) {
-    const double tol = std::pow(10.0, -k);
-    RunSpec run = scene.run;
-    run.tolerance = tol;
-    run.output_step = run.t_end;  // one output: the final state
-    if (estimate_integrator_steps("rk45", w.rho, run) > opt.max_steps) break;
-    Eigen::VectorXcd y;
-    long steps = 0;
-    const Timing tm = time_runs([&] {
-      y = w.y0;
-      steps = 0;
-      double h = std::min(w.T, 1.0 / std::max(w.rho, 1e-300));
-      rk45_advance(w.f.B, y, 0.0, w.T, tol, h, steps);
-    }, opt.min_seconds);
-    const BenchRow r = add_work_row(rows, progress, "rk45", "tolerance", tol, steps, tm, relative_error(y, w.ref));
-    if (at_floor(r.error, previous)) break;
-    previous = r.error;
-  }
-}
 
 // H is conserved without friction (docs/rom.md, "Energy"): its change from y0 to the reference's final state,
 // relative to the size of its parts, as a row beside the reference's.
@@ -146,9 +43,9 @@ void add_energy_drift_row(const WorkSetup& w, const BenchRow& reference, BenchRe
                           const std::function<void(const BenchRow&)>& progress) {
   const EnergyMeter meter(w.m);
   Eigen::VectorXcd u, v, wv;
-  w.f.from_state(w.m, w.y0, u, v, wv);
+  w.f.from_state(w.m, w.p.y0, u, v, wv);
   const Energy e0 = meter(u, v, wv);
-  w.f.from_state(w.m, w.ref, u, v, wv);
+  w.f.from_state(w.m, w.p.ref, u, v, wv);
   const Energy e1 = meter(u, v, wv);
   BenchRow re = reference;
   re.parameter = "energy_drift";
@@ -166,9 +63,9 @@ void add_exact_row(const WorkSetup& w, const BenchOptions& opt, BenchResult& out
     ModalForm mf = modal_form(w.f, !w.m.dissipative(), kRealTolerance);
     if (mf.usable) {
       if (mf.undamped_real && !mf.real) snap_to_imaginary_axis(mf);
-      y = modal_state_at(mf, w.y0, w.T);
+      y = modal_state_at(mf, w.p.y0, w.p.T);
     } else {
-      y = (w.f.B * cd(w.T)).exp() * w.y0;  // defective spectrum: the exponential itself
+      y = (w.f.B * cd(w.p.T)).exp() * w.p.y0;  // defective spectrum: the exponential itself
     }
   }, opt.min_seconds);
   BenchRow rx;
@@ -177,39 +74,41 @@ void add_exact_row(const WorkSetup& w, const BenchOptions& opt, BenchResult& out
   rx.parameter = "none";
   rx.wall_seconds = te.wall;
   rx.cpu_seconds = te.cpu;
-  rx.error = relative_error(y, w.ref);
+  rx.error = relative_error(y, w.p.ref);
   out.rows.push_back(rx);
   if (progress) progress(rx);
 }
 
 void work_precision(const ChainModel& m, const Scene& scene, const BenchOptions& opt, BenchResult& out,
                     const std::function<void(const BenchRow&)>& progress) {
-  WorkSetup w{m, build_first_order(m), {}, {}, scene.run.t_end, 0};
+  WorkSetup w{m, build_first_order(m), {}};
+  w.p.T = scene.run.t_end;
+  w.p.B = w.f.B;
   Eigen::VectorXcd u0(m.n), v0(m.n);
   for (int k = 0; k < m.n; ++k) {
     u0[k] = scene.tilt[k];
     v0[k] = scene.rate[k];
   }
-  w.y0 = w.f.to_state(m, u0, v0, Eigen::VectorXcd::Zero(m.n_modes()));
-  if (!(w.y0.norm() > 0))
+  w.p.y0 = w.f.to_state(m, u0, v0, Eigen::VectorXcd::Zero(m.n_modes()));
+  if (!(w.p.y0.norm() > 0))
     throw std::runtime_error(scene.file.string() + ": initial: the initial state is zero (nothing moves): "
                              "give initial.tilt or initial.rate");
   Eigen::ComplexEigenSolver<Eigen::MatrixXcd> es(w.f.B, false);
-  w.rho = es.eigenvalues().cwiseAbs().maxCoeff();
-  out.spectral_radius = w.rho;
+  w.p.rho = es.eigenvalues().cwiseAbs().maxCoeff();
+  out.spectral_radius = w.p.rho;
   out.dimension = w.f.dim();
 
   // The reference, its self-check (two long double methods) and its energy.
   ReferenceState ref;
-  const Timing tr = time_runs([&] { ref = reference_state(m, w.f.s, w.y0, w.T); }, 0);
-  w.ref = ref.y;
+  const Timing tr = time_runs([&] { ref = reference_state(m, w.f.s, w.p.y0, w.p.T); }, 0);
+  w.p.ref = ref.y;
   out.reference_mantissa_bits = ref.mantissa_bits;
   const BenchRow r = add_work_row(out.rows, progress, "reference", "method_difference", BenchRow{}.value,
                                   BenchRow{}.steps, tr, ref.method_difference);
   if (!m.dissipative()) add_energy_drift_row(w, r, out, progress);
   add_exact_row(w, opt, out, progress);
-  sweep_gauss(w, opt, out.rows, progress);
-  sweep_rk45(w, scene, opt, out.rows, progress);
+  sweep_gauss(w.p, opt, out.rows, progress);
+  sweep_rk45(w.p, scene.run, opt, out.rows, progress);
 }
 
 // ---- part 2: roots against kept modes ------------------------------------------------------------
@@ -220,17 +119,6 @@ std::vector<cd> roots_of(const ChainModel& m) {
   std::vector<cd> r;
   for (Eigen::Index i = 0; i < es.values.size(); ++i) r.push_back(cd(0, -1) * es.values[i]);
   return r;
-}
-
-// Largest relative distance from a reference body root to the nearest root of `roots`.
-double body_root_error(const std::vector<cd>& body_ref, const std::vector<cd>& roots) {
-  double worst = 0;
-  for (const cd& r : body_ref) {
-    double best = 1e300;
-    for (const cd& s : roots) best = std::min(best, std::abs(s - r));
-    worst = std::max(worst, best / std::max(std::abs(r), 1e-300));
-  }
-  return worst;
 }
 
 void roots_against_modes(const Scene& scene, BenchResult& out, const std::function<void(const BenchRow&)>& progress) {
@@ -300,6 +188,16 @@ std::string field(double x, const char* fmt = "%.6e") {
 
 }  // namespace
 
+double body_root_error(const std::vector<std::complex<double>>& body_ref, const std::vector<std::complex<double>>& roots) {
+  double worst = 0;
+  for (const cd& r : body_ref) {
+    double best = 1e300;
+    for (const cd& s : roots) best = std::min(best, std::abs(s - r));
+    worst = std::max(worst, best / std::max(std::abs(r), 1e-300));
+  }
+  return worst;
+}
+
 BenchResult run_bench(const Scene& scene, const BenchOptions& options,
                       const std::function<void(const BenchRow&)>& progress) {
   if (!scene.run.present)
@@ -312,7 +210,12 @@ BenchResult run_bench(const Scene& scene, const BenchOptions& options,
                                "the integrators on the free motion; remove the moments");
   BenchResult out;
   out.t_end = scene.run.t_end;
-  const ChainModel m = build_model(scene);
+  TableCache tables;
+  if (needs_general_chain(scene, tables)) {  // bodies or tanks without axial symmetry
+    general_bench(scene, options, out, progress);
+    return out;
+  }
+  const ChainModel m = build_model(scene, &tables);
   work_precision(m, scene, options, out, progress);
   roots_against_modes(scene, out, progress);
   return out;

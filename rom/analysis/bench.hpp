@@ -12,6 +12,7 @@
 
 #include "scene.hpp"
 
+#include <complex>
 #include <filesystem>
 #include <functional>
 #include <limits>
@@ -53,6 +54,9 @@ struct BenchOptions {
 // std::runtime_error with a one-line cause (no [run] section, t_end not positive, ...).
 BenchResult run_bench(const Scene& scene, const BenchOptions& options = {},
                       const std::function<void(const BenchRow&)>& progress = {});
+
+// Largest relative distance from a reference body root to the nearest root of `roots` (the roots part's error).
+double body_root_error(const std::vector<std::complex<double>>& body_ref, const std::vector<std::complex<double>>& roots);
 
 // CSV, one row per BenchRow: part,method,parameter,value,steps,body,static_correction,spin_factor,
 // coverage,wall_seconds,cpu_seconds,error (empty where a field does not apply). Temporary name, rename.

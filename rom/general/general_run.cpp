@@ -14,9 +14,11 @@ namespace {
 
 using cd = std::complex<double>;
 
+}  // namespace
+
 // y(0) from the scene's u_k(0), u̇_k(0): in F, v = e^{iω0t}u gives v(0) = u(0), v̇(0) = u̇(0) + iω0 u(0), and
 // q = (Re v, −Im v); the spins at ω0 and the fluid at rest.
-Eigen::VectorXd initial_state(const GeneralChain& g, const GeneralSystem& sys, const Scene& scene) {
+Eigen::VectorXd general_initial_state(const GeneralChain& g, const GeneralSystem& sys, const Scene& scene) {
   if (!scene.fluid.empty())
     throw std::runtime_error(scene.file.string() + ": initial.fluid: the chain without axial symmetry starts with its "
                              "fluid at rest (its modes are not (26)'s); leave it out");
@@ -31,6 +33,8 @@ Eigen::VectorXd initial_state(const GeneralChain& g, const GeneralSystem& sys, c
   }
   return y;
 }
+
+namespace {
 
 // One body, no gravity, field or friction: the angular momentum in space is an integral (general_run.hpp).
 bool has_momentum_integral(const GeneralChain& g, const Scene& scene) {
@@ -88,7 +92,7 @@ GeneralHistory propagate_general(const GeneralChain& g, const Scene& scene) {
   h.u.resize(steps, g.n);
   h.z.resize(steps, g.n_modes());
   if (g.axial) h.spin.resize(steps, g.n);
-  Eigen::VectorXd y = initial_state(g, sys, scene);
+  Eigen::VectorXd y = general_initial_state(g, sys, scene);
   const bool momentum = has_momentum_integral(g, scene);
   double size0 = 0, largest = 0, drift = 0;
   const Eigen::Vector3d L0 = momentum ? angular_momentum(g, sys, y, 0, size0) : Eigen::Vector3d::Zero();

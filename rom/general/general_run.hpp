@@ -5,6 +5,7 @@
 #pragma once
 
 #include "general_chain.hpp"
+#include "general_system.hpp"
 #include "propagation.hpp"
 #include "scene.hpp"
 
@@ -24,6 +25,10 @@ struct GeneralHistory {
   double momentum_drift = std::numeric_limits<double>::quiet_NaN();
   double wall_seconds = 0;
 };
+
+// y(0) from the scene's u_k(0), u̇_k(0) (the spins at ω0 and the fluid at rest). Throws std::runtime_error for initial
+// fluid amplitudes (the general chain's modes are not (26)'s).
+Eigen::VectorXd general_initial_state(const GeneralChain& g, const GeneralSystem& sys, const Scene& scene);
 
 // Throws std::runtime_error for what the general run does not take (a method other than "exact", initial fluid
 // amplitudes) and when the trajectory leaves double precision.

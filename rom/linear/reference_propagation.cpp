@@ -12,13 +12,15 @@
 
 namespace rc::rom {
 
-ReferenceState reference_state(const ChainModel& m, double s, const Eigen::VectorXcd& y0, double t) {
-  using LC = std::complex<long double>;
-  using LCMat = Eigen::Matrix<LC, Eigen::Dynamic, Eigen::Dynamic>;
-  using LCVec = Eigen::Matrix<LC, Eigen::Dynamic, 1>;
+namespace {
+
+using LC = std::complex<long double>;
+using LCMat = Eigen::Matrix<LC, Eigen::Dynamic, Eigen::Dynamic>;
+using LCVec = Eigen::Matrix<LC, Eigen::Dynamic, 1>;
+
+// Both long double methods on B (balanced here: B = S Bb S^{-1}, exactly, powers of two).
+ReferenceState propagate_long_double(LCMat Bb, const Eigen::VectorXcd& y0, double t) {
   const auto start = std::chrono::steady_clock::now();
-  // Balanced (balancing.hpp) for both methods: B = S Bb S^{-1}, exactly (powers of two).
-  LCMat Bb = first_order_matrix<long double>(m, static_cast<long double>(s));
   const Eigen::VectorXd S = balance_in_place(Bb);
   const Eigen::Matrix<long double, Eigen::Dynamic, 1> Sl = S.cast<long double>();
   const LCVec x0 = (y0.cast<LC>().array() / Sl.cast<LC>().array()).matrix();  // S^{-1} y0
@@ -40,6 +42,16 @@ ReferenceState reference_state(const ChainModel& m, double s, const Eigen::Vecto
   r.mantissa_bits = LDBL_MANT_DIG;
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
+}
+
+}  // namespace
+
+ReferenceState reference_state(const ChainModel& m, double s, const Eigen::VectorXcd& y0, double t) {
+  return propagate_long_double(first_order_matrix<long double>(m, static_cast<long double>(s)), y0, t);
+}
+
+ReferenceState reference_state(const Eigen::MatrixXcd& B, const Eigen::VectorXcd& y0, double t) {
+  return propagate_long_double(B.cast<LC>(), y0, t);
 }
 
 }  // namespace rc::rom

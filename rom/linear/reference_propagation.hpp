@@ -26,4 +26,8 @@ struct ReferenceState {
 // y0 and the result are balanced states for the scale s of build_first_order(m).
 ReferenceState reference_state(const ChainModel& m, double s, const Eigen::VectorXcd& y0, double t);
 
+// The same for a matrix assembled in double (the general chain's, general_system.hpp): B's entries are taken as
+// exact, so the reference is the exact solution of that matrix, its assembly's rounding not included.
+ReferenceState reference_state(const Eigen::MatrixXcd& B, const Eigen::VectorXcd& y0, double t);
+
 }  // namespace rc::rom

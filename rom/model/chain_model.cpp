@@ -283,8 +283,8 @@ void require_linear_scene(const Scene& scene) {
     const BodySpec& b = scene.bodies[k];
     if (b.asymmetric())
       fail(scene, "body[" + std::to_string(k + 1) + (b.B && *b.B != b.A ? "].B" : "].Ixy"), "a body without axial "
-           "symmetry: the linearised chain (26) needs axisymmetric bodies; `chain-rom spectrum`, `run` and `sweep` "
-           "take it (the chain without axial symmetry, docs/rom.md), and [run] model = \"nonlinear\" takes B != A");
+           "symmetry: the linearised chain (26) needs axisymmetric bodies; `chain-rom spectrum`, `run`, `sweep` and "
+           "`bench` take it (the chain without axial symmetry, docs/rom.md), and [run] model = \"nonlinear\"");
     // Transverse moments are the forced (26) (forced_solution.hpp); axial ones drive the spins' own states
     // (axial_rotation.hpp).
     if (b.aero && scene.free_chain)
@@ -328,9 +328,9 @@ BodyModel body_model(const Scene& scene, int k, TableCache* tables, bool linear_
   b.omega = bs.spin;
   b.s = (k + 1 < n) ? bs.next_joint : 0.0;
   double m = bs.mass, first = bs.mass * bs.com, A = bs.A, C = bs.C;
-  const std::string only_general = ": `chain-rom spectrum`, `run` and `sweep` take it (the chain without axial "
-                                   "symmetry, docs/rom.md); the chain (26) and this command take one tank on the "
-                                   "body's axis";
+  const std::string only_general = ": `chain-rom spectrum`, `run`, `sweep` and `bench` take it (the chain without "
+                                   "axial symmetry, docs/rom.md); the chain (26) and this command take one tank on "
+                                   "the body's axis";
   if (!bs.more_cavities.empty())
     fail(scene, "body[" + std::to_string(k + 1) + "].cavity", "several tanks on one body" + only_general);
   if (bs.cavity && bs.cavity->offset)

@@ -2,6 +2,7 @@
 // (a) the axisymmetric chain (26) it must reproduce, (b) Euler's and Poisson's equations of a heavy rigid body with
 // A ≠ B, and (c) the Poincaré–Hough top: a shell with an ellipsoidal cavity of ideal fluid in uniform vorticity, its
 // linearised equations written independently of the modal table (Poincaré 1910; Hough 1895; docs/volume.md §3).
+#include "bench.hpp"
 #include "ellipsoid_table.hpp"
 #include "general_chain.hpp"
 #include "general_run.hpp"
@@ -366,6 +367,44 @@ TEST(GeneralChain, NonlinearChainWithTanksKeepsTheAngularMomentum) {
               "the spin ranges over %.3f rad/s\n", h.base.integrator_steps, h.max_momentum_drift, spin_range);
   EXPECT_LT(h.max_momentum_drift, 1e-9);
   EXPECT_GT(spin_range, 1e-3);
+}
+
+// `chain-rom bench` on a scene that needs the general chain (general_bench.hpp): a heavy top with B ≠ A and the
+// four-mode table. The reference's two long double methods agree, `exact` in double sits at rounding against it,
+// 2-stage Gauss converges at order 4, rk45 reaches 1e-10, and the body roots with 1, 2 and 4 rows kept approach
+// those with all of them (the same chain with all kept: to rounding).
+TEST(GeneralChain, BenchMeasuresTheGeneralChain) {
+  if (!std::filesystem::exists(test_dir() / "four_modes.h5")) write_table(four_mode_table(), test_dir() / "four_modes.h5");
+  Body top;
+  top.table = "four_modes.h5";
+  top.spin = 40;
+  top.center = 0.1;
+  std::string text = scene_text({top}, {}, 9.81, false, 0.0, "[initial]\ntilt = [[0.01, 0.0]]\n[run]\nt_end = 0.5\n"
+                                                            "output_step = 0.01\n");
+  text.insert(text.find("\nC = ") + 1, "B = 0.12\n");
+  const BenchResult r = run_bench(parse_scene_text(text, test_dir(), "t"));
+  double reference = 1, exact = 1, best_rk45 = 1, order = 0;
+  std::vector<double> gauss, roots;
+  for (const BenchRow& row : r.rows) {
+    if (row.method == "reference") reference = row.error;
+    if (row.method == "exact") exact = row.error;
+    if (row.method == "gauss") gauss.push_back(row.error);
+    if (row.method == "rk45") best_rk45 = std::min(best_rk45, row.error);
+    if (row.part == "roots") roots.push_back(row.error);
+  }
+  for (std::size_t i = 1; i < gauss.size(); ++i)  // the asymptotic range: error ratio per halving of h
+    if (gauss[i - 1] < 1e-4 && gauss[i] > 1e-10) order = std::log2(gauss[i - 1] / gauss[i]);
+  std::printf("general bench (dimension %d): reference eig vs expm %.1e, exact %.1e, gauss order %.2f, rk45 down to "
+              "%.1e; body roots with 1, 2, 4 of 4 rows: %.1e %.1e %.1e\n", r.dimension, reference, exact, order,
+              best_rk45, roots.size() > 0 ? roots[0] : -1, roots.size() > 1 ? roots[1] : -1,
+              roots.size() > 2 ? roots[2] : -1);
+  EXPECT_LT(reference, 1e-15);
+  EXPECT_LT(exact, 1e-12);
+  EXPECT_NEAR(order, 4, 0.2);
+  EXPECT_LT(best_rk45, 1e-10);
+  ASSERT_EQ(roots.size(), 3u);
+  EXPECT_GT(roots[0], 1e3 * roots[2]);
+  EXPECT_LT(roots[2], 1e-12);
 }
 
 // What the general chain cannot model is refused in one line naming the key; what (26) cannot, too.
