@@ -245,6 +245,10 @@ void write_volume(hid_t root, const ModeTable::Volume& v) {
                                    {"geostrophic_re", &v.geostrophic_re}, {"geostrophic_im", &v.geostrophic_im},
                                    {"coupling_re", &v.coupling_re}, {"coupling_im", &v.coupling_im}})
     put_vector(g.get(), name, *data, H5T_NATIVE_DOUBLE);
+  if (!v.band_lambda.empty())
+    for (const auto& [name, data] : {std::pair{"band_coupling_re", &v.band_coupling_re},
+                                     {"band_coupling_im", &v.band_coupling_im}, {"band_lambda", &v.band_lambda}})
+      put_vector(g.get(), name, *data, H5T_NATIVE_DOUBLE);
 }
 
 ModeTable::Volume read_volume(hid_t root) {
@@ -257,6 +261,9 @@ ModeTable::Volume read_volume(hid_t root) {
                                    {"geostrophic_re", &v.geostrophic_re}, {"geostrophic_im", &v.geostrophic_im},
                                    {"coupling_re", &v.coupling_re}, {"coupling_im", &v.coupling_im}})
     *data = get_vector<double>(g.get(), name, H5T_NATIVE_DOUBLE, true);
+  for (const auto& [name, data] : {std::pair{"band_coupling_re", &v.band_coupling_re},  // tables before them lack them
+                                   {"band_coupling_im", &v.band_coupling_im}, {"band_lambda", &v.band_lambda}})
+    *data = get_vector<double>(g.get(), name, H5T_NATIVE_DOUBLE, false);
   return v;
 }
 
@@ -272,8 +279,11 @@ void validate_volume(const ModeTable& t) {
       v.geostrophic_re.size() != 9 || v.geostrophic_im.size() != 9 || v.coupling_re.size() != 9 * n ||
       v.coupling_im.size() != 9 * n)
     throw std::runtime_error("/volume: a tensor does not hold 9 entries (per mode for the couplings)");
+  const std::size_t nb = v.band_lambda.size();
+  if ((nb > 0 && nb != t.bands.size()) || v.band_coupling_re.size() != 9 * nb || v.band_coupling_im.size() != 9 * nb)
+    throw std::runtime_error("/volume: the band couplings do not hold 9 entries per band of /bands");
   for (const auto* d : {&v.centroid, &v.inertia, &v.zhukovsky, &v.sum_rule, &v.geostrophic_re, &v.geostrophic_im,
-                        &v.coupling_re, &v.coupling_im})
+                        &v.coupling_re, &v.coupling_im, &v.band_coupling_re, &v.band_coupling_im, &v.band_lambda})
     for (double x : *d)
       if (!std::isfinite(x)) throw std::runtime_error("/volume holds a non-finite value");
   if (t.viscous() || t.free_surface.present()) throw std::runtime_error("/volume in a viscous or partially filled table");

@@ -115,6 +115,10 @@ struct ModeTable {
     double tilt = 0;               // built-in shapes: the angle of the shape's own axis against z (radians)
     std::vector<double> inertia, zhukovsky, sum_rule, geostrophic_re, geostrophic_im;  // 9 each
     std::vector<double> coupling_re, coupling_im;                                      // 9 per mode
+    // The coupling in the /bands' λ-bands (optional; docs/volume.md §5): per band the sum of the survey's Gauss
+    // nodes' H with λ > 0 in it (9 complex entries) and their trace-weighted mean λ (0 where empty) — a dense
+    // cluster's weight as a whole, light modes included.
+    std::vector<double> band_coupling_re, band_coupling_im, band_lambda;
     bool present() const { return !inertia.empty(); }
   } volume_cavity;
 

@@ -257,6 +257,7 @@ VolumeSurvey survey_volume_modes(const VolumeVelocity& V, const StiffnessSolver&
   for (const auto& m : plain.watch) (settled(m, s) ? out.modes : pending).push_back(m);
 
   if (!pending.empty()) resolve_by_shifts(V, forms, start, std::move(pending), heavy, s, out);
+  out.rule = plain.all;
   for (const auto& m : plain.all) {
     out.total += m.H;
     if (std::abs(m.lambda) <= s.lambda_floor) out.geostrophic += m.H;

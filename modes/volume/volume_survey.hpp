@@ -56,6 +56,8 @@ struct VolumeSurvey {
   int shifts = 0;                     // shift-and-invert runs (one factorisation of Q(σ) each)
   Hermitian3 total = Hermitian3::Zero();        // Σ H over every node (= Gram(w))
   Hermitian3 geostrophic = Hermitian3::Zero();  // Σ H over |λ| <= lambda_floor
+  std::vector<VolumeMode> rule;       // the plain rule's clusters, every λ of both signs: the measure as a whole, whose
+                                      // band weights hold a dense cluster's light modes too (volume_table.cpp)
   int columns = 0;
 };
 

@@ -1,6 +1,8 @@
 #include "volume_table.hpp"
 
+#include "convergence.hpp"
 #include "progress.hpp"
+#include "table_assembly.hpp"
 #include "volume_fields.hpp"
 #include "volume_forms.hpp"
 #include "volume_velocity.hpp"
@@ -46,6 +48,35 @@ void add_rows(ModeTable& t, const VolumeSurvey& survey) {
         t.volume_cavity.coupling_re.push_back(H(j, k).real());
         t.volume_cavity.coupling_im.push_back(H(j, k).imag());
       }
+  }
+}
+
+// The coupling's weight in λ-bands (docs/volume.md §5) from the plain Gauss rule, which sees a dense cluster as a
+// whole (its light modes too, which the rows leave below the floor). /bands: each node with λ > lambda_floor by its
+// transverse weight E = H_xx + H_yy, and half the λ = 0 weight's (its conjugate half is the λ < 0 side), so that the
+// bands sum to A_f − J_zh as the rows' E would with every mode kept. /volume/band_*: the same nodes' H summed per band
+// (the λ = 0 weight apart, as in the table's geostrophic tensor) and their trace-weighted mean λ.
+void add_volume_bands(ModeTable& t, const VolumeSurvey& survey, double lambda_floor) {
+  std::vector<GaussNode> nodes{{0.0, 0.5 * (survey.geostrophic(0, 0) + survey.geostrophic(1, 1)).real(), 0.0}};
+  for (const auto& m : survey.rule)
+    if (m.lambda > lambda_floor) nodes.push_back({m.lambda, (m.H(0, 0) + m.H(1, 1)).real(), m.residual});
+  add_bands(t, band_weights(nodes));
+  auto& v = t.volume_cavity;
+  for (std::size_t b = 0; b < t.bands.size(); ++b) {
+    Hermitian3 H = Hermitian3::Zero();
+    double weighted = 0;
+    for (const auto& m : survey.rule)
+      if (m.lambda > lambda_floor && m.lambda >= t.bands.lo[b] && m.lambda < t.bands.hi[b]) {
+        H += m.H;
+        weighted += m.H.trace().real() * m.lambda;
+      }
+    H = 0.5 * (H + H.adjoint()).eval();
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) {
+        v.band_coupling_re.push_back(H(j, k).real());
+        v.band_coupling_im.push_back(H(j, k).imag());
+      }
+    v.band_lambda.push_back(H.trace().real() > 0 ? weighted / H.trace().real() : 0.0);
   }
 }
 
@@ -120,6 +151,7 @@ VolumeTableResult make_volume_table(const VolumeTableRequest& request,
   v.geostrophic_re = flat(Eigen::Matrix3d(out.survey.geostrophic.real()));
   v.geostrophic_im = flat(Eigen::Matrix3d(out.survey.geostrophic.imag()));
   add_rows(t, out.survey);
+  add_volume_bands(t, out.survey, request.survey.lambda_floor);
   double kept = 0;
   for (double E : t.E) kept += E;
   t.coverage = t.sum_rule > 0 ? kept / t.sum_rule : 0;

@@ -112,7 +112,7 @@ void roots_against_rows(const Scene& scene, BenchResult& out, const std::functio
       std::set<int> rows;
       for (const GeneralMode& m : bodies[k].tanks[i].modes) rows.insert(m.table_row);
       const int all = static_cast<int>(rows.size());
-      if (all < 2) continue;  // nothing to truncate
+      if (all < 2 || tanks_of(full.bodies[k])[i]->bands) continue;  // nothing to truncate (bands: the whole measure)
       for (int q = 1;; q = std::min(2 * q, all)) {
         Scene s = full;
         tanks_of(s.bodies[k])[i]->modes = q;

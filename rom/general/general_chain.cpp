@@ -168,7 +168,7 @@ bool needs_general_chain(const Scene& scene, TableCache& tables) {
     const BodySpec& b = scene.bodies[k];
     if (b.asymmetric() || !b.more_cavities.empty()) return true;
     for (const auto& [cav, key] : body_tanks(b, k))
-      if (cav.offset || read_table(scene, key, cav, tables).volume_cavity.present()) return true;
+      if (cav.offset || cav.bands || read_table(scene, key, cav, tables).volume_cavity.present()) return true;
   }
   return false;
 }

@@ -98,6 +98,27 @@ void table_tensors(const rc::ModeTable& t, Eigen::Matrix3d& inertia, Eigen::Matr
   }
 }
 
+// reduction = "bands": every λ-band holding weight as one pseudo-mode at its mean λ, its summed H split into rank-one
+// parts (docs/volume.md §5: the plain Gauss rule's nodes, a dense cluster's light modes included). Returns the
+// coverage (the bands' transverse weight and the λ = 0 weight's half over the sum rule: 1 to rounding).
+double add_band_modes(const Scene& scene, const std::string& w, int k, const rc::ModeTable& t, double unit,
+                      GeneralTank& tank) {
+  const rc::ModeTable::Volume& v = t.volume_cavity;
+  if (!v.present() || v.band_lambda.empty())
+    fail(scene, w + ".reduction", "\"bands\" needs a 3-D table with band couplings (cavity-modes ellipsoid / volume "
+                                  "of this version): " + t.shape + " table " + "without them");
+  double covered = tensor(v.geostrophic_re).topLeftCorner<2, 2>().trace() / 2;
+  for (std::size_t b = 0; b < v.band_lambda.size(); ++b) {
+    Eigen::Matrix3cd H;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) H(i, j) = {v.band_coupling_re[9 * b + 3 * i + j], v.band_coupling_im[9 * b + 3 * i + j]};
+    if (!(H.trace().real() > 1e-14 * std::abs(t.sum_rule))) continue;
+    add_row_modes(k, static_cast<int>(b), H, scene.bodies[k].spin, v.band_lambda[b], unit, tank);
+    covered += (H(0, 0) + H(1, 1)).real();
+  }
+  return covered / t.sum_rule;
+}
+
 }  // namespace
 
 GeneralTank general_tank(const Scene& scene, int k, const CavitySpec& cav, const std::string& w,
@@ -118,10 +139,14 @@ GeneralTank general_tank(const Scene& scene, int k, const CavitySpec& cav, const
   const Eigen::Vector3d& d = tank.centroid;
   tank.inertia = unit * inertia + tank.mass * (d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose());
   tank.geostrophic = unit * geostrophic;
-  double covered = 0;
-  for (const int l : kept_rows(scene, w, cav, t, covered))
-    add_row_modes(k, l, row_coupling(t, l), scene.bodies[k].spin, t.lambda[l], unit, tank);
-  tank.coverage = covered;
+  if (cav.bands) {
+    tank.coverage = add_band_modes(scene, w, k, t, unit, tank);
+  } else {
+    double covered = 0;
+    for (const int l : kept_rows(scene, w, cav, t, covered))
+      add_row_modes(k, l, row_coupling(t, l), scene.bodies[k].spin, t.lambda[l], unit, tank);
+    tank.coverage = covered;
+  }
   if (!tank.inertia.allFinite() || !(tank.mass > 0) || !tank.geostrophic.allFinite())
     fail(scene, w + ".table", "non-physical table (volume or inertia not positive and finite)");
   for (const GeneralMode& md : tank.modes)

@@ -20,7 +20,7 @@ namespace rc::rom {
 //   ż = iλ z − c̄·δω̇,   h = 2 Re(z c)   (c_j = ρ∫(e_j × r)·V, ρ∫|V|² = 1, so that H = c cᴴ in kg m²).
 struct GeneralMode {
   int body = 0;             // 0-based body index
-  int table_row = 0;        // the table's row it comes from
+  int table_row = 0;        // the table's row it comes from (reduction = "bands": its band)
   double lambda = 0;        // rad/s: ω_k0 λ_table (Kononov (21))
   double lambda_table = 0;  // λ / ω_k0 (the table's, for a unit spin)
   Eigen::Vector3cd c;       // kg^{1/2} m

@@ -217,6 +217,9 @@ void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
   const double L5 = inertia_unit(cav);
   const RowCoupling rc{t, b.fluid_center / cav.scale};
   const std::vector<int> rows = kept_rows(scene, w, cav, t, rc);
+  if (cav.bands)
+    fail(scene, w + ".reduction", "\"bands\" takes a 3-D table's band couplings, in the chain without axial symmetry "
+                                  "(`spectrum`, `run`, `sweep`, `bench`; docs/rom.md); this command takes modal tanks");
   GalerkinFluid gf;
   if (cav.galerkin && t.free_surface.present())  // its forms hold the couplings about the centroid only
     fail(scene, w + ".reduction", "\"galerkin\" does not take a partially filled tank's table yet (the modal tank does)");

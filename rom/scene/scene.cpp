@@ -141,9 +141,13 @@ CavitySpec parse_cavity(const Ctx& c, const toml::table& t, const std::string& w
   cav.viscosity = get_number(c, t, "viscosity", where + ".viscosity", Sign::pos, false);
   if (const toml::node* r = t.get("reduction")) {
     const auto* v = r->as_string();
-    if (!v || (v->get() != "modal" && v->get() != "galerkin"))
-      c.fail(where + ".reduction", "must be \"modal\" or \"galerkin\"");
+    if (!v || (v->get() != "modal" && v->get() != "galerkin" && v->get() != "bands"))
+      c.fail(where + ".reduction", "must be \"modal\", \"galerkin\" or \"bands\"");
     cav.galerkin = v->get() == "galerkin";
+    cav.bands = v->get() == "bands";
+    if (cav.bands && (cav.modes || cav.coverage || cav.static_correction))
+      c.fail(where + ".reduction", "\"bands\" keeps the whole coupling measure: give no modes, coverage or "
+                                   "static_correction with it");
   }
   return cav;
 }

@@ -32,6 +32,9 @@ struct CavitySpec {
                                    // ekman = nu/(spin scale^2) (docs/rom.md, "Viscous tanks")
   bool galerkin = false;           // reduction = "galerkin": the kept modes as a Galerkin basis, with the fluid's
                                    // energy and dissipation (docs/rom.md, "Galerkin tanks"); "modal" (default): not
+  bool bands = false;              // reduction = "bands": a 3-D table's coupling in λ-bands, each band one pseudo-mode
+                                   // at its mean λ (dense spectra; docs/rom.md, "Bodies and tanks without axial
+                                   // symmetry")
   // The centroid's distance from the body's axis, (x, y) in the body's axes (m): a tank off the axis (the chain without
   // axial symmetry only, docs/rom.md "Bodies and tanks without axial symmetry").
   std::optional<std::array<double, 2>> offset;
