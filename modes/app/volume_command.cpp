@@ -14,18 +14,21 @@
 namespace rc::modes {
 namespace {
 
-void add_common_options(CLI::App* cmd, int& order, double& size, double& wall_size, double& wall_growth,
-                        double& floor, bool& fields, std::string& output) {
-  cmd->add_option("--order", order, "Lagrange order of the tetrahedra, 1..6 (default 4)");
-  cmd->add_option("--mesh-size", size, "element size (default 0.4 of the smallest dimension)");
-  cmd->add_option("--wall-size", wall_size, "element size on the wall, graded to --mesh-size inside (the geometry "
-                                            "error lives on the wall; docs/volume.md §4)");
-  cmd->add_option("--wall-growth", wall_growth, "growth of the element size per unit distance from the wall (default 1)");
-  cmd->add_option("--floor", floor, "keep modes whose coupling tensor's trace exceeds this fraction of the sum rule's "
-                                    "(default 1e-4)");
-  cmd->add_flag("--fields", fields, "also store each row's pressure and velocity (complex) at the mesh nodes, with an "
-                                    "XDMF companion FILE.xdmf for ParaView (docs/volume.md §5)");
-  cmd->add_option("-o,--output", output, "mode table to write (HDF5)")->required();
+template <class Common>
+void add_common_options(CLI::App* cmd, Common& o) {
+  cmd->add_option("--order", o.order, "Lagrange order of the tetrahedra, 1..6 (default 4)");
+  cmd->add_option("--mesh-size", o.size, "element size (default 0.4 of the smallest dimension)");
+  cmd->add_option("--wall-size", o.wall_size, "element size on the wall, graded to --mesh-size inside (the geometry "
+                                              "error lives on the wall; docs/volume.md §4)");
+  cmd->add_option("--wall-growth", o.wall_growth, "growth of the element size per unit distance from the wall "
+                                                  "(default 1)");
+  cmd->add_option("--floor", o.floor, "keep modes whose coupling tensor's trace exceeds this fraction of the sum "
+                                      "rule's (default 1e-4)");
+  cmd->add_option("--survey-columns", o.columns, "basis vectors of the plain Gauss rule, 12..600 (default 60): more "
+                                                 "resolve the band weights of a dense spectrum (docs/volume.md §5)");
+  cmd->add_flag("--fields", o.fields, "also store each row's pressure and velocity (complex) at the mesh nodes, with "
+                                      "an XDMF companion FILE.xdmf for ParaView (docs/volume.md §5)");
+  cmd->add_option("-o,--output", o.output, "mode table to write (HDF5)")->required();
 }
 
 std::string text_of(const std::string& file) {
@@ -70,11 +73,11 @@ VolumeCommands::VolumeCommands(CLI::App& app) {
   ellipsoid_->add_option("--c", c_, "semi-axis along z")->required();
   ellipsoid_->add_option("--tilt", tilt_degrees_, "angle (degrees) of the ellipsoid's c axis against the spin axis, "
                                                   "turned about x");
-  add_common_options(ellipsoid_, order_, size_, wall_size_, wall_growth_, floor_, fields_, output_);
+  add_common_options(ellipsoid_, common_);
   volume_ = app.add_subcommand("volume", "3-D: the user's cavity (.geo/.msh with a 3-D physical group \"fluid\", or "
                                          "CAD .step/.stp/.brep): its 3-D mode table (docs/volume.md)");
   volume_->add_option("file", file_, "geometry file")->required();
-  add_common_options(volume_, order_, size_, wall_size_, wall_growth_, floor_, fields_, output_);
+  add_common_options(volume_, common_);
 }
 
 bool VolumeCommands::parsed() const { return ellipsoid_->parsed() || volume_->parsed(); }
@@ -87,14 +90,17 @@ VolumeTableRequest VolumeCommands::resolve() const {
     r.shape = {"volume", {}, file_, 0};
   }
   geometry::check_volume_shape(r.shape);
-  if (!(floor_ > 0 && floor_ < 1)) throw std::runtime_error("--floor must be in (0, 1)");
-  r.mesh.order = order_;
-  r.mesh.size = size_;
-  r.mesh.wall_size = wall_size_;
-  r.mesh.wall_growth = wall_growth_;
-  r.survey.floor = floor_;
-  r.fields = fields_;
-  if (fields_) check_companion_name(output_);
+  const Common& o = common_;
+  if (!(o.floor > 0 && o.floor < 1)) throw std::runtime_error("--floor must be in (0, 1)");
+  if (o.columns < 12 || o.columns > 600) throw std::runtime_error("--survey-columns must be in 12..600");
+  r.mesh.order = o.order;
+  r.mesh.size = o.size;
+  r.mesh.wall_size = o.wall_size;
+  r.mesh.wall_growth = o.wall_growth;
+  r.survey.floor = o.floor;
+  r.survey.max_columns = o.columns;
+  r.fields = o.fields;
+  if (o.fields) check_companion_name(o.output);
 
   return r;
 }
@@ -119,7 +125,7 @@ int VolumeCommands::run(const std::string& command_line) const {
     os << "ellipsoid a=" << a_ << " b=" << b_ << " c=" << c_ << " tilt=" << tilt_degrees_ << "deg";
     result.table.geometry_source = os.str();
   }
-  write_mode_table(result.table, output_, result.fields ? &*result.fields : nullptr);
+  write_mode_table(result.table, common_.output, result.fields ? &*result.fields : nullptr);
   if (is_root_rank()) print_report(result);
   return 0;
 }

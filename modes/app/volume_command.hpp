@@ -27,10 +27,14 @@ class VolumeCommands {
   VolumeTableRequest resolve() const;
   CLI::App *ellipsoid_ = nullptr, *volume_ = nullptr;
   double a_ = 0, b_ = 0, c_ = 0, tilt_degrees_ = 0;
-  std::string file_, output_;
-  int order_ = kVolumeDefaultOrder;
-  double size_ = 0, wall_size_ = 0, wall_growth_ = 1.0, floor_ = 1e-4;
-  bool fields_ = false;
+  std::string file_;
+  // The options both commands take (add_common_options).
+  struct Common {
+    std::string output;
+    int order = kVolumeDefaultOrder, columns = 60;
+    double size = 0, wall_size = 0, wall_growth = 1.0, floor = 1e-4;
+    bool fields = false;
+  } common_;
 };
 
 }  // namespace rc::modes

@@ -84,6 +84,7 @@ expect_error "missing semi-axis" "--c" "$BIN" ellipsoid --a 1 --b 1 -o out.h5
 expect_error "3-D order too high" "order 7 is outside 1..6" "$BIN" ellipsoid --a 1 --b 1 --c 1 --order 7 -o out.h5
 expect_error "infinite tilt" "tilt must be finite" "$BIN" ellipsoid --a 1 --b 1 --c 1 --tilt inf -o out.h5
 expect_error "bad floor" "--floor must be in (0, 1)" "$BIN" ellipsoid --a 1 --b 1 --c 1 --floor 2 -o out.h5
+expect_error "bad survey columns" "--survey-columns must be in 12..600" "$BIN" ellipsoid --a 1 --b 1 --c 1 --survey-columns 5 -o out.h5
 expect_error "a mesh beyond the machine's memory" "more than this machine's" "$BIN" ellipsoid --a 1 --b 1 --c 1 --order 6 --mesh-size 0.12 -o out.h5
 expect_error "unreadable volume" "cannot read" "$BIN" volume "$work/none.geo" -o out.h5
 expect_error "volume of another kind" "expected a .geo" "$BIN" volume help.txt -o out.h5
@@ -156,6 +157,8 @@ print("%.1e" % gap)'); then
   else
     bad "chain-rom spectrum with the 3-D table's bands: $(cat rom_bands.txt) $gap"
   fi
+  sed 's/^reduction = "bands"$/reduction = "bands"\nmodes = 1/' bands.toml > bands_modes.toml
+  expect_error "bands with modes" 'keeps the whole coupling measure' "$ROM" spectrum bands_modes.toml
   printf '[initial]\ntilt = [[0.01, 0.0]]\n[run]\nt_end = 0.2\noutput_step = 0.01\n' >> scene.toml
   if "$ROM" run scene.toml -o run.h5 > run_rom.txt 2>&1 && grep -q "21 samples, the chain without axial symmetry" run_rom.txt &&
      /usr/bin/python3 -c 'import h5py; f = h5py.File("run.h5"); assert f.attrs["model"] == b"general" or f.attrs["model"] == "general"; assert f["u_re"].shape == (21, 1)'; then
