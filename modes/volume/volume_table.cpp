@@ -66,7 +66,8 @@ void add_volume_bands(ModeTable& t, const VolumeSurvey& survey, double lambda_fl
     Hermitian3 H = Hermitian3::Zero();
     double weighted = 0;
     for (const auto& m : survey.rule)
-      if (m.lambda > lambda_floor && m.lambda >= t.bands.lo[b] && m.lambda < t.bands.hi[b]) {
+      if (m.lambda > lambda_floor && m.lambda >= t.bands.lo[b] &&
+          (m.lambda < t.bands.hi[b] || (b + 1 == t.bands.size() && m.lambda <= t.bands.hi[b]))) {  // as band_weights
         H += m.H;
         weighted += m.H.trace().real() * m.lambda;
       }
