@@ -47,8 +47,9 @@ void print_report(const VolumeTableResult& r) {
   if (!s.unsettled.empty()) {
     double weight = 0;
     for (const auto& m : s.unsettled) weight += (m.H(0, 0) + m.H(1, 1)).real();
-    std::cout << "NOT CONVERGED: " << s.unsettled.size() << " heavy cluster(s) of transverse weight " << weight
-              << " did not settle within the basis budget; they are not in the table\n";
+    std::cout << "NOT CONVERGED: " << s.unsettled.size() << " heavy cluster(s) (transverse weight about " << weight
+              << ", a Ritz estimate) did not settle within the basis budget; they are not in the rows, but the band "
+                 "weights hold them (reduction = \"bands\", docs/volume.md §5)\n";
   }
   if (r.fields) {
     double worst = 0;
