@@ -99,6 +99,28 @@ std::string solver_text(const VolumeSurvey& s) {
          " basis vectors, plain; docs/volume.md §2)";
 }
 
+// /volume's tensors about the centroid (docs/volume.md §5): the frozen fluid's inertia, Zhukovsky's, their difference
+// (the tensor sum rule) and the λ = 0 weight. Returns how far the survey's weights miss the sum rule: max |Σ H −
+// (I_f − J_zh)| over trace(I_f − J_zh).
+double set_volume_tensors(ModeTable& t, const VolumeIntegrals& fluid, const Tensor3& J, const VolumeSurvey& survey) {
+  auto& v = t.volume_cavity;
+  v.centroid.assign(fluid.centroid.begin(), fluid.centroid.end());
+  v.inertia = flat(fluid.inertia);
+  v.zhukovsky = flat(J);
+  Tensor3 P{};
+  double scale = 0, worst = 0;
+  for (int j = 0; j < 3; ++j) {
+    for (int k = 0; k < 3; ++k) P[j][k] = fluid.inertia[j][k] - J[j][k];
+    scale += P[j][j];
+  }
+  for (int j = 0; j < 3; ++j)
+    for (int k = 0; k < 3; ++k) worst = std::max(worst, std::abs(survey.total(j, k) - P[j][k]));
+  v.sum_rule = flat(P);
+  v.geostrophic_re = flat(Eigen::Matrix3d(survey.geostrophic.real()));
+  v.geostrophic_im = flat(Eigen::Matrix3d(survey.geostrophic.imag()));
+  return worst / scale;
+}
+
 }  // namespace
 
 VolumeTableResult make_volume_table(const VolumeTableRequest& request,
@@ -134,23 +156,8 @@ VolumeTableResult make_volume_table(const VolumeTableRequest& request,
   t.solver = solver_text(out.survey);
   t.tolerance = request.survey.lambda_tolerance;
   t.normalisation = "3-D: H = c c^H with c_k = int (e_k x r).V, |V| = 1 (docs/volume.md); a = sqrt(E/2), N2 = 1";
-  auto& v = t.volume_cavity;
-  v.centroid.assign(fluid.centroid.begin(), fluid.centroid.end());
-  v.tilt = request.shape.tilt;
-  v.inertia = flat(fluid.inertia);
-  v.zhukovsky = flat(J);
-  Tensor3 P{};
-  double scale = 0, worst = 0;
-  for (int j = 0; j < 3; ++j) {
-    for (int k = 0; k < 3; ++k) P[j][k] = fluid.inertia[j][k] - J[j][k];
-    scale += P[j][j];
-  }
-  for (int j = 0; j < 3; ++j)
-    for (int k = 0; k < 3; ++k) worst = std::max(worst, std::abs(out.survey.total(j, k) - P[j][k]));
-  out.sum_rule_mismatch = worst / scale;
-  v.sum_rule = flat(P);
-  v.geostrophic_re = flat(Eigen::Matrix3d(out.survey.geostrophic.real()));
-  v.geostrophic_im = flat(Eigen::Matrix3d(out.survey.geostrophic.imag()));
+  out.sum_rule_mismatch = set_volume_tensors(t, fluid, J, out.survey);
+  t.volume_cavity.tilt = request.shape.tilt;
   add_rows(t, out.survey);
   add_volume_bands(t, out.survey, request.survey.lambda_floor);
   double kept = 0;
