@@ -212,15 +212,16 @@ ChainRates chain_rates(const NonlinearChain& c, const ChainState& s) {
       Matrix3d block;
       if (i < k) block = -skew(lever) * skew(f.S[i]);
       else if (i == k)
-        block = f.J[k] - above * skew(f.S[k]) * skew(f.S[k]) - fluid_inertia(c.bodies[k], s.omega[k].z(), f.n[k]) -
-                f.R[k] * c.bodies[k].volume.share * f.R[k].transpose();
+        block = f.J[k] - above * skew(f.S[k]) * skew(f.S[k]) - fluid_inertia(c.bodies[k], s.omega[k].z(), f.n[k]);
       else block = -skew(f.S[k]) * skew(mu[i + 1] * f.S[i] + c.bodies[i].mass * f.rho[i]);
       M.block<3, 3>(3 * k, 3 * i) = block;
     }
     Vector3d r = lever.cross(g) + tau[k] - f.Omega[k].cross(f.J[k] * f.Omega[k]) - m * f.rho[k].cross(b[k]) +
-                 f.R[k] * (fluid_moment(c.bodies[k], s.omega[k].z(), s.zeta.data() + first_mode[k]) +
-                           volume_moment(c.bodies[k].volume, s.omega[k],
-                                         s.zeta.data() + first_mode[k] + c.bodies[k].fluid.size()));
+                 f.R[k] * fluid_moment(c.bodies[k], s.omega[k].z(), s.zeta.data() + first_mode[k]);
+    if (const VolumeFluid& v = c.bodies[k].volume; v.present()) {  // tanks without axial symmetry (volume_fluid.hpp)
+      M.block<3, 3>(3 * k, 3 * k) -= f.R[k] * v.share * f.R[k].transpose();
+      r += f.R[k] * volume_moment(v, s.omega[k], s.zeta.data() + first_mode[k] + c.bodies[k].fluid.size());
+    }
     for (int j = k + 1; j < n; ++j) r -= c.bodies[j].mass * f.S[k].cross(d[j]);
     rhs.segment<3>(3 * k) = r;
     if (c.free_chain) {
