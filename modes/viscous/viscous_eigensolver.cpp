@@ -1,11 +1,13 @@
 #include "viscous_eigensolver.hpp"
 
+#include "complex_lu.hpp"
 #include "progress.hpp"
 
 #include <slepceps.h>
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -34,13 +36,13 @@ double norm(Vec a) {
   return s;
 }
 
-// The shift-and-invert operator T v = S⁻¹ M̂ v, S the block of A − τ𝓜 (MUMPS LU). The symmetric form of S
-// (its imaginary rows negated) factorised as LDLᵀ was measured 4× slower than this LU (15 s against 3.5 s on the
-// Ek = 1e-4 sphere): the indefinite saddle point makes MUMPS's 2 × 2 pivoting expensive.
+// The shift-and-invert operator T v = S⁻¹ M̂ v, S the block of A − τ𝓜, factorised in complex arithmetic
+// (complex_lu.hpp). The complex symmetric form of S factorised as LDLᵀ was measured 4× slower than the LU (15 s
+// against 3.5 s on the Ek = 1e-4 sphere, then in the real block form): the indefinite saddle point makes MUMPS's
+// 2 × 2 pivoting expensive.
 struct ShiftInvert {
   const ViscousForms* forms = nullptr;
-  PMat S;
-  PKSP ksp;
+  std::unique_ptr<ComplexLu> lu;
   PVec work;
 };
 
@@ -48,36 +50,22 @@ PetscErrorCode apply_shift_invert(Mat T, Vec x, Vec y) {
   ShiftInvert* op = nullptr;
   PetscCall(MatShellGetContext(T, &op));
   PetscCall(MatMult(op->forms->M, x, op->work));
-  PetscCall(KSPSolve(op->ksp, op->work, y));
-  KSPConvergedReason reason;
-  PetscCall(KSPGetConvergedReason(op->ksp, &reason));
-  PetscCheck(reason >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "the shifted solve failed");
+  try {
+    op->lu->solve(op->work, y);
+  } catch (const std::exception& e) {
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "%s", e.what());
+  }
   return 0;
 }
 
-// S = Â − Re τ M̂ − Im τ (block of i𝓜), factorised once. MUMPS with null-pivot detection (ICNTL 24: a Taylor–Hood
-// triangle with no interior vertex carries a massless spurious pressure mode) and 100 % more workspace than its
-// estimate (ICNTL 14: the zero pressure block makes it delay many pivots, about 24 000 of 200 000 on the
-// Ek = 1e-4 sphere; the default 20 % overran, INFO(1) = −9). Options under -viscous_st_ override both.
+// S = Â − Re τ M̂ − Im τ (block of i𝓜), factorised once (MUMPS's settings and the -viscous_st_ options: complex_lu.hpp).
 void factorise(ShiftInvert& op, std::complex<double> target, MPI_Comm comm) {
-  petsc_check(MatDuplicate(op.forms->A, MAT_COPY_VALUES, op.S.out()), "MatDuplicate");
-  petsc_check(MatAXPY(op.S, -target.real(), op.forms->M, DIFFERENT_NONZERO_PATTERN), "MatAXPY");
-  petsc_check(MatAXPY(op.S, -target.imag(), op.forms->iM, DIFFERENT_NONZERO_PATTERN), "MatAXPY");
-  PC pc;
-  Mat F;
-  petsc_check(KSPCreate(comm, op.ksp.out()), "KSPCreate");
-  petsc_check(KSPSetOptionsPrefix(op.ksp, "viscous_st_"), "KSPSetOptionsPrefix");
-  petsc_check(KSPSetOperators(op.ksp, op.S, op.S), "KSPSetOperators");
-  petsc_check(KSPSetType(op.ksp, KSPPREONLY), "KSPSetType");
-  petsc_check(KSPGetPC(op.ksp, &pc), "KSPGetPC");
-  petsc_check(PCSetType(pc, PCLU), "PCSetType");
-  petsc_check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
-  petsc_check(PCFactorSetUpMatSolverType(pc), "PCFactorSetUpMatSolverType");
-  petsc_check(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
-  petsc_check(MatMumpsSetIcntl(F, 24, 1), "MatMumpsSetIcntl");
-  petsc_check(MatMumpsSetIcntl(F, 14, 100), "MatMumpsSetIcntl");
-  petsc_check(KSPSetFromOptions(op.ksp), "KSPSetFromOptions");
-  petsc_check(KSPSetUp(op.ksp), "the LU factorisation of the shifted viscous pencil (MUMPS)");
+  PMat S;
+  petsc_check(MatDuplicate(op.forms->A, MAT_COPY_VALUES, S.out()), "MatDuplicate");
+  petsc_check(MatAXPY(S, -target.real(), op.forms->M, DIFFERENT_NONZERO_PATTERN), "MatAXPY");
+  petsc_check(MatAXPY(S, -target.imag(), op.forms->iM, DIFFERENT_NONZERO_PATTERN), "MatAXPY");
+  op.lu = std::make_unique<ComplexLu>(comm, "viscous_st_");
+  op.lu->factor(S);
   petsc_check(MatCreateVecs(op.forms->M, op.work.out(), nullptr), "MatCreateVecs");
 }
 

@@ -1,6 +1,7 @@
 #include "viscous_forms.hpp"
 
 #include "surface_quadrature.hpp"
+#include "triplet_matrix.hpp"
 
 #include <algorithm>
 #include <array>
@@ -178,17 +179,10 @@ int add_free_surface(const TaylorHoodSpace& space, double centroid_z, int first,
 
 PMat create_block_matrix(MPI_Comm comm, int complex_size, std::vector<PetscInt>& i, std::vector<PetscInt>& j,
                          const std::vector<PetscScalar>& v) {
-  PMat A;
-  petsc_check(MatCreate(comm, A.out()), "MatCreate");
   // Whole (Re, Im) pairs per rank, so that a complex unknown never straddles two ranks.
   PetscInt local = PETSC_DECIDE, global = complex_size;
   petsc_check(PetscSplitOwnership(comm, &local, &global), "PetscSplitOwnership");
-  petsc_check(MatSetSizes(A, 2 * local, 2 * local, 2 * global, 2 * global), "MatSetSizes");
-  petsc_check(MatSetType(A, MATAIJ), "MatSetType");
-  petsc_check(MatSetPreallocationCOO(A, static_cast<PetscCount>(i.size()), i.data(), j.data()),
-              "MatSetPreallocationCOO");
-  petsc_check(MatSetValuesCOO(A, v.data(), ADD_VALUES), "MatSetValuesCOO");
-  return A;
+  return triplet_matrix(comm, 2 * local, 2 * global, i, j, v);
 }
 
 // Â from the complex pencil's real and imaginary triplets (see the header), M̂ from 𝓜's.

@@ -1,0 +1,58 @@
+// The LU factorisation of a complex matrix that PETSc (built for real scalars) holds in its real block form: complex
+// unknown j's real and imaginary parts in slots 2j and 2j + 1 (rows 2i and 2i + 1 the real and imaginary parts of
+// equation i), the layout of the viscous forms (viscous_forms.hpp). MUMPS factors it in complex arithmetic (ZMUMPS)
+// rather than as a real matrix of twice the order: a complex multiply-add is 8 flops where the same 2 × 2 real block
+// costs 16, the factors take half the memory, and the ordering works on a graph of half the size — measured in
+// docs/benchmarks.md, "Complex factorisation".
+//
+// A block vector is read as the complex vector it holds (its interleaved pairs are std::complex<double>'s layout).
+// Under MPI the matrix goes to MUMPS distributed (each rank its own rows, ICNTL(18) = 3) and the right-hand side is
+// gathered on rank 0 and the solution scattered back (MUMPS's centralised dense right-hand side).
+//
+// Options: -<prefix>mat_mumps_icntl_<k> V and -<prefix>mat_mumps_cntl_<k> V set MUMPS's ICNTL(k) and CNTL(k), as
+// PETSc's own MUMPS interface reads them, so the prefixes documented for the viscous solvers keep their meaning.
+#pragma once
+
+#include "petsc_handles.hpp"
+
+#include <complex>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace rc::modes {
+
+class ComplexLu {
+ public:
+  // `prefix` is the options prefix ("viscous_st_", "response_"); comm the matrices' communicator.
+  ComplexLu(MPI_Comm comm, std::string prefix);
+  ~ComplexLu();
+  ComplexLu(const ComplexLu&) = delete;
+  ComplexLu& operator=(const ComplexLu&) = delete;
+
+  // Factors the complex matrix held by `block`. The ordering and symbolic analysis are kept and reused while the
+  // pattern stays the same (a new σ on the same forms costs the numerical factorisation only). Throws
+  // std::runtime_error naming MUMPS's cause (singular, out of memory) when it fails.
+  void factor(Mat block);
+
+  // x = S⁻¹ b on block vectors (x and b may not alias). Throws std::runtime_error when MUMPS's solve fails.
+  void solve(Vec b, Vec x);
+
+  // MUMPS's INFOG(k) of the last phase (for reports: INFOG(28) the null pivots, INFOG(3) the factors' entries).
+  int infog(int k) const;
+
+ private:
+  struct Mumps;
+  void extract(Mat block);
+  void run(int job, const char* phase);
+  std::unique_ptr<Mumps> mumps_;
+  std::string prefix_;
+  MPI_Comm comm_;
+  std::vector<int> rows_, cols_;  // this rank's entries, 1-based, as MUMPS analysed them
+  std::vector<std::complex<double>> values_;
+  bool analysed_ = false, factored_ = false;
+  PetscHandle<VecScatter, VecScatterDestroy> gather_;  // block vector → rank 0, made at the first solve
+  PVec gathered_;
+};
+
+}  // namespace rc::modes
