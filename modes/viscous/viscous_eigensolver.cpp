@@ -37,9 +37,9 @@ double norm(Vec a) {
 }
 
 // The shift-and-invert operator T v = S⁻¹ M̂ v, S the block of A − τ𝓜, factorised in complex arithmetic
-// (complex_lu.hpp). The complex symmetric form of S factorised as LDLᵀ was measured 4× slower than the LU (15 s
-// against 3.5 s on the Ek = 1e-4 sphere, then in the real block form): the indefinite saddle point makes MUMPS's
-// 2 × 2 pivoting expensive.
+// (complex_lu.hpp). In the real block form, the symmetric form of S (its imaginary rows negated) factorised as LDLᵀ
+// was measured 4× slower than the LU (15 s against 3.5 s on the Ek = 1e-4 sphere): the indefinite saddle point makes
+// MUMPS's 2 × 2 pivoting expensive.
 struct ShiftInvert {
   const ViscousForms* forms = nullptr;
   std::unique_ptr<ComplexLu> lu;

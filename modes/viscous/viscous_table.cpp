@@ -252,7 +252,7 @@ std::string viscous_solver_text(const geometry::MeshOptions& mesh, const std::st
                                : fmt::format("isotropic wall grading (wall {:.3g}, growth {:g})", mesh.wall_size,
                                              mesh.wall_growth);
   return fmt::format("Taylor-Hood P{}/P{}, interior size {:.3g}, {}; real 2x2 block form, SLEPc Krylov-Schur "
-                     "shift-and-invert (MUMPS LU) at each ideal mode's lambda; ideal targets: {}",
+                     "shift-and-invert (MUMPS complex LU) at each ideal mode's lambda; ideal targets: {}",
                      mesh.order, mesh.order - 1, mesh.size, wall, ideal_solver);
 }
 
