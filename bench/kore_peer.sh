@@ -4,11 +4,11 @@
 # no-slip, Ek = 1e-3; Kore's tests/spinover). Kore: its reference eigenvalue, its run (submatrices, assemble, solve
 # with its test's solver options) timed. Ours: data/sections/shell.geo with --ekman 1e-3, with the ideal survey
 # (the default) and with --target 1.0 (no survey), timed; each against Kore's reference. Writes
-# OUT/kore_peer_<date>.csv and prints it.
+# OUT/kore_peer_<shapes>_<date>.csv and prints it.
 #   KORE_DIR=/path/to/kore bash bench/kore_peer.sh [BUILD_DIR] [OUT]
 # SHAPES="shell sphere" (default shell: Kore's test; sphere: its full-sphere case, ricb = 0) and EKMANS (default
 # "1e-3 1e-4") choose the cases; SHELL_SIZES / SPHERE_SIZES our mesh ladder beyond the default mesh. The errors are
-# against Kore's reference eigenvalue (the shell at 1e-3) or Kore's own one-rank run; OUT/kore_peer_<date>.png plots
+# against Kore's reference eigenvalue (the shell at 1e-3) or Kore's own one-rank run; OUT/kore_peer_<shapes>_<date>.png plots
 # error against run time for both codes (bench/plot_kore_peer.py). On the sphere at Ek <= 1e-5 our meshes follow the
 # internal shear layers unless the row says "uniform interior" (--no-shear-layers).
 # Kore is optional: without KORE_DIR (a checkout of github.com/repepo/kore) or without its Debian needs
@@ -26,7 +26,10 @@ MODES=$BUILD/modes/cavity-modes
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 mkdir -p "$OUT"
-csv=$OUT/kore_peer_$(date +%F).csv
+# Named by the shapes and the date; a second run the same day gets -2, -3, ... rather than overwrite the first.
+stem=$OUT/kore_peer_$(echo "${SHAPES:-shell}" | tr ' ' '_')_$(date +%F)
+csv=$stem.csv
+for k in 2 3 4 5 6 7 8 9; do [ -e "$csv" ] || break; csv=$stem-$k.csv; done
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1
 echo "ekman,code,setting,seconds,frequency,decay,frequency_error,decay_error" > "$csv.tmp"
 now() { date +%s.%N; }
@@ -56,11 +59,13 @@ else
        "python3-slepc4py-complex python3-mpi4py python3-petsc4py python3-slepc4py (its reference eigenvalue at" \
        "Ek = 1e-3 is used alone)" >&2
 fi
-kore() {  # ekman ranks
-  local ek=$1 n=$2 dir=$work/kore
+kore() {  # ekman ranks [fine: 1.5 times Kore's radial and angular truncations, to measure its own error]
+  local ek=$1 n=$2 fine=${3:-} dir=$work/kore
   rm -rf "$dir" && mkdir -p "$dir" && cp -r "$KORE_DIR/bin" "$dir/bin"
-  sed -e "s/^Ek = .*/Ek = $ek/" -e "s/^ricb = .*/ricb = $RICB/" "$KORE_DIR/tests/spinover/params.spinover" \
-    > "$dir/bin/parameters.py"
+  local truncation="s/^N = Ncheb(Ek)/N = Ncheb(Ek)/"
+  [ -z "$fine" ] || truncation="s/^N = Ncheb(Ek)/N = Ncheb(Ek) * 3 \/\/ 4 * 2/"
+  sed -e "s/^Ek = .*/Ek = $ek/" -e "s/^ricb = .*/ricb = $RICB/" -e "$truncation" \
+    "$KORE_DIR/tests/spinover/params.spinover" > "$dir/bin/parameters.py"
   local t0 t
   t0=$(now)
   (cd "$dir" && "$PY" ./bin/submatrices.py "$n" > sub.log 2>&1 && mpiexec -n "$n" "$PY" ./bin/assemble.py > asm.log 2>&1 &&
@@ -72,7 +77,7 @@ i = np.argmax(d[:, 0]); print('%.17g %.17g' % (-d[i, 0], d[i, 1]))")
   [ -n "${REF_F[$ek]:-}" ] || { REF_F[$ek]=$freq; REF_D[$ek]=$decay; }
   local N
   N=$(grep -o "N = [0-9]*" "$dir/sub.log" | head -1 | tr -d ' ')
-  row "$ek" kore "$SHAPE;spectral ${N:-};np=$n" "$t" "$freq" "$decay" >> "$csv.tmp"
+  row "$ek" kore "$SHAPE;spectral ${N:-};np=$n${fine:+;1.5 x truncation}" "$t" "$freq" "$decay" >> "$csv.tmp"
 }
 ours() {  # ekman setting, then cavity-modes arguments
   local ek=$1 setting=$2
@@ -96,7 +101,7 @@ for SHAPE in ${SHAPES:-shell}; do
   for ek in ${EKMANS:-1e-3 1e-4}; do
     unset "REF_F[$ek]" "REF_D[$ek]"
     [ "$SHAPE:$ek" != shell:1e-3 ] || { REF_F[1e-3]=1.005733690103750355; REF_D[1e-3]=0.1019947097016500742; }
-    if [ "$have_kore" = 1 ]; then kore "$ek" 1; kore "$ek" 2; fi
+    if [ "$have_kore" = 1 ]; then kore "$ek" 1; kore "$ek" 2; kore "$ek" 2 fine; fi
     ours "$ek" "P6 default mesh;ideal survey" --modes 1
     ours "$ek" "P6 default mesh;--target 1.0" --target 1.0
     # The sphere at Ek <= 1e-5: the default mesh follows the internal shear layers (docs/viscous.md); the uniform

@@ -185,13 +185,19 @@ PMat create_block_matrix(MPI_Comm comm, int complex_size, std::vector<PetscInt>&
   return triplet_matrix(comm, 2 * local, 2 * global, i, j, v);
 }
 
-// Â from the complex pencil's real and imaginary triplets (see the header), M̂ from 𝓜's.
-PMat block_operator(MPI_Comm comm, int n, const Triplets& ar, const Triplets& ai) {
+// Â from the complex pencil's real and imaginary triplets (see the header), M̂ from 𝓜's. Â also holds explicit zeros
+// wherever M̂ or the i𝓜 block has an entry (the diagonal included), so that every shifted matrix Â − Re τ M̂ − Im τ (i𝓜)
+// is formed in place on Â's pattern (MatAXPY with a new pattern cost 0.6 s of 5.8 s on the Ek = 1e-6 sphere).
+PMat block_operator(MPI_Comm comm, int n, const Triplets& ar, const Triplets& ai, const Triplets& mass) {
   std::vector<PetscInt> I, J;
   std::vector<PetscScalar> V;
-  const std::size_t count = 2 * ar.v.size() + 2 * ai.v.size();
+  const std::size_t count = 2 * ar.v.size() + 2 * ai.v.size() + 4 * mass.v.size() + 2 * n;
   I.reserve(count); J.reserve(count); V.reserve(count);
   auto put = [&](PetscInt r, PetscInt c, double x) { I.push_back(r); J.push_back(c); V.push_back(x); };
+  for (std::size_t k = 0; k < mass.v.size(); ++k)
+    for (int a : {0, 1})
+      for (int b : {0, 1}) put(2 * mass.i[k] + a, 2 * mass.j[k] + b, 0.0);
+  for (PetscInt d = 0; d < 2 * n; ++d) put(d, d, 0.0);
   for (std::size_t k = 0; k < ar.v.size(); ++k) {
     put(2 * ar.i[k], 2 * ar.j[k], ar.v[k]);
     put(2 * ar.i[k] + 1, 2 * ar.j[k] + 1, ar.v[k]);
@@ -283,7 +289,7 @@ ViscousForms assemble_viscous_forms(const TaylorHoodSpace& space, double centroi
 
   ViscousForms forms;
   forms.complex_size = n;
-  forms.A = block_operator(comm, n, ar, ai);
+  forms.A = block_operator(comm, n, ar, ai, mass);
   forms.M = block_mass(comm, n, mass);
   forms.iM = block_imaginary_mass(comm, n, mass);
   forms.coupling = block_vector(forms.A, f_all);

@@ -42,7 +42,7 @@ namespace rc::modes {
 // its conjugate is the eigenvalue of the conjugate problem (growing, Im < 0), never physical.
 struct ViscousForms {
   int complex_size = 0;    // unknowns of the complex problem (velocity, pressure and any free surface's η̃)
-  PMat A, M;               // Â, M̂ (distributed over the communicator's ranks)
+  PMat A, M;               // Â (holding explicit zeros on M̂'s and iM's patterns), M̂ (distributed over the ranks)
   PMat iM;                 // the block form of i𝓜: [[0, −𝓜], [𝓜, 0]] pairwise (complex shifts σ𝓜 = Re σ M̂ + Im σ iM)
   PVec coupling;           // f on the real slots, 0 on the imaginary ones
   PVec offset_coupling;    // with a free surface only: g, the coupling per unit height of the centroid above the
