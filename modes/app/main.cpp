@@ -108,8 +108,8 @@ void add_viscous_options(CLI::App* cmd, ViscousOptions& viscous, bool response) 
                   "one mesh for several Ekman numbers (chain-rom's sweeps over spin)");
   if (response) return;
   cmd->add_flag("--no-shear-layers", viscous.no_shear_layers,
-                "with --ekman, a sphere at Ek <= 1e-5: do not refine the mesh along the internal shear layers from the "
-                "critical latitudes (docs/viscous.md, \"Internal shear layers\")");
+                "with --ekman, a sphere at Ek <= 1e-5 or a section at Ek <= 1e-4: do not refine the mesh along the "
+                "internal shear layers from the critical latitudes (docs/viscous.md, \"Internal shear layers\")");
   cmd->add_option("--target", viscous.target,
                   "with --ekman, a table: the damped modes nearest these frequencies lambda (a list such as 1.0,0.5, "
                   "each in (-2, 2)) instead of those of the ideal survey's clusters, which it then skips "

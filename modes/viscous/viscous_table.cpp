@@ -90,11 +90,12 @@ void drop_repeats(Solved& solved, std::vector<double>& targets, std::vector<doub
 // Anisotropic wall layers where they fit, else isotropic grading. gmsh's layers can invert an element where a wall
 // meets the axis at one interior size and not at a slightly smaller one (Kore's shell at Ek = 1e-4: at 0.125 and 0.1,
 // not at 0.08; docs/benchmarks.md, "Kore"), and the grading costs several times the unknowns (645 000 against 105 500
-// there), so up to two smaller interior sizes (× 0.8 each) are tried first. What was used is `mesh` afterwards,
+// there), so up to four smaller interior sizes (× 0.8 each) are tried first (the same shell at Ek = 1e-5 holds its
+// layers from 0.064 down; the grading there took 2.2 million unknowns, 105 s and 22 GB). What was used is `mesh` afterwards,
 // recorded in the table (its size, and wall_layer = 0 for the grading).
 geometry::MeridianMesh viscous_mesh(const geometry::ShapeSpec& shape, geometry::MeshOptions& mesh) {
   geometry::MeshOptions tried = mesh;
-  for (int attempt = 0; attempt < 3 && tried.wall_layer > tried.wall_size && tried.size > 0; ++attempt) {
+  for (int attempt = 0; attempt < 7 && tried.wall_layer > tried.wall_size && tried.size > 0; ++attempt) {
     try {
       geometry::MeridianMesh layered = geometry::mesh_meridian(shape, tried);
       mesh = tried;

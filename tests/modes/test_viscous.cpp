@@ -163,6 +163,50 @@ TEST(ViscousSphere, SpinOverModeTendsToTheBoundaryLayerLimit) {
   EXPECT_LE(previous_gap, 0.06);
 }
 
+// A section's wall traced as straight pieces (shear_layers.hpp): the built-in sphere's pieces give the closed-form rays
+// (from ±30° to the opposite pole) to the pieces' size, and Kore's shell adds the inner sphere's: from its critical
+// latitudes (0.35 cos 30°, ±0.35 sin 30°) out to the outer sphere, back and forth, ending at the inner sphere's poles.
+// With them the shell's spin-over decay at Ek = 1e-4 is Kore's (data/reference/kore_shell_spinover.csv) to 1e-8, where
+// the uniform interior missed it by 6.4e-7 (docs/benchmarks.md, "Shells").
+TEST(ViscousShell, InnerSphereShearLayerBandsGiveTheSpectralPeersDecay) {
+  const auto sphere = rc::modes::polyline_shear_layers(rc::modes::section_wall_pieces({"sphere", {{"radius", 1.0}}, {}}), 1.0);
+  ASSERT_EQ(sphere.size(), 2u);
+  for (const auto& r : sphere) {
+    EXPECT_NEAR(std::abs(r[1]), 0.5, 0.02);
+    EXPECT_NEAR(std::hypot(r[2], r[3] + 2 * r[1]), 0.0, 0.02);  // at the opposite pole
+  }
+  const rc::geometry::ShapeSpec shell{"section", {}, std::filesystem::path(RC_SECTIONS_DIR) / "shell.geo"};
+  const auto rays = rc::modes::polyline_shear_layers(rc::modes::section_wall_pieces(shell), 1.0);
+  int inner = 0;
+  for (const auto& r : rays) {
+    const double from = std::hypot(r[0], r[1]);
+    if (std::abs(from - 0.35) < 0.01 && std::abs(std::abs(r[1]) - 0.175) < 0.01) ++inner;
+  }
+  EXPECT_EQ(inner, 2);
+  EXPECT_EQ(rays.size(), 2u + 2u * 4u);  // the outer sphere's two, the inner sphere's two of four segments each
+  const double ek = 1e-4, kore_decay = 0.02862904378803013, kore_lambda = 1.003316295615949;
+  double errors[2] = {0, 0};
+  for (const bool bands : {false, true}) {
+    TableRequest ideal;
+    ideal.shape = shell;
+    ideal.mesh.order = 6;
+    ideal.selection.modes = 1;
+    ideal.check_convergence = false;
+    ViscousTableSettings s;
+    s.ekman = ek;
+    s.mesh.order = 0;
+    s.check_convergence = false;
+    s.shear_layers_ekman = bands ? ek : 0;
+    const ModeTable t = compute_viscous_table(ideal.shape, s, compute_mode_table(ideal), {});
+    errors[bands] = std::abs(t.decay[0] - kore_decay) / kore_decay;
+    std::printf("shell, Ek 1e-4 %s: %ld unknowns, %.1f s: lambda %.2e, decay %.2e against Kore\n",
+                bands ? "with the shear-layer bands" : "uniform interior", t.ndof, t.wall_seconds,
+                std::abs(t.lambda[0] - kore_lambda) / kore_lambda, errors[bands]);
+  }
+  EXPECT_LT(errors[1], 1e-8);
+  EXPECT_LT(errors[1], errors[0] / 20);
+}
+
 // At Ek ≤ 1e-5 the spin-over mode's internal shear layers (launched from the critical latitudes ±30°, straight to the
 // opposite poles: shear_layers.hpp) limit a uniform mesh's decay; the bands along them give Kore's spectral value
 // (data/reference/kore_sphere_spinover.csv) to 1e-5, with and without them measured at Ek = 1e-5.
