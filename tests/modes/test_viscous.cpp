@@ -163,6 +163,31 @@ TEST(ViscousSphere, SpinOverModeTendsToTheBoundaryLayerLimit) {
   EXPECT_LE(previous_gap, 0.06);
 }
 
+// The spin-over's decay error against Kore's (λ, decay) on the default viscous mesh at `ek`, with the interior uniform
+// ([0]) and with the shear-layer bands ([1]); each printed with its unknowns and time.
+std::array<double, 2> decay_errors_without_and_with_bands(const rc::geometry::ShapeSpec& shape, double ek,
+                                                          double kore_lambda, double kore_decay) {
+  std::array<double, 2> errors{};
+  for (const bool bands : {false, true}) {
+    TableRequest ideal;
+    ideal.shape = shape;
+    ideal.mesh.order = 6;
+    ideal.selection.modes = 1;
+    ideal.check_convergence = false;
+    ViscousTableSettings s;
+    s.ekman = ek;
+    s.mesh.order = 0;
+    s.check_convergence = false;
+    s.shear_layers_ekman = bands ? ek : 0;
+    const ModeTable t = compute_viscous_table(ideal.shape, s, compute_mode_table(ideal), {});
+    errors[bands] = std::abs(t.decay[0] - kore_decay) / kore_decay;
+    std::printf("%s, Ek %.0e %s: %ld unknowns, %.1f s: lambda %.2e, decay %.2e against Kore\n", shape.kind.c_str(), ek,
+                bands ? "with the shear-layer bands" : "uniform interior", t.ndof, t.wall_seconds,
+                std::abs(t.lambda[0] - kore_lambda) / kore_lambda, errors[bands]);
+  }
+  return errors;
+}
+
 // A section's wall traced as straight pieces (shear_layers.hpp): the built-in sphere's pieces give the closed-form rays
 // (from ±30° to the opposite pole) to the pieces' size, and Kore's shell adds the inner sphere's: from its critical
 // latitudes (0.35 cos 30°, ±0.35 sin 30°) out to the outer sphere, back and forth, ending at the inner sphere's poles.
@@ -184,25 +209,7 @@ TEST(ViscousShell, InnerSphereShearLayerBandsGiveTheSpectralPeersDecay) {
   }
   EXPECT_EQ(inner, 2);
   EXPECT_EQ(rays.size(), 2u + 2u * 4u);  // the outer sphere's two, the inner sphere's two of four segments each
-  const double ek = 1e-4, kore_decay = 0.02862904378803013, kore_lambda = 1.003316295615949;
-  double errors[2] = {0, 0};
-  for (const bool bands : {false, true}) {
-    TableRequest ideal;
-    ideal.shape = shell;
-    ideal.mesh.order = 6;
-    ideal.selection.modes = 1;
-    ideal.check_convergence = false;
-    ViscousTableSettings s;
-    s.ekman = ek;
-    s.mesh.order = 0;
-    s.check_convergence = false;
-    s.shear_layers_ekman = bands ? ek : 0;
-    const ModeTable t = compute_viscous_table(ideal.shape, s, compute_mode_table(ideal), {});
-    errors[bands] = std::abs(t.decay[0] - kore_decay) / kore_decay;
-    std::printf("shell, Ek 1e-4 %s: %ld unknowns, %.1f s: lambda %.2e, decay %.2e against Kore\n",
-                bands ? "with the shear-layer bands" : "uniform interior", t.ndof, t.wall_seconds,
-                std::abs(t.lambda[0] - kore_lambda) / kore_lambda, errors[bands]);
-  }
+  const auto errors = decay_errors_without_and_with_bands(shell, 1e-4, 1.003316295615949, 0.02862904378803013);
   EXPECT_LT(errors[1], 1e-8);
   EXPECT_LT(errors[1], errors[0] / 20);
 }
@@ -220,25 +227,8 @@ TEST(ViscousSphere, ShearLayerBandsGiveTheSpectralPeersDecay) {
     EXPECT_NEAR(r[3], -2 * r[1], 1e-12);
     EXPECT_NEAR(std::abs((r[2] - r[0]) / (r[3] - r[1])), std::tan(kPi / 6), 1e-12);
   }
-  const double ek = 1e-5, kore_decay = 0.00847039795712305, kore_lambda = 1.001192088643075;
-  double errors[2] = {0, 0};
-  for (const bool bands : {false, true}) {
-    TableRequest ideal;
-    ideal.shape = {"sphere", {{"radius", 1.0}}, {}};
-    ideal.mesh.order = 6;
-    ideal.selection.modes = 1;
-    ideal.check_convergence = false;
-    ViscousTableSettings s;
-    s.ekman = ek;
-    s.mesh.order = 0;
-    s.check_convergence = false;
-    s.shear_layers_ekman = bands ? ek : 0;
-    const ModeTable t = compute_viscous_table(ideal.shape, s, compute_mode_table(ideal), {});
-    errors[bands] = std::abs(t.decay[0] - kore_decay) / kore_decay;
-    std::printf("Ek 1e-5 %s: %ld unknowns, %.1f s: lambda %.2e, decay %.2e against Kore\n",
-                bands ? "with the shear-layer bands" : "uniform interior", t.ndof, t.wall_seconds,
-                std::abs(t.lambda[0] - kore_lambda) / kore_lambda, errors[bands]);
-  }
+  const auto errors = decay_errors_without_and_with_bands({"sphere", {{"radius", 1.0}}, {}}, 1e-5, 1.001192088643075,
+                                                          0.00847039795712305);
   EXPECT_LT(errors[1], 1e-5);
   EXPECT_LT(errors[1], errors[0] / 20);
 }
