@@ -48,6 +48,10 @@ void check_options(const MeshOptions& options) {
     throw std::runtime_error("wall size growth " + number(options.wall_growth) + " must be in (0, 10]");
   if (!std::isfinite(options.wall_layer) || options.wall_layer < 0)
     throw std::runtime_error("wall layer thickness " + number(options.wall_layer) + " must be >= 0 and finite");
+  if (!std::isfinite(options.near_wall_size) || options.near_wall_size < 0)
+    throw std::runtime_error("near-wall size " + number(options.near_wall_size) + " must be positive and finite (0 = none)");
+  if (!std::isfinite(options.near_wall_growth) || options.near_wall_growth <= 0 || options.near_wall_growth > 10)
+    throw std::runtime_error("near-wall growth " + number(options.near_wall_growth) + " must be in (0, 10]");
   if (options.wall_size > 0 && options.radial_size > 0)
     throw std::runtime_error("a wall-graded mesh cannot also be structured (give either the wall size or the radial size)");
 }
@@ -116,6 +120,24 @@ void use_as_background(int field_tag) {
   gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
 }
 
+// The near-wall zone beside the anisotropic layers (MeshOptions::near_wall_size): a Threshold on the distance to the
+// wall, near_wall_size out to the layers' edge, growing by near_wall_growth beyond; −1 when there is none.
+int near_wall_field(const MeshOptions& options, double size, const std::vector<double>& curves, double extent) {
+  if (!(options.near_wall_size > 0) || options.near_wall_size >= size) return -1;
+  namespace field = gmsh::model::mesh::field;
+  const int distance = field::add("Distance");
+  field::setNumbers(distance, "CurvesList", curves);
+  field::setNumber(distance, "NumPointsPerCurve", std::min(1e5, std::ceil(8 * extent / options.near_wall_size)));
+  const int threshold = field::add("Threshold");
+  field::setNumber(threshold, "InField", distance);
+  field::setNumber(threshold, "SizeMin", options.near_wall_size);
+  field::setNumber(threshold, "SizeMax", size);
+  field::setNumber(threshold, "DistMin", options.wall_layer);
+  field::setNumber(threshold, "DistMax",
+                   options.wall_layer + (size - options.near_wall_size) / std::max(options.near_wall_growth, 1e-3));
+  return threshold;
+}
+
 void grade_towards_wall(const MeshOptions& options, double size, const std::string& where) {
   if (options.wall_size <= 0 || options.wall_size >= size) return;
   const double extent = model_extent();
@@ -135,7 +157,14 @@ void grade_towards_wall(const MeshOptions& options, double size, const std::stri
     field::setNumber(layers, "hfar", size);
     field::setNumber(layers, "Quads", 0);
     field::setAsBoundaryLayer(layers);
-    if (contact >= 0) use_as_background(contact);
+    const int near = near_wall_field(options, size, curves, extent);
+    if (contact >= 0 && near >= 0) {
+      const int finer = field::add("Min");
+      field::setNumbers(finer, "FieldsList", {static_cast<double>(near), static_cast<double>(contact)});
+      use_as_background(finer);
+    } else if (contact >= 0 || near >= 0) {
+      use_as_background(std::max(contact, near));
+    }
     return;
   }
   const int distance = field::add("Distance");

@@ -38,6 +38,11 @@ struct MeshOptions {
   double wall_size = 0.0;
   double wall_growth = 0.25;
   double wall_layer = 0.0;
+  // With the anisotropic layers: isotropic elements of near_wall_size from the layers' edge outwards, growing by
+  // near_wall_growth per unit distance up to `size` (0 = none: the interior size right beyond the layers). The viscous
+  // flow just outside the Ekman layers needs them at Ek ≤ 1e-5 (docs/viscous.md, "Near-wall zone").
+  double near_wall_size = 0.0;
+  double near_wall_growth = 1.0;
   // Refinement along segments of the meridian half-plane, each (r0, z0, r1, z1): elements of band_size within
   // band_width of a segment, growing by band_growth per unit distance beyond it up to `size` (the internal shear
   // layers of a viscous mode: modes/viscous/shear_layers.hpp). None when empty.

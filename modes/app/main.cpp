@@ -49,6 +49,7 @@ struct CommandLineError : std::runtime_error {
 struct ViscousOptions {
   double ekman = 0;
   double wall_size = 0;
+  double near_wall_size = 0;  // elements of this size just beyond the wall layers (MeshOptions::near_wall_size)
   double mesh_ekman = 0;   // the mesh as for this Ekman number (0: --ekman's); chain-rom's sweeps over spin
   bool no_shear_layers = false;  // tables: a uniform interior, not refined along the internal shear layers
   std::string target;      // tables: the ideal frequencies to continue, instead of the survey's (--target)
@@ -103,6 +104,10 @@ void add_viscous_options(CLI::App* cmd, ViscousOptions& viscous, bool response) 
                   "continuing the ideal ones, on a wall-graded Taylor-Hood mesh (docs/viscous.md); --order and "
                   "--mesh-size then set that mesh (order 6 and d/8 unless given)");
   cmd->add_option("--wall-size", viscous.wall_size, "with --ekman: element size at the wall (default Ek^(1/2))");
+  cmd->add_option("--near-wall-size", viscous.near_wall_size,
+                  "with --ekman: isotropic elements of this size from the wall layers' edge outwards, growing by 1 per "
+                  "unit distance (default none); about Ek^(1/3) R buys the decay's last digits at Ek <= 1e-5 "
+                  "(docs/viscous.md, \"Near-wall zone\")");
   cmd->add_option("--mesh-ekman", viscous.mesh_ekman,
                   "with --ekman: make the wall-layer mesh as for this Ekman number, at most --ekman (default --ekman): "
                   "one mesh for several Ekman numbers (chain-rom's sweeps over spin)");
@@ -273,6 +278,7 @@ rc::modes::ViscousTableSettings viscous_request(const ViscousOptions& v, TableRe
   s.ekman = v.ekman;
   s.mesh = req.mesh;
   s.mesh.wall_size = v.wall_size;
+  s.mesh.near_wall_size = v.near_wall_size;
   s.convergence_tolerance = req.convergence_tolerance;
   s.check_convergence = req.check_convergence;
   if (v.mesh_ekman > 0) {
@@ -381,6 +387,7 @@ rc::modes::ViscousTableSettings resolve_viscous(const CLI::App& cmd, bool respon
   if (!response && req.check_convergence) rc::modes::validate_convergence_tolerance(req.convergence_tolerance);
   if (is_viscous) return viscous_request(viscous, req);
   if (cmd.count("--wall-size") > 0) throw std::runtime_error("--wall-size applies with --ekman only");
+  if (cmd.count("--near-wall-size") > 0) throw std::runtime_error("--near-wall-size applies with --ekman only");
   if (cmd.count("--mesh-ekman") > 0) throw std::runtime_error("--mesh-ekman applies with --ekman only");
   if (cmd.get_option_no_throw("--target") && cmd.count("--target") > 0)
     throw std::runtime_error("--target applies with --ekman only (the ideal table's modes come from its survey)");

@@ -247,9 +247,12 @@ ModeTable viscous_rows(const ModeTable& ideal, const Solved& fine, double ekman,
 }
 
 std::string viscous_solver_text(const geometry::MeshOptions& mesh, const std::string& ideal_solver) {
+  const std::string near = mesh.near_wall_size > 0 ? fmt::format(", then {:.3g} growing by {:g} per unit distance",
+                                                                  mesh.near_wall_size, mesh.near_wall_growth)
+                                                    : std::string();
   const std::string wall = mesh.wall_layer > 0
-                               ? fmt::format("anisotropic wall layers (first {:.3g}, ratio {:g}, {:.3g} thick)",
-                                             mesh.wall_size, 1 + mesh.wall_growth, mesh.wall_layer)
+                               ? fmt::format("anisotropic wall layers (first {:.3g}, ratio {:g}, {:.3g} thick{})",
+                                             mesh.wall_size, 1 + mesh.wall_growth, mesh.wall_layer, near)
                                : fmt::format("isotropic wall grading (wall {:.3g}, growth {:g})", mesh.wall_size,
                                              mesh.wall_growth);
   return fmt::format("Taylor-Hood P{}/P{}, interior size {:.3g}, {}; real 2x2 block form, SLEPc Krylov-Schur "
@@ -318,6 +321,7 @@ ModeTable compute_viscous_table(const geometry::ShapeSpec& shape, const ViscousT
     coarse.size *= 2;
     coarse.wall_size *= 2;
     coarse.band_size *= 2;
+    coarse.near_wall_size *= 2;
     ViscousTableSettings check = s;
     check.solve.keep_vector = false;
     check.solve.keep_block = false;

@@ -188,6 +188,32 @@ std::array<double, 2> decay_errors_without_and_with_bands(const rc::geometry::Sh
   return errors;
 }
 
+// Just outside the anisotropic wall layers the flow still varies on a scale near Ek^{1/3} (docs/viscous.md, "Near-wall
+// zone"): isotropic elements of 0.02 there (Ek^{1/3} = 0.0215 at Ek = 1e-5), growing by 1 per unit distance, take the
+// spin-over decay to Kore's (data/reference/kore_sphere_spinover.csv) within 1e-7 without the shear-layer bands (4.8e-8
+// measured), where the default mesh with the bands is 1.7e-6 off. A negative size is refused.
+TEST(ViscousSphere, NearWallZoneGivesTheSpectralPeersDecay) {
+  TableRequest ideal;
+  ideal.shape = {"sphere", {{"radius", 1.0}}, {}};
+  ideal.mesh.order = 6;
+  ideal.selection.modes = 1;
+  ideal.check_convergence = false;
+  ViscousTableSettings s;
+  s.ekman = 1e-5;
+  s.mesh.order = 0;
+  s.mesh.near_wall_size = 0.02;
+  s.check_convergence = false;
+  const ModeTable t = compute_viscous_table(ideal.shape, s, compute_mode_table(ideal), {});
+  const double kore_decay = 0.00847039795712305, kore_lambda = 1.001192088643075;
+  const double error = std::abs(t.decay[0] - kore_decay) / kore_decay;
+  std::printf("sphere, Ek 1e-5, near-wall zone 0.02: %ld unknowns, %.1f s: lambda %.2e, decay %.2e against Kore\n",
+              t.ndof, t.wall_seconds, std::abs(t.lambda[0] - kore_lambda) / kore_lambda, error);
+  EXPECT_LT(error, 1e-7);
+  rc::geometry::MeshOptions bad;
+  bad.near_wall_size = -0.01;
+  EXPECT_THROW(rc::geometry::mesh_meridian(ideal.shape, bad), std::runtime_error);
+}
+
 // A section's wall traced as straight pieces (shear_layers.hpp): the built-in sphere's pieces give the closed-form rays
 // (from ±30° to the opposite pole) to the pieces' size, and Kore's shell adds the inner sphere's: from its critical
 // latitudes (0.35 cos 30°, ±0.35 sin 30°) out to the outer sphere, back and forth, ending at the inner sphere's poles.
