@@ -120,22 +120,32 @@ void use_as_background(int field_tag) {
   gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
 }
 
-// The near-wall zone beside the anisotropic layers (MeshOptions::near_wall_size): a Threshold on the distance to the
-// wall, near_wall_size out to the layers' edge, growing by near_wall_growth beyond; −1 when there is none.
-int near_wall_field(const MeshOptions& options, double size, const std::vector<double>& curves, double extent) {
-  if (!(options.near_wall_size > 0) || options.near_wall_size >= size) return -1;
+// Elements of `fine` within `from` of the wall curves, growing by `growth` per unit distance beyond up to `size`: a gmsh
+// Threshold on the distance to the wall (sampled at 1/8 of `fine`). Returns the field's tag.
+int wall_distance_field(const std::vector<double>& curves, double extent, double fine, double from, double growth,
+                        double size) {
   namespace field = gmsh::model::mesh::field;
   const int distance = field::add("Distance");
   field::setNumbers(distance, "CurvesList", curves);
-  field::setNumber(distance, "NumPointsPerCurve", std::min(1e5, std::ceil(8 * extent / options.near_wall_size)));
+  field::setNumber(distance, "NumPointsPerCurve", std::min(1e5, std::ceil(8 * extent / fine)));
   const int threshold = field::add("Threshold");
   field::setNumber(threshold, "InField", distance);
-  field::setNumber(threshold, "SizeMin", options.near_wall_size);
+  field::setNumber(threshold, "SizeMin", fine);
   field::setNumber(threshold, "SizeMax", size);
-  field::setNumber(threshold, "DistMin", options.wall_layer);
-  field::setNumber(threshold, "DistMax",
-                   options.wall_layer + (size - options.near_wall_size) / std::max(options.near_wall_growth, 1e-3));
+  field::setNumber(threshold, "DistMin", from);
+  field::setNumber(threshold, "DistMax", from + (size - fine) / std::max(growth, 1e-3));
   return threshold;
+}
+
+// The background size: the smaller of the given fields (−1: none), or gmsh's own rules when there is none.
+void use_smallest(int a, int b) {
+  if (a >= 0 && b >= 0) {
+    const int finer = gmsh::model::mesh::field::add("Min");
+    gmsh::model::mesh::field::setNumbers(finer, "FieldsList", {static_cast<double>(a), static_cast<double>(b)});
+    use_as_background(finer);
+  } else if (a >= 0 || b >= 0) {
+    use_as_background(std::max(a, b));
+  }
 }
 
 void grade_towards_wall(const MeshOptions& options, double size, const std::string& where) {
@@ -157,32 +167,16 @@ void grade_towards_wall(const MeshOptions& options, double size, const std::stri
     field::setNumber(layers, "hfar", size);
     field::setNumber(layers, "Quads", 0);
     field::setAsBoundaryLayer(layers);
-    const int near = near_wall_field(options, size, curves, extent);
-    if (contact >= 0 && near >= 0) {
-      const int finer = field::add("Min");
-      field::setNumbers(finer, "FieldsList", {static_cast<double>(near), static_cast<double>(contact)});
-      use_as_background(finer);
-    } else if (contact >= 0 || near >= 0) {
-      use_as_background(std::max(contact, near));
-    }
+    // The near-wall zone (MeshOptions::near_wall_size): from the layers' edge outwards.
+    const bool near = options.near_wall_size > 0 && options.near_wall_size < size;
+    use_smallest(near ? wall_distance_field(curves, extent, options.near_wall_size, options.wall_layer,
+                                            options.near_wall_growth, size)
+                      : -1,
+                 contact);
     return;
   }
-  const int distance = field::add("Distance");
-  field::setNumbers(distance, "CurvesList", curves);
-  field::setNumber(distance, "NumPointsPerCurve", std::min(1e5, std::ceil(8 * extent / options.wall_size)));
-  const int threshold = field::add("Threshold");
-  field::setNumber(threshold, "InField", distance);
-  field::setNumber(threshold, "SizeMin", options.wall_size);
-  field::setNumber(threshold, "SizeMax", size);
-  field::setNumber(threshold, "DistMin", options.wall_size);
-  field::setNumber(threshold, "DistMax", options.wall_size + (size - options.wall_size) / options.wall_growth);
-  if (contact < 0) {
-    use_as_background(threshold);
-    return;
-  }
-  const int finer = field::add("Min");
-  field::setNumbers(finer, "FieldsList", {static_cast<double>(threshold), static_cast<double>(contact)});
-  use_as_background(finer);
+  use_smallest(wall_distance_field(curves, extent, options.wall_size, options.wall_size, options.wall_growth, size),
+               contact);
 }
 
 // Distance from (r, z) to the segment (r0, z0)–(r1, z1).
