@@ -22,7 +22,10 @@ std::string describe(const ZMUMPS_STRUC_C& id) {
   const bool memory = info1 == -9 || info1 == -13 || info1 == -17 || info1 == -19 || info1 == -20;
   return "MUMPS INFOG(1) = " + std::to_string(info1) + ", INFOG(2) = " + std::to_string(info2) +
          (memory ? " (out of memory: a coarser --mesh-size/--wall-size, or mpirun over more memory)"
-                 : info1 == -10 ? " (singular matrix: the shift on an eigenvalue?)" : "");
+                 : info1 == -10 ? " (singular matrix: the shift on an eigenvalue?)"
+                 : info1 == -38 ? " (a parallel ordering asked for, ICNTL(28) = 2: this MUMPS has neither PT-SCOTCH nor "
+                                  "ParMETIS)"
+                                : "");
 }
 
 // ICNTL(k) and CNTL(k) from the options database, as PETSc's MUMPS interface names them.
@@ -52,9 +55,10 @@ ComplexLu::ComplexLu(MPI_Comm comm, std::string prefix)
   id.par = 1;  // rank 0 works too
   id.sym = 0;  // unsymmetric LU: the symmetric LDLᵀ of the saddle point pivots expensively (viscous_eigensolver.cpp)
   run(-1, "initialisation");
-  icntl(id, 1) = -1;  // errors are reported through INFOG, not printed
-  icntl(id, 2) = -1;
-  icntl(id, 3) = -1;
+  icntl(id, 1) = 0;  // errors are reported through INFOG, not printed (0, not −1: with parallel analysis
+                     // MUMPS 5.5 still writes to the unit and a negative one aborts the run)
+  icntl(id, 2) = 0;
+  icntl(id, 3) = 0;
   icntl(id, 4) = 0;
   icntl(id, 18) = 3;  // distributed assembled matrix: each rank its own rows
   icntl(id, 20) = 0;  // dense right-hand side and solution, centralised on rank 0
