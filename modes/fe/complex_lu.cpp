@@ -53,22 +53,24 @@ ComplexLu::ComplexLu(MPI_Comm comm, std::string prefix)
   ZMUMPS_STRUC_C& id = mumps_->id;
   id.comm_fortran = static_cast<int>(MPI_Comm_c2f(comm));
   id.par = 1;  // rank 0 works too
-  id.sym = 0;  // unsymmetric LU: the symmetric LDLᵀ of the saddle point pivots expensively (viscous_eigensolver.cpp)
+  id.sym = 0;  // LU: the viscous S is not complex symmetric (measured: SYM = 2 on its lower triangle found a wrong mode)
   run(-1, "initialisation");
   icntl(id, 1) = 0;  // errors are reported through INFOG, not printed (0, not −1: with parallel analysis
                      // MUMPS 5.5 still writes to the unit and a negative one aborts the run)
   icntl(id, 2) = 0;
   icntl(id, 3) = 0;
   icntl(id, 4) = 0;
-  icntl(id, 18) = 3;  // distributed assembled matrix: each rank its own rows
-  icntl(id, 20) = 0;  // dense right-hand side and solution, centralised on rank 0
-  icntl(id, 21) = 0;
   // Null-pivot detection: a Taylor–Hood triangle with no interior vertex carries a massless spurious pressure mode.
   icntl(id, 24) = 1;
   // 100 % more workspace than estimated: the zero pressure block makes MUMPS delay many pivots (about 24 000 of
   // 200 000 on the Ek = 1e-4 sphere); the default 20 % overran (INFOG(1) = −9).
   icntl(id, 14) = 100;
   read_options(id, prefix_);
+  // The layout this interface hands MUMPS, whatever the options say: the matrix distributed by rows, the dense
+  // right-hand side and solution centralised on rank 0.
+  icntl(id, 18) = 3;
+  icntl(id, 20) = 0;
+  icntl(id, 21) = 0;
 }
 
 ComplexLu::~ComplexLu() {

@@ -10,7 +10,8 @@
 // gathered on rank 0 and the solution scattered back (MUMPS's centralised dense right-hand side).
 //
 // Options: -<prefix>mat_mumps_icntl_<k> V and -<prefix>mat_mumps_cntl_<k> V set MUMPS's ICNTL(k) and CNTL(k), as
-// PETSc's own MUMPS interface reads them, so the prefixes documented for the viscous solvers keep their meaning.
+// PETSc's own MUMPS interface reads them, so the prefixes documented for the viscous solvers keep their meaning
+// (all but ICNTL 18, 20 and 21, this interface's data layout).
 #pragma once
 
 #include "petsc_handles.hpp"
