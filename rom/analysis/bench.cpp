@@ -160,20 +160,8 @@ void roots_against_modes(const Scene& scene, BenchResult& out, const std::functi
             model = build_model(s, &tables);
             roots = roots_of(model);
           }, 0);
-          BenchRow r;
-          r.part = "roots";
-          r.method = "modes";
-          r.parameter = "kept_modes";
-          r.value = q;
-          r.body = k + 1;
-          r.static_correction = corrected;
-          r.spin_factor = factor;
-          r.coverage = model.bodies[k].coverage;
-          r.wall_seconds = t.wall;
-          r.cpu_seconds = t.cpu;
-          r.error = body_root_error(body_ref, roots);
-          out.rows.push_back(r);
-          if (progress) progress(r);
+          add_roots_row(out, progress, {k, q, corrected, factor, model.bodies[k].coverage}, t,
+                        body_root_error(body_ref, roots));
         }
     }
   }

@@ -59,7 +59,8 @@ BenchResult run_bench(const Scene& scene, const BenchOptions& options = {},
 double body_root_error(const std::vector<std::complex<double>>& body_ref, const std::vector<std::complex<double>>& roots);
 
 // CSV, one row per BenchRow: part,method,parameter,value,steps,body,static_correction,spin_factor,
-// coverage,wall_seconds,cpu_seconds,error (empty where a field does not apply). Temporary name, rename.
+// coverage,wall_seconds,cpu_seconds,error (empty where a field does not apply); written under a temporary name and
+// then renamed, so that no half-written file is left.
 void write_bench_csv(const BenchResult& r, const std::filesystem::path& out);
 // One line per row, readable.
 std::string format_bench_row(const BenchRow& row);

@@ -81,24 +81,6 @@ std::vector<cd> body_roots(const GeneralChain& g) {
   return roots;
 }
 
-void add_roots_row(BenchResult& out, const std::function<void(const BenchRow&)>& progress, int body, int kept,
-                   double coverage, const Timing& t, double error) {
-  BenchRow r;
-  r.part = "roots";
-  r.method = "modes";
-  r.parameter = "kept_modes";
-  r.value = kept;
-  r.body = body + 1;
-  r.static_correction = 0;
-  r.spin_factor = 1;
-  r.coverage = coverage;
-  r.wall_seconds = t.wall;
-  r.cpu_seconds = t.cpu;
-  r.error = error;
-  out.rows.push_back(r);
-  if (progress) progress(r);
-}
-
 void roots_against_rows(const Scene& scene, BenchResult& out, const std::function<void(const BenchRow&)>& progress) {
   TableCache tables;
   Scene full = scene;
@@ -122,7 +104,7 @@ void roots_against_rows(const Scene& scene, BenchResult& out, const std::functio
           g = build_general_chain(s, &tables);
           roots = general_spectrum(g).roots;
         }, 0);
-        add_roots_row(out, progress, k, q, g.coverage[tank_index].second, t, body_root_error(reference, roots));
+        add_roots_row(out, progress, {k, q, 0, 1.0, g.coverage[tank_index].second}, t, body_root_error(reference, roots));
         if (q == all) break;
       }
     }

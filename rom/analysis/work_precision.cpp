@@ -40,6 +40,24 @@ double relative_error(const Eigen::VectorXcd& y, const Eigen::VectorXcd& ref) {
   return (y - ref).norm() / ref.norm();
 }
 
+void add_roots_row(BenchResult& out, const std::function<void(const BenchRow&)>& progress, const RootsRowSetting& s,
+                   const Timing& t, double error) {
+  BenchRow r;
+  r.part = "roots";
+  r.method = "modes";
+  r.parameter = "kept_modes";
+  r.value = s.kept;
+  r.body = s.body + 1;
+  r.static_correction = s.static_correction;
+  r.spin_factor = s.spin_factor;
+  r.coverage = s.coverage;
+  r.wall_seconds = t.wall;
+  r.cpu_seconds = t.cpu;
+  r.error = error;
+  out.rows.push_back(r);
+  if (progress) progress(r);
+}
+
 BenchRow add_work_row(std::vector<BenchRow>& rows, const std::function<void(const BenchRow&)>& progress,
                       const char* method, const char* parameter, double value, long steps, const Timing& tm,
                       double error) {

@@ -28,6 +28,16 @@ struct WorkProblem {
 
 double relative_error(const Eigen::VectorXcd& y, const Eigen::VectorXcd& ref);
 
+// What a roots-part row was run with: the body (0-based), the tank's kept modes, static correction (0/1), spin
+// factor, the tank's coverage.
+struct RootsRowSetting {
+  int body = 0, kept = 0, static_correction = 0;
+  double spin_factor = 1, coverage = 0;
+};
+// Appends the roots part's row (method "modes", parameter "kept_modes") with its timing and error; calls `progress`.
+void add_roots_row(BenchResult& out, const std::function<void(const BenchRow&)>& progress, const RootsRowSetting& s,
+                   const Timing& t, double error);
+
 // A work-precision row: appended to `rows`, and shown to `progress`.
 BenchRow add_work_row(std::vector<BenchRow>& rows, const std::function<void(const BenchRow&)>& progress,
                       const char* method, const char* parameter, double value, long steps, const Timing& tm,
