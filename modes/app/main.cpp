@@ -52,6 +52,7 @@ struct ViscousOptions {
   double near_wall_size = 0;  // elements of this size just beyond the wall layers (MeshOptions::near_wall_size)
   double mesh_ekman = 0;   // the mesh as for this Ekman number (0: --ekman's); chain-rom's sweeps over spin
   bool no_shear_layers = false;  // tables: a uniform interior, not refined along the internal shear layers
+  int refinements = 0;     // tables: refinement rounds while a row is not converged (ViscousTableSettings)
   std::string target;      // tables: the ideal frequencies to continue, instead of the survey's (--target)
   std::string sigma;       // FROM:TO:N (real parts) or a list of complex numbers
   double sigma_imag = 0;   // imaginary part of every σ
@@ -106,8 +107,8 @@ void add_viscous_options(CLI::App* cmd, ViscousOptions& viscous, bool response) 
   cmd->add_option("--wall-size", viscous.wall_size, "with --ekman: element size at the wall (default Ek^(1/2))");
   cmd->add_option("--near-wall-size", viscous.near_wall_size,
                   "with --ekman: isotropic elements of this size from the wall layers' edge outwards, growing by 1 per "
-                  "unit distance (default none); about Ek^(1/3) R buys the decay's last digits at Ek <= 1e-5 "
-                  "(docs/viscous.md, \"Near-wall zone\")");
+                  "unit distance (0: none); a table's default: (Ek d)^(1/3), d the smallest dimension, for a cylinder "
+                  "or a spheroid at Ek <= 1e-5, none otherwise (docs/viscous.md, \"Near-wall zone\")");
   cmd->add_option("--mesh-ekman", viscous.mesh_ekman,
                   "with --ekman: make the wall-layer mesh as for this Ekman number, at most --ekman (default --ekman): "
                   "one mesh for several Ekman numbers (chain-rom's sweeps over spin)");
@@ -115,6 +116,12 @@ void add_viscous_options(CLI::App* cmd, ViscousOptions& viscous, bool response) 
   cmd->add_flag("--no-shear-layers", viscous.no_shear_layers,
                 "with --ekman, a sphere at Ek <= 1e-5 or a section at Ek <= 1e-4: do not refine the mesh along the "
                 "internal shear layers from the critical latitudes (docs/viscous.md, \"Internal shear layers\")");
+  cmd->add_option("--refine", viscous.refinements,
+                  "with --ekman, a table: up to N refinement rounds while a row is not converged (the near-wall zone "
+                  "at 2 and 1 times (Ek d)^(1/3), d the smallest dimension, then every size halved), each row then flagged against the round "
+                  "before; a round beyond 60 % of the machine's memory is not made (default 0; docs/viscous.md, "
+                  "\"Refinement rounds\")")
+      ->check(CLI::Range(0, 8));
   cmd->add_option("--target", viscous.target,
                   "with --ekman, a table: the damped modes nearest these frequencies lambda (a list such as 1.0,0.5, "
                   "each in (-2, 2)) instead of those of the ideal survey's clusters, which it then skips "
@@ -281,6 +288,10 @@ rc::modes::ViscousTableSettings viscous_request(const ViscousOptions& v, TableRe
   s.mesh.near_wall_size = v.near_wall_size;
   s.convergence_tolerance = req.convergence_tolerance;
   s.check_convergence = req.check_convergence;
+  if (v.refinements > 0 && !req.check_convergence)
+    throw std::runtime_error("--refine refines while the convergence check finds a row not converged: drop "
+                             "--no-convergence-check");
+  s.refinements = v.refinements;
   if (v.mesh_ekman > 0) {
     rc::modes::viscous_mesh_defaults(req.shape, v.ekman, s.mesh);  // --ekman's own range check
     if (!(v.mesh_ekman <= v.ekman))
@@ -385,12 +396,22 @@ rc::modes::ViscousTableSettings resolve_viscous(const CLI::App& cmd, bool respon
     throw std::runtime_error("--max-fit-error must be positive and finite");
   // Checked here, once: the viscous path hands the tolerance on past compute_mode_table's own check.
   if (!response && req.check_convergence) rc::modes::validate_convergence_tolerance(req.convergence_tolerance);
-  if (is_viscous) return viscous_request(viscous, req);
+  if (is_viscous) {
+    const double fill = req.fill;
+    rc::modes::ViscousTableSettings s = viscous_request(viscous, req);
+    // A table's default near-wall zone (whole tanks; a given --near-wall-size, 0 included, is kept).
+    if (!response && fill >= 1 && cmd.count("--near-wall-size") == 0)
+      s.mesh.near_wall_size = rc::modes::default_near_wall_size(
+          req.shape, viscous.mesh_ekman > 0 ? viscous.mesh_ekman : viscous.ekman);
+    return s;
+  }
   if (cmd.count("--wall-size") > 0) throw std::runtime_error("--wall-size applies with --ekman only");
   if (cmd.count("--near-wall-size") > 0) throw std::runtime_error("--near-wall-size applies with --ekman only");
   if (cmd.count("--mesh-ekman") > 0) throw std::runtime_error("--mesh-ekman applies with --ekman only");
   if (cmd.get_option_no_throw("--target") && cmd.count("--target") > 0)
     throw std::runtime_error("--target applies with --ekman only (the ideal table's modes come from its survey)");
+  if (cmd.get_option_no_throw("--refine") && cmd.count("--refine") > 0)
+    throw std::runtime_error("--refine applies with --ekman only (an ideal table's convergence: docs/trust.md)");
   return {};
 }
 

@@ -95,7 +95,8 @@ std::string convergence_note(const ModeTable& t) {
   if (t.converged.empty() || failed == 0) return {};
   const std::string trusted =
       t.viscous() ? "the damped modes marked yes and, for any shape, the response R(sigma) of `cavity-modes response` "
-                    "(it converges where single modes do not)"
+                    "(it converges where single modes do not); `--refine N` makes the table again on finer meshes "
+                    "until its rows converge (docs/viscous.md, \"Refinement rounds\")"
                   : fmt::format("J_zh, A_f, A_f - J_zh and the band weights (/bands, {} bands of width {:g}; check "
                                 "them with `cavity-modes compare` against a finer table), and any cluster marked yes",
                                 t.bands.size(), t.bands.size() > 0 ? t.bands.hi[0] - t.bands.lo[0] : 0.0);

@@ -18,12 +18,15 @@
 #include <numeric>
 #include <stdexcept>
 
+#include <unistd.h>
+
 namespace rc::modes {
 namespace {
 
 constexpr double kMinEkman = 1e-8, kMaxEkman = 1e3;
 constexpr double kMaxWallSizePerLayer = 4.0;  // a wall element may span at most this many Ek^{1/2}
 constexpr double kLayersThickness = 10.0;     // anisotropic wall layers cover this many Ek^{1/2}
+constexpr double kNearWallZoneFrom = 1e-5;    // default_near_wall_size: the Ekman numbers where it is given
 
 // The liquid's: a partially filled tank's (its free_radius) is the layer outside its free surface.
 double smallest_dimension(const geometry::ShapeSpec& shape) {
@@ -126,12 +129,29 @@ ViscousMode continue_mode(const ViscousForms& forms, double lambda0, double E0, 
   });
 }
 
-// One damped mode per target (continue_mode).
+// A refinement round's mesh too large for the machine (thrown before its assembly).
+struct BeyondMemory : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// The factorisation and its forms take about 10 kB per real unknown (measured 2026-11-27 at P6: 2.26 GB at 224 034
+// unknowns, 7.2 GB at 762 704); a round is allowed 60 % of the machine's memory (all ranks together).
+constexpr double kBytesPerViscousUnknown = 1.2e4;
+long most_viscous_unknowns() {
+  const double have = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
+  return have > 0 ? static_cast<long>(0.6 * have / kBytesPerViscousUnknown) : 0;
+}
+
+// One damped mode per target (continue_mode). With most_unknowns > 0, a mesh of more unknowns throws BeyondMemory
+// before anything is assembled.
 Solved solve_targets(const geometry::ShapeSpec& shape, geometry::MeshOptions& mesh, double centroid_z,
                      const ViscousTableSettings& s, const std::vector<double>& targets,
                      const std::vector<double>& energies,
-                     const std::function<void(std::size_t, std::size_t)>& progress) {
+                     const std::function<void(std::size_t, std::size_t)>& progress, long most_unknowns = 0) {
   TaylorHoodSpace space(mesh_on_root([&] { return viscous_mesh(shape, mesh); }, PETSC_COMM_WORLD));
+  if (most_unknowns > 0 && 2L * space.size() > most_unknowns)
+    throw BeyondMemory(fmt::format("{} real unknowns, about {:.1f} GB", 2L * space.size(),
+                                   2.0 * space.size() * kBytesPerViscousUnknown / 1e9));
   const ViscousForms forms = assemble_viscous_forms(space, centroid_z, s.ekman, PETSC_COMM_WORLD);
   Solved out;
   out.unknowns = 2L * forms.complex_size;
@@ -204,6 +224,33 @@ geometry::MeshOptions viscous_mesh_defaults(const geometry::ShapeSpec& shape, do
   return mesh;
 }
 
+double default_near_wall_size(const geometry::ShapeSpec& shape, double ekman) {
+  const bool zoned = shape.kind == "cylinder" || shape.kind == "spheroid";
+  return zoned && ekman <= kNearWallZoneFrom ? std::cbrt(ekman * smallest_dimension(shape)) : 0.0;
+}
+
+geometry::MeshOptions refined_viscous_mesh(const geometry::ShapeSpec& shape, double ekman,
+                                           const geometry::MeshOptions& mesh) {
+  geometry::MeshOptions finer = mesh;
+  // The Ek^{1/3} layers' thickness, (ν/Ω)^{1/3} d^{1/3} with lengths in the table's unit (Stewartson's E_d^{1/3} d).
+  const double zone = std::cbrt(ekman * smallest_dimension(shape));
+  if (mesh.wall_layer > 0 && mesh.near_wall_size == 0 && 2 * zone < mesh.size / 2) {
+    finer.near_wall_size = 2 * zone;
+    return finer;
+  }
+  if (mesh.wall_layer > 0 && mesh.near_wall_size > 0.51 * zone) {
+    finer.near_wall_size = mesh.near_wall_size / 2;
+    return finer;
+  }
+  finer.size /= 2;
+  finer.wall_size /= 2;
+  finer.band_size /= 2;
+  finer.near_wall_size /= 2;
+  if (finer.wall_layer > 0) finer.wall_layer = std::min(kLayersThickness * std::sqrt(ekman), finer.size / 2);
+  if (finer.wall_layer <= finer.wall_size) finer.wall_layer = 0;
+  return finer;
+}
+
 namespace {
 
 // The ideal table's frozen-fluid data with the damped modes as its rows (residues as complex couplings).
@@ -260,12 +307,12 @@ std::string viscous_solver_text(const geometry::MeshOptions& mesh, const std::st
                      mesh.order, mesh.order - 1, mesh.size, wall, ideal_solver);
 }
 
-// Each row against the same target's mode on the mesh with interior and wall sizes doubled.
-void add_viscous_convergence(ModeTable& t, const Solved& fine, const Solved& ref, const geometry::MeshOptions& coarse,
+// Each row against the same target's mode on the reference mesh (described by `reference`).
+void add_viscous_convergence(ModeTable& t, const Solved& fine, const Solved& ref, const std::string& reference,
                              double tolerance) {
-  t.convergence_reference = fmt::format("order {} with the interior and wall sizes doubled (h = {:.3g}, wall {:.3g})",
-                                        coarse.order, coarse.size, coarse.wall_size);
+  t.convergence_reference = reference;
   t.convergence_tolerance = tolerance;
+  t.dlambda.clear(); t.dE.clear(); t.converged.clear();
   for (std::size_t i = 0; i < fine.rows.size(); ++i) {
     const double dl = relative(ref.rows[i].lambda, fine.rows[i].lambda);
     const double dE = relative(ref.rows[i].residue, fine.rows[i].residue);
@@ -290,6 +337,72 @@ void fields_in_row_order(Solved& fine, ModeFields& fields) {
   }
 }
 
+std::string mesh_text(const geometry::MeshOptions& m) {
+  const std::string near = m.near_wall_size > 0 ? fmt::format(", near-wall {:.3g}", m.near_wall_size) : "";
+  return fmt::format("order {}, h = {:.3g}, wall {:.3g}{}", m.order, m.size, m.wall_size, near);
+}
+
+bool every_row_converged(const ModeTable& t) {
+  return std::all_of(t.converged.begin(), t.converged.end(), [](int c) { return c == 1; });
+}
+
+bool has_repeats(const Solved& solved) {
+  for (std::size_t i = 0; i < solved.rows.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (std::abs(solved.rows[i].lambda - solved.rows[j].lambda) <= 1e-8 * std::abs(solved.rows[j].lambda))
+        return true;
+  return false;
+}
+
+// The refinement rounds of one table (ViscousTableSettings::refinements) and their progress lines.
+struct Rounds {
+  const geometry::ShapeSpec& shape;
+  const ModeTable& ideal;
+  const ViscousTableSettings& s;
+  Progress& lines;
+
+  std::function<void(std::size_t, std::size_t)> progress(std::string what) const {
+    return [this, what](std::size_t done, std::size_t total) {
+      lines.step(fmt::format("{} mode {}/{}", what, done, total), done, total);
+    };
+  }
+
+  // While a row is not converged: the table made again on the refined mesh, flagged against the round before
+  // (`fine`, `mesh` and `t` become the last round's). A round beyond the machine's memory, or one where two targets
+  // reach the same damped mode, ends them, reported. Returns the rounds made.
+  int refine_until_converged(const std::vector<double>& targets, const std::vector<double>& energies,
+                             geometry::MeshOptions& mesh, Solved& fine, ModeTable& t) const {
+    int done = 0;
+    for (; done < s.refinements && !every_row_converged(t); ++done) {
+      geometry::MeshOptions finer = refined_viscous_mesh(shape, s.ekman, mesh);
+      const std::string label = fmt::format("refinement round {}", done + 1);
+      lines.step(fmt::format("{} ({})", label, mesh_text(finer)));
+      Solved next;
+      try {
+        next = solve_targets(shape, finer, ideal.centroid_z, s, targets, energies, progress(label),
+                             most_viscous_unknowns());
+      } catch (const BeyondMemory& e) {
+        lines.note(fmt::format("{} not made: its mesh ({}) has {}, more than 60 % of this machine's memory", label,
+                           mesh_text(finer), e.what()));
+        break;
+      }
+      if (has_repeats(next)) {
+        lines.note(fmt::format("{} dropped: two targets reached the same damped mode on its mesh", label));
+        break;
+      }
+      const std::string before = done == 0 ? "the first mesh" : fmt::format("refinement round {}", done);
+      t = viscous_rows(ideal, next, s.ekman, finer);
+      add_viscous_convergence(t, next, fine, fmt::format("{} ({})", before, mesh_text(mesh)), s.convergence_tolerance);
+      fine = std::move(next);
+      mesh = finer;
+      const auto ok = std::count(t.converged.begin(), t.converged.end(), 1);
+      lines.note(fmt::format("{}: {}, {} real unknowns: {} of {} rows converged against {}", label, mesh_text(mesh),
+                         fine.unknowns, ok, t.converged.size(), before));
+    }
+    return done;
+  }
+};
+
 }  // namespace
 
 ModeTable compute_viscous_table(const geometry::ShapeSpec& shape, const ViscousTableSettings& settings,
@@ -305,17 +418,12 @@ ModeTable compute_viscous_table(const geometry::ShapeSpec& shape, const ViscousT
   if (s.shear_layers_ekman > 0) add_shear_layer_bands(shape, s.shear_layers_ekman, targets, mesh);
 
   Progress lines(report);  // at least every 5 s, with the time left (progress.hpp)
-  auto progress = [&](const char* what) {
-    return [&, what](std::size_t done, std::size_t total) {
-      lines.step(fmt::format("{} mode {}/{}", what, done, total), done, total);
-    };
-  };
-  Solved fine = solve_targets(shape, mesh, ideal.centroid_z, s, targets, energies, progress("viscous"));
+  const Rounds rounds{shape, ideal, s, lines};
+  Solved fine = solve_targets(shape, mesh, ideal.centroid_z, s, targets, energies, rounds.progress("viscous"));
   drop_repeats(fine, targets, energies, report);
 
   ModeTable t = viscous_rows(ideal, fine, s.ekman, mesh);
-  t.solver = viscous_solver_text(mesh, ideal.solver);
-  t.tolerance = s.solve.tolerance;
+  int refined = 0;
   if (s.check_convergence) {
     geometry::MeshOptions coarse = mesh;
     coarse.size *= 2;
@@ -326,9 +434,18 @@ ModeTable compute_viscous_table(const geometry::ShapeSpec& shape, const ViscousT
     check.solve.keep_vector = false;
     check.solve.keep_block = false;
     const Solved ref = solve_targets(shape, coarse, ideal.centroid_z, check, targets, energies,
-                                     progress("convergence check"));
-    add_viscous_convergence(t, fine, ref, coarse, s.convergence_tolerance);
+                                     rounds.progress("convergence check"));
+    add_viscous_convergence(t, fine, ref,
+                            fmt::format("order {} with the interior and wall sizes doubled (h = {:.3g}, wall {:.3g})",
+                                        coarse.order, coarse.size, coarse.wall_size),
+                            s.convergence_tolerance);
+    refined = rounds.refine_until_converged(targets, energies, mesh, fine, t);
   }
+  t.solver = viscous_solver_text(mesh, ideal.solver);
+  if (refined > 0)
+    t.solver += fmt::format("; {} refinement round{} while a row was not converged (docs/viscous.md, \"Refinement "
+                            "rounds\")", refined, refined > 1 ? "s" : "");
+  t.tolerance = s.solve.tolerance;
   if (fields && is_root_rank()) fields_in_row_order(fine, *fields);
   t.sort_by_energy();
   t.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

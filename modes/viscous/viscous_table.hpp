@@ -23,7 +23,22 @@ struct ViscousTableSettings {
   // > 0: the mesh also follows the targets' internal shear layers as at this Ekman number (shear_layers.hpp; the
   // command sets it to the mesh's Ekman number unless --no-shear-layers); 0: it does not.
   double shear_layers_ekman = 0;
+  // With the check: at most this many refinement rounds while a row is not converged (refined_viscous_mesh); each
+  // round's rows are then flagged against the round before it. 0: the check against the doubled mesh only.
+  int refinements = 0;
 };
+
+// The near-wall zone a table's mesh gets by default (docs/viscous.md, "Near-wall zone"): (Ek d)^{1/3} for a cylinder
+// or a spheroid at Ek <= 1e-5 (there the uniform interior leaves the decay 1e-5 … 2e-2 off), 0 otherwise (the sphere
+// meets 1e-5 with its shear-layer bands; elsewhere it was not measured to pay).
+double default_near_wall_size(const geometry::ShapeSpec& shape, double ekman);
+
+// The mesh of the refinement round after `mesh` (docs/viscous.md, "Refinement rounds"): where the
+// anisotropic wall layers are, the first round adds the near-wall zone at 2 (Ek d)^{1/3} (d the cavity's smallest
+// dimension); each next round halves the zone while it is coarser than half of (Ek d)^{1/3} — what limits the decay
+// at water's Ekman numbers; every later round (and every round without the layers) halves all sizes.
+geometry::MeshOptions refined_viscous_mesh(const geometry::ShapeSpec& shape, double ekman,
+                                           const geometry::MeshOptions& mesh);
 
 // Defaults where the settings leave 0 (docs/viscous.md, "Discretisation and solver"): order 6, interior size d/8
 // (d the smallest dimension; sections: the geometry's default), first wall layer Ek^{1/2} (capped at the interior

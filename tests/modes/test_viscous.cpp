@@ -64,7 +64,8 @@ struct StewartsonMode {
   }
 };
 
-ModeTable viscous_table(const rc::geometry::ShapeSpec& shape, double ekman, double mesh_size = 0, int modes = 1) {
+ModeTable viscous_table(const rc::geometry::ShapeSpec& shape, double ekman, double mesh_size = 0, int modes = 1,
+                        double near_wall_size = 0) {
   TableRequest ideal;
   ideal.shape = shape;
   ideal.mesh.order = 6;
@@ -74,6 +75,7 @@ ModeTable viscous_table(const rc::geometry::ShapeSpec& shape, double ekman, doub
   s.ekman = ekman;
   s.mesh.order = 0;  // the program's defaults (viscous_mesh_defaults)
   s.mesh.size = mesh_size;
+  s.mesh.near_wall_size = near_wall_size;
   s.check_convergence = false;
   return compute_viscous_table(ideal.shape, s, compute_mode_table(ideal), {});
 }
@@ -279,6 +281,38 @@ TEST(ViscousCylinder, DominantModeExtrapolatesToTheBoundaryLayerLimit) {
               extrapolated.real(), extrapolated.imag(), limit.real(), limit.imag(),
               std::abs(extrapolated - limit) / std::abs(limit));
   EXPECT_LE(std::abs(extrapolated - limit), 0.01 * std::abs(limit));
+}
+
+// At Ek = 1e-5 the cylinder's side-wall layers (Ek^{1/3} thick) are thinner than the interior elements: the table's
+// default near-wall zone (default_near_wall_size, (Ek d)^{1/3}) must keep the mode on the boundary-layer limit's
+// trend — one Richardson step on Ek = 1e-4 and 1e-5 lands within 1.5e-3 of λ1 (measured 2026-11-27: 7.7e-4 with the
+// zone, 6e-3 with the uniform interior, whose decay at 1e-5 is 1.7e-3 off).
+TEST(ViscousCylinder, NearWallZoneKeepsWaterEkmanNumbersOnTheBoundaryLayerLimit) {
+  const StewartsonMode mode = cylinder_dominant_mode();
+  const cd limit = boundary_layer_correction(mode.lambda, cylinder_wall(1, 2, 400), mode, mode.norm2(2.0));
+  const rc::geometry::ShapeSpec cylinder{"cylinder", {{"radius", 1.0}, {"height", 2.0}}, {}};
+  EXPECT_EQ(default_near_wall_size(cylinder, 1e-4), 0.0);
+  EXPECT_NEAR(default_near_wall_size(cylinder, 1e-5), std::cbrt(1e-5), 1e-15);
+  auto slope = [&](double ek, double zone) {
+    const ModeTable t = viscous_table(cylinder, ek, 0, 1, zone);
+    const cd s = (cd(t.lambda[0], t.decay[0]) - mode.lambda) / std::sqrt(ek);
+    std::printf("Ek %.0e, near-wall %.4f: decay/Ek^1/2 = %.6f, %ld unknowns, %.1f s\n", ek, zone, s.imag(), t.ndof,
+                t.wall_seconds);
+    return s;
+  };
+  const cd at_1e4 = slope(1e-4, 0.0);
+  auto extrapolated = [&](double zone_at_1e5) {
+    const double h1 = std::sqrt(1e-4), h2 = std::sqrt(1e-5);
+    const cd x = (slope(1e-5, zone_at_1e5) * h1 - at_1e4 * h2) / (h1 - h2);
+    const double error = std::abs(x - limit) / std::abs(limit);
+    std::printf("extrapolated lambda1 = %.5f%+.5fi against %.5f%+.5fi: %.1e relative\n", x.real(), x.imag(),
+                limit.real(), limit.imag(), error);
+    return error;
+  };
+  const double zoned = extrapolated(default_near_wall_size(cylinder, 1e-5));
+  const double uniform = extrapolated(0.0);
+  EXPECT_LT(zoned, 1.5e-3);
+  EXPECT_GT(uniform, 2 * zoned);  // what the zone is for
 }
 
 // The table's /galerkin matrices (galerkin_projection.hpp): the Gram matrix G = X̄ᵀ𝓜X of the damped modes and the

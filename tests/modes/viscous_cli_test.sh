@@ -90,6 +90,31 @@ b, u = h5py.File("banded.h5").attrs["ndof"], h5py.File("uniform.h5").attrs["ndof
 print("shear-layer bands: %d unknowns, uniform interior %d" % (b, u))
 assert b > 1.5 * u
 '; then ok "--ekman 1e-5 on a sphere: the shear-layer bands, --no-shear-layers"; else bad "shear-layer bands"; fi
+# --refine: refinement rounds while a row is not converged (docs/viscous.md, "Refinement rounds"). At P4 on a coarse
+# sphere the row is not converged against the doubled mesh; three rounds (each halving every size: the near-wall zone
+# is coarser than the interior at Ek = 1e-2) converge it, and the table is then exactly the last round's mesh's.
+refine=(sphere --radius 1 --ekman 1e-2 --order 4 --mesh-size 0.5 --modes 1 --convergence-tolerance 1e-5)
+if "$BIN" "${refine[@]}" -o plain.h5 > /dev/null 2>&1 && "$BIN" "${refine[@]}" --refine 1 -o once.h5 > /dev/null 2>&1 &&
+   "$BIN" "${refine[@]}" --refine 3 -o refined.h5 > refined.txt 2>&1 &&
+   "$BIN" sphere --radius 1 --ekman 1e-2 --order 4 --mesh-size 0.0625 --wall-size 0.0125 --modes 1 \
+     --no-convergence-check -o direct.h5 > /dev/null 2>&1 && /usr/bin/python3 -c '
+import h5py
+p, o, r, d = (h5py.File(f) for f in ("plain.h5", "once.h5", "refined.h5", "direct.h5"))
+flag = lambda t: int(t["modes/converged"][0])
+text = lambda t, a: t.attrs[a].decode() if isinstance(t.attrs[a], bytes) else t.attrs[a]
+print("plain: converged %d; --refine 1: %d (%s); --refine 3: %d (%s)" % (flag(p), flag(o), text(o, "convergence_reference"),
+      flag(r), text(r, "convergence_reference")))
+dl = abs(complex(r["modes/lambda"][0], r["modes/decay"][0]) - complex(d["modes/lambda"][0], d["modes/decay"][0]))
+print("--refine 3 against the last round'"'"'s mesh given directly: %.1e, %d and %d unknowns" % (dl, r.attrs["ndof"], d.attrs["ndof"]))
+assert flag(p) == 0 and flag(o) == 0 and flag(r) == 1
+assert "the first mesh" in text(o, "convergence_reference") and "1 refinement round while" in text(o, "solver")
+assert "refinement round 2" in text(r, "convergence_reference") and "3 refinement rounds" in text(r, "solver")
+assert dl < 1e-10 and r.attrs["ndof"] == d.attrs["ndof"]
+' && grep -q "refinement round 3: .* 1 of 1 rows converged" refined.txt; then ok "--refine: rounds until converged"
+else bad "--refine: $(tail -3 refined.txt)"; fi
+expect_error "--refine without the check" "drop --no-convergence-check" "$BIN" sphere --radius 1 --ekman 1e-2 --refine 2 --no-convergence-check -o out.h5
+expect_error "--refine without --ekman" "applies with --ekman only" "$BIN" sphere --radius 1 --refine 2 -o out.h5
+expect_error "--refine out of range" "refine" "$BIN" sphere --radius 1 --ekman 1e-2 --refine 9 -o out.h5
 expect_error "--exact-at with --fit" "belongs to a Krylov response table" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:9 --fit --exact-at 0.7-0.01i -o out.h5
 expect_error "--exact-at on a CSV response" "belongs to a Krylov response table" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:9 --exact-at 0.7 -o out.csv
 expect_error "--exact-at malformed" "0.7-x" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:9 --exact-at 0.7-x -o out.h5
