@@ -119,8 +119,8 @@ void add_viscous_options(CLI::App* cmd, ViscousOptions& viscous, bool response) 
   cmd->add_option("--refine", viscous.refinements,
                   "with --ekman, a table: up to N refinement rounds while a row is not converged (the near-wall zone "
                   "at 2 and 1 times (Ek d)^(1/3), d the smallest dimension, then every size halved), each row then flagged against the round "
-                  "before; a round beyond 60 % of the machine's memory is not made (default 0; docs/viscous.md, "
-                  "\"Refinement rounds\")")
+                  "before; a round beyond 60 % of the machine's memory is not made (docs/viscous.md, \"Refinement "
+                  "rounds\") (default 0)")
       ->check(CLI::Range(0, 8));
   cmd->add_option("--target", viscous.target,
                   "with --ekman, a table: the damped modes nearest these frequencies lambda (a list such as 1.0,0.5, "

@@ -142,28 +142,88 @@ long most_viscous_unknowns() {
   return have > 0 ? static_cast<long>(0.6 * have / kBytesPerViscousUnknown) : 0;
 }
 
-// One damped mode per target (continue_mode). With most_unknowns > 0, a mesh of more unknowns throws BeyondMemory
-// before anything is assembled.
+int world_ranks() {
+  int ranks = 1;
+  MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
+  return ranks;
+}
+
+// Shares out the targets' rows solved on their own ranks (split: rank r solved every ranks-th target from r): the
+// scalars summed over the ranks, and with keep_block each row's block vector broadcast from its rank, so that every
+// rank holds every row on its own forms (PETSC_COMM_SELF) as the serial solve would.
+void share_split_rows(std::vector<ViscousMode>& rows, bool blocks) {
+  const int ranks = world_ranks();
+  constexpr int kScalars = 7;
+  std::vector<double> mine(kScalars * rows.size(), 0.0), all(mine.size(), 0.0);
+  int rank = 0;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  for (std::size_t i = static_cast<std::size_t>(rank); i < rows.size(); i += static_cast<std::size_t>(ranks)) {
+    const ViscousMode& m = rows[i];
+    const double v[kScalars] = {m.lambda.real(), m.lambda.imag(), m.residue.real(), m.residue.imag(),
+                                m.offset.real(),  m.offset.imag(), m.residual};
+    std::copy(v, v + kScalars, mine.begin() + kScalars * static_cast<long>(i));
+  }
+  MPI_Allreduce(mine.data(), all.data(), static_cast<int>(all.size()), MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const double* v = all.data() + kScalars * i;
+    rows[i].lambda = {v[0], v[1]};
+    rows[i].residue = {v[2], v[3]};
+    rows[i].offset = {v[4], v[5]};
+    rows[i].residual = v[6];
+  }
+  if (!blocks) return;
+  PetscInt n = 0;
+  for (const auto& r : rows)
+    if (r.block) petsc_check(VecGetSize(*r.block, &n), "VecGetSize");
+  MPI_Allreduce(MPI_IN_PLACE, &n, 1, MPIU_INT, MPI_MAX, PETSC_COMM_WORLD);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const int owner = static_cast<int>(i % static_cast<std::size_t>(ranks));
+    if (owner != rank) {
+      rows[i].block = std::make_shared<PVec>();
+      petsc_check(VecCreateSeq(PETSC_COMM_SELF, n, rows[i].block->out()), "VecCreateSeq");
+    }
+    PetscScalar* a = nullptr;
+    petsc_check(VecGetArray(*rows[i].block, &a), "VecGetArray");
+    MPI_Bcast(a, static_cast<int>(n), MPIU_SCALAR, owner, PETSC_COMM_WORLD);
+    petsc_check(VecRestoreArray(*rows[i].block, &a), "VecRestoreArray");
+  }
+}
+
+// One damped mode per target (continue_mode). Under mpirun with several targets and no fields the targets, not the
+// matrices, are shared out: each rank assembles the forms on its own (PETSC_COMM_SELF) and solves every ranks-th
+// target (measured: MUMPS's factorisation of one matrix does not scale on this machine's two ranks, docs/benchmarks.md
+// "Complex factorisation"). With most_unknowns > 0, a mesh of more unknowns (each rank's, times the ranks that hold a
+// copy) throws BeyondMemory before anything is assembled.
 Solved solve_targets(const geometry::ShapeSpec& shape, geometry::MeshOptions& mesh, double centroid_z,
                      const ViscousTableSettings& s, const std::vector<double>& targets,
                      const std::vector<double>& energies,
                      const std::function<void(std::size_t, std::size_t)>& progress, long most_unknowns = 0) {
+  const int ranks = world_ranks();
+  const bool split = ranks > 1 && targets.size() > 1 && !s.solve.keep_vector;
   TaylorHoodSpace space(mesh_on_root([&] { return viscous_mesh(shape, mesh); }, PETSC_COMM_WORLD));
-  if (most_unknowns > 0 && 2L * space.size() > most_unknowns)
-    throw BeyondMemory(fmt::format("{} real unknowns, about {:.1f} GB", 2L * space.size(),
-                                   2.0 * space.size() * kBytesPerViscousUnknown / 1e9));
-  const ViscousForms forms = assemble_viscous_forms(space, centroid_z, s.ekman, PETSC_COMM_WORLD);
+  const long copies = split ? ranks : 1;
+  if (most_unknowns > 0 && 2L * space.size() * copies > most_unknowns)
+    throw BeyondMemory(fmt::format("{} real unknowns{}, about {:.1f} GB", 2L * space.size(),
+                                   split ? fmt::format(" on each of {} ranks", ranks) : std::string(),
+                                   2.0 * space.size() * copies * kBytesPerViscousUnknown / 1e9));
+  const ViscousForms forms =
+      assemble_viscous_forms(space, centroid_z, s.ekman, split ? PETSC_COMM_SELF : PETSC_COMM_WORLD);
   Solved out;
   out.unknowns = 2L * forms.complex_size;
   const bool fields = s.solve.keep_vector && is_root_rank();
   if (fields) out.fields = viscous_fields_mesh(space);
   out.fields.damped = true;
+  int rank = 0;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  out.rows.resize(targets.size());
   for (std::size_t i = 0; i < targets.size(); ++i) {
-    out.rows.push_back(continue_mode(forms, targets[i], energies[i], s.ekman, s.solve));
-    if (fields) out.fields.modes.push_back(viscous_mode_field(space, out.rows.back()));
-    out.rows.back().vector = {};  // the field holds what is needed
+    if (split && static_cast<int>(i % static_cast<std::size_t>(ranks)) != rank) continue;
+    out.rows[i] = continue_mode(forms, targets[i], energies[i], s.ekman, s.solve);
+    if (fields) out.fields.modes.push_back(viscous_mode_field(space, out.rows[i]));
+    out.rows[i].vector = {};  // the field holds what is needed
     progress(i + 1, targets.size());
   }
+  if (split) share_split_rows(out.rows, s.solve.keep_block);
   if (s.solve.keep_block) {
     std::vector<Vec> blocks;
     for (const auto& r : out.rows) blocks.push_back(*r.block);

@@ -229,6 +229,21 @@ for name, re, im in (("lambda + i decay", "lambda", "decay"), ("E + i E_imag", "
     print("%s: -n 1 %.15g%+.15gi, -n 2 %.15g%+.15gi, relative difference %.1e" % (name, x.real, x.imag, y.real, y.imag, d))
     assert d < 1e-10, name
 '; then ok "mpirun -n 1 and -n 2 give the same table"; else bad "mpirun: $(tail -3 mpi2.txt)"; fi
+  # Several targets under mpirun: the targets, not the matrices, are shared out (each rank its own forms); every row
+  # and the /galerkin matrices (made from the rows' vectors, sent between the ranks) as on one rank.
+  if mpirun -n 1 "$BIN" cylinder --radius 1 --height 2 --ekman 1e-3 --modes 3 "${tight[@]}" -o split1.h5 > split1.txt 2>&1 &&
+     mpirun -n 2 "$BIN" cylinder --radius 1 --height 2 --ekman 1e-3 --modes 3 "${tight[@]}" -o split2.h5 > split2.txt 2>&1 &&
+     /usr/bin/python3 -c '
+import h5py, numpy as np
+a, b = h5py.File("split1.h5"), h5py.File("split2.h5")
+x, y = (f["modes/lambda"][()] + 1j * f["modes/decay"][()] for f in (a, b))
+e, g = (f["modes/E"][()] + 1j * f["modes/E_imag"][()] for f in (a, b))
+dl, dE = np.max(np.abs(x - y) / np.abs(x)), np.max(np.abs(e - g) / np.abs(e))
+dG = max(np.max(np.abs(a["galerkin"][k][()] - b["galerkin"][k][()])) / np.max(np.abs(a["galerkin"][k][()]))
+         for k in ("gram_re", "gram_im", "viscous_re", "viscous_im"))
+print("%d rows on 1 and 2 ranks: lambda %.1e, E %.1e, Galerkin matrices %.1e (relative)" % (len(x), dl, dE, dG))
+assert len(x) == 3 and dl < 1e-10 and dE < 1e-9 and dG < 1e-9
+'; then ok "mpirun -n 2 shares a table's targets"; else bad "mpirun targets: $(tail -3 split2.txt)"; fi
   # A response-fit table under mpirun shares its frequencies out between the ranks (each with the whole problem):
   # the same samples, so the same fit as the serial run's.
   if "$BIN" response sphere --radius 1 --ekman 1e-2 "${small_response[@]}" --sigma -1.5:2:21 --fit -o fit1.h5 > fit1.txt 2>&1 &&
