@@ -6,6 +6,8 @@
 #include "chain_model.hpp"
 #include "external_programs.hpp"
 #include "frequency_response.hpp"
+#include "general_chain.hpp"
+#include "general_response.hpp"
 #include "scene.hpp"
 
 #include <cmath>
@@ -51,7 +53,8 @@ FrequencyRange parse_range(const std::string& text) {
   return r;
 }
 
-void write_response_csv(const FrequencyResponse& r, const std::string& out) {
+// `mirror` (the chain without axial symmetry): each body's mirror tilt A₋ at −σ − 2ω0 too (general_response.hpp).
+void write_response_csv(const FrequencyResponse& r, const std::string& out, const Eigen::MatrixXcd* mirror = nullptr) {
   write_text_atomically(out, [&](std::ostream& os) {
     // Resonances as comment lines (numpy's loadtxt and genfromtxt skip them): the plot marks them.
     for (std::size_t j = 0; j < r.resonances.size(); ++j) {
@@ -61,6 +64,8 @@ void write_response_csv(const FrequencyResponse& r, const std::string& out) {
     }
     os << "sigma";
     for (Eigen::Index k = 0; k < r.tilt.cols(); ++k) os << ",abs_" << k + 1 << ",phase_deg_" << k + 1;
+    if (mirror)
+      for (Eigen::Index k = 0; k < r.tilt.cols(); ++k) os << ",mirror_abs_" << k + 1 << ",mirror_phase_deg_" << k + 1;
     os << "\n";
     for (std::size_t i = 0; i < r.sigma.size(); ++i) {
       char buf[64];
@@ -68,6 +73,11 @@ void write_response_csv(const FrequencyResponse& r, const std::string& out) {
       os << buf;
       for (Eigen::Index k = 0; k < r.tilt.cols(); ++k) {
         const auto u = r.tilt(static_cast<Eigen::Index>(i), k);
+        std::snprintf(buf, sizeof buf, ",%.9e,%.6f", std::abs(u), std::arg(u) * 180 / std::numbers::pi);
+        os << buf;
+      }
+      for (Eigen::Index k = 0; mirror && k < mirror->cols(); ++k) {
+        const auto u = (*mirror)(static_cast<Eigen::Index>(i), k);
         std::snprintf(buf, sizeof buf, ",%.9e,%.6f", std::abs(u), std::arg(u) * 180 / std::numbers::pi);
         os << buf;
       }
@@ -105,10 +115,21 @@ int run_response(const ResponseOptions& o) {
   if (out.has_parent_path() && !std::filesystem::is_directory(out.parent_path()))
     throw std::runtime_error(o.out + ": the output folder does not exist");
   if (!o.png.empty()) check_plot_tools(RC_PLOT_RESPONSE_SCRIPT, "Bode plot");
-  const ChainModel m = build_model(scene);
-  const FrequencyResponse r = frequency_response(m, o.body - 1, range.from, range.to, range.steps);
-  write_response_csv(r, o.out);
-  print_summary(r, o);
+  TableCache tables;
+  if (needs_general_chain(scene, tables)) {
+    const GeneralFrequencyResponse g = general_frequency_response(build_general_chain(scene, &tables), o.body - 1,
+                                                                  range.from, range.to, range.steps);
+    const FrequencyResponse r{g.body, g.sigma, g.tilt, g.resonances, g.resonance_growth, g.singular};
+    write_response_csv(r, o.out, &g.mirror);
+    std::printf("chain without axial symmetry: the tilt A+ at sigma and the mirror tilt A- at -sigma - 2 spin "
+                "(docs/rom.md, \"Frequency response\"); resonances from every root of the turning frame\n");
+    print_summary(r, o);
+  } else {
+    const ChainModel m = build_model(scene, &tables);
+    const FrequencyResponse r = frequency_response(m, o.body - 1, range.from, range.to, range.steps);
+    write_response_csv(r, o.out);
+    print_summary(r, o);
+  }
   if (!o.png.empty()) draw_plot(RC_PLOT_RESPONSE_SCRIPT, o.out, o.png);
   return 0;
 }

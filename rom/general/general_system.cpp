@@ -98,6 +98,11 @@ GeneralSystem build_general_system(const GeneralChain& g) {
   sys.B.block(nq + d, 0, nz, nq) = -CP * Xq / sys.s;
   sys.B.block(nq + d, nq, nz, d) = -CP * Xv - f.Chat * f.R;
   sys.B.block(nq + d, nq + d, nz, nz) = f.Lambda - CP * Xz;
+  // A force F on Q adds M_eff⁻¹F to Q̈, and so −Ĉ P M_eff⁻¹F to Ż.
+  const Eigen::MatrixXd Xf = Minv.solve(Eigen::MatrixXd::Identity(d, d));
+  sys.input.setZero(nq + d + nz, d);
+  sys.input.block(nq, 0, d, d) = Xf;
+  sys.input.block(nq + d, 0, nz, d) = -CP * Xf;
   // Values each in range can overflow together (an eigen-solver given a NaN may never return: fuzz, docs/rom.md
   // "Limits"): refused before any solver sees them.
   if (!sys.B.allFinite())

@@ -24,6 +24,7 @@ namespace rc::rom {
 
 struct GeneralSystem {
   Eigen::MatrixXd B;   // y' = B y
+  Eigen::MatrixXd input;  // dim × dim_q: y' = B y + input F for a generalised force F on Q (a moment's rows)
   double s = 1;        // q is carried as s q
   int dim() const { return static_cast<int>(B.rows()); }
 };

@@ -4,7 +4,9 @@
 // linearised equations written independently of the modal table (Poincaré 1910; Hough 1895; docs/volume.md §3).
 #include "bench.hpp"
 #include "ellipsoid_table.hpp"
+#include "frequency_response.hpp"
 #include "general_chain.hpp"
+#include "general_response.hpp"
 #include "general_run.hpp"
 #include "general_system.hpp"
 #include "linear_validity.hpp"
@@ -233,6 +235,53 @@ TEST(GeneralChain, PoincareHoughTopIsTheClosedForm) {
     EXPECT_LT(err, 1e-10);
     EXPECT_EQ(sp.verdict.stable, t.spin > 10);  // the slow heavy top falls
   }
+}
+
+// `chain-rom response` on the general chain (general_response.hpp): on an axisymmetric chain its tilt A₊ is (26)'s
+// (frequency_response.hpp, from the characteristic matrix, an independent formula) and its mirror A₋ vanishes.
+TEST(GeneralChain, FrequencyResponseIsTheAxisymmetricChains) {
+  for (const bool free_chain : {false, true}) {
+    const std::string text = axisymmetric_chain(free_chain, 30.0);
+    for (int body = 0; body < 3; body += 2) {
+      const FrequencyResponse expected = frequency_response(model_of(text), body, -40.0, 55.0, 39);
+      const GeneralFrequencyResponse got =
+          general_frequency_response(build_general_chain(parse_scene_text(text, test_dir(), "t")), body, -40.0, 55.0, 39);
+      double err = 0, mirror = 0;
+      for (Eigen::Index i = 0; i < expected.tilt.rows(); ++i) {
+        err = std::max(err, (got.tilt.row(i) - expected.tilt.row(i)).norm() / expected.tilt.row(i).norm());
+        mirror = std::max(mirror, got.mirror.row(i).norm() / expected.tilt.row(i).norm());
+      }
+      std::printf("axisymmetric chain (%s), moment on body %d, 39 frequencies: tilt against (26)'s %.2e, mirror "
+                  "%.2e (relative)\n", free_chain ? "free" : "fixed", body + 1, err, mirror);
+      EXPECT_LT(err, 1e-9);
+      EXPECT_LT(mirror, 1e-12);
+    }
+  }
+}
+
+// Without axial symmetry (the Poincaré–Hough top: B ≠ A and a tilted ellipsoidal tank of ideal fluid) there is no
+// (26) to compare with; what must hold is that the steady response of a conservative chain takes no net work from
+// the harmonic moment (mean power −½ Ω Im(f̂ᴴ q̂) = 0 on the moment's body), while the asymmetry shows as a mirror
+// tilt A₋ ≠ 0.
+TEST(GeneralChain, FrequencyResponseOfAConservativeChainTakesNoWork) {
+  Top top;
+  top.tanks[0].tilt = 0.5;
+  const GeneralChain g = build_general_chain(parse_scene_text(top_scene(top), test_dir(), "t"));
+  const GeneralFrequencyResponse r = general_frequency_response(g, 0, -70.0, 50.0, 41);
+  double work = 0, mirror = 0;
+  for (std::size_t i = 0; i < r.sigma.size(); ++i) {
+    // q̂ from A₊ and A₋: q̂_x − i q̂_y = 2A₊, q̂_x + i q̂_y = 2 conj(A₋); the force f̂ = (1, i).
+    const std::complex<double> ap = r.tilt(i, 0), am = std::conj(r.mirror(i, 0)), I(0, 1);
+    const std::complex<double> qx = ap + am, qy = I * (ap - am);
+    const std::complex<double> fq = qx + std::conj(I) * qy;  // f̂ᴴ q̂ with f̂ = (1, i)
+    work = std::max(work, std::abs(fq.imag()) / (std::abs(qx) + std::abs(qy)));
+    mirror = std::max(mirror, std::abs(r.mirror(i, 0)) / std::abs(r.tilt(i, 0)));
+  }
+  std::printf("Poincare-Hough top, 41 frequencies: mean work / |f||q| at most %.2e, mirror tilt up to %.3g of the "
+              "tilt, %zu resonances in the range\n", work, mirror, r.resonances.size());
+  EXPECT_LT(work, 1e-10);
+  EXPECT_GT(mirror, 1e-3);
+  EXPECT_GT(r.resonances.size(), 0u);
 }
 
 // `sweep` over the spin of the heavy top with A ≠ B: every point's verdict is Euler–Poisson's (sleeping above the
