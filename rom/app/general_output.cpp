@@ -10,8 +10,10 @@ void print_general_spectrum(std::ostream& os, const GeneralChain& g, const Gener
   const Verdict& v = sp.verdict;
   const auto precision = os.precision();
   os << std::setprecision(6);
+  const bool own_spins = g.spins.size() > 0 && (g.spins.array() != g.spin).any();  // a dual-spin chain's rotors
   os << (g.free_chain ? "free" : "fixed") << " chain without axial symmetry, " << g.n << (g.n == 1 ? " body" : " bodies")
-     << " at the common spin " << g.spin << " rad/s, " << g.n_modes() << (g.n_modes() == 1 ? " fluid mode" : " fluid modes")
+     << (own_spins ? " in the frame turning at " : " at the common spin ") << g.spin << " rad/s"
+     << (own_spins ? " (axisymmetric bodies without tanks at their own spins)" : "") << ", " << g.n_modes() << (g.n_modes() == 1 ? " fluid mode" : " fluid modes")
      << (g.axial ? "; the spins' rates are coordinates too (a 3-D tank's modes may couple to the spin)" : "") << "\n";
   os << "roots sigma (e^{i sigma t}) in the frame turning with the bodies: the motion in space has sigma -+ spin "
         "too (docs/rom.md, \"Bodies and tanks without axial symmetry\")\n";

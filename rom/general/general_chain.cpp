@@ -26,18 +26,37 @@ const rc::ModeTable& read_table(const Scene& scene, const std::string& key, cons
   }
 }
 
-// The general chain's scope so far: one spin for all (else the coefficients are periodic in every common frame), the
-// chain's own inertia, gravity, joints and ideal modal tanks (general_tank.hpp checks each tank's keys).
+// A body whose coefficients turn with it in any other frame: without axial symmetry, or with tanks (a 3-D tank's modes,
+// or several or off-axis tanks, are fixed in it).
+bool turns_the_frame(const BodySpec& b) { return b.asymmetric() || b.cavity.has_value(); }
+
+// The frame's rate: the spin of the bodies that turn it (all one: else the coefficients are periodic in every frame),
+// or body[1]'s when none does.
+double frame_spin(const Scene& scene) {
+  const std::string later = " (docs/rom.md, \"Bodies and tanks without axial symmetry\")";
+  int first = -1;
+  for (int k = 0; k < static_cast<int>(scene.size()); ++k) {
+    const BodySpec& b = scene.bodies[k];
+    if (!turns_the_frame(b)) continue;
+    if (first < 0) {
+      first = k;
+    } else if (std::abs(b.spin - scene.bodies[first].spin) > 1e-12 * std::abs(scene.bodies[first].spin)) {
+      fail(scene, body_key(k) + ".spin", "differs from " + body_key(first) + "'s, and both bodies are without axial "
+           "symmetry or carry tanks: such a chain has periodic coefficients in every frame (a Floquet problem), not "
+           "modelled yet; give them the same spin (an axisymmetric body without tanks may spin at its own rate)" + later);
+    }
+  }
+  return scene.bodies[first < 0 ? 0 : first].spin;
+}
+
+// The general chain's scope so far: the chain's own inertia, gravity, joints and ideal modal tanks (general_tank.hpp
+// checks each tank's keys), at the spins frame_spin allows.
 void require_general_scene(const Scene& scene) {
   const std::string later = " (docs/rom.md, \"Bodies and tanks without axial symmetry\")";
   if (scene.field) fail(scene, "field", "a force field is not in the chain without axial symmetry yet" + later);
+  frame_spin(scene);
   for (int k = 0; k < static_cast<int>(scene.size()); ++k) {
     const BodySpec& b = scene.bodies[k];
-    const double w0 = scene.bodies[0].spin;
-    if (std::abs(b.spin - w0) > 1e-12 * std::abs(w0))
-      fail(scene, body_key(k) + ".spin", "differs from body[1]'s: a chain without axial symmetry whose bodies spin at "
-           "different rates has periodic coefficients in every frame (a Floquet problem), not modelled yet; give "
-           "every body the same spin" + later);
     if (b.aero) fail(scene, body_key(k) + ".aero", "aerodynamic moments are not in the chain without axial symmetry yet" + later);
     if (b.moment) fail(scene, body_key(k) + ".moment", "external moments are not in the chain without axial symmetry yet" + later);
     if (b.force) fail(scene, body_key(k) + ".force", "external forces are not in the chain without axial symmetry yet" + later);
@@ -182,7 +201,9 @@ GeneralChain build_general_chain(const Scene& scene, TableCache* tables) {
                                                                                  // fluid: (26) without tanks
   GeneralChain g;
   g.n = cm.n;
-  g.spin = scene.bodies[0].spin;
+  g.spin = frame_spin(scene);
+  g.spins.resize(g.n);
+  for (int k = 0; k < g.n; ++k) g.spins[k] = scene.bodies[k].spin;
   g.free_chain = scene.free_chain;
   for (int k = 0; k < g.n; ++k) {
     Eigen::Matrix3d geostrophic = Eigen::Matrix3d::Zero();

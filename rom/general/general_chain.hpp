@@ -23,7 +23,8 @@ namespace rc::rom {
 
 struct GeneralChain {
   int n = 0;
-  double spin = 0;          // ω0 (rad/s), common to every body
+  double spin = 0;          // ω0 (rad/s): the frame's rate, the spin of every body without axial symmetry or with tanks
+  Eigen::VectorXd spins;    // each body's spin (rad/s): ω0, or its own for an axisymmetric body without tanks
   bool axial = false;       // the axial rates are coordinates (some tank is 3-D: its modes may couple to the spin)
   bool free_chain = false;
   Eigen::MatrixXd M, C, K;  // in Q = (q_1, …, q_n[, ψ_1, …, ψ_n]): the frozen fluid's inertia included, no modes
@@ -51,8 +52,10 @@ std::vector<GeneralBody> general_bodies(const Scene& scene, TableCache& tables);
 // its body's axis or a tank whose table is 3-D. Reads the tables through `tables` (throws SceneError naming the key on a table that cannot be read).
 bool needs_general_chain(const Scene& scene, TableCache& tables);
 
-// Throws SceneError naming the key for what the general chain does not take yet (different spins — a periodic
-// problem —, aerodynamic, external moments and forces, fields, viscous or Galerkin tanks, partial fills), for a body
+// Bodies at different spins: the frame turns with the bodies without axial symmetry or with tanks, which must share
+// one spin; an axisymmetric body without tanks may spin at its own rate (its coefficients do not depend on its angle,
+// so the chain's stay constant in that frame: a dual-spin craft's rotor). Throws SceneError naming the key for what
+// the general chain does not take yet (two such bodies at different spins — a periodic, Floquet problem —, aerodynamic, external moments and forces, fields, viscous or Galerkin tanks, partial fills), for a body
 // whose products of inertia with its frozen fluid do not vanish (it cannot spin steadily about its axis), and when the
 // effective inertia with the modes' share taken out is not positive definite.
 GeneralChain build_general_chain(const Scene& scene, TableCache* tables = nullptr);

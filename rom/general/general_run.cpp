@@ -72,7 +72,7 @@ void record(const GeneralChain& g, const GeneralSystem& sys, const Eigen::Vector
     h.u(j, k) = std::exp(cd(0, -g.spin * t)) * cd(y[2 * k], -y[2 * k + 1]) / sys.s;
   for (int l = 0; l < g.n_modes(); ++l) h.z(j, l) = cd(y[nq + d + 2 * l], y[nq + d + 2 * l + 1]);
   if (g.axial)
-    for (int k = 0; k < g.n; ++k) h.spin(j, k) = g.spin + y[nq + 2 * g.n + k];
+    for (int k = 0; k < g.n; ++k) h.spin(j, k) = g.spins[k] + y[nq + 2 * g.n + k];
 }
 
 }  // namespace
