@@ -134,12 +134,6 @@ CavityResponse partially_filled_viscous_response(const ResponseRequest& req) {
 }
 
 
-int world_ranks() {
-  int ranks = 1;
-  MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
-  return ranks;
-}
-
 // R at req.sigmas from forms assembled once (assemble_cavity_forms), a progress line per frequency through the run's
 // `lines` ("<label>: 3/40 frequencies"; `left_of` says what the time left is of when more counts follow). With
 // `kept`, the frequencies it holds are read from it and every new solve is added to it as soon as it is made. With

@@ -89,4 +89,10 @@ bool is_root_rank() {
   return rank == 0;
 }
 
+int world_ranks() {
+  int ranks = 1;
+  MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
+  return ranks;
+}
+
 }  // namespace rc::modes

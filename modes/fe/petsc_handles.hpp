@@ -48,6 +48,9 @@ ST pep_shift_invert_mumps(PEP pep, PCType pc_type);
 // MPI launcher gave the process (OMPI_COMM_WORLD_RANK, PMIX_RANK, PMI_RANK) is 0, or there is none.
 bool is_root_rank();
 
+// The number of ranks of PETSC_COMM_WORLD (PETSc initialised).
+int world_ranks();
+
 // Initialises SLEPc (and PETSc, MPI) for the lifetime of the object, passing command-line options
 // such as -pep_type or -log_view through to PETSc's options database.
 class PetscSession {

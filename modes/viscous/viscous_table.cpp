@@ -53,6 +53,11 @@ struct Solved {
 // boundary-layer damped (large Ek).
 double decay_guess(double ekman) { return std::min(2 * std::sqrt(ekman), 0.5); }
 
+// Two solves reached the same damped mode.
+bool same_mode(const ViscousMode& a, const ViscousMode& b) {
+  return std::abs(a.lambda - b.lambda) <= 1e-8 * std::abs(a.lambda);
+}
+
 // Two ideal targets can lead to the same damped mode (measured on the cone: two neighbouring unconverged ideal
 // clusters, one damped mode): it is kept once, with its first target, and the drop is reported.
 void drop_repeats(Solved& solved, std::vector<double>& targets, std::vector<double>& energies,
@@ -66,9 +71,8 @@ void drop_repeats(Solved& solved, std::vector<double>& targets, std::vector<doub
   std::vector<double> kept_targets, kept_energies;
   for (std::size_t i = 0; i < solved.rows.size(); ++i) {
     const auto& m = solved.rows[i];
-    const bool repeat = std::any_of(kept.rows.begin(), kept.rows.end(), [&](const ViscousMode& k) {
-      return std::abs(k.lambda - m.lambda) <= 1e-8 * std::abs(k.lambda);
-    });
+    const bool repeat =
+        std::any_of(kept.rows.begin(), kept.rows.end(), [&](const ViscousMode& k) { return same_mode(k, m); });
     if (repeat) {
       if (report)
         report(fmt::format("the ideal mode at lambda = {:.6f} continues into the damped mode {:.6f}{:+.6f}i, already "
@@ -140,12 +144,6 @@ constexpr double kBytesPerViscousUnknown = 1.2e4;
 long most_viscous_unknowns() {
   const double have = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
   return have > 0 ? static_cast<long>(0.6 * have / kBytesPerViscousUnknown) : 0;
-}
-
-int world_ranks() {
-  int ranks = 1;
-  MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
-  return ranks;
 }
 
 // Shares out the targets' rows solved on their own ranks (split: rank r solved every ranks-th target from r): the
@@ -409,8 +407,7 @@ bool every_row_converged(const ModeTable& t) {
 bool has_repeats(const Solved& solved) {
   for (std::size_t i = 0; i < solved.rows.size(); ++i)
     for (std::size_t j = 0; j < i; ++j)
-      if (std::abs(solved.rows[i].lambda - solved.rows[j].lambda) <= 1e-8 * std::abs(solved.rows[j].lambda))
-        return true;
+      if (same_mode(solved.rows[j], solved.rows[i])) return true;
   return false;
 }
 
