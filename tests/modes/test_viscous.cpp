@@ -283,6 +283,39 @@ TEST(ViscousCylinder, DominantModeExtrapolatesToTheBoundaryLayerLimit) {
   EXPECT_LE(std::abs(extrapolated - limit), 0.01 * std::abs(limit));
 }
 
+// The refinement rounds' ladder (refined_viscous_mesh, docs/viscous.md "Refinement rounds"): with the wall layers,
+// the near-wall zone at 2 (Ek d)^{1/3}, then halved while coarser than half of (Ek d)^{1/3}, then every size halved (the
+// layers' thickness kept within half the interior); without the layers (the isotropic grading) every size at once.
+TEST(ViscousRefinement, RoundsRefineTheZoneThenEverySize) {
+  const rc::geometry::ShapeSpec cylinder{"cylinder", {{"radius", 1.0}, {"height", 2.0}}, {}};
+  const double ek = 1e-6, z = std::cbrt(ek);
+  rc::geometry::MeshOptions m = viscous_mesh_defaults(cylinder, ek, {});
+  m.near_wall_size = 0;
+  ASSERT_GT(m.wall_layer, 0);
+  std::vector<double> zones;
+  for (int round = 0; round < 3; ++round) {
+    m = refined_viscous_mesh(cylinder, ek, m);
+    zones.push_back(m.near_wall_size);
+    EXPECT_DOUBLE_EQ(m.size, 0.125);  // the interior untouched while the zone refines
+  }
+  EXPECT_NEAR(zones[0], 2 * z, 1e-15);
+  EXPECT_NEAR(zones[1], z, 1e-15);
+  EXPECT_NEAR(zones[2], z / 2, 1e-15);
+  const rc::geometry::MeshOptions all = refined_viscous_mesh(cylinder, ek, m);
+  EXPECT_DOUBLE_EQ(all.size, m.size / 2);
+  EXPECT_DOUBLE_EQ(all.wall_size, m.wall_size / 2);
+  EXPECT_DOUBLE_EQ(all.near_wall_size, m.near_wall_size / 2);
+  EXPECT_LE(all.wall_layer, all.size / 2);
+  EXPECT_GT(all.wall_layer, all.wall_size);
+  rc::geometry::MeshOptions graded = m;
+  graded.wall_layer = 0;  // the isotropic grading: no zone, every size halved
+  graded.near_wall_size = 0;
+  const rc::geometry::MeshOptions g2 = refined_viscous_mesh(cylinder, ek, graded);
+  EXPECT_DOUBLE_EQ(g2.size, graded.size / 2);
+  EXPECT_EQ(g2.near_wall_size, 0.0);
+  EXPECT_EQ(g2.wall_layer, 0.0);
+}
+
 // At Ek = 1e-5 the cylinder's side-wall layers (Ek^{1/3} thick) are thinner than the interior elements: the table's
 // default near-wall zone (default_near_wall_size, (Ek d)^{1/3}) must keep the mode on the boundary-layer limit's
 // trend — one Richardson step on Ek = 1e-4 and 1e-5 lands within 1.5e-3 of λ1 (measured 2026-11-27: 7.7e-4 with the
