@@ -290,7 +290,8 @@ double default_near_wall_size(const geometry::ShapeSpec& shape, double ekman) {
 geometry::MeshOptions refined_viscous_mesh(const geometry::ShapeSpec& shape, double ekman,
                                            const geometry::MeshOptions& mesh) {
   geometry::MeshOptions finer = mesh;
-  // The Ek^{1/3} layers' thickness, (ν/Ω)^{1/3} d^{1/3} with lengths in the table's unit (Stewartson's E_d^{1/3} d).
+  // The Ek^{1/3} layers' thickness, (ν/Ω)^{1/3} d^{1/3} with lengths in the table's unit: Stewartson's E_d^{1/3} d
+  // (Stewartson 1957, "On almost rigid rotations"; docs/viscous.md, "Near-wall zone").
   const double zone = std::cbrt(ekman * smallest_dimension(shape));
   if (mesh.wall_layer > 0 && mesh.near_wall_size == 0 && 2 * zone < mesh.size / 2) {
     finer.near_wall_size = 2 * zone;
