@@ -2,9 +2,14 @@
 
 #include "mode_table_report.hpp"
 #include "petsc_handles.hpp"
+#include "ellipsoid_closed_form.hpp"
+#include "viscous_volume_run.hpp"
 #include "volume_fields.hpp"
 
+#include <algorithm>
 #include <cmath>
+
+#include <fmt/format.h>
 #include <fstream>
 #include <iostream>
 #include <numbers>
@@ -28,7 +33,13 @@ void add_common_options(CLI::App* cmd, Common& o) {
                                                  "resolve the band weights of a dense spectrum (docs/volume.md §5)");
   cmd->add_flag("--fields", o.fields, "also store each row's pressure and velocity (complex) at the mesh nodes, with "
                                       "an XDMF companion FILE.xdmf for ParaView (docs/volume.md §5)");
-  cmd->add_option("-o,--output", o.output, "mode table to write (HDF5)")->required();
+  cmd->add_option("-o,--output", o.output, "mode table to write (HDF5; required without --ekman)");
+  cmd->add_option("--ekman", o.ekman, "Ekman number > 0: the viscous fluid's damped modes nearest the targets, with "
+                                      "their coupling tensors, printed (no table yet; docs/volume.md §7)");
+  cmd->add_option("--target", o.targets, "with --ekman: the ideal frequencies of the modes wanted (default: the "
+                                         "ellipsoid's spin-over, or the heaviest rows of the ideal table)");
+  cmd->add_option("--modes", o.modes, "with --ekman and no --target: how many of the ideal table's heaviest rows to "
+                                      "follow (default 1)");
 }
 
 std::string text_of(const std::string& file) {
@@ -102,12 +113,26 @@ VolumeTableRequest VolumeCommands::resolve() const {
   r.survey.max_columns = o.columns;
   r.fields = o.fields;
   if (o.fields) check_companion_name(o.output);
+  if (o.ekman == 0 && o.output.empty()) throw std::runtime_error("-o/--output is required (the table to write)");
+  if (o.ekman != 0) {
+    if (!(o.ekman > 0 && o.ekman < 1)) throw std::runtime_error("--ekman must be in (0, 1)");
+    if (!o.output.empty()) throw std::runtime_error("--ekman prints the damped modes; a 3-D viscous table is not "
+                                                    "written yet (docs/volume.md §7): drop -o");
+    if (o.fields) throw std::runtime_error("--fields is not available with --ekman in 3-D");
+    if (o.order < 2) throw std::runtime_error("--ekman needs --order >= 2 (Taylor-Hood elements)");
+    for (double t : o.targets)
+      if (!(t > 0 && t < 2)) throw std::runtime_error("--target: each frequency must be in (0, 2)");
+    if (o.modes < 1 || o.modes > 20) throw std::runtime_error("--modes must be in 1..20");
+  } else if (!o.targets.empty()) {
+    throw std::runtime_error("--target needs --ekman");
+  }
 
   return r;
 }
 
 int VolumeCommands::run(const std::string& command_line) const {
   const VolumeTableRequest request = resolve();
+  if (common_.ekman > 0) return run_viscous(request);
   // Every rank would compute the same table on its own and write the same file: refused until the 3-D matrices are
   // distributed (docs/volume.md §6).
   PetscMPIInt ranks = 1;
@@ -128,6 +153,58 @@ int VolumeCommands::run(const std::string& command_line) const {
   }
   write_mode_table(result.table, common_.output, result.fields ? &*result.fields : nullptr);
   if (is_root_rank()) print_report(result);
+  return 0;
+}
+
+namespace {
+
+// The damped modes' targets: the ellipsoid's spin-over in closed form (any tilt), else the heaviest rows of the ideal
+// table on the same mesh options, made first.
+std::vector<double> viscous_targets(const VolumeTableRequest& ideal, const std::vector<double>& given, int modes) {
+  if (!given.empty()) return given;
+  if (ideal.shape.kind == "ellipsoid") {
+    const auto& d = ideal.shape.dims;
+    return {ellipsoid_modes(d.at("a"), d.at("b"), d.at("c"), ideal.shape.tilt).lambda};
+  }
+  if (is_root_rank()) std::cerr << "3-D viscous: the targets from the ideal table first\n";
+  VolumeTableRequest coarse = ideal;
+  coarse.fields = false;
+  const ModeTable t = make_volume_table(coarse).table;
+  std::vector<std::size_t> order(t.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return t.E[i] > t.E[j]; });
+  std::vector<double> out;
+  for (std::size_t k = 0; k < order.size() && static_cast<int>(k) < modes; ++k) out.push_back(t.lambda[order[k]]);
+  if (out.empty()) throw std::runtime_error("the ideal table has no mode to follow: give --target");
+  return out;
+}
+
+void print_viscous_report(const ViscousVolumeRequest& request, const ViscousVolumeResult& r) {
+  std::cout << "3-D viscous modes at Ek = " << request.ekman << ": " << r.elements << " tetrahedra of order "
+            << request.mesh.order << ", " << r.unknowns << " unknowns (" << r.velocity_unknowns << " velocity), "
+            << r.seconds << " s\n";
+  std::cout << "# target  lambda  decay  H_xx+H_yy (re, im)  H_zz (re, im)  residual  left_residual\n";
+  for (std::size_t i = 0; i < r.modes.size(); ++i) {
+    const auto& m = r.modes[i];
+    const std::complex<double> E = m.H(0, 0) + m.H(1, 1);
+    std::cout << fmt::format("{:.6f}  {:.10f}  {:.10e}  {:.8e} {:+.3e}  {:.3e} {:+.3e}  {:.1e}  {:.1e}\n",
+                             request.targets[i], m.lambda.real(), m.lambda.imag(), E.real(), E.imag(),
+                             m.H(2, 2).real(), m.H(2, 2).imag(), m.residual, m.left_residual);
+  }
+  std::cout << std::flush;
+}
+
+}  // namespace
+
+int VolumeCommands::run_viscous(const VolumeTableRequest& ideal) const {
+  ViscousVolumeRequest request;
+  request.shape = ideal.shape;
+  request.mesh = ideal.mesh;
+  request.ekman = common_.ekman;
+  request.targets = viscous_targets(ideal, common_.targets, common_.modes);
+  const ViscousVolumeResult result =
+      solve_viscous_volume(request, [](const std::string& line) { if (is_root_rank()) std::cerr << line << "\n"; });
+  if (is_root_rank()) print_viscous_report(request, result);
   return 0;
 }
 

@@ -1,5 +1,6 @@
 // The 3-D shape commands of cavity-modes (docs/volume.md): `ellipsoid --a --b --c [--tilt DEG]` and
-// `volume FILE` (.geo/.msh with a 3-D group "fluid", or CAD .step/.stp/.brep), each writing an ideal 3-D mode table.
+// `volume FILE` (.geo/.msh with a 3-D group "fluid", or CAD .step/.stp/.brep), each writing an ideal 3-D mode table,
+// or with --ekman printing the viscous fluid's damped modes and their coupling tensors.
 // The request is resolved here, once; make_volume_table gets only what it needs.
 #pragma once
 
@@ -8,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include <string>
+#include <vector>
 
 namespace rc::modes {
 
@@ -25,6 +27,7 @@ class VolumeCommands {
 
  private:
   VolumeTableRequest resolve() const;
+  int run_viscous(const VolumeTableRequest& ideal) const;
   CLI::App *ellipsoid_ = nullptr, *volume_ = nullptr;
   double a_ = 0, b_ = 0, c_ = 0, tilt_degrees_ = 0;
   std::string file_;
@@ -34,6 +37,9 @@ class VolumeCommands {
     int order = kVolumeDefaultOrder, columns = 60;
     double size = 0, wall_size = 0, wall_growth = 1.0, floor = 1e-4;
     bool fields = false;
+    double ekman = 0;             // > 0: the viscous fluid's damped modes (docs/volume.md §7)
+    std::vector<double> targets;  // their ideal frequencies (default: the closed form's, or the ideal table's)
+    int modes = 1;
   } common_;
 };
 

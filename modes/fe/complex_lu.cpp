@@ -141,7 +141,7 @@ void ComplexLu::factor(Mat block) {
   factored_ = true;
 }
 
-void ComplexLu::solve(Vec b, Vec x) {
+void ComplexLu::solve(Vec b, Vec x, bool transposed) {
   if (!factored_) throw std::logic_error("ComplexLu::solve before factor");
   if (gather_.get() == nullptr) petsc_check(VecScatterCreateToZero(b, gather_.out(), gathered_.out()), "VecScatterCreateToZero");
   petsc_check(VecScatterBegin(gather_, b, gathered_, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
@@ -155,6 +155,7 @@ void ComplexLu::solve(Vec b, Vec x) {
   id.rhs = reinterpret_cast<ZMUMPS_COMPLEX*>(data);
   id.nrhs = 1;
   id.lrhs = static_cast<int>(local / 2);
+  icntl(id, 9) = transposed ? 0 : 1;  // MUMPS: 1 solves S x = b, anything else Sᵀ x = b
   std::string error;
   try {
     run(3, "solve");

@@ -36,8 +36,10 @@ class ComplexLu {
   // std::runtime_error naming MUMPS's cause (singular, out of memory) when it fails.
   void factor(Mat block);
 
-  // x = S⁻¹ b on block vectors (x and b may not alias). Throws std::runtime_error when MUMPS's solve fails.
-  void solve(Vec b, Vec x);
+  // x = S⁻¹ b on block vectors (x and b may not alias); with `transposed`, x = S⁻ᵀ b (the plain transpose, not the
+  // conjugate: a non-symmetric pencil's left eigenvectors, viscous_eigensolver.hpp). Throws std::runtime_error when
+  // MUMPS's solve fails.
+  void solve(Vec b, Vec x, bool transposed = false);
 
   // MUMPS's INFOG(k) of the last phase (for reports: INFOG(28) the null pivots, INFOG(3) the factors' entries).
   int infog(int k) const;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "meridian_mesh.hpp"
+#include "volume_mesh.hpp"
 
 #include <petscsys.h>  // MPI, without the C++ bindings
 
@@ -14,5 +15,8 @@ namespace rc::modes {
 // Calls make() on rank 0 of comm and broadcasts its mesh; an exception on rank 0 is re-thrown on every rank
 // with the same one-line message.
 geometry::MeridianMesh mesh_on_root(const std::function<geometry::MeridianMesh()>& make, MPI_Comm comm);
+
+// The same for a 3-D cavity's mesh.
+geometry::VolumeMesh volume_mesh_on_root(const std::function<geometry::VolumeMesh()>& make, MPI_Comm comm);
 
 }  // namespace rc::modes

@@ -45,6 +45,53 @@ std::complex<double> boundary_layer_correction(double lambda0, const std::vector
   return I * sum / norm2;
 }
 
+std::complex<double> boundary_layer_correction(double lambda0, const std::vector<SurfacePoint>& wall,
+                                               const VolumeModeVelocity& velocity, double norm2) {
+  const std::complex<double> I(0, 1);
+  std::complex<double> sum = 0;
+  for (const auto& p : wall) {
+    const auto& n = p.normal;
+    // e1: the unit vector along the coordinate axis least aligned with n, made tangent; e2 = n × e1 (e1 × e2 = n).
+    std::array<double, 3> e1{0, 0, 0};
+    const int k = std::abs(n[0]) <= std::abs(n[1]) && std::abs(n[0]) <= std::abs(n[2]) ? 0 : std::abs(n[1]) <= std::abs(n[2]) ? 1 : 2;
+    e1[k] = 1;
+    const double along = e1[k] * n[k];
+    for (int d = 0; d < 3; ++d) e1[d] -= along * n[d];
+    const double l = std::sqrt(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]);
+    for (double& v : e1) v /= l;
+    const std::array<double, 3> e2 = {n[1] * e1[2] - n[2] * e1[1], n[2] * e1[0] - n[0] * e1[2], n[0] * e1[1] - n[1] * e1[0]};
+    const auto V = velocity(p.x);
+    std::complex<double> U1 = 0, U2 = 0;
+    for (int d = 0; d < 3; ++d) { U1 += V[d] * e1[d]; U2 += V[d] * e2[d]; }
+    const double c = n[2];
+    const std::complex<double> qp = std::sqrt(I * (lambda0 + 2 * c)), qm = std::sqrt(I * (lambda0 - 2 * c));
+    sum += 0.5 * (qp * std::norm(U1 + I * U2) + qm * std::norm(U1 - I * U2)) * p.weight;
+  }
+  return I * sum / norm2;
+}
+
+std::vector<SurfacePoint> ellipsoid_surface(double a, double b, double c, int panels) {
+  std::vector<SurfacePoint> wall;
+  for (int i = 0; i < panels; ++i)
+    for (std::size_t gi = 0; gi < kX.size(); ++gi) {
+      const double t = kPi * (i + kX[gi]) / panels, wt = kW[gi] * kPi / panels;
+      for (int j = 0; j < 2 * panels; ++j)
+        for (std::size_t gj = 0; gj < kX.size(); ++gj) {
+          const double f = kPi * (j + kX[gj]) / panels, wf = kW[gj] * kPi / panels;
+          const double st = std::sin(t), ct = std::cos(t), sf = std::sin(f), cf = std::cos(f);
+          SurfacePoint p;
+          p.x = {a * st * cf, b * st * sf, c * ct};
+          // x_θ × x_φ = (b c sin²θ cos φ, a c sin²θ sin φ, a b sin θ cos θ): outward, |·| dθ dφ = dS.
+          const double N[3] = {b * c * st * st * cf, a * c * st * st * sf, a * b * st * ct};
+          const double area = std::sqrt(N[0] * N[0] + N[1] * N[1] + N[2] * N[2]);
+          p.normal = {-N[0] / area, -N[1] / area, -N[2] / area};
+          p.weight = area * wt * wf;
+          wall.push_back(p);
+        }
+    }
+  return wall;
+}
+
 std::vector<WallPoint> ellipse_wall(double a, double c, int panels) {
   std::vector<WallPoint> wall;
   for (int p = 0; p < panels; ++p)

@@ -30,6 +30,21 @@ using ModeVelocity = std::function<std::array<std::complex<double>, 3>(double r,
 std::complex<double> boundary_layer_correction(double lambda0, const std::vector<WallPoint>& wall,
                                                const ModeVelocity& velocity, double norm2);
 
+// The same correction on a 3-D wall (a cavity without axial symmetry, docs/volume.md §7): at each wall point the
+// inward normal n, any unit tangents e1, e2 with e1 × e2 = n (the meridian's s, e_φ), c = ẑ·n, and the polarisations
+// U± = U·e1 ± i U·e2 of the wall velocity U; the same ∮ ½ (q+ |U+|² + q− |U−|²) dS.
+struct SurfacePoint {
+  std::array<double, 3> x{}, normal{};  // position, unit normal into the fluid
+  double weight = 0;                    // quadrature weight of the area (dS)
+};
+using VolumeModeVelocity = std::function<std::array<std::complex<double>, 3>(const std::array<double, 3>& x)>;
+std::complex<double> boundary_layer_correction(double lambda0, const std::vector<SurfacePoint>& wall,
+                                               const VolumeModeVelocity& velocity, double norm2);
+
+// The ellipsoid x²/a² + y²/b² + z²/c² = 1 (axes along x, y, z): composite 8-point Gauss rules in the polar angle θ
+// (`panels` panels) and the azimuth φ (2 `panels`) of x = (a sin θ cos φ, b sin θ sin φ, c cos θ).
+std::vector<SurfacePoint> ellipsoid_surface(double a, double b, double c, int panels);
+
 // Composite 8-point Gauss–Legendre rules along the built-in walls (`panels` panels in all, or per side).
 std::vector<WallPoint> ellipse_wall(double a, double c, int panels);          // south pole -> north pole
 std::vector<WallPoint> cylinder_wall(double radius, double height, int panels_per_side);  // bottom, side, top

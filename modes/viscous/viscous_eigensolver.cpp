@@ -236,6 +236,95 @@ std::vector<ViscousMode> damped_modes(EPS eps, PetscInt converged, const Viscous
   return modes;
 }
 
+// Block-form helpers for the left eigenvectors: v ← s v for a complex s, and v ← v̄ (the odd slots negated).
+void scale_block(Vec v, std::complex<double> s) {
+  PetscInt lo = 0, hi = 0;
+  petsc_check(VecGetOwnershipRange(v, &lo, &hi), "VecGetOwnershipRange");
+  PetscScalar* a = nullptr;
+  petsc_check(VecGetArray(v, &a), "VecGetArray");
+  for (PetscInt g = 0; g + 1 < hi - lo; g += 2) {  // pairs never straddle ranks (block_pencil.hpp)
+    const std::complex<double> x = s * std::complex<double>(a[g], a[g + 1]);
+    a[g] = x.real();
+    a[g + 1] = x.imag();
+  }
+  petsc_check(VecRestoreArray(v, &a), "VecRestoreArray");
+}
+
+void conjugate_block(Vec v) {
+  PetscInt lo = 0, hi = 0;
+  petsc_check(VecGetOwnershipRange(v, &lo, &hi), "VecGetOwnershipRange");
+  PetscScalar* a = nullptr;
+  petsc_check(VecGetArray(v, &a), "VecGetArray");
+  for (PetscInt g = 1; g < hi - lo; g += 2) a[g] = -a[g];
+  petsc_check(VecRestoreArray(v, &a), "VecRestoreArray");
+}
+
+// ‖Aᵀy − λ𝓜y‖ / (|λ| ‖y‖). The block of the complex Aᵀ is not Âᵀ (that is the block of Aᴴ): Aᵀy = conj(Âᵀ ȳ).
+double left_residual(const ViscousForms& forms, Vec y, std::complex<double> lambda) {
+  PVec c, r, m;
+  for (PVec* v : {&c, &r, &m}) petsc_check(VecDuplicate(y, v->out()), "VecDuplicate");
+  petsc_check(VecCopy(y, c), "VecCopy");
+  conjugate_block(c);
+  petsc_check(MatMultTranspose(forms.A, c, r), "MatMultTranspose");
+  conjugate_block(r);
+  petsc_check(MatMult(forms.M, y, m), "MatMult");  // 𝓜 real symmetric: the block of 𝓜ᵀ y is M̂ y
+  petsc_check(VecAXPY(r, -lambda.real(), m), "VecAXPY");
+  petsc_check(MatMult(forms.iM, y, m), "MatMult");
+  petsc_check(VecAXPY(r, -lambda.imag(), m), "VecAXPY");
+  return norm(r) / (std::abs(lambda) * norm(y));
+}
+
+// Inverse iteration y ← S⁻ᵀ𝓜y with op's factors, at most `steps` solves or until the residual is below `wanted` or
+// stalls; returns the residual.
+double left_iteration(const ShiftInvert& op, const ViscousMode& mode, Vec y, int steps, double wanted) {
+  PVec w;
+  petsc_check(VecDuplicate(y, w.out()), "VecDuplicate");
+  double residual = left_residual(*op.forms, y, mode.lambda);
+  for (int k = 0; k < steps && residual > wanted; ++k) {
+    petsc_check(MatMult(op.forms->M, y, w), "MatMult");
+    op.lu->solve(w, y, true);
+    scale_block(y, 1.0 / norm(y));
+    const double next = left_residual(*op.forms, y, mode.lambda);
+    if (k > 0 && next > 0.5 * residual) return next;  // stalled at the eigenvalue's own accuracy
+    residual = next;
+  }
+  return residual;
+}
+
+// The left eigenvector of mode (x = mode.block): inverse iteration with the transposed factors, from x̄ — the left
+// vector of the ideal limit, where A is Hermitian. With the search's factors (S = A − τ𝓜) it converges at the rate
+// |λ − τ| / |λ' − τ| of the next mode λ', slow for a far target; when three solves do not do, S is factorised again
+// at λ itself (just off it, 1e-6 |λ|), where one or two solves do. Normalised to yᵀ𝓜x = 1. Throws when it does not
+// converge.
+void add_left_vector(const ShiftInvert& op, ViscousMode& mode) {
+  const ViscousForms& forms = *op.forms;
+  const Vec x = *mode.block;
+  auto y = std::make_shared<PVec>();
+  petsc_check(VecDuplicate(x, y->out()), "VecDuplicate");
+  petsc_check(VecCopy(x, *y), "VecCopy");
+  conjugate_block(*y);
+  const double wanted = std::max(10 * mode.residual, 1e-13);
+  double residual = left_iteration(op, mode, *y, 3, wanted);
+  if (residual > wanted) {
+    ShiftInvert near;
+    near.forms = &forms;
+    factorise(near, mode.lambda + 1e-6 * std::abs(mode.lambda), PetscObjectComm(reinterpret_cast<PetscObject>(x)));
+    residual = left_iteration(near, mode, *y, 10, wanted);
+  }
+  if (!(residual < 1e-8))
+    throw std::runtime_error("the left eigenvector of the damped mode at " + std::to_string(mode.lambda.real()) +
+                             " + " + std::to_string(mode.lambda.imag()) + "i did not converge (residual " +
+                             std::to_string(residual) + ")");
+  PVec w;
+  petsc_check(VecDuplicate(x, w.out()), "VecDuplicate");
+  petsc_check(MatMult(forms.M, x, w), "MatMult");
+  const std::complex<double> yMx = block_bilinear(*y, w);
+  if (std::abs(yMx) == 0) throw std::runtime_error("a damped mode orthogonal to its left eigenvector (a defective pencil)");
+  scale_block(*y, 1.0 / yMx);
+  mode.left = y;
+  mode.left_residual = residual;
+}
+
 }  // namespace
 
 std::vector<ViscousMode> viscous_modes_near(const ViscousForms& forms, std::complex<double> target,
@@ -261,7 +350,11 @@ std::vector<ViscousMode> viscous_modes_near(const ViscousForms& forms, std::comp
   const std::string near = "near lambda = " + std::to_string(target.real()) + " + " + std::to_string(target.imag()) + "i";
   if (reason < 0 && converged == 0)
     throw std::runtime_error("SLEPc did not converge " + near + " (reason " + std::to_string(reason) + ")");
-  std::vector<ViscousMode> modes = damped_modes(eps, converged, forms, target, settings);
+  ViscousSolveSettings wanted = settings;
+  wanted.keep_block = settings.keep_block || settings.left_vectors;
+  std::vector<ViscousMode> modes = damped_modes(eps, converged, forms, target, wanted);
+  if (settings.left_vectors)
+    for (ViscousMode& m : modes) add_left_vector(op, m);
   if (modes.empty())
     throw std::runtime_error("SLEPc found no damped mode " + near + " (" + std::to_string(converged) +
                              " eigenpairs converged)");

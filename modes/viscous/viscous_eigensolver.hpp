@@ -31,6 +31,12 @@ struct ViscousMode {
   // With ViscousSolveSettings::keep_block: the same normalised x in the block form of viscous_forms.hpp (Re x_j, Im x_j
   // on the slots 2j, 2j + 1), distributed like the forms, for Galerkin projections (galerkin_projection.hpp).
   std::shared_ptr<PVec> block;
+  // With ViscousSolveSettings::left_vectors: the left eigenvector y (Aᵀy = λ𝓜y, block form) normalised to yᵀ𝓜x = 1
+  // with the `block` above, and its residual ‖Aᵀy − λ𝓜y‖ / (|λ| ‖y‖). A symmetric pencil's (the meridian's) is x
+  // itself; a 3-D cavity's is not (its Coriolis term is antisymmetric), and a response's residue needs both
+  // (volume/viscous_volume_modes.hpp).
+  std::shared_ptr<PVec> left;
+  double left_residual = 0;
 };
 
 struct ViscousSolveSettings {
@@ -39,6 +45,7 @@ struct ViscousSolveSettings {
   int max_iterations = 500;
   bool keep_vector = false;  // keep each mode's eigenvector (for --fields)
   bool keep_block = false;   // keep each mode's block vector (ViscousMode::block)
+  bool left_vectors = false; // also each mode's left eigenvector (ViscousMode::left; implies keep_block)
 };
 
 // The damped modes closest to the complex target, sorted by distance from it. Throws std::runtime_error when

@@ -57,6 +57,8 @@ EllipsoidModes ellipsoid_modes(double a, double b, double c, double tilt) {
     if (mu.imag() > 1e-12) {
       out.lambda = mu.imag();  // e^{iλt}: μ = iλ
       out.H = H;
+      out.field = R.cast<C>() * field * R.transpose().cast<C>();
+      out.norm2 = cp.norm2;
     } else if (std::abs(mu) < 1e-12) {
       out.geostrophic = H.real();
     }

@@ -15,6 +15,8 @@ namespace rc::modes {
 struct EllipsoidModes {
   double lambda = 0;              // the spin-over mode's frequency (> 0)
   Eigen::Matrix3cd H;             // its coupling tensor c cᴴ/‖V‖², c_k = ∫ (e_k × r)·V, in the spin frame
+  Eigen::Matrix3cd field;         // its velocity V = field · r (spin frame, r from the centre), with ∫ |V|² = norm2
+  double norm2 = 0;
   Eigen::Matrix3d geostrophic;    // the λ = 0 vortex's coupling tensor
   Eigen::Matrix3d inertia, zhukovsky;  // frozen fluid and Zhukovsky's inertia about the centre, spin frame
   double mass = 0;

@@ -1,0 +1,115 @@
+#include "viscous_volume_forms.hpp"
+
+#include "block_pencil.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <vector>
+
+namespace rc::modes {
+namespace {
+
+struct ElementMatrices {
+  std::vector<double> m0, k0;    // per pair of local velocity nodes
+  std::array<std::vector<double>, 3> b;  // per (pressure node, velocity node): ∫ q ∂_d v
+  std::array<std::array<std::vector<double>, 3>, 3> f;  // f[k][d][a]: coupling k on component d of node a
+};
+
+void integrate_element(const VolumeTaylorHoodSpace& space, std::size_t e, const std::array<double, 3>& centroid,
+                       VolumeQuadrature& eq, ElementMatrices& out) {
+  const int npe = space.velocity_nodes_per_element(), npp = space.pressure_nodes_per_element();
+  space.geometry().quadrature(e, eq);
+  out.m0.assign(npe * npe, 0.0);
+  out.k0.assign(npe * npe, 0.0);
+  for (auto& b : out.b) b.assign(npp * npe, 0.0);
+  for (auto& fk : out.f)
+    for (auto& fd : fk) fd.assign(npe, 0.0);
+  const auto& P = space.pressure_basis();
+  for (std::size_t q = 0; q < eq.w.size(); ++q) {
+    const double w = eq.w[q];
+    const double x = eq.x[q] - centroid[0], y = eq.y[q] - centroid[1], z = eq.z[q] - centroid[2];
+    const double* N = &eq.N[q * npe];
+    const std::array<const double*, 3> dN = {&eq.dNx[q * npe], &eq.dNy[q * npe], &eq.dNz[q * npe]};
+    for (int a = 0; a < npe; ++a) {
+      const double Nw = N[a] * w;
+      out.f[0][1][a] -= z * Nw; out.f[0][2][a] += y * Nw;  // e_x × r = (0, −z, y)
+      out.f[1][0][a] += z * Nw; out.f[1][2][a] -= x * Nw;  // e_y × r = (z, 0, −x)
+      out.f[2][0][a] -= y * Nw; out.f[2][1][a] += x * Nw;  // e_z × r = (−y, x, 0)
+      for (int c = 0; c < npe; ++c) {
+        out.m0[a * npe + c] += N[a] * N[c] * w;
+        out.k0[a * npe + c] += (dN[0][a] * dN[0][c] + dN[1][a] * dN[1][c] + dN[2][a] * dN[2][c]) * w;
+      }
+    }
+    const double* Pq = &P[q * npp];
+    for (int p = 0; p < npp; ++p)
+      for (int a = 0; a < npe; ++a)
+        for (int d = 0; d < 3; ++d) out.b[d][p * npe + a] += Pq[p] * dN[d][a] * w;
+  }
+}
+
+// One element's entries: Re A (B and Bᵀ), Im A (C + Ek K), 𝓜, and the coupling functionals.
+void scatter(const VolumeTaylorHoodSpace& space, std::size_t e, const ElementMatrices& em, double ekman,
+             Triplets& ar, Triplets& ai, Triplets& mass, std::array<std::vector<double>, 3>& f) {
+  const int npe = space.velocity_nodes_per_element(), npp = space.pressure_nodes_per_element();
+  const std::array<std::span<const int>, 3> u = {space.velocity(e, 0), space.velocity(e, 1), space.velocity(e, 2)};
+  const auto p = space.pressure(e);
+  for (int a = 0; a < npe; ++a) {
+    for (int k = 0; k < 3; ++k)
+      for (int d = 0; d < 3; ++d)
+        if (u[d][a] >= 0) f[k][u[d][a]] += em.f[k][d][a];
+    for (int c = 0; c < npe; ++c) {
+      const int ac = a * npe + c;
+      for (int d = 0; d < 3; ++d) {
+        mass.add(u[d][a], u[d][c], em.m0[ac]);
+        ai.add(u[d][a], u[d][c], ekman * em.k0[ac]);
+      }
+      ai.add(u[0][a], u[1][c], -2 * em.m0[ac]);  // C: test x, field y
+      ai.add(u[1][a], u[0][c], 2 * em.m0[ac]);   //    test y, field x
+    }
+  }
+  for (int q = 0; q < npp; ++q)
+    for (int a = 0; a < npe; ++a)
+      for (int d = 0; d < 3; ++d) {
+        const double b = em.b[d][q * npe + a];
+        ar.add(p[q], u[d][a], b);
+        ar.add(u[d][a], p[q], b);
+      }
+}
+
+}  // namespace
+
+ViscousVolumeForms assemble_viscous_volume_forms(const VolumeTaylorHoodSpace& space, const std::array<double, 3>& centroid,
+                                                 double ekman, MPI_Comm comm) {
+  if (!(ekman >= 0)) throw std::runtime_error("the Ekman number must be >= 0");
+  int rank = 0, ranks = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &ranks);
+  const std::size_t ne = space.num_elements();
+  const std::size_t first = ne * rank / ranks, last = ne * (rank + 1) / ranks;
+  const int n = space.size();
+  Triplets ar, ai, mass;
+  std::array<std::vector<double>, 3> f, f_all;
+  for (int k = 0; k < 3; ++k) { f[k].assign(n, 0.0); f_all[k].assign(n, 0.0); }
+  VolumeQuadrature eq;
+  ElementMatrices em;
+  for (std::size_t e = first; e < last; ++e) {
+    integrate_element(space, e, centroid, eq, em);
+    scatter(space, e, em, ekman, ar, ai, mass, f);
+  }
+  for (int k = 0; k < 3; ++k) MPI_Allreduce(f[k].data(), f_all[k].data(), n, MPI_DOUBLE, MPI_SUM, comm);
+
+  ViscousVolumeForms out;
+  ViscousForms& forms = out.forms;
+  forms.complex_size = n;
+  forms.A = block_operator(comm, n, ar, ai, mass);
+  forms.M = block_mass(comm, n, mass);
+  forms.iM = block_imaginary_mass(comm, n, mass);
+  for (int k = 0; k < 3; ++k) out.couplings[k] = block_vector(forms.A, f_all[k]);
+  forms.coupling = block_vector(forms.A, f_all[0]);
+  forms.real_slots = block_vector(forms.A, std::vector<double>(n, 1.0));
+  petsc_check(MatCreateVecs(forms.M, forms.mass_diagonal.out(), nullptr), "MatCreateVecs");
+  petsc_check(MatGetDiagonal(forms.M, forms.mass_diagonal), "MatGetDiagonal");
+  return out;
+}
+
+}  // namespace rc::modes

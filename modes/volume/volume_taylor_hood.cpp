@@ -1,0 +1,109 @@
+#include "volume_taylor_hood.hpp"
+
+#include "tetrahedron_nodes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+#include <string>
+
+namespace rc::modes {
+namespace {
+
+// A pressure node is identified across elements by its barycentric lattice weights on the element's vertices,
+// written with global vertex numbers and sorted (as the meridian space does, taylor_hood_space.cpp).
+using NodeKey = std::vector<std::pair<int, int>>;
+
+std::array<int, 4> lattice_weights(const std::array<double, 3>& uvw, int order) {
+  const int i = static_cast<int>(std::lround(uvw[0] * order)), j = static_cast<int>(std::lround(uvw[1] * order)),
+            k = static_cast<int>(std::lround(uvw[2] * order));
+  return {order - i - j - k, i, j, k};  // vertex 0 at the origin, 1, 2, 3 on the u, v, w axes
+}
+
+NodeKey node_key(const int* vertices, const std::array<double, 3>& uvw, int order) {
+  const auto weight = lattice_weights(uvw, order);
+  NodeKey key;
+  for (int v = 0; v < 4; ++v)
+    if (weight[v] > 0) key.emplace_back(vertices[v], weight[v]);
+  std::sort(key.begin(), key.end());
+  return key;
+}
+
+// The mesh nodes on the wall: every node of a face that belongs to one tetrahedron only (the local nodes whose
+// barycentric weight on the face's opposite vertex is zero).
+std::vector<char> nodes_on_wall(const geometry::VolumeMesh& mesh) {
+  const int npe = mesh.nodes_per_element;
+  const std::size_t ne = mesh.num_tetrahedra();
+  std::map<std::array<int, 3>, int> faces;
+  const auto face = [&](std::size_t e, int opposite) {
+    std::array<int, 3> f{};
+    for (int v = 0, k = 0; v < 4; ++v)
+      if (v != opposite) f[k++] = mesh.tetrahedra[e * npe + v];
+    std::sort(f.begin(), f.end());
+    return f;
+  };
+  for (std::size_t e = 0; e < ne; ++e)
+    for (int o = 0; o < 4; ++o) ++faces[face(e, o)];
+  const auto nodes = geometry::tetrahedron_nodes(mesh.order);
+  std::vector<char> wall(mesh.nodes.size(), 0);
+  for (std::size_t e = 0; e < ne; ++e)
+    for (int o = 0; o < 4; ++o) {
+      if (faces[face(e, o)] != 1) continue;
+      for (int a = 0; a < npe; ++a)
+        if (lattice_weights(nodes.points[a], mesh.order)[o] == 0) wall[mesh.tetrahedra[e * npe + a]] = 1;
+    }
+  return wall;
+}
+
+}  // namespace
+
+VolumeTaylorHoodSpace::VolumeTaylorHoodSpace(geometry::VolumeMesh mesh, int quadrature_degree)
+    : geometry_(std::move(mesh), quadrature_degree) {
+  const auto& m = geometry_.mesh();
+  if (m.order < 2)
+    throw std::runtime_error("the viscous solver needs elements of order >= 2 (Taylor-Hood P_k/P_(k-1)); got " +
+                             std::to_string(m.order));
+  const int npe = m.nodes_per_element;
+  const std::size_t ne = m.num_tetrahedra();
+  const std::vector<char> wall = nodes_on_wall(m);
+  wall_nodes_ = static_cast<int>(std::count(wall.begin(), wall.end(), 1));
+  for (int c = 0; c < 3; ++c) {
+    std::vector<int> node_dof(m.nodes.size(), -1);
+    for (std::size_t n = 0; n < m.nodes.size(); ++n)
+      if (!wall[n]) node_dof[n] = velocity_dofs_++;
+    velocity_[c].resize(ne * npe);
+    for (std::size_t i = 0; i < ne * npe; ++i) velocity_[c][i] = node_dof[m.tetrahedra[i]];
+  }
+
+  const int pk = m.order - 1;
+  const auto nodes = geometry::tetrahedron_nodes(pk);
+  pressure_npe_ = nodes.nodes_per_element;
+  std::map<NodeKey, int> numbered;
+  pressure_.resize(ne * pressure_npe_);
+  int next = 0;  // pressure nodes numbered from 0; node 0 is the pinned one
+  for (std::size_t e = 0; e < ne; ++e)
+    for (int b = 0; b < pressure_npe_; ++b) {
+      auto [it, is_new] = numbered.try_emplace(node_key(&m.tetrahedra[e * npe], nodes.points[b], pk), next);
+      if (is_new) ++next;
+      pressure_[e * pressure_npe_ + b] = it->second == 0 ? -1 : velocity_dofs_ + it->second - 1;
+    }
+  pressure_dofs_ = next - 1;
+  if (velocity_dofs_ == 0 || pressure_dofs_ <= 0)
+    throw std::runtime_error("the 3-D mesh has no free velocity or pressure unknown (too coarse for order " +
+                             std::to_string(m.order) + ")");
+  const int degree = quadrature_degree > 0 ? quadrature_degree : 2 * m.order + 1;
+  pressure_basis_ = geometry::reference_tetrahedron(pk, degree).N;
+}
+
+std::span<const int> VolumeTaylorHoodSpace::velocity(std::size_t e, int c) const {
+  const std::size_t npe = velocity_nodes_per_element();
+  return {velocity_[c].data() + e * npe, npe};
+}
+
+std::span<const int> VolumeTaylorHoodSpace::pressure(std::size_t e) const {
+  const std::size_t npp = pressure_npe_;
+  return {pressure_.data() + e * npp, npp};
+}
+
+}  // namespace rc::modes

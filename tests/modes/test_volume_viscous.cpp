@@ -1,0 +1,172 @@
+// The viscous fluid in 3-D cavities (docs/volume.md §7): damped modes on tetrahedra against the meridian solver
+// (an axisymmetric cavity meshed in 3-D), the left eigenvectors, and the triaxial ellipsoid's spin-over mode against
+// its boundary-layer limit.
+#include "boundary_layer.hpp"
+#include "complex_lu.hpp"
+#include "ellipsoid_closed_form.hpp"
+#include "taylor_hood_space.hpp"
+#include "viscous_eigensolver.hpp"
+#include "viscous_forms.hpp"
+#include "viscous_table.hpp"
+#include "viscous_volume_modes.hpp"
+#include "volume_forms.hpp"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+using namespace rc;
+using namespace rc::modes;
+using cd = std::complex<double>;
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+struct VolumeRun {
+  DampedVolumeMode mode;
+  int unknowns = 0;
+  double seconds = 0;
+};
+
+// The damped mode nearest `target` of the ellipsoid a, b, c at `ekman` on P`order` tetrahedra.
+VolumeRun ellipsoid_mode(double a, double b, double c, double ekman, int order, double size, double wall_size,
+                         cd target) {
+  const auto t0 = std::chrono::steady_clock::now();
+  geometry::MeshOptions mesh;
+  mesh.order = order;
+  mesh.size = size;
+  mesh.wall_size = wall_size;
+  mesh.wall_growth = 1.0;
+  const VolumeTaylorHoodSpace space(geometry::mesh_volume({"ellipsoid", {{"a", a}, {"b", b}, {"c", c}}, {}, 0.0}, mesh));
+  const auto forms = assemble_viscous_volume_forms(space, {0, 0, 0}, ekman, PETSC_COMM_WORLD);
+  const auto modes = damped_volume_modes(forms, target, 1);
+  VolumeRun r;
+  r.mode = modes.at(0);
+  r.unknowns = space.size();
+  r.seconds = seconds_since(t0);
+  return r;
+}
+
+}  // namespace
+
+// An oblate spheroid meshed in 3-D against the meridian (m = 1) solver at the same Ekman number: its spin-over mode's
+// λ, and the coupling tensor's transverse trace against the meridian table's complex E.
+TEST(ViscousVolume, SpheroidIsTheMeridianSolversMode) {
+  const double a = 1, c = 0.5, ek = 1e-2;
+  const geometry::ShapeSpec spheroid{"spheroid", {{"a", a}, {"c", c}}, {}};
+  geometry::MeshOptions m;
+  m.order = 6;
+  m.size = 0.05;
+  const TaylorHoodSpace meridian(geometry::mesh_meridian(spheroid, viscous_mesh_defaults(spheroid, ek, m)));
+  const ViscousForms mf = assemble_viscous_forms(meridian, 0.0, ek, PETSC_COMM_WORLD);
+  ViscousSolveSettings settings;
+  settings.pairs = 1;
+  settings.tolerance = 1e-12;
+  settings.left_vectors = true;
+  const auto mm = viscous_modes_near(mf, {1.6, 0.1}, settings).at(0);
+  // The meridian pencil is complex symmetric: its left eigenvector is the right one.
+  PVec diff;
+  petsc_check(VecDuplicate(*mm.block, diff.out()), "VecDuplicate");
+  petsc_check(VecWAXPY(diff, -1.0, *mm.left, *mm.block), "VecWAXPY");
+  PetscReal dn = 0, xn = 0;
+  VecNorm(diff, NORM_2, &dn);
+  VecNorm(*mm.block, NORM_2, &xn);
+  std::printf("meridian (%d unknowns): lambda %.10f%+.10fi, E %.10f%+.10fi; left vector - right %.1e (residual %.1e)\n",
+              meridian.size(), mm.lambda.real(), mm.lambda.imag(), mm.residue.real(), mm.residue.imag(), dn / xn,
+              mm.left_residual);
+  EXPECT_LE(dn / xn, 1e-8);
+
+  const VolumeRun v = ellipsoid_mode(a, a, c, ek, 4, 0.3, 0.08, mm.lambda);
+  const cd E = v.mode.H(0, 0) + v.mode.H(1, 1);
+  std::printf("3-D P4 (%d unknowns, %.1f s): lambda %.10f%+.10fi (%.1e), H_xx + H_yy %.10f%+.10fi (%.1e), residuals "
+              "%.1e, left %.1e\n", v.unknowns, v.seconds, v.mode.lambda.real(), v.mode.lambda.imag(),
+              std::abs(v.mode.lambda - mm.lambda) / std::abs(mm.lambda), E.real(), E.imag(),
+              std::abs(E - mm.residue) / std::abs(mm.residue), v.mode.residual, v.mode.left_residual);
+  EXPECT_LE(std::abs(v.mode.lambda - mm.lambda) / std::abs(mm.lambda), 5e-6);  // measured 1.2e-6 (P3, h 0.25: 2.4e-5)
+  EXPECT_LE(std::abs(E - mm.residue) / std::abs(mm.residue), 2e-4);               // measured 5.2e-5 (P3: 2.4e-4)
+  EXPECT_LE(std::abs(v.mode.H(2, 2)), 1e-6 * std::abs(E));  // an axisymmetric m = 1 mode does not couple to the spin
+  std::printf("H = [%.6f%+.6fi %.6f%+.6fi %.2e; %.6f%+.6fi %.6f%+.6fi %.2e; zz %.2e]\n", v.mode.H(0, 0).real(),
+              v.mode.H(0, 0).imag(), v.mode.H(0, 1).real(), v.mode.H(0, 1).imag(), std::abs(v.mode.H(0, 2)),
+              v.mode.H(1, 0).real(), v.mode.H(1, 0).imag(), v.mode.H(1, 1).real(), v.mode.H(1, 1).imag(),
+              std::abs(v.mode.H(1, 2)), std::abs(v.mode.H(2, 2)));
+}
+
+// The boundary-layer limit on a 3-D wall (boundary_layer.hpp) from the closed-form spin-over field: on the sphere and
+// the spheroid it is the meridian quadrature's of the same field (and Greenspan's 0.259 + 2.62i for the sphere); on
+// the triaxial ellipsoid it converges under panel doubling.
+TEST(ViscousVolume, SurfaceBoundaryLayerLimitIsTheMeridians) {
+  const auto limit = [](double a, double b, double c, int panels) {
+    const EllipsoidModes m = ellipsoid_modes(a, b, c, 0.0);
+    const VolumeModeVelocity V = [&](const std::array<double, 3>& x) {
+      const Eigen::Vector3cd v = m.field * Eigen::Vector3d(x[0], x[1], x[2]).cast<cd>();
+      return std::array<cd, 3>{v(0), v(1), v(2)};
+    };
+    return boundary_layer_correction(m.lambda, ellipsoid_surface(a, b, c, panels), V, m.norm2);
+  };
+  for (const double c : {1.0, 0.5}) {
+    // The meridian form of the same field: its value in the half-plane φ = 0 is the factor of e^{iφ}.
+    const EllipsoidModes m = ellipsoid_modes(1, 1, c, 0.0);
+    const ModeVelocity meridian_field = [&](double r, double z) {
+      const Eigen::Vector3cd v = m.field * Eigen::Vector3d(r, 0, z).cast<cd>();
+      return std::array<cd, 3>{v(0), v(1), v(2)};
+    };
+    const cd meridian = boundary_layer_correction(m.lambda, ellipse_wall(1, c, 3200), meridian_field, m.norm2);
+    const cd surface = limit(1, 1, c, 400);
+    const double err = std::abs(surface - meridian) / std::abs(meridian);
+    std::printf("spheroid c/a = %.1f: lambda1 on the 3-D wall %.6f%+.6fi, on the meridian %.6f%+.6fi: %.1e\n", c,
+                surface.real(), surface.imag(), meridian.real(), meridian.imag(), err);
+    EXPECT_LE(err, 1.5e-5);  // the critical latitudes' kinks: panels^{-3/2} (2.3e-5 at 200 panels)
+  }
+  const cd l1 = limit(1, 0.8, 0.6, 200), l2 = limit(1, 0.8, 0.6, 400);
+  std::printf("triaxial 1 : 0.8 : 0.6: lambda1 %.6f%+.6fi (200 panels), %.6f%+.6fi (400): %.1e\n", l1.real(),
+              l1.imag(), l2.real(), l2.imag(), std::abs(l1 - l2) / std::abs(l2));
+  EXPECT_LE(std::abs(l1 - l2) / std::abs(l2), 1e-5);
+}
+
+// The coupling tensor from the left and right eigenvectors against the forced response: the fluid's moment about
+// e_j per unit forcing about e_k, R_jk(σ) = f_jᵀ (A − σ𝓜)⁻¹ f_k, has at the damped mode λ the residue −H_jk. Eight
+// forced solves on a circle about λ give it by the trapezoidal rule, with no eigenvector at all.
+TEST(ViscousVolume, CouplingTensorIsTheForcedResponsesResidue) {
+  const double ek = 1e-2;
+  geometry::MeshOptions mesh;
+  mesh.order = 3;
+  mesh.size = 0.3;
+  mesh.wall_size = 0.1;
+  mesh.wall_growth = 1.0;
+  const VolumeTaylorHoodSpace space(
+      geometry::mesh_volume({"ellipsoid", {{"a", 1.0}, {"b", 0.8}, {"c", 0.6}}, {}, 0.3}, mesh));  // tilted: H full
+  const auto forms = assemble_viscous_volume_forms(space, {0, 0, 0}, ek, PETSC_COMM_WORLD);
+  const DampedVolumeMode mode = damped_volume_modes(forms, {1.4, 0.5}, 1).at(0);
+  const int points = 8;
+  const double radius = 1e-3;
+  Eigen::Matrix3cd residue = Eigen::Matrix3cd::Zero();
+  PVec x;
+  petsc_check(VecDuplicate(forms.couplings[0], x.out()), "VecDuplicate");
+  for (int p = 0; p < points; ++p) {
+    const cd step = radius * std::exp(cd(0, 2 * std::numbers::pi * p / points)), sigma = mode.lambda + step;
+    PMat S;
+    petsc_check(MatDuplicate(forms.forms.A, MAT_COPY_VALUES, S.out()), "MatDuplicate");
+    petsc_check(MatAXPY(S, -sigma.real(), forms.forms.M, SUBSET_NONZERO_PATTERN), "MatAXPY");
+    petsc_check(MatAXPY(S, -sigma.imag(), forms.forms.iM, SUBSET_NONZERO_PATTERN), "MatAXPY");
+    ComplexLu lu(PETSC_COMM_WORLD, "test_");
+    lu.factor(S);
+    for (int k = 0; k < 3; ++k) {
+      lu.solve(forms.couplings[k], x);
+      for (int j = 0; j < 3; ++j) residue(j, k) += step * block_bilinear(forms.couplings[j], x) / double(points);
+    }
+  }
+  const double err = (residue + mode.H).cwiseAbs().maxCoeff() / mode.H.cwiseAbs().maxCoeff();
+  std::printf("tilted 1 : 0.8 : 0.6 at Ek %.0e (%d unknowns): lambda %.10f%+.10fi; H from the eigenvectors against "
+              "the forced response's residue: %.1e (largest entry %.4f, H_zz %.4f)\n", ek, space.size(),
+              mode.lambda.real(), mode.lambda.imag(), err, mode.H.cwiseAbs().maxCoeff(), std::abs(mode.H(2, 2)));
+  EXPECT_LE(err, 1e-6);
+  EXPECT_GT(std::abs(mode.H(1, 2)), 1e-3 * mode.H.cwiseAbs().maxCoeff());  // the tilt couples the axial rotation
+  EXPECT_GT((mode.H - mode.H.adjoint()).cwiseAbs().maxCoeff(), 1e-4 * mode.H.cwiseAbs().maxCoeff())
+      << "a damped mode's H is not Hermitian: the left vector is not x̄";
+}
