@@ -103,6 +103,38 @@ if command -v mpirun > /dev/null; then
   fi
 fi
 
+# --ekman: the viscous fluid's damped modes, printed (docs/volume.md §7): the target is the closed-form spin-over, an
+# upright ellipsoid's mode does not couple to the spin axis, and two ranks (mesh shared, forms distributed) give the
+# serial run's mode.
+viscous=(ellipsoid --a 1 --b 0.8 --c 0.6 --ekman 1e-2 --order 2 --mesh-size 0.3 --wall-size 0.1)
+if "$BIN" "${viscous[@]}" > visc.txt 2>&1 && python3 - visc.txt <<'PY'
+import sys
+row = [float(x) for x in open(sys.argv[1]).read().splitlines()[-1].split()]
+target, lam, decay, e_re, e_im, zz_re, zz_im = row[:7]
+assert abs(target - (4 * 0.64 / (1.36 * 1.0)) ** 0.5) < 1e-6, target   # 2ab/sqrt((a²+c²)(b²+c²))
+assert 0.3 < decay < 0.7 and abs(lam - target) < 0.1 and e_re > 0, row
+assert abs(complex(zz_re, zz_im)) < 1e-6 * e_re, row
+PY
+then
+  ok "ellipsoid --ekman 1e-2: the damped spin-over ($(tail -1 visc.txt | awk '{print $2, $3}'))"
+else
+  bad "ellipsoid --ekman: $(tail -3 visc.txt)"
+fi
+expect_error "--ekman with -o" "drop -o" "$BIN" ellipsoid --a 1 --b 1 --c 1 --ekman 1e-2 -o out.h5
+expect_error "--ekman out of range" "--ekman must be in (0, 1)" "$BIN" ellipsoid --a 1 --b 1 --c 1 --ekman -1
+expect_error "--ekman at order 1" "--order >= 2" "$BIN" ellipsoid --a 1 --b 1 --c 1 --ekman 1e-2 --order 1
+expect_error "--target without --ekman" "--target needs --ekman" "$BIN" ellipsoid --a 1 --b 1 --c 1 --target 1 -o out.h5
+expect_error "--target out of range" "each frequency must be in (0, 2)" "$BIN" ellipsoid --a 1 --b 1 --c 1 --ekman 1e-2 --target 3
+expect_error "no table named" "-o/--output is required" "$BIN" ellipsoid --a 1 --b 1 --c 1
+if command -v mpirun > /dev/null; then
+  if mpirun -n 2 "$BIN" "${viscous[@]}" > visc2.txt 2>&1 &&
+     python3 -c "import sys; a, b = (open(f).read().splitlines()[-1].split() for f in sys.argv[1:3]); assert all(abs(float(x) - float(y)) <= 1e-9 * max(1, abs(float(y))) for x, y in list(zip(a, b))[:5]), (a, b)" visc.txt visc2.txt; then
+    ok "ellipsoid --ekman under mpirun -n 2: the serial run's mode"
+  else
+    bad "ellipsoid --ekman under mpirun -n 2: $(tail -2 visc2.txt)"
+  fi
+fi
+
 if [ -f ell.h5 ]; then
   cat > scene.toml <<SCENE
 [system]
