@@ -158,24 +158,46 @@ int VolumeCommands::run(const std::string& command_line) const {
 
 namespace {
 
-// The damped modes' targets: the ellipsoid's spin-over in closed form (any tilt), else the heaviest rows of the ideal
-// table on the same mesh options, made first.
-std::vector<double> viscous_targets(const VolumeTableRequest& ideal, const std::vector<double>& given, int modes) {
-  if (!given.empty()) return given;
-  if (ideal.shape.kind == "ellipsoid") {
-    const auto& d = ideal.shape.dims;
-    return {ellipsoid_modes(d.at("a"), d.at("b"), d.at("c"), ideal.shape.tilt).lambda};
-  }
-  if (is_root_rank()) std::cerr << "3-D viscous: the targets from the ideal table first\n";
-  VolumeTableRequest coarse = ideal;
-  coarse.fields = false;
-  const ModeTable t = make_volume_table(coarse).table;
+// The heaviest rows' frequencies of the ideal table on the same mesh options (one process's work: the ideal 3-D path
+// is sequential).
+std::vector<double> heaviest_ideal_rows(const VolumeTableRequest& ideal, int modes) {
+  VolumeTableRequest request = ideal;
+  request.fields = false;
+  const ModeTable t = make_volume_table(request).table;
   std::vector<std::size_t> order(t.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return t.E[i] > t.E[j]; });
   std::vector<double> out;
   for (std::size_t k = 0; k < order.size() && static_cast<int>(k) < modes; ++k) out.push_back(t.lambda[order[k]]);
   if (out.empty()) throw std::runtime_error("the ideal table has no mode to follow: give --target");
+  return out;
+}
+
+// The damped modes' targets: the ellipsoid's spin-over in closed form (any tilt), else the heaviest ideal rows, made
+// on rank 0 and sent to the others (every rank must follow the same targets; two ranks' meshes could differ).
+std::vector<double> viscous_targets(const VolumeTableRequest& ideal, const std::vector<double>& given, int modes) {
+  if (!given.empty()) return given;
+  if (ideal.shape.kind == "ellipsoid") {
+    const auto& d = ideal.shape.dims;
+    return {ellipsoid_modes(d.at("a"), d.at("b"), d.at("c"), ideal.shape.tilt).lambda};
+  }
+  std::vector<double> out;
+  std::string error;
+  if (is_root_rank()) {
+    std::cerr << "3-D viscous: the targets from the ideal table first\n";
+    try {
+      out = heaviest_ideal_rows(ideal, modes);
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+  }
+  int sizes[2] = {static_cast<int>(out.size()), static_cast<int>(error.size())};
+  MPI_Bcast(sizes, 2, MPI_INT, 0, PETSC_COMM_WORLD);
+  out.resize(sizes[0]);
+  error.resize(sizes[1]);
+  if (sizes[0] > 0) MPI_Bcast(out.data(), sizes[0], MPI_DOUBLE, 0, PETSC_COMM_WORLD);
+  if (sizes[1] > 0) MPI_Bcast(error.data(), sizes[1], MPI_CHAR, 0, PETSC_COMM_WORLD);
+  if (!error.empty()) throw std::runtime_error(error);
   return out;
 }
 

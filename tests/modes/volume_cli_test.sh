@@ -133,6 +133,14 @@ if command -v mpirun > /dev/null; then
   else
     bad "ellipsoid --ekman under mpirun -n 2: $(tail -2 visc2.txt)"
   fi
+  # A volume file's targets come from the ideal table, made on rank 0 alone and shared.
+  box=(volume "$VOLUMES/box.geo" --ekman 1e-2 --order 2 --mesh-size 0.4)
+  if "$BIN" "${box[@]}" > vbox.txt 2>&1 && mpirun -n 2 "$BIN" "${box[@]}" > vbox2.txt 2>&1 &&
+     python3 -c "import sys; a, b = (open(f).read().splitlines()[-1].split() for f in sys.argv[1:3]); assert all(abs(float(x) - float(y)) <= 1e-9 * max(1, abs(float(y))) for x, y in list(zip(a, b))[:5]), (a, b)" vbox.txt vbox2.txt; then
+    ok "volume box.geo --ekman: the ideal table's target, serial = mpirun -n 2 ($(tail -1 vbox.txt | awk '{print $1, $2, $3}'))"
+  else
+    bad "volume box.geo --ekman: $(tail -2 vbox.txt) / $(tail -2 vbox2.txt)"
+  fi
 fi
 
 if [ -f ell.h5 ]; then
