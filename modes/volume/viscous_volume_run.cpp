@@ -9,11 +9,33 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <unistd.h>
+
 #include <fmt/format.h>
 
 namespace rc::modes {
 
 double volume_decay_guess(double ekman) { return std::min(2 * std::sqrt(ekman), 0.5); }
+
+namespace {
+
+// MUMPS's complex factors of a 3-D Taylor–Hood pencil: measured 2026-11-27 (docs/benchmarks.md, "Viscous 3-D"), 66 to
+// 89 kB per unknown serially (P3, P4), 63 kB per unknown and rank on two ranks (127 kB in all). A mesh beyond the
+// machine's memory is refused after meshing in one line, rather than killed by the system half-way.
+void refuse_beyond_memory(int unknowns) {
+  int ranks = 1;
+  MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
+  const double per_unknown = ranks == 1 ? 9e4 : 6.5e4 * ranks;  // all ranks on this machine
+  const double need = per_unknown * unknowns;
+  const double have = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
+  if (have > 0 && need > 0.9 * have)
+    throw std::runtime_error(fmt::format("the 3-D viscous mesh has {} unknowns, about {:.0f} GB for the factorisation "
+                                         "on {} rank(s), more than this machine's {:.0f} GB: use a larger --mesh-size "
+                                         "or --wall-size, or a lower --order",
+                                         unknowns, need / 1e9, ranks, have / 1e9));
+}
+
+}  // namespace
 
 ViscousVolumeResult solve_viscous_volume(const ViscousVolumeRequest& request,
                                          const std::function<void(const std::string&)>& progress) {
@@ -23,6 +45,7 @@ ViscousVolumeResult solve_viscous_volume(const ViscousVolumeRequest& request,
   if (request.targets.empty()) throw std::runtime_error("no target frequency for the damped modes");
   const VolumeTaylorHoodSpace space(
       volume_mesh_on_root([&] { return geometry::mesh_volume(request.shape, request.mesh); }, PETSC_COMM_WORLD));
+  refuse_beyond_memory(space.size());
   say(fmt::format("3-D viscous: {} tetrahedra of order {}, {} unknowns ({} velocity, {} wall nodes)",
                   space.num_elements(), space.order(), space.size(), space.velocity_dofs(), space.wall_nodes()));
   // Lever arms from the centroid: the mesh's own (its volume integrals), as the ideal tables take them.

@@ -126,6 +126,7 @@ expect_error "--ekman at order 1" "--order >= 2" "$BIN" ellipsoid --a 1 --b 1 --
 expect_error "--target without --ekman" "--target needs --ekman" "$BIN" ellipsoid --a 1 --b 1 --c 1 --target 1 -o out.h5
 expect_error "--target out of range" "each frequency must be in (0, 2)" "$BIN" ellipsoid --a 1 --b 1 --c 1 --ekman 1e-2 --target 3
 expect_error "no table named" "-o/--output is required" "$BIN" ellipsoid --a 1 --b 1 --c 1
+expect_error "a viscous mesh beyond the machine's memory" "more than this machine's" "$BIN" ellipsoid --a 1 --b 1 --c 1 --ekman 1e-2 --order 6 --mesh-size 0.12
 if command -v mpirun > /dev/null; then
   if mpirun -n 2 "$BIN" "${viscous[@]}" > visc2.txt 2>&1 &&
      python3 -c "import sys; a, b = (open(f).read().splitlines()[-1].split() for f in sys.argv[1:3]); assert all(abs(float(x) - float(y)) <= 1e-9 * max(1, abs(float(y))) for x, y in list(zip(a, b))[:5]), (a, b)" visc.txt visc2.txt; then
