@@ -3,6 +3,7 @@
 #include "volume_mesh.hpp"
 
 #include "gmsh_session.hpp"
+#include "volume_wall_layers.hpp"
 
 #include <gmsh.h>
 
@@ -64,6 +65,10 @@ void check_options(const MeshOptions& options) {
     throw std::runtime_error("wall mesh size " + number(options.wall_size) + " must be positive and finite (0 = none)");
   if (!std::isfinite(options.wall_growth) || options.wall_growth <= 0 || options.wall_growth > 10)
     throw std::runtime_error("wall size growth " + number(options.wall_growth) + " must be in (0, 10]");
+  if (!std::isfinite(options.wall_layer) || options.wall_layer < 0)
+    throw std::runtime_error("wall layer thickness " + number(options.wall_layer) + " must be positive and finite (0 = none)");
+  if (options.wall_layer > 0 && !(options.wall_size > 0 && options.wall_size <= options.wall_layer))
+    throw std::runtime_error("wall layers need a first layer (--wall-size) in (0, " + number(options.wall_layer) + "]");
 }
 
 // The fluid volume of a built-in shape, with its own axis along z, then tilted about x.
@@ -256,6 +261,11 @@ VolumeMesh mesh_volume(const VolumeShapeSpec& shape, const MeshOptions& options)
   check_volume_shape(shape);
   check_options(options);
   const std::string where = shape.kind == "volume" ? "volume '" + shape.file.string() + "'" : shape.kind;
+  if (options.wall_layer > 0) {
+    VolumeMesh layered = layered_ellipsoid(shape, options);
+    check_jacobians(layered, where);
+    return layered;
+  }
   double size = 0;
   const GmshTets g = mesh_in_gmsh(shape, options, where, size);
   VolumeMesh m;

@@ -26,6 +26,9 @@ void add_common_options(CLI::App* cmd, Common& o) {
   cmd->add_option("--wall-size", o.wall_size, "element size on the wall, graded to --mesh-size inside (the geometry "
                                               "error lives on the wall; docs/volume.md §4; with --ekman 2 Ek^(1/2) "
                                               "unless given, for the Ekman layers, §7)");
+  cmd->add_option("--wall-layer", o.wall_layer, "ellipsoid: anisotropic wall layers this thick in all, the first "
+                                                "--wall-size thick, each next (1 + --wall-growth) times thicker (the "
+                                                "viscous fluid's Ekman layers, docs/volume.md §7); 0 = none");
   cmd->add_option("--wall-growth", o.wall_growth, "growth of the element size per unit distance from the wall "
                                                   "(default 1)");
   cmd->add_option("--floor", o.floor, "keep modes whose coupling tensor's trace exceeds this fraction of the sum "
@@ -110,6 +113,7 @@ VolumeTableRequest VolumeCommands::resolve() const {
   r.mesh.size = o.size;
   r.mesh.wall_size = o.wall_size;
   r.mesh.wall_growth = o.wall_growth;
+  r.mesh.wall_layer = o.wall_layer;
   r.survey.floor = o.floor;
   r.survey.max_columns = o.columns;
   r.fields = o.fields;

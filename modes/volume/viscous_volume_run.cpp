@@ -19,13 +19,14 @@ double volume_decay_guess(double ekman) { return std::min(2 * std::sqrt(ekman), 
 
 namespace {
 
-// MUMPS's complex factors of a 3-D Taylor–Hood pencil: measured 2026-11-27 (docs/benchmarks.md, "Viscous 3-D"), 66 to
-// 89 kB per unknown serially (P3, P4), 63 kB per unknown and rank on two ranks (127 kB in all). A mesh beyond the
-// machine's memory is refused after meshing in one line, rather than killed by the system half-way.
+// MUMPS's complex factors of a 3-D Taylor–Hood pencil: measured 2026-11-27/28 (docs/benchmarks.md, "Viscous 3-D"), 66
+// to 89 kB per unknown serially on isotropic meshes (P3, P4), 125 kB with wall layers (P4: their thin elements fill
+// more; a P4 layered mesh of 140 170 unknowns passed 22 GB), 63 kB per unknown and rank on two ranks (127 kB in all).
+// A mesh beyond the machine's memory is refused after meshing in one line, rather than killed by the system half-way.
 void refuse_beyond_memory(int unknowns) {
   int ranks = 1;
   MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
-  const double per_unknown = ranks == 1 ? 9e4 : 6.5e4 * ranks;  // all ranks on this machine
+  const double per_unknown = ranks == 1 ? 1.3e5 : 9e4 * ranks;  // all ranks on this machine
   const double need = per_unknown * unknowns;
   const double have = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
   if (have > 0 && need > 0.9 * have)

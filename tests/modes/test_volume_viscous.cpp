@@ -10,6 +10,7 @@
 #include "viscous_table.hpp"
 #include "viscous_volume_modes.hpp"
 #include "volume_forms.hpp"
+#include "volume_mesh.hpp"
 
 #include <gtest/gtest.h>
 
@@ -169,4 +170,46 @@ TEST(ViscousVolume, CouplingTensorIsTheForcedResponsesResidue) {
   EXPECT_GT(std::abs(mode.H(1, 2)), 1e-3 * mode.H.cwiseAbs().maxCoeff());  // the tilt couples the axial rotation
   EXPECT_GT((mode.H - mode.H.adjoint()).cwiseAbs().maxCoeff(), 1e-4 * mode.H.cwiseAbs().maxCoeff())
       << "a damped mode's H is not Hermitian: the left vector is not x̄";
+}
+
+// Wall layers (geometry/volume_wall_layers.hpp) on a tilted ellipsoid: the mesh is conforming and ends on the wall — every
+// node of every face that one tetrahedron alone has (the no-slip wall of the Taylor–Hood space) lies on the exact
+// ellipsoid, so no face between the layers and the core is taken for wall — and the first layer is as thin as asked.
+TEST(ViscousVolume, WallLayersConformAndEndOnTheWall) {
+  const double a = 1, b = 0.8, c = 0.6, tilt = 0.3, first = 0.01;
+  geometry::MeshOptions mesh;
+  mesh.order = 3;
+  mesh.size = 0.3;
+  mesh.wall_size = first;
+  mesh.wall_layer = 0.05;
+  mesh.wall_growth = 1.0;
+  const auto m = geometry::mesh_volume({"ellipsoid", {{"a", a}, {"b", b}, {"c", c}}, {}, tilt}, mesh);
+  const VolumeTaylorHoodSpace space(m);
+  const auto on_wall = [&](const std::array<double, 3>& p) {  // back to the ellipsoid's frame: turn by −tilt about x
+    const double y = std::cos(tilt) * p[1] + std::sin(tilt) * p[2], z = -std::sin(tilt) * p[1] + std::cos(tilt) * p[2];
+    return p[0] * p[0] / (a * a) + y * y / (b * b) + z * z / (c * c) - 1;
+  };
+  // The Taylor–Hood space's wall nodes carry no velocity unknown: those are the nodes with no dof in any component.
+  std::vector<char> free(m.nodes.size(), 0);
+  for (std::size_t e = 0; e < space.num_elements(); ++e)
+    for (int i = 0; i < space.velocity_nodes_per_element(); ++i)
+      if (space.velocity(e, 0)[i] >= 0) free[m.tetrahedra[e * m.nodes_per_element + i]] = 1;
+  double worst = 0, nearest_inside = 1;
+  int wall = 0;
+  for (std::size_t n = 0; n < m.nodes.size(); ++n) {
+    const double g = on_wall(m.nodes[n]);
+    if (!free[n]) {
+      ++wall;
+      worst = std::max(worst, std::abs(g));
+    } else {
+      nearest_inside = std::min(nearest_inside, -g);
+    }
+  }
+  std::printf("layered ellipsoid: %zu tetrahedra, %d wall nodes of %zu, wall equation residual %.1e, the nearest "
+              "inner node %.4f inside (level set)\n", m.num_tetrahedra(), wall, m.nodes.size(), worst, nearest_inside);
+  EXPECT_EQ(wall, space.wall_nodes());
+  EXPECT_LE(worst, 1e-12);
+  // The first layer's nodes (order 3: a third of it) sit about first/3 from the wall: the level set there is ~2 d/c.
+  EXPECT_LT(nearest_inside, 2 * first / c);
+  EXPECT_GT(nearest_inside, 0.1 * first / a);
 }
