@@ -96,4 +96,10 @@ TetrahedronNodes tetrahedron_nodes(int order) {
   return t;
 }
 
+std::array<int, 4> tetrahedron_lattice(const std::array<double, 3>& uvw, int order) {
+  const int i = static_cast<int>(std::lround(uvw[0] * order)), j = static_cast<int>(std::lround(uvw[1] * order)),
+            k = static_cast<int>(std::lround(uvw[2] * order));
+  return {order - i - j - k, i, j, k};
+}
+
 }  // namespace rc::geometry

@@ -23,4 +23,9 @@ struct TetrahedronNodes {
 // Throws std::runtime_error if the order is outside 1..6 or gmsh's nodes are not the equispaced lattice.
 TetrahedronNodes tetrahedron_nodes(int order);
 
+// The barycentric lattice weights of a reference node (u, v, w) of that order on vertices 0..3 (vertex 0 at the
+// origin, 1, 2, 3 on the u, v, w axes), summing to the order: a node shared by neighbouring elements has the same
+// weights on the same global vertices whatever their local orientations.
+std::array<int, 4> tetrahedron_lattice(const std::array<double, 3>& uvw, int order);
+
 }  // namespace rc::geometry

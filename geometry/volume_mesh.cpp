@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <unordered_map>
@@ -255,6 +256,25 @@ void check_volume_shape(const VolumeShapeSpec& shape) {
   if (!std::isfinite(shape.tilt)) throw std::runtime_error(shape.kind + ": the tilt must be finite");
   if (shape.kind == "volume" && shape.tilt != 0)
     throw std::runtime_error("volume: a file's cavity is placed by the file itself (no --tilt)");
+}
+
+std::vector<std::pair<std::size_t, int>> wall_faces(const VolumeMesh& m) {
+  const int npe = m.nodes_per_element;
+  const auto face = [&](std::size_t e, int opposite) {
+    std::array<int, 3> f{};
+    for (int v = 0, i = 0; v < 4; ++v)
+      if (v != opposite) f[i++] = m.tetrahedra[e * npe + v];
+    std::sort(f.begin(), f.end());
+    return f;
+  };
+  std::map<std::array<int, 3>, int> count;
+  for (std::size_t e = 0; e < m.num_tetrahedra(); ++e)
+    for (int o = 0; o < 4; ++o) ++count[face(e, o)];
+  std::vector<std::pair<std::size_t, int>> wall;
+  for (std::size_t e = 0; e < m.num_tetrahedra(); ++e)
+    for (int o = 0; o < 4; ++o)
+      if (count[face(e, o)] == 1) wall.emplace_back(e, o);
+  return wall;
 }
 
 VolumeMesh mesh_volume(const VolumeShapeSpec& shape, const MeshOptions& options) {

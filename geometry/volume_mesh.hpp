@@ -43,6 +43,10 @@ VolumeMesh mesh_volume(const VolumeShapeSpec& shape, const MeshOptions& options)
 // The checks of mesh_volume on the shape alone.
 void check_volume_shape(const VolumeShapeSpec& shape);
 
+// The cavity's wall in a mesh: every face that one tetrahedron alone has, as (tetrahedron, its local vertex opposite
+// the face).
+std::vector<std::pair<std::size_t, int>> wall_faces(const VolumeMesh& m);
+
 // The reference tetrahedron (0,0,0),(1,0,0),(0,1,0),(0,0,1) of a given order with a Gauss rule exact to `degree`,
 // in the local node order of VolumeMesh::tetrahedra.
 struct ReferenceTetrahedron {

@@ -8,6 +8,7 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rc::geometry {
@@ -16,12 +17,6 @@ namespace {
 using Point = std::array<double, 3>;
 // A point of the core's wall lattice: its barycentric lattice weights on the core's global vertices, sorted.
 using SurfaceKey = std::vector<std::pair<int, int>>;
-
-std::array<int, 4> lattice_weights(const std::array<double, 3>& uvw, int order) {
-  const int i = static_cast<int>(std::lround(uvw[0] * order)), j = static_cast<int>(std::lround(uvw[1] * order)),
-            k = static_cast<int>(std::lround(uvw[2] * order));
-  return {order - i - j - k, i, j, k};
-}
 
 // Distances from the wall of the layers' boundaries: 0, wall_size, wall_size (2 + g), ... up to wall_layer.
 std::vector<double> layer_depths(const MeshOptions& o) {
@@ -69,59 +64,54 @@ struct CoreWall {
 CoreWall core_wall(const VolumeMesh& m) {
   const int npe = m.nodes_per_element, k = m.order;
   const auto nodes = tetrahedron_nodes(k);
-  std::map<std::array<int, 3>, int> count;
-  const auto face = [&](std::size_t e, int o) {
+  CoreWall w;
+  for (const auto& [e, o] : wall_faces(m)) {
     std::array<int, 3> f{};
     for (int v = 0, i = 0; v < 4; ++v)
       if (v != o) f[i++] = m.tetrahedra[e * npe + v];
-    std::sort(f.begin(), f.end());
-    return f;
-  };
-  for (std::size_t e = 0; e < m.num_tetrahedra(); ++e)
-    for (int o = 0; o < 4; ++o) ++count[face(e, o)];
-  CoreWall w;
-  for (std::size_t e = 0; e < m.num_tetrahedra(); ++e)
-    for (int o = 0; o < 4; ++o) {
-      const auto f = face(e, o);
-      if (count[f] != 1) continue;
-      w.faces.push_back(f);
-      for (int a = 0; a < npe; ++a) {
-        const auto l = lattice_weights(nodes.points[a], k);
-        if (l[o] != 0) continue;
-        SurfaceKey key;
-        for (int v = 0; v < 4; ++v)
-          if (l[v] > 0) key.emplace_back(m.tetrahedra[e * npe + v], l[v]);
-        std::sort(key.begin(), key.end());
-        w.node_of[key] = m.tetrahedra[e * npe + a];
-      }
+    w.faces.push_back(f);
+    for (int a = 0; a < npe; ++a) {
+      const auto l = tetrahedron_lattice(nodes.points[a], k);
+      if (l[o] != 0) continue;
+      SurfaceKey key;
+      for (int v = 0; v < 4; ++v)
+        if (l[v] > 0) key.emplace_back(m.tetrahedra[e * npe + v], l[v]);
+      std::sort(key.begin(), key.end());
+      w.node_of[key] = m.tetrahedra[e * npe + a];
     }
+  }
   return w;
 }
 
 // Builds the layers' tetrahedra onto the core mesh m (nodes appended).
 class LayerBuilder {
  public:
-  LayerBuilder(VolumeMesh& m, const Point& core, const Point& A, const std::vector<double>& depths)
-      : m_(m), core_(core), A_(A), k_(m.order), ref_(tetrahedron_nodes(m.order)) {
+  LayerBuilder(VolumeMesh& m, CoreWall wall, const Point& core, const Point& A, const std::vector<double>& depths)
+      : wall_(std::move(wall)), m_(m), core_(core), A_(A), k_(m.order), ref_(tetrahedron_nodes(m.order)) {
     const double H = depths.back();
     for (std::size_t j = depths.size(); j-- > 0;) fraction_.push_back(1 - depths[j] / H);  // core side first
   }
 
+  // Every prism of every layer (0 at the core) on every core wall face.
+  void build(int layers) {
+    for (const auto& f : wall_.faces)
+      for (int j = 0; j < layers; ++j) prism(f, j);
+  }
+
+ private:
+  using V = std::pair<int, int>;  // a prism's vertex: (core wall vertex, level: k per layer, 0 on the core)
+
+  // The prism over `face` in `layer` as three tetrahedra: with the vertices sorted by number (s0 < s1 < s2), every
+  // side's diagonal runs from the lower-numbered vertex's bottom to the other's top, so neighbours agree.
   void prism(const std::array<int, 3>& face, int layer) {
     std::array<int, 3> s = face;
     std::sort(s.begin(), s.end());
-    using V = std::pair<int, int>;  // (surface vertex, level)
     const int b = layer * k_, t = (layer + 1) * k_;
     const std::array<std::array<V, 4>, 3> tets = {{{{{s[0], b}, {s[1], b}, {s[2], b}, {s[2], t}}},
                                                    {{{s[0], b}, {s[1], b}, {s[1], t}, {s[2], t}}},
                                                    {{{s[0], b}, {s[0], t}, {s[1], t}, {s[2], t}}}}};
     for (auto tet : tets) add_tetrahedron(tet);
   }
-
-  CoreWall wall;
-
- private:
-  using V = std::pair<int, int>;
 
   double level_fraction(int level) const {
     const int layer = level / k_, m = level % k_;
@@ -131,14 +121,14 @@ class LayerBuilder {
 
   Point position(const SurfaceKey& key, int level) {
     auto it = rays_.find(key);
-    if (it == rays_.end()) it = rays_.emplace(key, wall_ray(m_.nodes.at(wall.node_of.at(key)), core_, A_)).first;
+    if (it == rays_.end()) it = rays_.emplace(key, wall_ray(m_.nodes.at(wall_.node_of.at(key)), core_, A_)).first;
     const WallRay& r = it->second;
     const double f = level_fraction(level) * r.length;
     return {r.start[0] + f * r.direction[0], r.start[1] + f * r.direction[1], r.start[2] + f * r.direction[2]};
   }
 
   int node(const SurfaceKey& key, int level) {
-    if (level == 0) return wall.node_of.at(key);
+    if (level == 0) return wall_.node_of.at(key);
     const auto [it, is_new] = made_.try_emplace({key, level}, static_cast<int>(m_.nodes.size()));
     if (is_new) m_.nodes.push_back(position(key, level));
     return it->second;
@@ -157,7 +147,7 @@ class LayerBuilder {
     for (int i = 0; i < 4; ++i) x[i] = position({{v[i].first, k_}}, v[i].second);
     if (volume(x) < 0) std::swap(v[1], v[2]);
     for (int a = 0; a < m_.nodes_per_element; ++a) {
-      const auto l = lattice_weights(ref_.points[a], k_);
+      const auto l = tetrahedron_lattice(ref_.points[a], k_);
       std::map<int, int> weight;  // surface vertex -> lattice weight (sum k)
       int level = 0;
       for (int i = 0; i < 4; ++i) {
@@ -171,6 +161,7 @@ class LayerBuilder {
     }
   }
 
+  CoreWall wall_;
   VolumeMesh& m_;
   Point core_, A_;
   int k_;
@@ -198,11 +189,8 @@ VolumeMesh layered_ellipsoid(const VolumeShapeSpec& shape, const MeshOptions& op
   core.wall_layer = 0;
   core.wall_size = 0;
   VolumeMesh m = mesh_volume(inner, core);
-  LayerBuilder layers(m, {A[0] - H, A[1] - H, A[2] - H}, A, depths);
-  layers.wall = core_wall(m);
-  const int count = static_cast<int>(depths.size()) - 1;
-  for (const auto& f : layers.wall.faces)
-    for (int j = 0; j < count; ++j) layers.prism(f, j);
+  LayerBuilder layers(m, core_wall(m), {A[0] - H, A[1] - H, A[2] - H}, A, depths);
+  layers.build(static_cast<int>(depths.size()) - 1);
   if (shape.tilt != 0) {  // as the built shape turns: about x by the tilt
     const double c = std::cos(shape.tilt), s = std::sin(shape.tilt);
     for (auto& p : m.nodes) p = {p[0], c * p[1] - s * p[2], s * p[1] + c * p[2]};

@@ -15,14 +15,8 @@ namespace {
 // written with global vertex numbers and sorted (as the meridian space does, taylor_hood_space.cpp).
 using NodeKey = std::vector<std::pair<int, int>>;
 
-std::array<int, 4> lattice_weights(const std::array<double, 3>& uvw, int order) {
-  const int i = static_cast<int>(std::lround(uvw[0] * order)), j = static_cast<int>(std::lround(uvw[1] * order)),
-            k = static_cast<int>(std::lround(uvw[2] * order));
-  return {order - i - j - k, i, j, k};  // vertex 0 at the origin, 1, 2, 3 on the u, v, w axes
-}
-
 NodeKey node_key(const int* vertices, const std::array<double, 3>& uvw, int order) {
-  const auto weight = lattice_weights(uvw, order);
+  const auto weight = geometry::tetrahedron_lattice(uvw, order);
   NodeKey key;
   for (int v = 0; v < 4; ++v)
     if (weight[v] > 0) key.emplace_back(vertices[v], weight[v]);
@@ -30,29 +24,15 @@ NodeKey node_key(const int* vertices, const std::array<double, 3>& uvw, int orde
   return key;
 }
 
-// The mesh nodes on the wall: every node of a face that belongs to one tetrahedron only (the local nodes whose
-// barycentric weight on the face's opposite vertex is zero).
+// The mesh nodes on the wall: every node of a face that one tetrahedron alone has (the local nodes whose barycentric
+// weight on the face's opposite vertex is zero).
 std::vector<char> nodes_on_wall(const geometry::VolumeMesh& mesh) {
   const int npe = mesh.nodes_per_element;
-  const std::size_t ne = mesh.num_tetrahedra();
-  std::map<std::array<int, 3>, int> faces;
-  const auto face = [&](std::size_t e, int opposite) {
-    std::array<int, 3> f{};
-    for (int v = 0, k = 0; v < 4; ++v)
-      if (v != opposite) f[k++] = mesh.tetrahedra[e * npe + v];
-    std::sort(f.begin(), f.end());
-    return f;
-  };
-  for (std::size_t e = 0; e < ne; ++e)
-    for (int o = 0; o < 4; ++o) ++faces[face(e, o)];
   const auto nodes = geometry::tetrahedron_nodes(mesh.order);
   std::vector<char> wall(mesh.nodes.size(), 0);
-  for (std::size_t e = 0; e < ne; ++e)
-    for (int o = 0; o < 4; ++o) {
-      if (faces[face(e, o)] != 1) continue;
-      for (int a = 0; a < npe; ++a)
-        if (lattice_weights(nodes.points[a], mesh.order)[o] == 0) wall[mesh.tetrahedra[e * npe + a]] = 1;
-    }
+  for (const auto& [e, o] : geometry::wall_faces(mesh))
+    for (int a = 0; a < npe; ++a)
+      if (geometry::tetrahedron_lattice(nodes.points[a], mesh.order)[o] == 0) wall[mesh.tetrahedra[e * npe + a]] = 1;
   return wall;
 }
 
