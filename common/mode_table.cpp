@@ -286,16 +286,22 @@ void validate_volume(const ModeTable& t) {
                         &v.coupling_re, &v.coupling_im, &v.band_coupling_re, &v.band_coupling_im, &v.band_lambda})
     for (double x : *d)
       if (!std::isfinite(x)) throw std::runtime_error("/volume holds a non-finite value");
-  if (t.viscous() || t.free_surface.present()) throw std::runtime_error("/volume in a viscous or partially filled table");
+  if (t.free_surface.present()) throw std::runtime_error("/volume in a partially filled table");
+  if (t.viscous() && nb > 0) throw std::runtime_error("/volume: band couplings in a viscous table (they are the ideal "
+                                                      "fluid's measure)");
   for (std::size_t m = 0; m < n; ++m) {
     const double* re = &v.coupling_re[9 * m];
     const double* im = &v.coupling_im[9 * m];
-    const double scale = std::max(re[0] + re[4] + re[8], 1e-300);
-    for (int j = 0; j < 3; ++j)
-      for (int k = 0; k < 3; ++k)
-        if (std::abs(re[3 * j + k] - re[3 * k + j]) + std::abs(im[3 * j + k] + im[3 * k + j]) > 1e-9 * scale)
-          throw std::runtime_error("/volume: the coupling tensor of mode " + std::to_string(m) + " is not Hermitian");
-    if (std::abs(re[0] + re[4] - t.E[m]) > 1e-9 * std::max(t.E[m], scale))
+    const double scale = std::max(std::hypot(re[0] + re[4] + re[8], im[0] + im[4] + im[8]), 1e-300);
+    // An ideal mode's H = c cᴴ is Hermitian; a damped mode's (x_R, x_L its right and left vectors) is the rank-one
+    // product of two different vectors (docs/volume.md §7), with the complex E + i·E_imag as its transverse trace.
+    if (!t.viscous())
+      for (int j = 0; j < 3; ++j)
+        for (int k = 0; k < 3; ++k)
+          if (std::abs(re[3 * j + k] - re[3 * k + j]) + std::abs(im[3 * j + k] + im[3 * k + j]) > 1e-9 * scale)
+            throw std::runtime_error("/volume: the coupling tensor of mode " + std::to_string(m) + " is not Hermitian");
+    const std::complex<double> E_c(t.E[m], t.viscous() ? t.E_imag[m] : 0.0), trace(re[0] + re[4], im[0] + im[4]);
+    if (std::abs(trace - E_c) > 1e-9 * std::max(std::abs(E_c), scale))
       throw std::runtime_error("/volume: mode " + std::to_string(m) + "'s E is not H_xx + H_yy");
   }
 }

@@ -4,15 +4,18 @@
 #include "petsc_handles.hpp"
 #include "ellipsoid_closed_form.hpp"
 #include "viscous_volume_run.hpp"
+#include "viscous_volume_table.hpp"
 #include "volume_fields.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include <fmt/format.h>
 #include <fstream>
 #include <iostream>
 #include <numbers>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -39,7 +42,7 @@ void add_common_options(CLI::App* cmd, Common& o) {
                                       "an XDMF companion FILE.xdmf for ParaView (docs/volume.md §5)");
   cmd->add_option("-o,--output", o.output, "mode table to write (HDF5; required without --ekman)");
   cmd->add_option("--ekman", o.ekman, "Ekman number > 0: the viscous fluid's damped modes nearest the targets, with "
-                                      "their coupling tensors, printed (no table yet; docs/volume.md §7)");
+                                      "their coupling tensors, printed, and with -o a viscous table (docs/volume.md §7)");
   cmd->add_option("--target", o.targets, "with --ekman: the ideal frequencies of the modes wanted (default: the "
                                          "ellipsoid's spin-over, or the heaviest rows of the ideal table)");
   cmd->add_option("--modes", o.modes, "with --ekman and no --target: how many of the ideal table's heaviest rows to "
@@ -121,8 +124,6 @@ VolumeTableRequest VolumeCommands::resolve() const {
   if (o.ekman == 0 && o.output.empty()) throw std::runtime_error("-o/--output is required (the table to write)");
   if (o.ekman != 0) {
     if (!(o.ekman > 0 && o.ekman < 1)) throw std::runtime_error("--ekman must be in (0, 1)");
-    if (!o.output.empty()) throw std::runtime_error("--ekman prints the damped modes; a 3-D viscous table is not "
-                                                    "written yet (docs/volume.md §7): drop -o");
     if (o.fields) throw std::runtime_error("--fields is not available with --ekman in 3-D");
     if (o.order < 2) throw std::runtime_error("--ekman needs --order >= 2 (Taylor-Hood elements)");
     for (double t : o.targets)
@@ -135,9 +136,21 @@ VolumeTableRequest VolumeCommands::resolve() const {
   return r;
 }
 
+void VolumeCommands::set_provenance(ModeTable& table, const std::string& command_line) const {
+  table.command_line = command_line;
+  if (ellipsoid_->parsed()) {
+    std::ostringstream os;
+    os << "ellipsoid a=" << a_ << " b=" << b_ << " c=" << c_ << " tilt=" << tilt_degrees_ << "deg";
+    table.geometry_source = os.str();
+  } else {
+    table.geometry_source = std::filesystem::path(file_).filename().string();
+    table.geometry_text = text_of(file_);
+  }
+}
+
 int VolumeCommands::run(const std::string& command_line) const {
   const VolumeTableRequest request = resolve();
-  if (common_.ekman > 0) return run_viscous(request);
+  if (common_.ekman > 0) return run_viscous(request, command_line);
   // Every rank would compute the same table on its own and write the same file: refused until the 3-D matrices are
   // distributed (docs/volume.md §6).
   PetscMPIInt ranks = 1;
@@ -147,15 +160,7 @@ int VolumeCommands::run(const std::string& command_line) const {
                              "without mpirun");
   VolumeTableResult result =
       make_volume_table(request, [](const std::string& line) { if (is_root_rank()) std::cerr << line << "\n"; });
-  result.table.command_line = command_line;
-  if (request.shape.kind == "volume") {
-    result.table.geometry_source = request.shape.file.filename().string();
-    result.table.geometry_text = text_of(request.shape.file.string());
-  } else {
-    std::ostringstream os;
-    os << "ellipsoid a=" << a_ << " b=" << b_ << " c=" << c_ << " tilt=" << tilt_degrees_ << "deg";
-    result.table.geometry_source = os.str();
-  }
+  set_provenance(result.table, command_line);
   write_mode_table(result.table, common_.output, result.fields ? &*result.fields : nullptr);
   if (is_root_rank()) print_report(result);
   return 0;
@@ -163,12 +168,8 @@ int VolumeCommands::run(const std::string& command_line) const {
 
 namespace {
 
-// The heaviest rows' frequencies of the ideal table on the same mesh options (one process's work: the ideal 3-D path
-// is sequential).
-std::vector<double> heaviest_ideal_rows(const VolumeTableRequest& ideal, int modes) {
-  VolumeTableRequest request = ideal;
-  request.fields = false;
-  const ModeTable t = make_volume_table(request).table;
+// The heaviest rows' frequencies of an ideal table.
+std::vector<double> heaviest_rows(const ModeTable& t, int modes) {
   std::vector<std::size_t> order(t.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return t.E[i] > t.E[j]; });
@@ -178,24 +179,9 @@ std::vector<double> heaviest_ideal_rows(const VolumeTableRequest& ideal, int mod
   return out;
 }
 
-// The damped modes' targets: the ellipsoid's spin-over in closed form (any tilt), else the heaviest ideal rows, made
-// on rank 0 and sent to the others (every rank must follow the same targets; two ranks' meshes could differ).
-std::vector<double> viscous_targets(const VolumeTableRequest& ideal, const std::vector<double>& given, int modes) {
-  if (!given.empty()) return given;
-  if (ideal.shape.kind == "ellipsoid") {
-    const auto& d = ideal.shape.dims;
-    return {ellipsoid_modes(d.at("a"), d.at("b"), d.at("c"), ideal.shape.tilt).lambda};
-  }
-  std::vector<double> out;
-  std::string error;
-  if (is_root_rank()) {
-    std::cerr << "3-D viscous: the targets from the ideal table first\n";
-    try {
-      out = heaviest_ideal_rows(ideal, modes);
-    } catch (const std::exception& e) {
-      error = e.what();
-    }
-  }
+// Rank 0's targets sent to the others (every rank must follow the same targets; two ranks' meshes could differ), or
+// its error, so that every rank stops with it.
+std::vector<double> shared_from_root(std::vector<double> out, std::string error) {
   int sizes[2] = {static_cast<int>(out.size()), static_cast<int>(error.size())};
   MPI_Bcast(sizes, 2, MPI_INT, 0, PETSC_COMM_WORLD);
   out.resize(sizes[0]);
@@ -204,6 +190,35 @@ std::vector<double> viscous_targets(const VolumeTableRequest& ideal, const std::
   if (sizes[1] > 0) MPI_Bcast(error.data(), sizes[1], MPI_CHAR, 0, PETSC_COMM_WORLD);
   if (!error.empty()) throw std::runtime_error(error);
   return out;
+}
+
+// The damped modes' targets: those given; else, printing only, the ellipsoid's spin-over in closed form (any tilt);
+// else the heaviest rows of the ideal table on the ideal mesh options, made on rank 0 (the ideal 3-D path is
+// sequential), which keeps it in `ideal_table` for a viscous table's tensors (made whenever one is written).
+std::vector<double> viscous_targets(const VolumeTableRequest& ideal, const std::vector<double>& given, int modes,
+                                    bool table_wanted, std::optional<ModeTable>& ideal_table) {
+  if (!table_wanted && !given.empty()) return given;
+  if (!table_wanted && ideal.shape.kind == "ellipsoid") {
+    const auto& d = ideal.shape.dims;
+    return {ellipsoid_modes(d.at("a"), d.at("b"), d.at("c"), ideal.shape.tilt).lambda};
+  }
+  std::vector<double> out;
+  std::string error;
+  if (is_root_rank()) {
+    std::cerr << "3-D viscous: the ideal table first (" << (table_wanted ? "the cavity's tensors" : "the targets")
+              << ")\n";
+    try {
+      VolumeTableRequest request = ideal;  // on the interior mesh: no wall grading, no layers (the ideal fluid's)
+      request.fields = false;
+      request.mesh.wall_size = 0;
+      request.mesh.wall_layer = 0;
+      ideal_table = make_volume_table(request).table;
+      out = given.empty() ? heaviest_rows(*ideal_table, modes) : given;
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+  }
+  return shared_from_root(std::move(out), std::move(error));
 }
 
 void print_viscous_report(const ViscousVolumeRequest& request, const ViscousVolumeResult& r) {
@@ -223,18 +238,27 @@ void print_viscous_report(const ViscousVolumeRequest& request, const ViscousVolu
 
 }  // namespace
 
-int VolumeCommands::run_viscous(const VolumeTableRequest& ideal) const {
+int VolumeCommands::run_viscous(const VolumeTableRequest& ideal, const std::string& command_line) const {
   ViscousVolumeRequest request;
   request.shape = ideal.shape;
   request.mesh = ideal.mesh;
   // The wall's Ekman layers (about Ek^{1/2} thick) need elements of their order there: 2 Ek^{1/2} unless given
-  // (docs/volume.md §7). The ideal table that gives a file's targets keeps the ideal mesh.
+  // (docs/volume.md §7). The ideal table keeps the ideal mesh.
   if (common_.wall_size == 0) request.mesh.wall_size = 2 * std::sqrt(common_.ekman);
   request.ekman = common_.ekman;
-  request.targets = viscous_targets(ideal, common_.targets, common_.modes);
+  const bool table_wanted = !common_.output.empty();
+  std::optional<ModeTable> ideal_table;
+  request.targets = viscous_targets(ideal, common_.targets, common_.modes, table_wanted, ideal_table);
   const ViscousVolumeResult result =
       solve_viscous_volume(request, [](const std::string& line) { if (is_root_rank()) std::cerr << line << "\n"; });
-  if (is_root_rank()) print_viscous_report(request, result);
+  if (!is_root_rank()) return 0;
+  print_viscous_report(request, result);
+  if (table_wanted) {
+    ModeTable table = viscous_volume_table(*ideal_table, request, result);
+    set_provenance(table, command_line);
+    write_mode_table(table, common_.output);
+    std::cout << table_text(table) << std::flush;
+  }
   return 0;
 }
 

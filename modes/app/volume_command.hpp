@@ -1,6 +1,6 @@
 // The 3-D shape commands of cavity-modes (docs/volume.md): `ellipsoid --a --b --c [--tilt DEG]` and
 // `volume FILE` (.geo/.msh with a 3-D group "fluid", or CAD .step/.stp/.brep), each writing an ideal 3-D mode table,
-// or with --ekman printing the viscous fluid's damped modes and their coupling tensors.
+// or with --ekman the viscous fluid's damped modes and their coupling tensors, printed and, with -o, as a viscous table.
 // The request is resolved here, once; make_volume_table gets only what it needs.
 #pragma once
 
@@ -27,7 +27,8 @@ class VolumeCommands {
 
  private:
   VolumeTableRequest resolve() const;
-  int run_viscous(const VolumeTableRequest& ideal) const;
+  int run_viscous(const VolumeTableRequest& ideal, const std::string& command_line) const;
+  void set_provenance(ModeTable& table, const std::string& command_line) const;
   CLI::App *ellipsoid_ = nullptr, *volume_ = nullptr;
   double a_ = 0, b_ = 0, c_ = 0, tilt_degrees_ = 0;
   std::string file_;

@@ -61,6 +61,7 @@ ViscousVolumeResult solve_viscous_volume(const ViscousVolumeRequest& request,
   out.velocity_unknowns = space.velocity_dofs();
   out.wall_nodes = space.wall_nodes();
   out.elements = space.num_elements();
+  out.mesh_h = space.geometry().mesh().size;
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }

@@ -23,6 +23,7 @@ struct ViscousVolumeResult {
   std::vector<DampedVolumeMode> modes;  // one per target, in the targets' order
   int unknowns = 0, velocity_unknowns = 0, wall_nodes = 0;
   std::size_t elements = 0;
+  double mesh_h = 0;  // the mesh's element size (the mesher's, when the request left it 0)
   double seconds = 0;
 };
 

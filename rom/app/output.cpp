@@ -262,10 +262,15 @@ void write_general_h5(const GeneralChain& g, const GeneralHistory& h, const fs::
   write_dataset(file.id, "t", h.t, N, 0);
   write_complex_rows(file.id, "u", h.u);
   write_complex_rows(file.id, "z", h.z);
-  std::vector<double> body(nm), lam(nm);
-  for (hsize_t l = 0; l < nm; ++l) { body[l] = g.modes[l].body + 1; lam[l] = g.modes[l].lambda; }
+  std::vector<double> body(nm), lam(nm), decay(nm);
+  for (hsize_t l = 0; l < nm; ++l) {
+    body[l] = g.modes[l].body + 1;
+    lam[l] = g.modes[l].lambda.real();
+    decay[l] = g.modes[l].lambda.imag();
+  }
   write_dataset(file.id, "mode_body", body, nm, 0);
   write_dataset(file.id, "mode_lambda", lam, nm, 0);
+  write_dataset(file.id, "mode_decay", decay, nm, 0);
   if (h.spin.size() > 0) {
     const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> spin = h.spin;
     write_dataset(file.id, "spin", std::vector<double>(spin.data(), spin.data() + spin.size()), N, spin.cols());

@@ -3,6 +3,8 @@
 #include "general_system.hpp"
 #include "general_tank.hpp"
 
+#include <algorithm>
+
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -49,7 +51,7 @@ double frame_spin(const Scene& scene) {
   return scene.bodies[first < 0 ? 0 : first].spin;
 }
 
-// The general chain's scope so far: the chain's own inertia, gravity, joints and ideal modal tanks (general_tank.hpp
+// The general chain's scope so far: the chain's own inertia, gravity, joints and modal tanks, ideal or viscous (general_tank.hpp
 // checks each tank's keys), at the spins frame_spin allows.
 void require_general_scene(const Scene& scene) {
   const std::string later = " (docs/rom.md, \"Bodies and tanks without axial symmetry\")";
@@ -215,7 +217,8 @@ GeneralChain build_general_chain(const Scene& scene, TableCache* tables) {
     }
     g.geostrophic.push_back(geostrophic);
   }
-  g.dissipative = cm.has_friction() || (g.axial && cm.axial.D.cwiseAbs().maxCoeff() > 0);
+  g.dissipative = cm.has_friction() || (g.axial && cm.axial.D.cwiseAbs().maxCoeff() > 0) ||
+                  std::any_of(g.modes.begin(), g.modes.end(), [](const GeneralMode& m) { return m.damped(); });
   g.axial_inertia.resize(g.n);
   for (int k = 0; k < g.n; ++k) g.axial_inertia[k] = cm.bodies[k].C;
   std::vector<Eigen::Matrix3d> inertia;

@@ -32,7 +32,7 @@ struct GeneralChain {
   std::vector<Eigen::Matrix3d> geostrophic;  // per body: the 3-D tanks' λ = 0 weight (kg m²), else 0
   std::vector<GeneralMode> modes;            // every tank's kept modes, body by body
   std::vector<std::pair<int, double>> coverage;  // per tank, body by body: (body, its kept share of the sum rule)
-  bool dissipative = false;                  // joint or axial friction: roots leave the real axis
+  bool dissipative = false;                  // joint or axial friction, a viscous tank: roots leave the real axis
   int dim_q() const { return (axial ? 3 : 2) * n; }
   int n_modes() const { return static_cast<int>(modes.size()); }
 };
@@ -55,7 +55,7 @@ bool needs_general_chain(const Scene& scene, TableCache& tables);
 // Bodies at different spins: the frame turns with the bodies without axial symmetry or with tanks, which must share
 // one spin; an axisymmetric body without tanks may spin at its own rate (its coefficients do not depend on its angle,
 // so the chain's stay constant in that frame: a dual-spin craft's rotor). Throws SceneError naming the key for what
-// the general chain does not take yet (two such bodies at different spins — a periodic, Floquet problem —, aerodynamic, external moments and forces, fields, viscous or Galerkin tanks, partial fills), for a body
+// the general chain does not take yet (two such bodies at different spins — a periodic, Floquet problem —, aerodynamic, external moments and forces, fields, Galerkin tanks, partial fills), for a body
 // whose products of inertia with its frozen fluid do not vanish (it cannot spin steadily about its axis), and when the
 // effective inertia with the modes' share taken out is not positive definite.
 GeneralChain build_general_chain(const Scene& scene, TableCache* tables = nullptr);

@@ -16,8 +16,8 @@ struct FluidMaps {
   Eigen::MatrixXd S;       // dim_q × 3n: ω0 on each body's transverse components
   Eigen::MatrixXd N, G;    // 3n × 3n, block diagonal: the fluid that does not follow the body; the geostrophic part
   Eigen::MatrixXd W;       // 3n × 2m: Z ↦ h = Σ 2 Re(z c)
-  Eigen::MatrixXd Chat;    // 2m × 3n: x ↦ (Re, Im) of c̄·x
-  Eigen::MatrixXd Lambda;  // 2m × 2m: z ↦ iλ z
+  Eigen::MatrixXd Chat;    // 2m × 3n: x ↦ (Re, Im) of c_left·x (ideal: c̄·x)
+  Eigen::MatrixXd Lambda;  // 2m × 2m: z ↦ iλ z (λ complex for a damped mode)
 };
 
 FluidMaps fluid_maps(const GeneralChain& g) {
@@ -44,14 +44,17 @@ FluidMaps fluid_maps(const GeneralChain& g) {
   f.Lambda.setZero(2 * m, 2 * m);
   for (int l = 0; l < m; ++l) {
     const GeneralMode& md = g.modes[l];
-    const Eigen::Vector3d re = md.c.real(), im = md.c.imag();
-    f.N.block<3, 3>(3 * md.body, 3 * md.body) += 2 * (re * re.transpose() + im * im.transpose());
+    const Eigen::Vector3d re = md.c.real(), im = md.c.imag(), re_l = md.c_left.real(), im_l = md.c_left.imag();
+    // W Ĉ = 2 Re(c c_leftᵀ): the mode's share of the fluid that does not follow the body (ideal: 2 Re(c cᴴ)).
+    f.N.block<3, 3>(3 * md.body, 3 * md.body) += 2 * (re * re_l.transpose() - im * im_l.transpose());
     f.W.block<3, 1>(3 * md.body, 2 * l) = 2 * re;
     f.W.block<3, 1>(3 * md.body, 2 * l + 1) = -2 * im;
-    f.Chat.block<1, 3>(2 * l, 3 * md.body) = re.transpose();
-    f.Chat.block<1, 3>(2 * l + 1, 3 * md.body) = -im.transpose();
-    f.Lambda(2 * l, 2 * l + 1) = -md.lambda;
-    f.Lambda(2 * l + 1, 2 * l) = md.lambda;
+    f.Chat.block<1, 3>(2 * l, 3 * md.body) = re_l.transpose();
+    f.Chat.block<1, 3>(2 * l + 1, 3 * md.body) = im_l.transpose();
+    // iλ z with λ = λ_r + i·decay: (Re, Im) ↦ (−λ_r Im − decay Re, λ_r Re − decay Im).
+    f.Lambda(2 * l, 2 * l) = f.Lambda(2 * l + 1, 2 * l + 1) = -md.lambda.imag();
+    f.Lambda(2 * l, 2 * l + 1) = -md.lambda.real();
+    f.Lambda(2 * l + 1, 2 * l) = md.lambda.real();
   }
   return f;
 }
@@ -64,7 +67,10 @@ Eigen::MatrixXd effective_inertia(const GeneralChain& g) {
 }
 
 void check_effective_inertia(const Scene& scene, const GeneralChain& g) {
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(effective_inertia(g), Eigen::EigenvaluesOnly);
+  // A viscous mode's share 2 Re(c c_leftᵀ) is not symmetric: its symmetric part positive definite keeps the whole
+  // invertible (xᵀ M x > 0 for every real x ≠ 0), and for the ideal fluid it is the matrix itself.
+  const Eigen::MatrixXd Meff = effective_inertia(g);
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(0.5 * (Meff + Meff.transpose()), Eigen::EigenvaluesOnly);
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> em(g.M, Eigen::EigenvaluesOnly);
   const double lo = es.eigenvalues().minCoeff(), hi = em.eigenvalues().cwiseAbs().maxCoeff();
   if (!(lo > 1e-13 * std::max(hi, 1e-300))) {
@@ -84,7 +90,7 @@ GeneralSystem build_general_system(const GeneralChain& g) {
   const Eigen::MatrixXd Ceff = g.C - Pt * f.N * f.R - f.S * f.G * f.P;
   const Eigen::MatrixXd Keff = (g.K - f.S * f.G * f.R).leftCols(nq);  // the angles ψ never enter
   const Eigen::MatrixXd Bz = Pt * f.W * f.Lambda + f.S * f.W;
-  const Eigen::LDLT<Eigen::MatrixXd> Minv(Meff);
+  const Eigen::PartialPivLU<Eigen::MatrixXd> Minv(Meff);  // not symmetric with a viscous mode's share
   const Eigen::MatrixXd Xq = -Minv.solve(Keff), Xv = -Minv.solve(Ceff), Xz = -Minv.solve(Bz);
   GeneralSystem sys;
   const double stiff = (Xq.rows() > 0) ? Xq.norm() : 0.0;

@@ -3,12 +3,13 @@
 //   δω_t = J q̇_k − ω0 q_k  (J = e_z ×),   δω_z = ψ̇_k,
 // and its fluid's relative angular momentum h_k = Σ_l 2 Re(z_l c_l) − G_k δω_k (G_k the geostrophic weight: fluid at
 // λ = 0 that stays at rest while the body turns) reacts on it as the moment −(ḣ_k + ω0 e_z × h_k), which in the
-// coordinates Q is T_k ḣ_k + S_k h_k with T_k = P_kᵀ and S_k = ω0 on q_k. With each mode's ż = iλ z − c̄·δω̇:
+// coordinates Q is T_k ḣ_k + S_k h_k with T_k = P_kᵀ and S_k = ω0 on q_k. With each mode's ż = iλ z − c_left·δω̇
+// (the ideal fluid's λ real and c_left = c̄; a damped mode's λ complex, general_tank.hpp):
 //   (M − Σ PᵀN P) Q̈ = −(C − Σ(PᵀN R + S G P)) Q̇ − (K − Σ S G R) Q − Σ(PᵀW Λ + S W) Z,
 //   Ż = Λ Z − Ĉ (P Q̈ + R Q̇),
-// N_k = Σ_l 2 Re(c_l c_lᴴ) + G_k (the fluid that does not follow the body: with every mode kept, the frozen fluid's
-// inertia less Zhukovsky's), Z = (Re z_l, Im z_l), W and Ĉ the real forms of z ↦ 2 Re(z c) and x ↦ c̄·x. The state is
-// y = (s q, Q̇, Z) (the axial angles ψ never enter: only their rates) and a root σ (y ∝ e^{iσt}) is σ = −i·eig(B),
+// N_k = Σ_l 2 Re(c_l c_left,lᵀ) + G_k (the fluid that does not follow the body: with every ideal mode kept, the frozen
+// fluid's inertia less Zhukovsky's), Z = (Re z_l, Im z_l), W and Ĉ the real forms of z ↦ 2 Re(z c) and x ↦ c_left·x.
+// The state is y = (s q, Q̇, Z) (the axial angles ψ never enter: only their rates) and a root σ (y ∝ e^{iσt}) is σ = −i·eig(B),
 // in the frame turning with the bodies.
 #pragma once
 

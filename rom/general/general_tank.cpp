@@ -1,5 +1,7 @@
 #include "general_tank.hpp"
 
+#include "chain_model.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -15,12 +17,13 @@ using RowMajor3d = Eigen::Matrix<double, 3, 3, Eigen::RowMajor>;
 
 Eigen::Matrix3d tensor(const std::vector<double>& v) { return Eigen::Map<const RowMajor3d>(v.data()); }
 
-// A row's coupling tensor H: the 3-D table's, or an axisymmetric m = 1 row's E/2 (1, i, 0)(1, i, 0)ᴴ.
+// A row's coupling tensor H: the 3-D table's, or an axisymmetric m = 1 row's E/2 (1, i, 0)(1, −i, 0)ᵀ — with a
+// viscous row's complex E + i·E_imag (the rank-one product of its right and left couplings, docs/volume.md §7).
 Eigen::Matrix3cd row_coupling(const rc::ModeTable& t, std::size_t l) {
   Eigen::Matrix3cd H = Eigen::Matrix3cd::Zero();
   if (!t.volume_cavity.present()) {
-    const Eigen::Vector3cd c = std::sqrt(t.E[l] / 2) * Eigen::Vector3cd(1, std::complex<double>(0, 1), 0);
-    return c * c.adjoint();
+    const std::complex<double> E(t.E[l], t.viscous() ? t.E_imag[l] : 0.0), I(0, 1);
+    return E / 2.0 * Eigen::Vector3cd(1, I, 0) * Eigen::RowVector3cd(1, -I, 0);
   }
   const rc::ModeTable::Volume& v = t.volume_cavity;
   for (int i = 0; i < 3; ++i)
@@ -28,11 +31,17 @@ Eigen::Matrix3cd row_coupling(const rc::ModeTable& t, std::size_t l) {
   return H;
 }
 
-// What the general chain takes of a tank so far: an ideal modal tank, filled.
-void require_ideal_modal(const Scene& scene, const std::string& w, const CavitySpec& cav, const rc::ModeTable& t) {
+// What the general chain takes of a tank so far: a modal tank, filled; a viscous one at its table's Ekman number, and
+// a 3-D viscous one spinning the table's way (spin −ω mirrors the flow, and a 3-D cavity's mirror image is another
+// cavity; an axisymmetric one's is itself: docs/rom.md, "Viscous tanks").
+void require_modal(const Scene& scene, const std::string& w, const CavitySpec& cav, const rc::ModeTable& t, double spin) {
   const std::string later = " is not in the chain without axial symmetry yet (docs/rom.md, \"Bodies and tanks "
                             "without axial symmetry\")";
-  if (cav.viscosity || t.viscous()) fail(scene, w + ".viscosity", "a viscous tank" + later);
+  check_viscosity(scene, w, cav, t, spin);
+  if (t.viscous() && t.volume_cavity.present() && spin < 0)
+    fail(scene, w + ".table", "a 3-D viscous table holds the modes for a positive spin, and spin -w mirrors the "
+                              "cavity: turn the scene's axis over (a positive spin) or mesh the mirrored cavity");
+  if (t.response_fit()) fail(scene, w + ".table", "a response-fit table's poles" + later);
   if (cav.static_correction) fail(scene, w + ".static_correction", "the static correction" + later);
   if (cav.galerkin) fail(scene, w + ".reduction", "the Galerkin reduction" + later);
   if (!cav.companion.empty()) fail(scene, w + ".companion", "a companion table" + later);
@@ -48,7 +57,7 @@ std::vector<int> kept_rows(const Scene& scene, const std::string& w, const Cavit
   const double total = t.sum_rule, tiny = 1e-14 * std::max(std::abs(total), 1e-300);
   std::vector<int> idx;
   for (std::size_t l = 0; l < t.size(); ++l)
-    if (row_coupling(t, l).trace().real() > tiny) idx.push_back(static_cast<int>(l));
+    if (std::abs(row_coupling(t, l).trace()) > tiny) idx.push_back(static_cast<int>(l));
   std::stable_sort(idx.begin(), idx.end(), [&](int i, int j) { return t.E[i] > t.E[j]; });
   const double geostrophic = t.volume_cavity.present() ? tensor(t.volume_cavity.geostrophic_re).topLeftCorner<2, 2>().trace() / 2 : 0.0;
   std::size_t keep = idx.size();
@@ -74,16 +83,37 @@ std::vector<int> kept_rows(const Scene& scene, const std::string& w, const Cavit
   return idx;
 }
 
-// A row's H = Σ_j μ_j u_j u_jᴴ as rank-one couplings c_j = √μ_j u_j (one per discrete copy the row's cluster sums).
-void add_row_modes(int k, int row, const Eigen::Matrix3cd& H, double spin, double lambda_table, double unit,
-                   GeneralTank& tank) {
+// A row's H = Σ_j μ_j u_j u_jᴴ as rank-one couplings c_j = √μ_j u_j, c_left = c̄ (one per discrete copy the row's
+// cluster sums).
+void add_ideal_row_modes(int k, int row, const Eigen::Matrix3cd& H, double spin, double lambda_table, double unit,
+                         GeneralTank& tank) {
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3cd> es(H);
   const double top = es.eigenvalues().maxCoeff();
   for (int j = 0; j < 3; ++j) {
     const double mu = es.eigenvalues()[j];
     if (!(mu > 1e-12 * top)) continue;
-    tank.modes.push_back({k, row, spin * lambda_table, lambda_table, std::sqrt(mu * unit) * es.eigenvectors().col(j)});
+    const Eigen::Vector3cd c = std::sqrt(mu * unit) * es.eigenvectors().col(j);
+    tank.modes.push_back({k, row, spin * lambda_table, lambda_table, 0.0, c, c.conjugate()});
   }
+}
+
+// A damped mode's H = c c_leftᵀ (rank one, docs/volume.md §7) from its largest singular triple H = s u vᴴ:
+// c = √s u, c_left = √s v̄ (any split of the scale between them gives the same chain). Spin −ω (an axisymmetric
+// tank only: require_modal) mirrors the flow (x → −x: H → M H M, M = diag(−1, 1, 1)) and writes it as its conjugate,
+// λ → −λ̄, H → conj(M H M) = Hᴴ for an axisymmetric row (E_c → Ē_c, as (26)'s; docs/rom.md, "Viscous tanks").
+void add_damped_row_mode(const Scene& scene, const std::string& w, int k, int row, Eigen::Matrix3cd H, double spin,
+                         double lambda_table, double decay_table, double unit, GeneralTank& tank) {
+  if (spin < 0) H = H.adjoint().eval();
+  const Eigen::JacobiSVD<Eigen::Matrix3cd> svd(H, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  const Eigen::Vector3d s = svd.singularValues();
+  if (!(s[1] <= 1e-6 * s[0]))
+    fail(scene, w + ".table", "row " + std::to_string(row + 1) + "'s coupling tensor is not of rank one (singular "
+                              "values " + std::to_string(s[0]) + ", " + std::to_string(s[1]) + "): a viscous row is "
+                              "one damped mode");
+  const Eigen::Vector3cd c = std::sqrt(s[0] * unit) * svd.matrixU().col(0);
+  const Eigen::Vector3cd c_left = std::sqrt(s[0] * unit) * svd.matrixV().col(0).conjugate();
+  const std::complex<double> lambda(spin * lambda_table, std::abs(spin) * decay_table);
+  tank.modes.push_back({k, row, lambda, lambda_table, decay_table, c, c_left});
 }
 
 // The frozen fluid about its centroid and its λ = 0 weight, in the table's units.
@@ -113,7 +143,7 @@ double add_band_modes(const Scene& scene, const std::string& w, int k, const rc:
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) H(i, j) = {v.band_coupling_re[9 * b + 3 * i + j], v.band_coupling_im[9 * b + 3 * i + j]};
     if (!(H.trace().real() > 1e-14 * std::abs(t.sum_rule))) continue;
-    add_row_modes(k, static_cast<int>(b), H, scene.bodies[k].spin, v.band_lambda[b], unit, tank);
+    add_ideal_row_modes(k, static_cast<int>(b), H, scene.bodies[k].spin, v.band_lambda[b], unit, tank);
     covered += (H(0, 0) + H(1, 1)).real();
   }
   return covered / t.sum_rule;
@@ -123,7 +153,8 @@ double add_band_modes(const Scene& scene, const std::string& w, int k, const rc:
 
 GeneralTank general_tank(const Scene& scene, int k, const CavitySpec& cav, const std::string& w,
                          const rc::ModeTable& t) {
-  require_ideal_modal(scene, w, cav, t);
+  const double spin = scene.bodies[k].spin;
+  require_modal(scene, w, cav, t, spin);
   const double L = cav.scale, unit = cav.density * std::pow(L, 5);  // ρL⁵: the table's inertias to kg m²
   GeneralTank tank;
   tank.three_d = t.volume_cavity.present();
@@ -143,14 +174,18 @@ GeneralTank general_tank(const Scene& scene, int k, const CavitySpec& cav, const
     tank.coverage = add_band_modes(scene, w, k, t, unit, tank);
   } else {
     double covered = 0;
-    for (const int l : kept_rows(scene, w, cav, t, covered))
-      add_row_modes(k, l, row_coupling(t, l), scene.bodies[k].spin, t.lambda[l], unit, tank);
+    for (const int l : kept_rows(scene, w, cav, t, covered)) {
+      if (t.viscous())
+        add_damped_row_mode(scene, w, k, l, row_coupling(t, l), spin, t.lambda[l], t.decay[l], unit, tank);
+      else
+        add_ideal_row_modes(k, l, row_coupling(t, l), spin, t.lambda[l], unit, tank);
+    }
     tank.coverage = covered;
   }
   if (!tank.inertia.allFinite() || !(tank.mass > 0) || !tank.geostrophic.allFinite())
     fail(scene, w + ".table", "non-physical table (volume or inertia not positive and finite)");
   for (const GeneralMode& md : tank.modes)
-    if (!std::isfinite(md.lambda) || !md.c.allFinite())
+    if (!std::isfinite(std::abs(md.lambda)) || !md.c.allFinite() || !md.c_left.allFinite())
       fail(scene, w + ".table", "a mode scaled to the body's spin and scale overflows double precision (row " +
                                     std::to_string(md.table_row + 1) + ")");
   return tank;

@@ -9,21 +9,28 @@
 
 #include <Eigen/Dense>
 
+#include <complex>
 #include <string>
 #include <vector>
 
 namespace rc::rom {
 
-// One fluid mode of the general chain: the flow z V e^{iλt} in its body's frame (its conjugate at −λ is the same real
+// One fluid mode of the general chain: the flow z V e^{iλt} in its body's frame (its conjugate at −λ̄ is the same real
 // motion), forced by the body's angular acceleration and moving the body through its angular momentum
 // (docs/rom.md, "Bodies and tanks without axial symmetry"):
-//   ż = iλ z − c̄·δω̇,   h = 2 Re(z c)   (c_j = ρ∫(e_j × r)·V, ρ∫|V|² = 1, so that H = c cᴴ in kg m²).
+//   ż = iλ z − c_left·δω̇,   h = 2 Re(z c),   H = c c_leftᵀ.
+// Ideal fluid: λ real, c_left = c̄ (c_j = ρ∫(e_j × r)·V, ρ∫|V|² = 1, so that H = c cᴴ in kg m²). Viscous fluid
+// (docs/volume.md §7): λ = ω_k0 λ_table + i|ω_k0| decay_table decays, and c, c_left come from the right and left
+// eigenvectors (H = (fᵀx)(fᵀy)ᵀ, not Hermitian).
 struct GeneralMode {
-  int body = 0;             // 0-based body index
-  int table_row = 0;        // the table's row it comes from (reduction = "bands": its band)
-  double lambda = 0;        // rad/s: ω_k0 λ_table (Kononov (21))
-  double lambda_table = 0;  // λ / ω_k0 (the table's, for a unit spin)
-  Eigen::Vector3cd c;       // kg^{1/2} m
+  int body = 0;                 // 0-based body index
+  int table_row = 0;            // the table's row it comes from (reduction = "bands": its band)
+  std::complex<double> lambda;  // rad/s: ω_k0 λ_table (Kononov (21)), + i|ω_k0| decay_table for a viscous mode
+  double lambda_table = 0;      // λ / ω_k0 (the table's, for a unit spin)
+  double decay_table = 0;       // the table's decay (viscous tables; 0 for the ideal fluid)
+  Eigen::Vector3cd c;           // kg^{1/2} m
+  Eigen::Vector3cd c_left;      // kg^{1/2} m
+  bool damped() const { return decay_table > 0; }
 };
 
 struct GeneralTank {
@@ -41,8 +48,11 @@ struct GeneralTank {
 // couplings (a row sums a cluster of discrete copies: H = Σ c cᴴ); an axisymmetric m = 1 row is c = √(E/2) (1, i, 0)
 // (H_xy = −i H_xx, measured on a 3-D spheroid's table), its frozen fluid diag(A_f, A_f, C_f) and its λ = 0 weight
 // the axial C_f (ideal fluid does not spin up). Placement: the centroid at (offset, center), or with `origin` the
-// table's origin at (offset, origin). Throws SceneError naming the key for a viscous tank, the static correction, a
-// Galerkin reduction, a companion table or a partially filled tank (not in the general chain yet).
+// table's origin at (offset, origin). A viscous table (axisymmetric or 3-D) needs the scene's viscosity at its Ekman
+// number (check_viscosity); its rows are single damped modes whose H = c c_leftᵀ is of rank one. Throws SceneError
+// naming the key for the static correction, a Galerkin reduction, a companion table, a partially filled tank (not in
+// the general chain yet), a 3-D viscous table on a body spinning the other way (its mirror image is another cavity) or
+// a viscous row whose coupling tensor is not of rank one.
 GeneralTank general_tank(const Scene& scene, int k, const CavitySpec& cav, const std::string& where,
                          const rc::ModeTable& t);
 

@@ -18,28 +18,6 @@ namespace {
   throw SceneError(s.file.string() + ": " + key + ": " + cause);
 }
 
-// A viscous table needs the scene's viscosity, and the two must give the same Ekman number
-// Ek = nu/(|omega_k0| L^2) within kEkmanTolerance (docs/rom.md, "Viscous tanks"); an ideal table takes none.
-void check_viscosity(const Scene& scene, const std::string& w, const CavitySpec& cav, const rc::ModeTable& t,
-                     double omega) {
-  const std::string name = cav.table.filename().string();
-  if (cav.viscosity && !t.viscous())
-    fail(scene, w + ".viscosity", "given, but " + name + " is an ideal-fluid table (no ekman); make a viscous one with cavity-modes --ekman");
-  if (!t.viscous()) return;
-  std::ostringstream os;
-  if (!cav.viscosity) {
-    os << name << " is a viscous table (ekman = " << t.ekman << "): give the fluid's viscosity (m^2/s)";
-    fail(scene, w + ".viscosity", os.str());
-  }
-  if (omega == 0) fail(scene, w + ".viscosity", "a viscous tank needs a spinning body (Ek = nu/(omega L^2))");
-  const double ek = *cav.viscosity / (std::abs(omega) * cav.scale * cav.scale);
-  if (std::abs(ek / t.ekman - 1) > kEkmanTolerance) {
-    os << "Ek = nu/(|spin| scale^2) = " << ek << " but " << name << " was made for ekman = " << t.ekman
-       << " (they must agree to " << kEkmanTolerance * 100 << " %)";
-    fail(scene, w + ".viscosity", os.str());
-  }
-}
-
 // The table of body k's cavity: from the cache when there is one, else read here into `own`.
 const rc::ModeTable& cavity_table(const Scene& scene, const std::string& w, const CavitySpec& cav, TableCache* tables,
                                   rc::ModeTable& own) {
@@ -258,6 +236,27 @@ void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
 }
 
 }  // namespace
+
+void check_viscosity(const Scene& scene, const std::string& w, const CavitySpec& cav, const rc::ModeTable& t,
+                     double omega) {
+  const std::string name = cav.table.filename().string();
+  if (cav.viscosity && !t.viscous())
+    fail(scene, w + ".viscosity", "given, but " + name + " is an ideal-fluid table (no ekman); make a viscous one with cavity-modes --ekman");
+  if (!t.viscous()) return;
+  std::ostringstream os;
+  if (!cav.viscosity) {
+    os << name << " is a viscous table (ekman = " << t.ekman << "): give the fluid's viscosity (m^2/s)";
+    fail(scene, w + ".viscosity", os.str());
+  }
+  if (omega == 0) fail(scene, w + ".viscosity", "a viscous tank needs a spinning body (Ek = nu/(omega L^2))");
+  const double ek = *cav.viscosity / (std::abs(omega) * cav.scale * cav.scale);
+  if (std::abs(ek / t.ekman - 1) > kEkmanTolerance) {
+    os << "Ek = nu/(|spin| scale^2) = " << ek << " but " << name << " was made for ekman = " << t.ekman
+       << " (they must agree to " << kEkmanTolerance * 100 << " %)";
+    fail(scene, w + ".viscosity", os.str());
+  }
+}
+
 
 const rc::ModeTable& TableCache::get(const std::filesystem::path& file) {
   const std::string key = file.lexically_normal().string();

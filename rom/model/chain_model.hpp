@@ -136,6 +136,12 @@ Eigen::VectorXcd initial_fluid(const Scene& scene, int n_modes);
 // Relative tolerance between the scene's Ek = nu/(|omega_k0| L^2) and a viscous table's ekman.
 inline constexpr double kEkmanTolerance = 0.01;
 
+// A viscous table needs the scene's viscosity, and the two must give the same Ekman number
+// Ek = nu/(|omega_k0| L^2) within kEkmanTolerance (docs/rom.md, "Viscous tanks"); an ideal table takes none. Throws
+// SceneError naming `key`.viscosity otherwise.
+void check_viscosity(const Scene& scene, const std::string& key, const CavitySpec& cav, const rc::ModeTable& t,
+                     double omega);
+
 // Mode tables read once and kept, for callers that build many models from one scene (sweeps).
 // get() reads a file the first time it is asked for (throws what rc::read_mode_table throws);
 // once every table is in, concurrent get() calls only read the map.

@@ -2,6 +2,7 @@
 
 #include "general_chain.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -57,6 +58,11 @@ std::vector<ChainBody> volume_tank_bodies(const Scene& scene, TableCache& tables
     body.A = principal(0, 0);
     body.B = principal(1, 1);
     body.C = principal(2, 2);
+    for (const GeneralTank& t : g.tanks)
+      if (std::any_of(t.modes.begin(), t.modes.end(), [](const GeneralMode& m) { return m.damped(); }))
+        throw SceneError(scene.file.string() + ": " + body_key(k) + ".cavity.viscosity: a viscous tank in a body "
+                         "without axial symmetry is not in the nonlinear chain yet (its damped modes' rates would follow "
+                         "the spin; docs/rom.md, \"Nonlinear chain\"): use the linear model");
     body.volume = turned_liquid(g, R, scene.bodies[k].spin);
     const Eigen::Matrix3d effective = principal - body.volume.share;
     const double smallest = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(effective).eigenvalues().minCoeff();

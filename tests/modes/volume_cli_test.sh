@@ -120,7 +120,38 @@ then
 else
   bad "ellipsoid --ekman: $(tail -3 visc.txt)"
 fi
-expect_error "--ekman with -o" "drop -o" "$BIN" ellipsoid --a 1 --b 1 --c 1 --ekman 1e-2 -o out.h5
+# With -o, a viscous 3-D table (docs/volume.md §7): the printed mode as its row, its coupling tensor's transverse
+# trace the complex E, the cavity's tensors those of the ideal table of the same cavity (sum rule = inertia − Zhukovsky).
+if "$BIN" "${viscous[@]}" -o vtab.h5 > vtab.txt 2>&1 && "$BIN" info vtab.h5 > vinfo.txt 2>&1 &&
+   /usr/bin/python3 - vtab.h5 vtab.txt <<'PY'
+import sys, h5py, numpy as np
+f = h5py.File(sys.argv[1])
+lines = open(sys.argv[2]).read().splitlines()
+row = [float(x) for x in lines[lines.index(next(l for l in lines if l.startswith("# target"))) + 1].split()]
+assert abs(f.attrs["ekman"] - 1e-2) < 1e-15 and int(f.attrs["version"]) == 4
+lam, decay, E, Ei = (f["modes/" + k][()] for k in ("lambda", "decay", "E", "E_imag"))
+assert lam.shape == (1,) and abs(lam[0] - row[1]) < 1e-9 and abs(decay[0] - row[2]) < 1e-9, (lam, decay, row)
+H = (f["volume/coupling_re"][()] + 1j * f["volume/coupling_im"][()]).reshape(3, 3)
+assert abs(H[0, 0] + H[1, 1] - (E[0] + 1j * Ei[0])) < 1e-12, H
+s = np.linalg.svd(H, compute_uv=False)
+assert s[1] < 1e-8 * s[0], s                       # one damped mode: rank one
+v = f["volume"]
+P = v["inertia"][()] - v["zhukovsky"][()]
+assert np.abs(P - v["sum_rule"][()]).max() < 1e-12 and 0 < E[0] < f.attrs["sum_rule"], (P, E)
+PY
+then
+  ok "ellipsoid --ekman -o: a viscous 3-D table, its row the printed mode, H of rank one, info reads it"
+else
+  bad "ellipsoid --ekman -o: $(tail -3 vtab.txt) $(tail -2 vinfo.txt)"
+fi
+# Two targets that find one damped mode: refused after the solve (its progress lines before), no table.
+rm -f out.h5
+if ! "$BIN" "${viscous[@]}" --target 1.372 --target 1.3721 -o out.h5 > dup.txt 2> dup.err &&
+   tail -1 dup.err | grep -q "found the same damped mode" && [ ! -e out.h5 ]; then
+  ok "two targets, one damped mode: refused, no table ($(tail -1 dup.err))"
+else
+  bad "two targets, one damped mode: $(tail -2 dup.err)"
+fi
 expect_error "--ekman out of range" "--ekman must be in (0, 1)" "$BIN" ellipsoid --a 1 --b 1 --c 1 --ekman -1
 expect_error "--ekman at order 1" "--order >= 2" "$BIN" ellipsoid --a 1 --b 1 --c 1 --ekman 1e-2 --order 1
 expect_error "--target without --ekman" "--target needs --ekman" "$BIN" ellipsoid --a 1 --b 1 --c 1 --target 1 -o out.h5
@@ -136,6 +167,13 @@ if command -v mpirun > /dev/null; then
     ok "ellipsoid --ekman under mpirun -n 2: the serial run's mode"
   else
     bad "ellipsoid --ekman under mpirun -n 2: $(tail -2 visc2.txt)"
+  fi
+  # The table under mpirun: written once, by rank 0, with the serial table's row.
+  if mpirun -n 2 "$BIN" "${viscous[@]}" -o vtab2.h5 > vtab2.txt 2>&1 &&
+     /usr/bin/python3 -c 'import h5py; a, b = h5py.File("vtab.h5"), h5py.File("vtab2.h5"); assert all(abs(a["modes/" + k][0] - b["modes/" + k][0]) <= 1e-9 * abs(a["modes/" + k][0]) for k in ("lambda", "decay", "E", "E_imag"))'; then
+    ok "ellipsoid --ekman -o under mpirun -n 2: the serial table's row"
+  else
+    bad "ellipsoid --ekman -o under mpirun -n 2: $(tail -2 vtab2.txt)"
   fi
   # A volume file's targets come from the ideal table, made on rank 0 alone and shared.
   box=(volume "$VOLUMES/box.geo" --ekman 1e-2 --order 2 --mesh-size 0.4)

@@ -13,10 +13,13 @@
 #include "bench.hpp"
 #include "chain_model.hpp"
 #include "closed_form_tables.hpp"
+#include "general_chain.hpp"
+#include "general_system.hpp"
 #include "nonlinear_run.hpp"
 #include "propagation.hpp"
 #include "scene.hpp"
 #include "spectrum.hpp"
+#include "rom_test_util.hpp"
 
 #include <gtest/gtest.h>
 
@@ -28,6 +31,8 @@
 
 namespace rc::rom {
 namespace {
+using test::root_set_distance;
+using test::spectral_radius;
 using cd = std::complex<double>;
 
 constexpr double kSpin = 100, kScale = 0.05, kDensity = 1000;
@@ -84,6 +89,37 @@ TEST(ViscousChain, OneBodyRootsAreTheClosedForm) {
 
 // Growth (prolate shell) and decay (oblate) of the nutation from a Dormand-Prince run of (26) itself, fitted
 // on the tilt rate (the root 0, a steady tilt, drops out of u-dot) once the fluid's root has died out.
+// The chain without axial symmetry (rom/general/) takes a viscous row as one damped mode with H = c c_leftᵀ of rank one
+// (for an axisymmetric table c = √(E_c/2)(1, i, 0), c_left = √(E_c/2)(1, −i, 0); docs/rom.md, "Bodies and tanks
+// without axial symmetry"). On this body, a heavy top here, it must give (26)'s roots carried into the frame turning at
+// the spin (each σ of (26) is the pair σ + ω0 and −(σ̄ + ω0) there), at either spin sign, and (26)'s verdict.
+TEST(ViscousChain, GeneralChainIsTheAxisymmetricChain) {
+  for (const char* ek : kEkmans)
+    for (const double spin : {kSpin, -kSpin})
+      for (const double C_shell : {0.001, 0.004}) {
+        Scene s = body_scene(ek, C_shell);
+        s.bodies[0].spin = spin;
+        s.bodies[0].com = 0.05;
+        s.gravity = 9.81;
+        const Spectrum axisymmetric = compute_spectrum(build_model(s));
+        std::vector<cd> expected;
+        for (const Root& r : axisymmetric.roots) {
+          expected.push_back(r.sigma + spin);
+          expected.push_back(-std::conj(r.sigma) - spin);
+        }
+        const GeneralChain g = build_general_chain(s);
+        const GeneralSpectrum general = general_spectrum(g);
+        const double err = root_set_distance(general.roots, expected, spectral_radius(expected));
+        std::printf("  Ek = %s, spin %+g, C_shell %g: %zu roots, the general chain's against (26)'s: %.1e of the "
+                    "spectral radius; verdicts %s, %s\n", ek, spin, C_shell, general.roots.size(), err,
+                    axisymmetric.stable ? "stable" : "unstable", general.verdict.stable ? "stable" : "unstable");
+        EXPECT_LT(err, 1e-10);
+        EXPECT_TRUE(g.dissipative);
+        EXPECT_EQ(general.verdict.stable, axisymmetric.stable);
+        EXPECT_NEAR(general.verdict.growth, axisymmetric.growth, 1e-9 * spectral_radius(expected));
+      }
+}
+
 TEST(ViscousChain, TrajectoryGrowthRateIsTheRoot) {
   for (const double C_shell : {0.001, 0.004}) {
     const std::string run = "[run]\nt_end = 6.0\noutput_step = 0.001\nmethod = \"rk45\"\ntolerance = 1e-13\n";

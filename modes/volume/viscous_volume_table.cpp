@@ -1,0 +1,85 @@
+#include "viscous_volume_table.hpp"
+
+#include <cmath>
+#include <complex>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace rc::modes {
+namespace {
+
+// Two targets may lead the shift-and-invert search to one damped mode: refused, as its weight would count twice.
+void refuse_repeated_modes(const ViscousVolumeRequest& request, const ViscousVolumeResult& result) {
+  for (std::size_t i = 0; i < result.modes.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (std::abs(result.modes[i].lambda - result.modes[j].lambda) < 1e-8 * std::abs(result.modes[i].lambda))
+        throw std::runtime_error(fmt::format("the targets {} and {} found the same damped mode (lambda = {:.8f}): give "
+                                             "each mode's target once",
+                                             request.targets[j], request.targets[i], result.modes[i].lambda.real()));
+}
+
+// One damped mode as a row: E + i·E_imag = H_xx + H_yy (the axisymmetric viscous table's complex coupling, docs/volume.md
+// §7), a + i·a_imag = √((E + i·E_imag)/2) with N2 = 1, κ = 2/λ.
+void add_row(ModeTable& t, const DampedVolumeMode& m) {
+  const std::complex<double> E = m.H(0, 0) + m.H(1, 1), a = std::sqrt(E / 2.0);
+  t.lambda.push_back(m.lambda.real());
+  t.decay.push_back(m.lambda.imag());
+  t.kappa.push_back(2 / m.lambda.real());
+  t.E.push_back(E.real());
+  t.E_imag.push_back(E.imag());
+  t.a.push_back(a.real());
+  t.a_imag.push_back(a.imag());
+  t.N2.push_back(1);
+  t.residual.push_back(std::max(m.residual, m.left_residual));
+  t.members.push_back(1);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      t.volume_cavity.coupling_re.push_back(m.H(i, j).real());
+      t.volume_cavity.coupling_im.push_back(m.H(i, j).imag());
+    }
+}
+
+}  // namespace
+
+ModeTable viscous_volume_table(const ModeTable& ideal, const ViscousVolumeRequest& request,
+                               const ViscousVolumeResult& result) {
+  refuse_repeated_modes(request, result);
+  ModeTable t;
+  t.shape = ideal.shape;
+  t.dimensions = ideal.dimensions;
+  t.volume = ideal.volume;
+  t.centroid_z = ideal.centroid_z;
+  t.A_f = ideal.A_f;
+  t.C_f = ideal.C_f;
+  t.J_zh = ideal.J_zh;
+  t.sum_rule = ideal.sum_rule;
+  t.volume_cavity = ideal.volume_cavity;
+  t.volume_cavity.coupling_re.clear();
+  t.volume_cavity.coupling_im.clear();
+  // The bands are the ideal fluid's measure (docs/volume.md §5): a viscous table keeps its damped rows only.
+  t.volume_cavity.band_coupling_re.clear();
+  t.volume_cavity.band_coupling_im.clear();
+  t.volume_cavity.band_lambda.clear();
+  t.fe_order = request.mesh.order;
+  t.mesh_h = result.mesh_h;
+  t.mesh_h_wall = request.mesh.wall_size;
+  t.ndof = result.unknowns;
+  t.ekman = request.ekman;
+  t.solver = "3-D Taylor-Hood P" + std::to_string(request.mesh.order) + "/P" + std::to_string(request.mesh.order - 1) +
+             ", shift-and-invert Krylov-Schur on the damped pencil, left vectors by transposed inverse iteration "
+             "(docs/volume.md §7); tensors from the ideal table (" + std::to_string(ideal.ndof) + " unknowns)";
+  t.tolerance = ideal.tolerance;
+  t.normalisation = "3-D viscous: H = (f^T x)(f^T y)^T, y^T M x = 1 (docs/volume.md §7); E + i E_imag = H_xx + H_yy, "
+                    "a + i a_imag = sqrt((E + i E_imag)/2), N2 = 1";
+  for (const DampedVolumeMode& m : result.modes) add_row(t, m);
+  double kept = 0;
+  for (double E : t.E) kept += E;
+  t.coverage = t.sum_rule > 0 ? kept / t.sum_rule : 0;
+  t.wall_seconds = result.seconds + ideal.wall_seconds;
+  t.sort_by_energy();
+  t.validate();
+  return t;
+}
+
+}  // namespace rc::modes
