@@ -148,7 +148,7 @@ fi
 # c = 0.5) meshed in 3-D (P3) and its meridian viscous table (the axisymmetric solver, converged to 1e-10), both at
 # Ek = 1e-2, in one spinning top with B != A (the chain without axial symmetry for both). Every root of the meridian
 # table's chain has one of the 3-D table's within 1e-4 of the spectral radius, the nutation's decay rate agrees to
-# 2e-3 and the verdicts agree (measured 2026-11-28: 2.2e-5, 7.8e-4; the 3-D P4 table 2.5e-7, 2.7e-4).
+# 2e-3 and the verdicts agree (measured 2026-11-28: 2.1e-5, 7.7e-4; a 3-D P4 table, h 0.3, 1.2e-6, 2.7e-4).
 cat > vtop.toml <<SCENE
 [system]
 kind = "fixed"
