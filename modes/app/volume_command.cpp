@@ -5,6 +5,8 @@
 #include "ellipsoid_closed_form.hpp"
 #include "viscous_volume_run.hpp"
 #include "viscous_volume_table.hpp"
+#include "viscous_volume_response.hpp"
+#include "cavity_response.hpp"
 #include "volume_fields.hpp"
 
 #include <algorithm>
@@ -18,6 +20,8 @@
 #include <optional>
 #include <sstream>
 #include <stdexcept>
+
+#include <unistd.h>
 
 namespace rc::modes {
 namespace {
@@ -47,6 +51,10 @@ void add_common_options(CLI::App* cmd, Common& o) {
                                          "ellipsoid's spin-over, or the heaviest rows of the ideal table)");
   cmd->add_option("--modes", o.modes, "with --ekman and no --target: how many of the ideal table's heaviest rows to "
                                       "follow (default 1)");
+  cmd->add_option("--sigma", o.sigma, "with --ekman: the forced response's frequencies instead of modes, FROM:TO:N or a "
+                                      "list of complex numbers (0.5+0.1i,1.2): the 3 x 3 response tensor to -o FILE.csv "
+                                      "(docs/volume.md §7)");
+  cmd->add_option("--sigma-imag", o.sigma_imag, "with --sigma FROM:TO:N: the imaginary part of every frequency");
 }
 
 std::string text_of(const std::string& file) {
@@ -122,6 +130,7 @@ VolumeTableRequest VolumeCommands::resolve() const {
   r.fields = o.fields;
   if (o.fields) check_companion_name(o.output);
   if (o.ekman == 0 && o.output.empty()) throw std::runtime_error("-o/--output is required (the table to write)");
+  if (o.sigma.empty() && o.sigma_imag != 0) throw std::runtime_error("--sigma-imag needs --sigma");
   if (o.ekman != 0) {
     if (!(o.ekman > 0 && o.ekman < 1)) throw std::runtime_error("--ekman must be in (0, 1)");
     if (o.fields) throw std::runtime_error("--fields is not available with --ekman in 3-D");
@@ -129,8 +138,13 @@ VolumeTableRequest VolumeCommands::resolve() const {
     for (double t : o.targets)
       if (!(t > 0 && t < 2)) throw std::runtime_error("--target: each frequency must be in (0, 2)");
     if (o.modes < 1 || o.modes > 20) throw std::runtime_error("--modes must be in 1..20");
+    if (!o.sigma.empty() && !o.targets.empty()) throw std::runtime_error("--sigma computes no modes: drop --target");
+    if (!o.sigma.empty() && std::filesystem::path(o.output).extension() != ".csv")
+      throw std::runtime_error("--sigma writes the response as CSV: give -o FILE.csv");
   } else if (!o.targets.empty()) {
     throw std::runtime_error("--target needs --ekman");
+  } else if (!o.sigma.empty()) {
+    throw std::runtime_error("--sigma needs --ekman (the ideal fluid's response is its table's modal sum)");
   }
 
   return r;
@@ -150,6 +164,7 @@ void VolumeCommands::set_provenance(ModeTable& table, const std::string& command
 
 int VolumeCommands::run(const std::string& command_line) const {
   const VolumeTableRequest request = resolve();
+  if (common_.ekman > 0 && !common_.sigma.empty()) return run_response(request);
   if (common_.ekman > 0) return run_viscous(request, command_line);
   // Every rank would compute the same table on its own and write the same file: refused until the 3-D matrices are
   // distributed (docs/volume.md §6).
@@ -259,6 +274,69 @@ int VolumeCommands::run_viscous(const VolumeTableRequest& ideal, const std::stri
     write_mode_table(table, common_.output);
     std::cout << table_text(table) << std::flush;
   }
+  return 0;
+}
+
+namespace {
+
+// CSV: `#` lines (the method, the definition), then sigma_re, sigma_im and the nine complex entries R_jk (row-major:
+// xx, xy, xz, yx, ...), each as _re and _im. Written to a temporary name and renamed, so no half-written file is left.
+void write_volume_response(const std::string& path, const std::vector<std::complex<double>>& sigmas,
+                           const ViscousVolumeResponse& r, const std::string& method) {
+  const std::filesystem::path tmp = path + ".tmp" + std::to_string(::getpid());
+  {
+    std::ofstream out(tmp);
+    if (!out) throw std::runtime_error("cannot create " + path);
+    out << "# cavity-modes 3-D response: " << method << "\n# R_jk(sigma) = f_j^T (sigma M - A)^-1 f_k = sum_l H_jk/"
+        << "(sigma - lambda_l) + const, the moment about e_j per unit rotation about e_k (docs/volume.md, section 7)\n";
+    out << "sigma_re,sigma_im";
+    const char* axis = "xyz";
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) out << ",R_" << axis[j] << axis[k] << "_re,R_" << axis[j] << axis[k] << "_im";
+    out << "\n";
+    out.precision(17);
+    for (std::size_t i = 0; i < sigmas.size(); ++i) {
+      out << sigmas[i].real() << ',' << sigmas[i].imag();
+      for (int j = 0; j < 3; ++j)
+        for (int k = 0; k < 3; ++k) out << ',' << r.R[i](j, k).real() << ',' << r.R[i](j, k).imag();
+      out << '\n';
+    }
+    if (!out) {
+      out.close();
+      std::error_code ec;
+      std::filesystem::remove(tmp, ec);
+      throw std::runtime_error("cannot write " + path);
+    }
+  }
+  std::filesystem::rename(tmp, path);
+}
+
+}  // namespace
+
+int VolumeCommands::run_response(const VolumeTableRequest& ideal) const {
+  ViscousVolumeResponseRequest request;
+  request.shape = ideal.shape;
+  request.mesh = ideal.mesh;
+  if (common_.wall_size == 0) request.mesh.wall_size = 2 * std::sqrt(common_.ekman);  // as for the damped modes
+  request.ekman = common_.ekman;
+  request.sigmas = parse_sigma_spec(common_.sigma, common_.sigma_imag);
+  const ViscousVolumeResponse r =
+      viscous_volume_response(request, [](const std::string& line) { if (is_root_rank()) std::cerr << line << "\n"; });
+  if (!is_root_rank()) return 0;
+  const std::string method = fmt::format("viscous fluid at Ek = {}, forced solves on 3-D Taylor-Hood P{}/P{} ({} "
+                                         "tetrahedra, {} unknowns, wall size {})", request.ekman, request.mesh.order,
+                                         request.mesh.order - 1, r.elements, r.unknowns, request.mesh.wall_size);
+  write_volume_response(common_.output, request.sigmas, r, method);
+  std::cout << "3-D response: " << method << ", " << r.seconds << " s\n"
+            << "# sigma  R_m1 = (R_xx + i R_xy - i R_yx + R_yy)/2 (re, im)  R_zz (re, im)  -> " << common_.output << "\n";
+  const std::complex<double> I(0, 1);
+  for (std::size_t i = 0; i < request.sigmas.size(); ++i) {
+    const Eigen::Matrix3cd& R = r.R[i];
+    const std::complex<double> m1 = 0.5 * (R(0, 0) + I * R(0, 1) - I * R(1, 0) + R(1, 1));
+    std::cout << fmt::format("{:.6f}{:+.6f}i  {:.10e} {:+.10e}  {:.6e} {:+.6e}\n", request.sigmas[i].real(),
+                             request.sigmas[i].imag(), m1.real(), m1.imag(), R(2, 2).real(), R(2, 2).imag());
+  }
+  std::cout << std::flush;
   return 0;
 }
 

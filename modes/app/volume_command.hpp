@@ -1,6 +1,7 @@
 // The 3-D shape commands of cavity-modes (docs/volume.md): `ellipsoid --a --b --c [--tilt DEG]` and
 // `volume FILE` (.geo/.msh with a 3-D group "fluid", or CAD .step/.stp/.brep), each writing an ideal 3-D mode table,
-// or with --ekman the viscous fluid's damped modes and their coupling tensors, printed and, with -o, as a viscous table.
+// or with --ekman the viscous fluid's damped modes and their coupling tensors, printed and, with -o, as a viscous table,
+// or with --ekman and --sigma its forced response (a CSV).
 // The request is resolved here, once; make_volume_table gets only what it needs.
 #pragma once
 
@@ -28,6 +29,7 @@ class VolumeCommands {
  private:
   VolumeTableRequest resolve() const;
   int run_viscous(const VolumeTableRequest& ideal, const std::string& command_line) const;
+  int run_response(const VolumeTableRequest& ideal) const;
   void set_provenance(ModeTable& table, const std::string& command_line) const;
   CLI::App *ellipsoid_ = nullptr, *volume_ = nullptr;
   double a_ = 0, b_ = 0, c_ = 0, tilt_degrees_ = 0;
@@ -41,6 +43,8 @@ class VolumeCommands {
     double ekman = 0;             // > 0: the viscous fluid's damped modes (docs/volume.md §7)
     std::vector<double> targets;  // their ideal frequencies (default: the closed form's, or the ideal table's)
     int modes = 1;
+    std::string sigma;            // with --ekman: the forced response's frequencies (docs/volume.md §7), no modes
+    double sigma_imag = 0;
   } common_;
 };
 

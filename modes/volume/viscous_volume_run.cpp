@@ -39,24 +39,34 @@ void refuse_beyond_memory(int unknowns, bool layered) {
 
 }  // namespace
 
+ViscousVolumeSystem viscous_volume_system(const geometry::VolumeShapeSpec& shape, const geometry::MeshOptions& mesh,
+                                          double ekman, const std::function<void(const std::string&)>& progress) {
+  if (!(ekman > 0)) throw std::runtime_error("the Ekman number must be > 0");
+  ViscousVolumeSystem out;
+  out.space = std::make_unique<VolumeTaylorHoodSpace>(
+      volume_mesh_on_root([&] { return geometry::mesh_volume(shape, mesh); }, PETSC_COMM_WORLD));
+  const VolumeTaylorHoodSpace& space = *out.space;
+  refuse_beyond_memory(space.size(), mesh.wall_layer > 0);
+  if (progress)
+    progress(fmt::format("3-D viscous: {} tetrahedra of order {}, {} unknowns ({} velocity, {} wall nodes)",
+                         space.num_elements(), space.order(), space.size(), space.velocity_dofs(), space.wall_nodes()));
+  // Lever arms from the centroid: the mesh's own (its volume integrals), as the ideal tables take them.
+  const VolumeIntegrals fluid = integrate_volume(space.geometry());
+  out.forms = assemble_viscous_volume_forms(space, fluid.centroid, ekman, PETSC_COMM_WORLD);
+  return out;
+}
+
 ViscousVolumeResult solve_viscous_volume(const ViscousVolumeRequest& request,
                                          const std::function<void(const std::string&)>& progress) {
   const auto t0 = std::chrono::steady_clock::now();
   const auto say = [&](const std::string& line) { if (progress) progress(line); };
-  if (!(request.ekman > 0)) throw std::runtime_error("the Ekman number must be > 0");
   if (request.targets.empty()) throw std::runtime_error("no target frequency for the damped modes");
-  const VolumeTaylorHoodSpace space(
-      volume_mesh_on_root([&] { return geometry::mesh_volume(request.shape, request.mesh); }, PETSC_COMM_WORLD));
-  refuse_beyond_memory(space.size(), request.mesh.wall_layer > 0);
-  say(fmt::format("3-D viscous: {} tetrahedra of order {}, {} unknowns ({} velocity, {} wall nodes)",
-                  space.num_elements(), space.order(), space.size(), space.velocity_dofs(), space.wall_nodes()));
-  // Lever arms from the centroid: the mesh's own (its volume integrals), as the ideal tables take them.
-  const VolumeIntegrals fluid = integrate_volume(space.geometry());
-  const auto forms = assemble_viscous_volume_forms(space, fluid.centroid, request.ekman, PETSC_COMM_WORLD);
+  const ViscousVolumeSystem system = viscous_volume_system(request.shape, request.mesh, request.ekman, progress);
+  const VolumeTaylorHoodSpace& space = *system.space;
   ViscousVolumeResult out;
   for (double lambda0 : request.targets) {
     say(fmt::format("3-D viscous: the damped mode near lambda = {:.6f}", lambda0));
-    out.modes.push_back(damped_volume_modes(forms, {lambda0, volume_decay_guess(request.ekman)}, 1).at(0));
+    out.modes.push_back(damped_volume_modes(system.forms, {lambda0, volume_decay_guess(request.ekman)}, 1).at(0));
   }
   out.unknowns = space.size();
   out.velocity_unknowns = space.velocity_dofs();

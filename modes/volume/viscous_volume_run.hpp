@@ -7,6 +7,7 @@
 #include "volume_mesh.hpp"
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,16 @@ struct ViscousVolumeResult {
 // The decay rate guessed for a target (Im τ): the Ekman layers' order of magnitude, 2 Ek^{1/2} (at most 0.5), as the
 // meridian tables guess it (viscous_table.cpp).
 double volume_decay_guess(double ekman);
+
+// A request's Taylor–Hood space and forms: meshed on rank 0 and shared, refused in one line when its factorisation
+// would not fit in memory, assembled over PETSC_COMM_WORLD with the lever arms from the mesh's own centroid. Both the
+// damped modes and the forced response (viscous_volume_response.hpp) start from it.
+struct ViscousVolumeSystem {
+  std::unique_ptr<VolumeTaylorHoodSpace> space;
+  ViscousVolumeForms forms;
+};
+ViscousVolumeSystem viscous_volume_system(const geometry::VolumeShapeSpec& shape, const geometry::MeshOptions& mesh,
+                                          double ekman, const std::function<void(const std::string&)>& progress);
 
 // Throws std::runtime_error with a one-line cause (bad mesh, solver failure). Collective on PETSC_COMM_WORLD.
 ViscousVolumeResult solve_viscous_volume(const ViscousVolumeRequest& request,

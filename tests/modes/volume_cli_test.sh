@@ -187,6 +187,29 @@ print("roots %.1e of the spectral radius, nutation decay %.1e" % (gap, decay))' 
 else
   bad "the viscous 3-D table in chain-rom: $(tail -2 sph3d.txt sphm.txt vtop.err)"
 fi
+# The forced response on the same 3-D spheroid mesh against the meridian solver's response of that spheroid: the m = 1
+# part (R_xx + i R_xy - i R_yx + R_yy)/2 is the meridian R(sigma) (docs/volume.md §7), R_xz, R_zx vanish (m = 1 and
+# m = 0 do not couple), at five frequencies across the spin-over's resonance.
+if "$BIN" ellipsoid --a 1 --b 1 --c 0.5 --ekman 1e-2 --order 3 --mesh-size 0.3 --wall-size 0.08 --sigma 0.5:2.5:5 -o r3d.csv > r3d.txt 2>&1 &&
+   "$BIN" response spheroid --a 1 --c 0.5 --ekman 1e-2 --sigma 0.5:2.5:5 -o rm.csv > rm.txt 2>&1 &&
+   g=$(/usr/bin/python3 -c '
+import numpy as np
+v = np.genfromtxt("r3d.csv", delimiter=",", names=True, skip_header=2)
+m = np.genfromtxt("rm.csv", delimiter=",", names=True, skip_header=2)
+R = lambda jk: v["R_%s_re" % jk] + 1j * v["R_%s_im" % jk]
+m1 = 0.5 * (R("xx") + 1j * R("xy") - 1j * R("yx") + R("yy"))
+ref = m["R_re"] + 1j * m["R_im"]
+err = np.max(np.abs(m1 - ref)) / np.max(np.abs(ref))
+off = max(np.max(np.abs(R("xz"))), np.max(np.abs(R("zx")))) / np.max(np.abs(ref))
+assert np.allclose(v["sigma_re"], m["sigma_re"]) and err < 1e-3 and off < 1e-3, (err, off)
+print("%.1e (R_xz, R_zx %.0e)" % (err, off))'); then
+  ok "ellipsoid --ekman --sigma: the 3-D spheroid's m = 1 response against the meridian solver's to $g"
+else
+  bad "ellipsoid --ekman --sigma: $(tail -2 r3d.txt rm.txt)"
+fi
+expect_error "--sigma without --ekman" "--sigma needs --ekman" "$BIN" ellipsoid --a 1 --b 1 --c 1 --sigma 0.5:1:3 -o r.csv
+expect_error "--sigma to an .h5 name" "give -o FILE.csv" "$BIN" ellipsoid --a 1 --b 1 --c 1 --ekman 1e-2 --sigma 0.5:1:3 -o r.h5
+expect_error "--sigma with --target" "drop --target" "$BIN" ellipsoid --a 1 --b 1 --c 1 --ekman 1e-2 --sigma 0.5:1:3 --target 1 -o r.csv
 # Two targets that find one damped mode: refused after the solve (its progress lines before), no table.
 rm -f out.h5
 if ! "$BIN" "${viscous[@]}" --target 1.372 --target 1.3721 -o out.h5 > dup.txt 2> dup.err &&
