@@ -148,10 +148,13 @@ std::vector<Vector3d> chain_axes(const ChainState& s) {
 namespace {
 
 // Solves M x = rhs in place. M is symmetric positive definite for any attitude (a kinetic energy): Cholesky, which also
-// says when it is not. A viscous tank without its static correction adds a skew part (fluid_inertia): then LU.
+// says when it is not. A viscous tank without its static correction adds a skew part (fluid_inertia), a damped 3-D
+// mode a non-symmetric share (volume_fluid.hpp): then LU.
 void solve_mass_system(const NonlinearChain& c, const Eigen::MatrixXd& M, Eigen::VectorXd& rhs) {
   bool symmetric = true;
-  for (const auto& b : c.bodies) symmetric = symmetric && b.fluid_E_total.imag() == 0;
+  for (const auto& b : c.bodies)
+    symmetric = symmetric && b.fluid_E_total.imag() == 0 &&
+                (b.volume.share - b.volume.share.transpose()).cwiseAbs().maxCoeff() == 0;
   if (symmetric) {
     thread_local Eigen::LLT<Eigen::MatrixXd> llt;
     llt.compute(M);

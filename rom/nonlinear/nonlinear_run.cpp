@@ -262,11 +262,19 @@ class NonlinearRecorder {
 // error is within run.tolerance; `step` is the next trial step, carried from call to call.
 void advance_to(const NonlinearChain& chain, ChainState& s, ChainRates& rates, double& t, double t_out, double& step,
                 const RunSpec& run, NonlinearHistory& out) {
-  while (t < t_out) {
+  // The steps' sum can fall short of t_out by a rounding (0.05 reached as 0.049999999999999996): what is left below
+  // 1e-13 of the time is no step, else the run would stop there for a step too small (found on a free spacecraft).
+  const double tiny = 1e-13 * std::max(1.0, t_out);
+  const auto number = [](double x) {
+    std::ostringstream os;
+    os << x;
+    return os.str();
+  };
+  while (t_out - t > tiny) {
     const double hh = std::min(step, t_out - t);
-    if (hh < 1e-13 * std::max(1.0, t_out))
-      throw std::runtime_error("nonlinear run: the step fell below 1e-13 s at t = " + std::to_string(t) +
-                               ": run.tolerance " + std::to_string(run.tolerance) + " cannot be met in double "
+    if (hh < tiny)
+      throw std::runtime_error("nonlinear run: the step fell below 1e-13 s at t = " + number(t) +
+                               ": run.tolerance " + number(run.tolerance) + " cannot be met in double "
                                "precision; raise it");
     const ChainStepDP dp = chain_step_dp(chain, s, rates, hh);
     double rate_scale = 1;
@@ -274,7 +282,7 @@ void advance_to(const NonlinearChain& chain, ChainState& s, ChainRates& rates, d
     const double err = std::max(dp.attitude_error, dp.rate_error / rate_scale);
     if (++out.base.integrator_steps > kMaxIntegratorSteps)
       throw std::runtime_error("nonlinear run: more than " + std::to_string(long(kMaxIntegratorSteps)) +
-                               " steps for run.tolerance " + std::to_string(run.tolerance) +
+                               " steps for run.tolerance " + number(run.tolerance) +
                                "; raise the tolerance or shorten t_end");
     if (!std::isfinite(err)) throw std::runtime_error("nonlinear run: the state is not finite at t = " + std::to_string(t));
     const double factor = err > 0 ? 0.9 * std::pow(run.tolerance / err, 0.2) : 4.0;

@@ -18,7 +18,8 @@ VolumeFluid turned_liquid(const GeneralBody& b, const Eigen::Matrix3d& R, double
   for (const GeneralTank& t : b.tanks) {
     v.geostrophic += R.transpose() * t.geostrophic * R;
     for (const GeneralMode& m : t.modes)
-      v.modes.push_back({R.transpose().cast<std::complex<double>>() * m.c, m.lambda_table});
+      v.modes.push_back({R.transpose().cast<std::complex<double>>() * m.c,
+                         R.transpose().cast<std::complex<double>>() * m.c_left, m.lambda_table, m.decay_table});
   }
   v.finish();
   return v;
@@ -58,12 +59,12 @@ std::vector<ChainBody> volume_tank_bodies(const Scene& scene, TableCache& tables
     body.A = principal(0, 0);
     body.B = principal(1, 1);
     body.C = principal(2, 2);
+    body.volume = turned_liquid(g, R, scene.bodies[k].spin);
+    // A viscous tank's decay holds at its table's Ekman number, that is at the scene's spin (nonlinear_run.hpp reports
+    // how far the spin moved from it).
     for (const GeneralTank& t : g.tanks)
       if (std::any_of(t.modes.begin(), t.modes.end(), [](const GeneralMode& m) { return m.damped(); }))
-        throw SceneError(scene.file.string() + ": " + body_key(k) + ".cavity.viscosity: a viscous tank in a body "
-                         "without axial symmetry is not in the nonlinear chain yet (its damped modes' rates would follow "
-                         "the spin; docs/rom.md, \"Nonlinear chain\"): use the linear model");
-    body.volume = turned_liquid(g, R, scene.bodies[k].spin);
+        body.table_spin = scene.bodies[k].spin;
     const Eigen::Matrix3d effective = principal - body.volume.share;
     const double smallest = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(effective).eigenvalues().minCoeff();
     if (!(smallest > 1e-12 * principal.trace())) {
