@@ -251,6 +251,42 @@ if command -v mpirun > /dev/null; then
   fi
 fi
 
+# A user's volume file end to end with the viscous fluid: its viscous table (two damped modes, targets from the ideal
+# table) carries the ideal table's tensors (box.h5 above, the same mesh options: equal to rounding), and chain-rom
+# takes it (the chain without axial symmetry, both damped modes kept, a growth-based verdict).
+cat > vboxscene.toml <<SCENE
+[system]
+kind = "fixed"
+gravity = 9.81
+[[body]]
+mass = 2.0
+A = 0.05
+B = 0.04
+C = 0.08
+com = 0.05
+spin = 100.0
+[body.cavity]
+table = "vbox.h5"
+density = 1000.0
+scale = 0.04
+center = 0.05
+viscosity = 1.6e-3
+SCENE
+if [ -f box.h5 ] && "$BIN" volume "$VOLUMES/box.geo" --ekman 1e-2 --order 2 --mesh-size 0.4 --modes 2 -o vbox.h5 > vboxt.txt 2>&1 &&
+   "$ROM" spectrum vboxscene.toml --json > vbox.json 2> vbox.err && g=$(/usr/bin/python3 -c '
+import h5py, json, math, numpy as np
+v, i = h5py.File("vbox.h5"), h5py.File("box.h5")
+for k in ("inertia", "zhukovsky", "sum_rule", "geostrophic_re", "centroid"):
+    assert np.abs(v["volume/" + k][()] - i["volume/" + k][()]).max() < 1e-12, k
+assert v["modes/E"].shape == (2,) and min(v["modes/decay"][()]) > 0
+d = json.load(open("vbox.json"))
+assert d["model"] == "general" and d["fluid_modes"] == 2 and math.isfinite(d["growth"]), d
+print("%s, growth %.4g 1/s" % ("stable" if d["stable"] else "unstable", d["growth"]))'); then
+  ok "volume box.geo --ekman --modes 2 -o: the ideal table's tensors, chain-rom spectrum $g"
+else
+  bad "volume box.geo viscous table in chain-rom: $(tail -2 vboxt.txt vbox.err)"
+fi
+
 if [ -f ell.h5 ]; then
   cat > scene.toml <<SCENE
 [system]
