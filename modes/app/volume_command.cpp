@@ -51,6 +51,11 @@ void add_common_options(CLI::App* cmd, Common& o) {
                                          "ellipsoid's spin-over, or the heaviest rows of the ideal table)");
   cmd->add_option("--modes", o.modes, "with --ekman and no --target: how many of the ideal table's heaviest rows to "
                                       "follow (default 1)");
+  cmd->add_option("--convergence-tolerance", o.convergence_tolerance,
+                  "with --ekman -o: a row is flagged converged if its lambda and E change by less than this against the "
+                  "same order on a mesh 1.5 times as coarse (default 1e-3)");
+  cmd->add_flag("--no-convergence-check", [&o](std::int64_t) { o.convergence_check = false; },
+                "with --ekman -o: skip the comparison with the coarser mesh");
   cmd->add_option("--sigma", o.sigma, "with --ekman: the forced response's frequencies instead of modes, FROM:TO:N or a "
                                       "list of complex numbers (0.5+0.1i,1.2): the 3 x 3 response tensor to -o FILE.csv "
                                       "(docs/volume.md §7)");
@@ -138,6 +143,8 @@ VolumeTableRequest VolumeCommands::resolve() const {
     for (double t : o.targets)
       if (!(t > 0 && t < 2)) throw std::runtime_error("--target: each frequency must be in (0, 2)");
     if (o.modes < 1 || o.modes > 20) throw std::runtime_error("--modes must be in 1..20");
+    if (!(o.convergence_tolerance > 0 && o.convergence_tolerance < 1))
+      throw std::runtime_error("--convergence-tolerance must be in (0, 1)");
     if (!o.sigma.empty() && !o.targets.empty()) throw std::runtime_error("--sigma computes no modes: drop --target");
     if (!o.sigma.empty() && std::filesystem::path(o.output).extension() != ".csv")
       throw std::runtime_error("--sigma writes the response as CSV: give -o FILE.csv");
@@ -264,12 +271,27 @@ int VolumeCommands::run_viscous(const VolumeTableRequest& ideal, const std::stri
   const bool table_wanted = !common_.output.empty();
   std::optional<ModeTable> ideal_table;
   request.targets = viscous_targets(ideal, common_.targets, common_.modes, table_wanted, ideal_table);
-  const ViscousVolumeResult result =
-      solve_viscous_volume(request, [](const std::string& line) { if (is_root_rank()) std::cerr << line << "\n"; });
+  const auto progress = [](const std::string& line) { if (is_root_rank()) std::cerr << line << "\n"; };
+  const ViscousVolumeResult result = solve_viscous_volume(request, progress);
+  // The convergence check: the modes just found, again on a mesh 1.5 times as coarse (interior and wall sizes; the
+  // layers' first thickness), each from its fine mode's frequency, so that row i meets row i.
+  ViscousVolumeCheck check;
+  std::optional<ViscousVolumeResult> coarse;
+  if (table_wanted && common_.convergence_check) {
+    ViscousVolumeRequest c = request;
+    c.mesh.size = 1.5 * result.mesh_h;
+    c.mesh.wall_size = 1.5 * request.mesh.wall_size;
+    c.targets.clear();
+    for (const auto& m : result.modes) c.targets.push_back(m.lambda.real());
+    progress("3-D viscous: the convergence check on a mesh 1.5 times as coarse");
+    coarse = solve_viscous_volume(c, progress);
+    check = {&*coarse, fmt::format("the same order on a mesh 1.5 times as coarse (h = {:.4g}, wall {:.4g})",
+                                   c.mesh.size, c.mesh.wall_size), common_.convergence_tolerance};
+  }
   if (!is_root_rank()) return 0;
   print_viscous_report(request, result);
   if (table_wanted) {
-    ModeTable table = viscous_volume_table(*ideal_table, request, result);
+    ModeTable table = viscous_volume_table(*ideal_table, request, result, check);
     set_provenance(table, command_line);
     write_mode_table(table, common_.output);
     std::cout << table_text(table) << std::flush;

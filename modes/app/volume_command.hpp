@@ -43,6 +43,8 @@ class VolumeCommands {
     double ekman = 0;             // > 0: the viscous fluid's damped modes (docs/volume.md §7)
     std::vector<double> targets;  // their ideal frequencies (default: the closed form's, or the ideal table's)
     int modes = 1;
+    bool convergence_check = true;      // with --ekman -o: the modes again on a mesh 1.5 times as coarse
+    double convergence_tolerance = 1e-3;
     std::string sigma;            // with --ekman: the forced response's frequencies (docs/volume.md §7), no modes
     double sigma_imag = 0;
   } common_;

@@ -93,6 +93,12 @@ std::string table_text(const ModeTable& t) {
 std::string convergence_note(const ModeTable& t) {
   const auto failed = std::count(t.converged.begin(), t.converged.end(), 0);
   if (t.converged.empty() || failed == 0) return {};
+  if (t.viscous() && t.volume_cavity.present())  // a 3-D viscous table: no refinement rounds, no 3-D response table
+    return fmt::format("note: {} of {} rows did not converge (lambda or E moved more than {:g} against {}): each row's "
+                       "dlambda and dE estimate its error from above (about ten times it, measured on a spheroid: "
+                       "docs/volume.md section 7); a smaller --mesh-size and --wall-size or a higher --order move them, "
+                       "as far as memory allows; the response R_jk(sigma) (--sigma) needs no modes.",
+                       failed, t.size(), t.convergence_tolerance, t.convergence_reference);
   const std::string trusted =
       t.viscous() ? "the damped modes marked yes and, for any shape, the response R(sigma) of `cavity-modes response` "
                     "(it converges where single modes do not); `--refine N` makes the table again on finer meshes "

@@ -40,10 +40,25 @@ void add_row(ModeTable& t, const DampedVolumeMode& m) {
     }
 }
 
+// The convergence columns, row by row in the targets' order (before the rows are sorted).
+void add_convergence(ModeTable& t, const ViscousVolumeResult& fine, const ViscousVolumeCheck& check) {
+  if (check.coarse->modes.size() != fine.modes.size())
+    throw std::runtime_error("the convergence check found another number of modes than the table");
+  for (std::size_t i = 0; i < fine.modes.size(); ++i) {
+    const DampedVolumeMode &f = fine.modes[i], &c = check.coarse->modes[i];
+    const std::complex<double> Ef = f.H(0, 0) + f.H(1, 1), Ec = c.H(0, 0) + c.H(1, 1);
+    t.dlambda.push_back(std::abs(f.lambda - c.lambda) / std::abs(f.lambda));
+    t.dE.push_back(std::abs(Ef - Ec) / std::abs(Ef));
+    t.converged.push_back(t.dlambda.back() < check.tolerance && t.dE.back() < check.tolerance ? 1 : 0);
+  }
+  t.convergence_reference = check.reference;
+  t.convergence_tolerance = check.tolerance;
+}
+
 }  // namespace
 
 ModeTable viscous_volume_table(const ModeTable& ideal, const ViscousVolumeRequest& request,
-                               const ViscousVolumeResult& result) {
+                               const ViscousVolumeResult& result, const ViscousVolumeCheck& check) {
   refuse_repeated_modes(request, result);
   ModeTable t;
   t.shape = ideal.shape;
@@ -73,10 +88,11 @@ ModeTable viscous_volume_table(const ModeTable& ideal, const ViscousVolumeReques
   t.normalisation = "3-D viscous: H = (f^T x)(f^T y)^T, y^T M x = 1 (docs/volume.md §7); E + i E_imag = H_xx + H_yy, "
                     "a + i a_imag = sqrt((E + i E_imag)/2), N2 = 1";
   for (const DampedVolumeMode& m : result.modes) add_row(t, m);
+  if (check.coarse) add_convergence(t, result, check);
   double kept = 0;
   for (double E : t.E) kept += E;
   t.coverage = t.sum_rule > 0 ? kept / t.sum_rule : 0;
-  t.wall_seconds = result.seconds + ideal.wall_seconds;
+  t.wall_seconds = result.seconds + ideal.wall_seconds + (check.coarse ? check.coarse->seconds : 0.0);
   t.sort_by_energy();
   t.validate();
   return t;

@@ -7,12 +7,23 @@
 #include "mode_table.hpp"
 #include "viscous_volume_run.hpp"
 
+#include <string>
+
 namespace rc::modes {
+
+// The same modes on a coarser mesh, for the table's convergence columns: each row's relative change of λ + i·decay
+// (dlambda) and of E + i·E_imag (dE) against the coarse mode of the same target, converged when both are below
+// `tolerance` (docs/volume.md §7, "The viscous table and the chain").
+struct ViscousVolumeCheck {
+  const ViscousVolumeResult* coarse = nullptr;  // none: no convergence columns
+  std::string reference;                        // the coarse mesh, in words
+  double tolerance = 0;
+};
 
 // `ideal`: the ideal 3-D table of the same cavity (cavity-modes ellipsoid / volume without --ekman). Throws
 // std::runtime_error when two targets found the same damped mode (it would be counted twice) or the table breaks one
 // of its identities (ModeTable::validate).
 ModeTable viscous_volume_table(const ModeTable& ideal, const ViscousVolumeRequest& request,
-                               const ViscousVolumeResult& result);
+                               const ViscousVolumeResult& result, const ViscousVolumeCheck& check = {});
 
 }  // namespace rc::modes

@@ -138,9 +138,13 @@ assert s[1] < 1e-8 * s[0], s                       # one damped mode: rank one
 v = f["volume"]
 P = v["inertia"][()] - v["zhukovsky"][()]
 assert np.abs(P - v["sum_rule"][()]).max() < 1e-12 and 0 < E[0] < f.attrs["sum_rule"], (P, E)
+# The convergence check against the mesh 1.5 times as coarse: its columns, and the flag their rule gives.
+dl, dE, conv = (f["modes/" + k][()] for k in ("dlambda", "dE", "converged"))
+tol = f.attrs["convergence_tolerance"]
+assert tol == 1e-3 and 0 < dl[0] < 0.1 and 0 < dE[0] < 0.1 and conv[0] == (dl[0] < tol and dE[0] < tol), (dl, dE, conv)
 PY
 then
-  ok "ellipsoid --ekman -o: a viscous 3-D table, its row the printed mode, H of rank one, info reads it"
+  ok "ellipsoid --ekman -o: a viscous 3-D table, its row the printed mode, H of rank one, its convergence columns, info reads it"
 else
   bad "ellipsoid --ekman -o: $(tail -3 vtab.txt) $(tail -2 vinfo.txt)"
 fi
