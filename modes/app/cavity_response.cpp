@@ -1,5 +1,6 @@
 #include "cavity_response.hpp"
 
+#include "atomic_file.hpp"
 #include "cavity_table.hpp"
 #include "discretisation.hpp"
 #include "free_surface.hpp"
@@ -31,7 +32,6 @@
 #include <limits>
 #include <sstream>
 #include <stdexcept>
-#include <unistd.h>
 
 namespace rc::modes {
 namespace {
@@ -717,11 +717,8 @@ std::vector<std::complex<double>> parse_sigma_spec(const std::string& spec, doub
 }
 
 void write_response(const std::string& path, const std::vector<std::complex<double>>& sigma, const CavityResponse& R) {
-  const std::filesystem::path tmp = path + ".tmp" + std::to_string(::getpid());
   const bool offset = !R.R_fg.empty();
-  {
-    std::ofstream out(tmp);
-    if (!out) throw std::runtime_error("cannot create " + path);
+  write_text_atomically(path, [&](std::ostream& out) {
     out << "# cavity-modes response: " << R.method << "\n# R(sigma) = sum_l E_l/(sigma - lambda_l) (docs/viscous.md, "
         << "\"Response function\")\n";
     if (offset)
@@ -734,14 +731,7 @@ void write_response(const std::string& path, const std::vector<std::complex<doub
       if (offset) out << ',' << R.R_fg[k].real() << ',' << R.R_fg[k].imag() << ',' << R.R_gg[k].real() << ',' << R.R_gg[k].imag();
       out << '\n';
     }
-    if (!out) {
-      out.close();
-      std::error_code ec;
-      std::filesystem::remove(tmp, ec);
-      throw std::runtime_error("cannot write " + path);
-    }
-  }
-  std::filesystem::rename(tmp, path);
+  });
 }
 
 }  // namespace rc::modes

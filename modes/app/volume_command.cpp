@@ -1,5 +1,6 @@
 #include "volume_command.hpp"
 
+#include "atomic_file.hpp"
 #include "mode_table_report.hpp"
 #include "petsc_handles.hpp"
 #include "ellipsoid_closed_form.hpp"
@@ -20,8 +21,6 @@
 #include <optional>
 #include <sstream>
 #include <stdexcept>
-
-#include <unistd.h>
 
 namespace rc::modes {
 namespace {
@@ -302,13 +301,11 @@ int VolumeCommands::run_viscous(const VolumeTableRequest& ideal, const std::stri
 namespace {
 
 // CSV: `#` lines (the method, the definition), then sigma_re, sigma_im and the nine complex entries R_jk (row-major:
-// xx, xy, xz, yx, ...), each as _re and _im. Written to a temporary name and renamed, so no half-written file is left.
+// xx, xy, xz, yx, ...), each as _re and _im. Written to a temporary name and renamed (atomic_file.hpp), so no
+// half-written file is left.
 void write_volume_response(const std::string& path, const std::vector<std::complex<double>>& sigmas,
                            const ViscousVolumeResponse& r, const std::string& method) {
-  const std::filesystem::path tmp = path + ".tmp" + std::to_string(::getpid());
-  {
-    std::ofstream out(tmp);
-    if (!out) throw std::runtime_error("cannot create " + path);
+  write_text_atomically(path, [&](std::ostream& out) {
     out << "# cavity-modes 3-D response: " << method << "\n# R_jk(sigma) = f_j^T (sigma M - A)^-1 f_k = sum_l H_jk/"
         << "(sigma - lambda_l) + const, the moment about e_j per unit rotation about e_k (docs/volume.md, section 7)\n";
     out << "sigma_re,sigma_im";
@@ -323,14 +320,7 @@ void write_volume_response(const std::string& path, const std::vector<std::compl
         for (int k = 0; k < 3; ++k) out << ',' << r.R[i](j, k).real() << ',' << r.R[i](j, k).imag();
       out << '\n';
     }
-    if (!out) {
-      out.close();
-      std::error_code ec;
-      std::filesystem::remove(tmp, ec);
-      throw std::runtime_error("cannot write " + path);
-    }
-  }
-  std::filesystem::rename(tmp, path);
+  });
 }
 
 }  // namespace
