@@ -70,6 +70,10 @@ void check_options(const MeshOptions& options) {
     throw std::runtime_error("wall layer thickness " + number(options.wall_layer) + " must be positive and finite (0 = none)");
   if (options.wall_layer > 0 && !(options.wall_size > 0 && options.wall_size <= options.wall_layer))
     throw std::runtime_error("wall layers need a first layer (--wall-size) in (0, " + number(options.wall_layer) + "]");
+  if (!std::isfinite(options.near_wall_size) || options.near_wall_size < 0)
+    throw std::runtime_error("near-wall size " + number(options.near_wall_size) + " must be positive and finite (0 = none)");
+  if (options.near_wall_size > 0 && !(options.wall_layer > 0))
+    throw std::runtime_error("a near-wall size (--near-wall-size) goes with wall layers (--wall-layer)");
 }
 
 // The fluid volume of a built-in shape, with its own axis along z, then tilted about x.

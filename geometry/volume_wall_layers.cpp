@@ -185,9 +185,14 @@ VolumeMesh layered_ellipsoid(const VolumeShapeSpec& shape, const MeshOptions& op
   VolumeShapeSpec inner = shape;
   inner.dims = {{"a", A[0] - H}, {"b", A[1] - H}, {"c", A[2] - H}};
   inner.tilt = 0;
+  // The core is graded towards its wall from near_wall_size (0: the interior size), and its wall triangles are the
+  // layers' along-wall size: the Ekman layers' structure along the wall (their critical latitudes) wants it finer
+  // than the interior.
   MeshOptions core = options;
   core.wall_layer = 0;
-  core.wall_size = 0;
+  core.wall_size = options.near_wall_size;
+  core.wall_growth = options.near_wall_growth;
+  core.near_wall_size = 0;
   VolumeMesh m = mesh_volume(inner, core);
   LayerBuilder layers(m, core_wall(m), {A[0] - H, A[1] - H, A[2] - H}, A, depths);
   layers.build(static_cast<int>(depths.size()) - 1);

@@ -35,6 +35,9 @@ void add_common_options(CLI::App* cmd, Common& o) {
   cmd->add_option("--wall-layer", o.wall_layer, "ellipsoid: anisotropic wall layers this thick in all, the first "
                                                 "--wall-size thick, each next (1 + --wall-growth) times thicker (the "
                                                 "viscous fluid's Ekman layers, docs/volume.md §7); 0 = none");
+  cmd->add_option("--near-wall-size", o.near_wall_size, "with --wall-layer: the elements along the wall and just "
+                                                        "inside the layers, growing by 1 per unit distance to "
+                                                        "--mesh-size (0 = the interior size; docs/volume.md §7)");
   cmd->add_option("--wall-growth", o.wall_growth, "growth of the element size per unit distance from the wall "
                                                   "(default 1)");
   cmd->add_option("--floor", o.floor, "keep modes whose coupling tensor's trace exceeds this fraction of the sum "
@@ -129,6 +132,7 @@ VolumeTableRequest VolumeCommands::resolve() const {
   r.mesh.wall_size = o.wall_size;
   r.mesh.wall_growth = o.wall_growth;
   r.mesh.wall_layer = o.wall_layer;
+  r.mesh.near_wall_size = o.near_wall_size;
   r.survey.floor = o.floor;
   r.survey.max_columns = o.columns;
   r.fields = o.fields;
@@ -233,6 +237,7 @@ std::vector<double> viscous_targets(const VolumeTableRequest& ideal, const std::
       request.fields = false;
       request.mesh.wall_size = 0;
       request.mesh.wall_layer = 0;
+      request.mesh.near_wall_size = 0;
       ideal_table = make_volume_table(request).table;
       out = given.empty() ? heaviest_rows(*ideal_table, modes) : given;
     } catch (const std::exception& e) {
@@ -280,6 +285,7 @@ int VolumeCommands::run_viscous(const VolumeTableRequest& ideal, const std::stri
     ViscousVolumeRequest c = request;
     c.mesh.size = 1.5 * result.mesh_h;
     c.mesh.wall_size = 1.5 * request.mesh.wall_size;
+    c.mesh.near_wall_size = 1.5 * request.mesh.near_wall_size;
     c.targets.clear();
     for (const auto& m : result.modes) c.targets.push_back(m.lambda.real());
     progress("3-D viscous: the convergence check on a mesh 1.5 times as coarse");

@@ -38,7 +38,7 @@ class VolumeCommands {
   struct Common {
     std::string output;
     int order = kVolumeDefaultOrder, columns = 60;
-    double size = 0, wall_size = 0, wall_growth = 1.0, wall_layer = 0, floor = 1e-4;
+    double size = 0, wall_size = 0, wall_growth = 1.0, wall_layer = 0, near_wall_size = 0, floor = 1e-4;
     bool fields = false;
     double ekman = 0;             // > 0: the viscous fluid's damped modes (docs/volume.md §7)
     std::vector<double> targets;  // their ideal frequencies (default: the closed form's, or the ideal table's)

@@ -212,4 +212,20 @@ TEST(ViscousVolume, WallLayersConformAndEndOnTheWall) {
   // The first layer's nodes (order 3: a third of it) sit about first/3 from the wall: the level set there is ~2 d/c.
   EXPECT_LT(nearest_inside, 2 * first / c);
   EXPECT_GT(nearest_inside, 0.1 * first / a);
+  // --near-wall-size: the core graded towards its wall, so the layers' triangles along the wall are finer — more wall
+  // nodes, every one still on the exact ellipsoid.
+  mesh.near_wall_size = 0.12;
+  const auto fine = geometry::mesh_volume({"ellipsoid", {{"a", a}, {"b", b}, {"c", c}}, {}, tilt}, mesh);
+  const VolumeTaylorHoodSpace fine_space(fine);
+  std::vector<char> fine_free(fine.nodes.size(), 0);
+  for (std::size_t e = 0; e < fine_space.num_elements(); ++e)
+    for (int i = 0; i < fine_space.velocity_nodes_per_element(); ++i)
+      if (fine_space.velocity(e, 0)[i] >= 0) fine_free[fine.tetrahedra[e * fine.nodes_per_element + i]] = 1;
+  double fine_worst = 0;
+  for (std::size_t n = 0; n < fine.nodes.size(); ++n)
+    if (!fine_free[n]) fine_worst = std::max(fine_worst, std::abs(on_wall(fine.nodes[n])));
+  std::printf("with --near-wall-size 0.12: %d wall nodes (%d without), wall equation residual %.1e\n",
+              fine_space.wall_nodes(), wall, fine_worst);
+  EXPECT_GT(fine_space.wall_nodes(), 2 * wall);
+  EXPECT_LE(fine_worst, 1e-12);
 }

@@ -231,6 +231,7 @@ expect_error "--target out of range" "each frequency must be in (0, 2)" "$BIN" e
 expect_error "no table named" "-o/--output is required" "$BIN" ellipsoid --a 1 --b 1 --c 1
 expect_error "wall layers on a volume file" "built for the ellipsoid so far" "$BIN" volume "$VOLUMES/box.geo" --wall-size 0.01 --wall-layer 0.05 -o out.h5
 expect_error "wall layers without a first layer" "need a first layer" "$BIN" ellipsoid --a 1 --b 1 --c 1 --wall-layer 0.05 -o out.h5
+expect_error "a near-wall size without wall layers" "goes with wall layers" "$BIN" ellipsoid --a 1 --b 1 --c 1 --near-wall-size 0.1 -o out.h5
 expect_error "wall layers too thick" "do not fit" "$BIN" ellipsoid --a 1 --b 1 --c 1 --wall-size 0.1 --wall-layer 0.9 -o out.h5
 expect_error "a viscous mesh beyond the machine's memory" "more than this machine's" "$BIN" ellipsoid --a 1 --b 1 --c 1 --ekman 1e-2 --order 6 --mesh-size 0.12
 if command -v mpirun > /dev/null; then
