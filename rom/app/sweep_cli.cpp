@@ -59,6 +59,16 @@ SweepRequest resolve(const SweepOptions& o) {
   if (moves && two)
     throw SweepError("a key that moves a viscous tank's Ekman number sweeps one value at a time (no --param2): "
                      "each point serves forced solves at its own Ek");
+  // The forced solves serve the meridian solver's response: a chain without axial symmetry (a 3-D table, B != A, a tank
+  // off its axis) has no such path yet.
+  if (moves || o.confirm) {
+    TableCache tables;
+    if (needs_general_chain(r.scene, tables))
+      throw SweepError(std::string(o.confirm ? "--confirm" : r.a1.key.text + " moves a viscous tank's Ekman number, so each "
+                                                             "point needs forced solves at its own Ek, which") +
+                       " the chain without axial symmetry does not take yet (docs/rom.md, \"Bodies and tanks without "
+                       "axial symmetry\"): sweep a key that keeps the Ekman numbers");
+  }
   if (o.confirm && two) throw SweepError("--confirm sweeps one value at a time (no --param2)");
   if (o.confirm && !build_model(r.scene).viscous)
     throw SweepError("--confirm: the scene has no viscous tank (its roots are (22)'s own)");

@@ -193,6 +193,7 @@ else
 fi
 sed 's/^spin = 200.0$/spin = -200.0/' vtop.toml > vtopneg.toml
 [ -f sph3d.h5 ] && expect_error "a 3-D viscous table on a negative spin" "mirrors the cavity" "$ROM" spectrum vtopneg.toml
+[ -f sph3d.h5 ] && expect_error "a spin sweep with a viscous 3-D table" "does not take yet" "$ROM" sweep vtop.toml --param 'body[1].spin' --from 190 --to 210 --steps 3 -o sw.csv
 # The forced response on the same 3-D spheroid mesh against the meridian solver's response of that spheroid: the m = 1
 # part (R_xx + i R_xy - i R_yx + R_yy)/2 is the meridian R(sigma) (docs/volume.md §7), R_xz, R_zx vanish (m = 1 and
 # m = 0 do not couple), at five frequencies across the spin-over's resonance.
