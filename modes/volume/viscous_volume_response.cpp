@@ -3,6 +3,7 @@
 #include "shifted_solver.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 
 #include <fmt/format.h>
