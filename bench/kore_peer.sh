@@ -1,21 +1,23 @@
 #!/usr/bin/env bash
 # Kore (the spectral SLEPc code for spheres and shells, github.com/repepo/kore) against cavity-modes on Kore's own test
 # case, side by side on this machine: the spin-over mode of the spherical shell (inner radius 0.35, both walls
-# no-slip, Ek = 1e-3; Kore's tests/spinover). Kore: its reference eigenvalue, its run (submatrices, assemble, solve
-# with its test's solver options) timed. Ours: data/sections/shell.geo with --ekman 1e-3, with the ideal survey
-# (the default) and with --target 1.0 (no survey), timed; each against Kore's reference. Writes
-# OUT/kore_peer_<shapes>_<date>.csv and prints it.
+# no-slip; Kore's tests/spinover) and of the full sphere. Kore: its run (submatrices, assemble, solve with its test's
+# solver options) on 1 and 2 ranks and with 1.5 times its truncations, timed. Ours: `cavity-modes shell` (the spectral
+# method, docs/spherical.md) as a user runs it, without its check and at other truncations, and the finite elements
+# (data/sections/shell.geo or the sphere, --ekman) with the survey, --target 1.0 and finer meshes, timed.
 #   KORE_DIR=/path/to/kore bash bench/kore_peer.sh [BUILD_DIR] [OUT]
-# SHAPES="shell sphere" (default shell: Kore's test; sphere: its full-sphere case, ricb = 0) and EKMANS (default
-# "1e-3 1e-4") choose the cases; SHELL_SIZES / SPHERE_SIZES our mesh ladder beyond the default mesh. The errors are
-# against Kore's reference eigenvalue (the shell at 1e-3) or Kore's own one-rank run; OUT/kore_peer_<shapes>_<date>.png plots
-# error against run time for both codes (bench/plot_kore_peer.py). On the sphere at Ek <= 1e-5 our meshes follow the
-# internal shear layers unless the row says "uniform interior" (--no-shear-layers).
+# SHAPES="shell sphere" (default shell) and EKMANS (default "1e-3 1e-4") choose the cases; SHELL_SIZES /
+# SPHERE_SIZES our mesh ladder beyond the default mesh; FE=0 leaves the finite elements out; RANKS=2 runs Kore's
+# fine run and ours under mpirun -n 2. Every error is against one reference per case: Kore's published eigenvalue
+# (its tests/spinover/reference.eig, the shell at 1e-3), else Kore's run at 1.5 times its truncations, else (no Kore)
+# ours at 1.5 times our default truncation — the CSV's reference column names it. Writes
+# OUT/kore_peer_<shapes>_<date>.csv and a PNG of error against run time for both codes (bench/plot_kore_peer.py).
+# On the sphere at Ek <= 1e-5 our meshes follow the internal shear layers unless the row says "uniform interior".
 # Kore is optional: without KORE_DIR (a checkout of github.com/repepo/kore) or without its Debian needs
 # (python3-petsc4py-complex python3-slepc4py-complex python3-mpi4py) the script says so and runs ours alone.
 set -euo pipefail
 if [ "${1:-}" = "--help" ] || [ "${1:-}" = "-h" ]; then
-  sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'
+  sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'
   exit 0
 fi
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
@@ -31,19 +33,15 @@ stem=$OUT/kore_peer_$(echo "${SHAPES:-shell}" | tr ' ' '_')_$(date +%F)
 csv=$stem.csv
 for k in 2 3 4 5 6 7 8 9; do [ -e "$csv" ] || break; csv=$stem-$k.csv; done
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1
-echo "ekman,code,setting,seconds,frequency,decay,frequency_error,decay_error" > "$csv.tmp"
+echo "ekman,code,setting,seconds,frequency,decay" > "$work/raw.csv"
 now() { date +%s.%N; }
 since() { python3 -c "import sys; print('%.2f' % (float(sys.argv[2]) - float(sys.argv[1])))" "$1" "$(now)"; }
-# Kore's reference: its tests/spinover/reference.eig at Ek = 1e-3 (-decay, frequency); at other Ek its own run with
-# one rank (the spectral solution, converged far below our errors) when it runs, else none.
-declare -A REF_F REF_D
-REF_F[1e-3]=1.005733690103750355
-REF_D[1e-3]=0.1019947097016500742
-row() {  # ekman code setting seconds frequency decay
-  python3 -c "import sys; e, c, s, t, f, d, rf, rd = sys.argv[1:]; f, d = float(f), float(d)
-err = lambda x, r: '%.2e' % (abs(x - float(r)) / float(r)) if r else ''
-print('%s,%s,%s,%s,%.16g,%.16g,%s,%s' % (e, c, s, t, f, d, err(f, rf), err(d, rd)))" "$@" "${REF_F[$1]:-}" "${REF_D[$1]:-}"
+row() {  # ekman code setting seconds frequency decay: a raw row (the errors are computed at the end)
+  echo "$1,$2,$3,$4,$5,$6" >> "$work/raw.csv"
 }
+ranks=${RANKS:-1}
+parallel=()
+[ "$ranks" = 1 ] || parallel=(mpirun -n "$ranks")
 
 # Kore, when present: Debian's complex PETSc/SLEPc builds are chosen by PETSC_DIR and SLEPC_DIR (README.Debian of
 # python3-petsc4py-complex), and Kore's scripts run with Debian's Python (numpy, scipy).
@@ -74,12 +72,11 @@ kore() {  # ekman ranks [fine: 1.5 times Kore's radial and angular truncations, 
   t=$(since "$t0")
   read -r decay freq < <("$PY" -c "import numpy as np; d = np.atleast_2d(np.loadtxt('$dir/eigenvalues0.dat'))
 i = np.argmax(d[:, 0]); print('%.17g %.17g' % (-d[i, 0], d[i, 1]))")
-  [ -n "${REF_F[$ek]:-}" ] || { REF_F[$ek]=$freq; REF_D[$ek]=$decay; }
   local N
   N=$(grep -o "N = [0-9]*" "$dir/sub.log" | head -1 | tr -d ' ')
-  row "$ek" kore "$SHAPE;spectral ${N:-};np=$n${fine:+;1.5 x truncation}" "$t" "$freq" "$decay" >> "$csv.tmp"
+  row "$ek" kore "$SHAPE;spectral ${N:-};np=$n${fine:+;1.5 x truncation}" "$t" "$freq" "$decay"
 }
-ours() {  # ekman setting, then cavity-modes arguments
+ours() {  # ekman setting, then cavity-modes arguments: the finite elements
   local ek=$1 setting=$2
   shift 2
   local t0 t
@@ -90,7 +87,22 @@ ours() {  # ekman setting, then cavity-modes arguments
   read -r freq decay ndof < <(/usr/bin/python3 -c "import h5py, numpy as np
 f = h5py.File('$work/ours.h5'); m = f['modes']; i = int(np.argmin(np.abs(m['lambda'][:] - 1)))
 print(repr(m['lambda'][i]), repr(m['decay'][i]), f.attrs['ndof'])")
-  row "$ek" cavity-modes "$SHAPE;$setting;$ndof unknowns" "$t" "$freq" "$decay" >> "$csv.tmp"
+  row "$ek" cavity-modes "$SHAPE;$setting;$ndof unknowns" "$t" "$freq" "$decay"
+}
+spectral() {  # ekman setting ranks, then `cavity-modes shell` arguments: our spectral method (docs/spherical.md)
+  local ek=$1 setting=$2 n=$3
+  shift 3
+  local t0 t run=()
+  [ "$n" = 1 ] || run=(mpirun -n "$n")
+  t0=$(now)
+  env -u PETSC_DIR -u SLEPC_DIR "${run[@]}" "$MODES" shell --inner-radius "$RICB" --ekman "$ek" "$@" \
+    -o "$work/shell.csv" > "$work/shell.txt" 2>&1 || { tail -2 "$work/shell.txt" >&2; return; }
+  t=$(since "$t0")
+  read -r freq decay < <(/usr/bin/python3 -c "import csv
+r = next(csv.DictReader(l for l in open('$work/shell.csv') if not l.startswith('#'))); print(r['lambda'], r['decay'])")
+  local size
+  size=$(grep -o "[0-9]* unknowns" "$work/shell.txt" | head -1)
+  row "$ek" cavity-modes "$SHAPE;spectral $setting;np=$n;$size" "$t" "$freq" "$decay"
 }
 for SHAPE in ${SHAPES:-shell}; do
   if [ "$SHAPE" = shell ]; then
@@ -99,9 +111,12 @@ for SHAPE in ${SHAPES:-shell}; do
     RICB=0 CAVITY=(sphere --radius 1) SIZES=${SPHERE_SIZES:-0.125 0.0625}
   fi
   for ek in ${EKMANS:-1e-3 1e-4}; do
-    unset "REF_F[$ek]" "REF_D[$ek]"
-    [ "$SHAPE:$ek" != shell:1e-3 ] || { REF_F[1e-3]=1.005733690103750355; REF_D[1e-3]=0.1019947097016500742; }
-    if [ "$have_kore" = 1 ]; then kore "$ek" 1; kore "$ek" 2; kore "$ek" 2 fine; fi
+    if [ "$have_kore" = 1 ]; then kore "$ek" 1; kore "$ek" 2; kore "$ek" "$ranks" fine; fi
+    spectral "$ek" "default with its check" 1
+    spectral "$ek" "default" 1 --no-convergence-check
+    for r in 0.8 1.5; do spectral "$ek" "resolution $r" 1 --no-convergence-check --resolution "$r"; done
+    [ "$ranks" = 1 ] || spectral "$ek" "default" "$ranks" --no-convergence-check
+    [ "${FE:-1}" != 0 ] || continue
     ours "$ek" "P6 default mesh;ideal survey" --modes 1
     ours "$ek" "P6 default mesh;--target 1.0" --target 1.0
     # The sphere at Ek <= 1e-5: the default mesh follows the internal shear layers (docs/viscous.md); the uniform
@@ -114,6 +129,30 @@ for SHAPE in ${SHAPES:-shell}; do
     [ "${NEAR_WALL:-1}" = 0 ] || ours "$ek" "P6 default mesh + near-wall $near;--target 1.0" --target 1.0 --near-wall-size "$near"
   done
 done
+# The errors, each case against one reference: Kore's published eigenvalue for its test (the shell at 1e-3, its
+# tests/spinover/reference.eig), else Kore's 1.5-times run, else ours at 1.5 times our truncation.
+/usr/bin/python3 - "$work/raw.csv" "$csv.tmp" <<'PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+published = {("shell", "1e-3"): (1.005733690103750355, 0.1019947097016500742)}
+def reference(shape, ek):
+    if (shape, ek) in published:
+        return published[(shape, ek)], "Kore's tests/spinover/reference.eig"
+    for code, mark, name in (("kore", "1.5 x truncation", "Kore at 1.5 x its truncation"),
+                             ("cavity-modes", "spectral resolution 1.5", "cavity-modes shell --resolution 1.5")):
+        for r in rows:
+            if r["code"] == code and r["ekman"] == ek and r["setting"].split(";")[0] == shape and mark in r["setting"]:
+                return (float(r["frequency"]), float(r["decay"])), name
+    return None, ""
+with open(sys.argv[2], "w") as out:
+    out.write("ekman,code,setting,seconds,frequency,decay,frequency_error,decay_error,reference\n")
+    for r in rows:
+        ref, name = reference(r["setting"].split(";")[0], r["ekman"])
+        f, d = float(r["frequency"]), float(r["decay"])
+        err = lambda x, y: "%.2e" % (abs(x - y) / abs(y)) if ref else ""
+        out.write("%s,%s,%s,%s,%.16g,%.16g,%s,%s,%s\n" % (r["ekman"], r["code"], r["setting"], r["seconds"], f, d,
+                  err(f, ref[0]) if ref else "", err(d, ref[1]) if ref else "", name))
+PY
 mv "$csv.tmp" "$csv"
 column -s, -t < "$csv"
 /usr/bin/python3 "$ROOT/bench/plot_kore_peer.py" "$csv" "${csv%.csv}.png" || echo "no plot (matplotlib?)" >&2

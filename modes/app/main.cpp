@@ -24,6 +24,7 @@
 #include "table_provenance.hpp"
 #include "viscous_table.hpp"
 #include "volume_command.hpp"
+#include "shell_command.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -582,7 +583,7 @@ void check_command_name(CLI::App& app, const std::vector<std::string>& ours) {
   });
   if (ours.size() > 1 && ours[1][0] != '-' && !known)
     throw std::runtime_error("unknown shape or command '" + ours[1] +
-                             "' (expected sphere, spheroid, cylinder, cone, section, ellipsoid, volume, response, info or compare)");
+                             "' (expected sphere, spheroid, cylinder, cone, section, ellipsoid, volume, shell, response, info or compare)");
 }
 
 // The pass-through PETSc words as PetscInitialize takes them (argc, argv with its closing null).
@@ -622,6 +623,15 @@ int run_volume(const rc::modes::VolumeCommands& volumes, bool response, std::vec
   return volumes.run(command_line);
 }
 
+// `cavity-modes shell ...`: the sphere or spherical shell by spectral expansion (docs/spherical.md).
+int run_shell(const rc::modes::ShellCommand& shell, bool response, std::vector<std::string>& petsc_words,
+              const std::string& command_line) {
+  if (response) throw CommandLineError("response takes an axisymmetric shape meshed by gmsh (shell: damped modes only)");
+  PetscArguments petsc(petsc_words);
+  rc::modes::PetscSession session(&petsc.argc, &petsc.argv);
+  return shell.run(command_line);
+}
+
 int run(int argc, char** argv) {
   const std::string command_line = rc::modes::quoted_command_line(std::vector<std::string>(argv, argv + argc));
   if (const std::string empty = rc::empty_argument_error(argc, argv); !empty.empty()) {
@@ -659,11 +669,13 @@ int run(int argc, char** argv) {
   CLI::App* info = add_info_command(app, info_request);
   CLI::App* compare = add_compare_command(app, compare_request);
   rc::modes::VolumeCommands volumes(app);
+  rc::modes::ShellCommand shell(app);
   check_command_name(app, args.ours);
   if (const int code = parse_command_line(app, args.ours); code >= 0) return code;
   if (info->parsed()) return run_info(info_request);
   if (compare->parsed()) return run_compare(compare_request);
   if (volumes.parsed()) return run_volume(volumes, response, args.petsc, command_line);
+  if (shell.parsed()) return run_shell(shell, response, args.petsc, command_line);
 
   CLI::App* table_command = shapes.parsed()->app;
   refuse_extras(*table_command, response);

@@ -1,0 +1,206 @@
+// The sphere and the spherical shell by spectral expansion (docs/spherical.md): the ultraspherical operators exact on
+// polynomials, the Stokes limit (strong viscosity: spherical Bessel zeros), Kore's own test case and values, and our
+// finite elements.
+#include "cavity_table.hpp"
+#include "shell_modes.hpp"
+#include "ultraspherical.hpp"
+#include "viscous_table.hpp"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <random>
+#include <sstream>
+#include <string>
+
+using namespace rc::modes;
+using namespace rc::modes::spherical;
+using cd = std::complex<double>;
+using rc::ModeTable;
+
+namespace {
+
+// Σ a_k C^(λ)_k(x) by the three-term recurrence (DLMF 18.9.1); λ = 0: the Chebyshev T_k(x) = cos(k arccos x).
+double evaluate(const Eigen::VectorXd& a, int lambda, double x) {
+  double sum = 0, previous = 0, current = 1;
+  for (int k = 0; k < a.size(); ++k) {
+    sum += a[k] * (lambda == 0 ? std::cos(k * std::acos(x)) : current);
+    const double next = (2 * (k + lambda) * x * current - (k + 2 * lambda - 1) * previous) / (k + 1);
+    previous = current;
+    current = next;
+  }
+  return sum;
+}
+
+// The derivative's Chebyshev coefficients by the classical backward recurrence b_{k−1} = b_{k+1} + 2k a_k (b_0 halved).
+Eigen::VectorXd chebyshev_derivative(const Eigen::VectorXd& a) {
+  const int n = static_cast<int>(a.size());
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(n + 1);
+  for (int k = n - 1; k >= 1; --k) b[k - 1] = b[k + 1] + 2 * k * a[k];
+  b[0] /= 2;
+  return b.head(n);
+}
+
+// ShellSettings for a run at the default truncation times `factor`.
+ShellSettings settings(double ri, double ekman, bool toroidal_first = true, double factor = 1.0) {
+  ShellSettings s;
+  s.inner_radius = ri;
+  s.ekman = ekman;
+  s.toroidal_first = toroidal_first;
+  const Truncation t = default_truncation(ekman, ri, 1, factor);
+  s.radial = t.radial;
+  s.lmax = t.lmax;
+  return s;
+}
+
+ViscousMode nearest(const ShellSettings& s, cd target) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const ViscousMode m = shell_modes_near(s, target, 1, PETSC_COMM_WORLD).front();
+  std::printf("  %s r_i = %g, Ek = %g, %d x %d: lambda %.15f + %.15f i, backward error %.1e, %.2f s\n",
+              s.inner_radius > 0 ? "shell" : "sphere", s.inner_radius, s.ekman, s.radial, s.lmax, m.lambda.real(),
+              m.lambda.imag(), m.residual,
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  return m;
+}
+
+// Kore's values, data/reference/kore_{shell,sphere}_spinover.csv: Ek → (λ, decay).
+std::map<std::string, cd> kore_values(const std::string& shape) {
+  std::ifstream in(std::string(RC_REFERENCE_DIR) + "/kore_" + shape + "_spinover.csv");
+  std::map<std::string, cd> out;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#' || line.rfind("ekman", 0) == 0) continue;
+    std::stringstream row(line);
+    std::string ek, lambda, decay;
+    std::getline(row, ek, ',');
+    std::getline(row, lambda, ',');
+    std::getline(row, decay, ',');
+    out[ek] = {std::stod(lambda), std::stod(decay)};
+  }
+  return out;
+}
+
+double relative(double x, double reference) { return std::abs(x - reference) / std::abs(reference); }
+
+}  // namespace
+
+// Each operator against an independent evaluation at points of [-1, 1], on a random polynomial of degree 29 kept in
+// 40 coefficients (so nothing is cut).
+TEST(Ultraspherical, OperatorsAreExactOnPolynomials) {
+  const int n = 40;
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  Eigen::VectorXd a = Eigen::VectorXd::Zero(n);
+  for (int k = 0; k < 30; ++k) a[k] = uniform(random);
+  double worst = 0;
+  Eigen::VectorXd d = a;
+  for (int k = 1; k <= 4; ++k) {
+    d = chebyshev_derivative(d);  // the k-th derivative in Chebyshev T
+    const Eigen::VectorXd ours = derivative(n, k) * a;  // … in C^(k)
+    for (double x : {-0.97, -0.3, 0.1, 0.55, 0.99}) worst = std::max(worst, std::abs(evaluate(ours, k, x) - evaluate(d, 0, x)) / (1 + std::abs(evaluate(d, 0, x))));
+  }
+  for (int lambda = 0; lambda <= 3; ++lambda) {
+    const Eigen::VectorXd up = conversion(n, lambda) * a, times_r = multiply_by_r(n, lambda, 0.3, 0.6, 3) * a;
+    for (double x : {-0.97, -0.3, 0.1, 0.55, 0.99}) {
+      worst = std::max(worst, std::abs(evaluate(up, lambda + 1, x) - evaluate(a, lambda, x)));
+      worst = std::max(worst, std::abs(evaluate(times_r, lambda, x) - std::pow(0.3 * x + 0.6, 3) * evaluate(a, lambda, x)));
+    }
+  }
+  std::printf("derivatives (orders 1-4), conversions (C^(0..3) up one) and r^3 products: worst error %.1e\n", worst);
+  EXPECT_LE(worst, 1e-10);
+}
+
+// Strong viscosity (Ek = 1e4): the Coriolis terms are a 1/Ek perturbation, so the slowest decays are Ek k² with k the
+// Stokes operator's closed-form roots. Toroidal l = 1 (the spin-over's symmetry): j_1(k) = 0, k = 4.4934094579, and
+// the frequency tends to 2m/L = 1; poloidal l = 1 (no-slip, P = P′ = 0 at r = 1): j_2(k) = 0, k = 5.7634591969 — the
+// root of the toroidal l = 2 as well, so the Coriolis coupling splits that pair's frequencies at order one (1.51
+// measured) and only the decay is checked; the shell's toroidal l = 1: j_1(k) y_1(k r_i) = j_1(k r_i) y_1(k).
+TEST(SphericalShell, StokesLimitIsTheBesselRoots) {
+  const double ek = 1e4;
+  auto root = [](auto f, double lo, double hi) {
+    for (int i = 0; i < 200; ++i) {
+      const double mid = (lo + hi) / 2;
+      (f(lo) * f(mid) <= 0 ? hi : lo) = mid;
+    }
+    return (lo + hi) / 2;
+  };
+  const double ri = 0.35;
+  const double k_toroidal = root([](double k) { return std::sph_bessel(1, k); }, 4, 5);
+  const double k_poloidal = root([](double k) { return std::sph_bessel(2, k); }, 5, 6.5);
+  const double k_shell = root([&](double k) {
+    return std::sph_bessel(1, k) * std::sph_neumann(1, k * ri) - std::sph_bessel(1, k * ri) * std::sph_neumann(1, k);
+  }, 4, 5.5);
+  struct Case { double ri; bool toroidal_first; double k; const char* what; bool frequency = true; };
+  for (const Case& c : {Case{0, true, k_toroidal, "sphere, toroidal l = 1"},
+                        Case{0, false, k_poloidal, "sphere, poloidal l = 1 (and toroidal l = 2)", false},
+                        Case{ri, true, k_shell, "shell, toroidal l = 1"}}) {
+    ShellSettings s = settings(c.ri, ek, c.toroidal_first);
+    const double decay = ek * c.k * c.k;
+    const ViscousMode m = nearest(s, cd(1.0, 1.01 * decay));  // a target on the mode itself is a singular shift
+    std::printf("%s: decay/Ek %.12f against k^2 = %.12f (%.1e), frequency %.8f\n", c.what, m.lambda.imag() / ek,
+                c.k * c.k, relative(m.lambda.imag(), decay), m.lambda.real());
+    EXPECT_LE(relative(m.lambda.imag(), decay), 1e-7) << c.what;
+    if (c.frequency) {
+      EXPECT_NEAR(m.lambda.real(), 1.0, 1e-3) << c.what;
+    }
+  }
+}
+
+// Kore's own test (tests/spinover: the shell r_i = 0.35, both walls no-slip, Ek = 1e-3) to its reference eigenvalue,
+// and Kore's runs at Ek = 1e-4 (the shell) and 1e-5 (the full sphere), each converged to 1e-13 … 1e-10 by Kore's own
+// finer runs (data/reference/kore_*_spinover.csv).
+TEST(SphericalShell, SpinOverModeIsKoresAndConverges) {
+  const auto shell = kore_values("shell"), sphere = kore_values("sphere");
+  ASSERT_EQ(shell.count("1e-3") + shell.count("1e-4") + sphere.count("1e-5"), 3u);
+  struct Case { double ri, ek; cd kore; double tolerance; };
+  for (const Case& c : {Case{0.35, 1e-3, shell.at("1e-3"), 1e-12}, Case{0.35, 1e-4, shell.at("1e-4"), 1e-11},
+                        Case{0, 1e-5, sphere.at("1e-5"), 1e-9}}) {
+    const cd target(1.0, 2.6 * std::sqrt(c.ek));  // the command's: the Ekman layer's decay (shell_command.cpp)
+    const ViscousMode m = nearest(settings(c.ri, c.ek), target);
+    const ViscousMode coarse = nearest(settings(c.ri, c.ek, true, 0.8), target);
+    const double frequency = relative(m.lambda.real(), c.kore.real()), decay = relative(m.lambda.imag(), c.kore.imag());
+    std::printf("r_i = %g, Ek = %g: against Kore: frequency %.1e, decay %.1e; against 0.8 times the truncation %.1e\n",
+                c.ri, c.ek, frequency, decay, std::abs(m.lambda - coarse.lambda) / std::abs(m.lambda.imag()));
+    EXPECT_LE(frequency, c.tolerance);
+    EXPECT_LE(decay, c.tolerance);
+    EXPECT_LE(m.residual, 1e-12);
+  }
+}
+
+// The full sphere at Ek = 1e-3 against our finite elements (the meridian Taylor–Hood solver, docs/viscous.md):
+// two discretisations sharing no code but the eigensolver.
+TEST(SphericalShell, SphereIsTheFiniteElementsMode) {
+  TableRequest ideal;
+  ideal.shape = {"sphere", {{"radius", 1.0}}, {}};
+  ideal.mesh.order = 6;
+  ideal.selection.modes = 1;
+  ideal.check_convergence = false;
+  ViscousTableSettings v;
+  v.ekman = 1e-3;
+  v.mesh.order = 0;
+  v.check_convergence = false;
+  const ModeTable fe = compute_viscous_table(ideal.shape, v, compute_mode_table(ideal), {});
+  const ViscousMode m = nearest(settings(0, 1e-3), cd(1.0, 2.6 * std::sqrt(1e-3)));
+  std::printf("finite elements (%ld unknowns): %.12f + %.12f i; spectral: frequency %.1e, decay %.1e apart\n",
+              fe.ndof, fe.lambda[0], fe.decay[0], relative(fe.lambda[0], m.lambda.real()),
+              relative(fe.decay[0], m.lambda.imag()));
+  EXPECT_LE(relative(fe.lambda[0], m.lambda.real()), 1e-8);
+  EXPECT_LE(relative(fe.decay[0], m.lambda.imag()), 3e-7);  // 1.2e-7 measured: the finite elements' own error
+}
+
+TEST(SphericalShell, SettingsThatDescribeNoProblemAreRefused) {
+  ShellSettings s = settings(0.35, 1e-3);
+  for (auto change : std::vector<std::function<void(ShellSettings&)>>{
+           [](ShellSettings& x) { x.ekman = 0; }, [](ShellSettings& x) { x.inner_radius = 1; },
+           [](ShellSettings& x) { x.inner_radius = -0.1; }, [](ShellSettings& x) { x.radial = 4; },
+           [](ShellSettings& x) { x.lmax = 1; }, [](ShellSettings& x) { x.m = -1; }}) {
+    ShellSettings bad = s;
+    change(bad);
+    EXPECT_THROW(assemble_shell_pencil(bad), std::invalid_argument);
+  }
+}
