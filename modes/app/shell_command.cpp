@@ -57,8 +57,8 @@ ShellCommand::ShellCommand(CLI::App& app) {
   app_->add_option("--m", m_, "azimuthal wavenumber (default 1)");
   app_->add_option("--symmetry", symmetry_, "equatorial symmetry of the flow: antisymmetric (the spin-over's, "
                                             "default) or symmetric");
-  app_->add_option("--resolution", resolution_, "truncation relative to the default (21 Ek^-1/5 Chebyshev degrees "
-                                                "and harmonic degrees; default 1)");
+  app_->add_option("--resolution", resolution_, "truncation relative to the default (17 Ek^-1/5 Chebyshev and "
+                                                "harmonic degrees for a shell, 21 Ek^-1/5 for the sphere; default 1)");
   app_->add_option("--radial", radial_, "Chebyshev coefficients per scalar (overrides --resolution; the full sphere "
                                         "keeps those of one parity, degrees below twice this)");
   app_->add_option("--lmax", lmax_, "highest spherical-harmonic degree (overrides --resolution)");

@@ -7,9 +7,12 @@ namespace rc::modes::spherical {
 Truncation default_truncation(double ekman, double inner_radius, int m, double factor) {
   int n = static_cast<int>(17 * std::pow(ekman, -0.2));
   n = std::max(48, n + n % 2);
-  // A quarter above Kore's: measured on the sphere at Ek = 1e-5 … 1e-7 (docs/spherical.md §4), this reaches 1e-10
-  // where Kore's own truncation leaves 1e-10 … 6e-4, and the check at 0.8 times it is then Kore's truncation.
-  n = static_cast<int>(std::lround(1.25 * n * factor));
+  // The full sphere: a quarter above Kore's. Its decay at Kore's own truncation was 8e-11 (Ek = 1e-5) to 6e-4 (1e-7)
+  // off the converged value, at 1.25 times it 1e-12 … 4e-12, and the check at 0.8 times is then Kore's truncation.
+  // The shell (no critical latitude reaching the centre's shear layers) is at the rounding floor already at Kore's
+  // (2.5e-13 at 1e-5, 8e-13 at 1e-6; docs/spherical.md §3).
+  if (inner_radius == 0) n = static_cast<int>(std::lround(1.25 * n));
+  n = static_cast<int>(std::lround(n * factor));
   Truncation t;
   t.radial = inner_radius > 0 ? n : (n + 1) / 2;
   t.lmax = n + std::max(m, 1);

@@ -13,8 +13,8 @@
 
 namespace rc::modes::spherical {
 
-// 1.25 times the truncation Kore's tests use (its Ncheb: 17 Ek^−1/5, at least 48, even), scaled by `factor`, for both
-// the Chebyshev degrees (the full sphere keeps half of them, those of one parity) and lmax.
+// The truncation Kore's tests use (its Ncheb: 17 Ek^−1/5, at least 48, even) — 1.25 times it for the full sphere —
+// scaled by `factor`, for both the Chebyshev degrees (the full sphere keeps half of them, those of one parity) and lmax.
 struct Truncation {
   int radial = 0, lmax = 0;
 };
