@@ -9,8 +9,7 @@ Truncation default_truncation(double ekman, double inner_radius, int m, double f
   n = std::max(48, n + n % 2);
   // The full sphere: a quarter above Kore's. Its decay at Kore's own truncation was 8e-11 (Ek = 1e-5) to 6e-4 (1e-7)
   // off the converged value, at 1.25 times it 1e-12 … 4e-12, and the check at 0.8 times is then Kore's truncation.
-  // The shell (no critical latitude reaching the centre's shear layers) is at the rounding floor already at Kore's
-  // (2.5e-13 at 1e-5, 8e-13 at 1e-6; docs/spherical.md §3).
+  // The shell is at the rounding floor already at Kore's (2.5e-13 at 1e-5, 1.1e-12 at 1e-6; docs/spherical.md §3).
   if (inner_radius == 0) n = static_cast<int>(std::lround(1.25 * n));
   n = static_cast<int>(std::lround(n * factor));
   Truncation t;
