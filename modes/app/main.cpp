@@ -614,22 +614,16 @@ int parse_command_line(CLI::App& app, std::vector<std::string>& words) {
   return -1;
 }
 
-// `cavity-modes ellipsoid|volume ...`: a 3-D cavity's table (docs/volume.md).
-int run_volume(const rc::modes::VolumeCommands& volumes, bool response, std::vector<std::string>& petsc_words,
-               const std::string& command_line) {
-  if (response) throw CommandLineError("response takes an axisymmetric shape (3-D cavities: tables only so far)");
+// A command that solves on its own inside one PETSc session: `ellipsoid|volume ...`, a 3-D cavity's table
+// (docs/volume.md), and `shell ...`, the sphere or spherical shell by spectral expansion (docs/spherical.md). Neither
+// has a `response` form: `refusal` says why.
+template <class Command>
+int run_in_session(const Command& command, bool response, const char* refusal, std::vector<std::string>& petsc_words,
+                   const std::string& command_line) {
+  if (response) throw CommandLineError(refusal);
   PetscArguments petsc(petsc_words);
   rc::modes::PetscSession session(&petsc.argc, &petsc.argv);
-  return volumes.run(command_line);
-}
-
-// `cavity-modes shell ...`: the sphere or spherical shell by spectral expansion (docs/spherical.md).
-int run_shell(const rc::modes::ShellCommand& shell, bool response, std::vector<std::string>& petsc_words,
-              const std::string& command_line) {
-  if (response) throw CommandLineError("response takes an axisymmetric shape meshed by gmsh (shell: damped modes only)");
-  PetscArguments petsc(petsc_words);
-  rc::modes::PetscSession session(&petsc.argc, &petsc.argv);
-  return shell.run(command_line);
+  return command.run(command_line);
 }
 
 int run(int argc, char** argv) {
@@ -674,8 +668,12 @@ int run(int argc, char** argv) {
   if (const int code = parse_command_line(app, args.ours); code >= 0) return code;
   if (info->parsed()) return run_info(info_request);
   if (compare->parsed()) return run_compare(compare_request);
-  if (volumes.parsed()) return run_volume(volumes, response, args.petsc, command_line);
-  if (shell.parsed()) return run_shell(shell, response, args.petsc, command_line);
+  if (volumes.parsed())
+    return run_in_session(volumes, response, "response takes an axisymmetric shape (3-D cavities: tables only so far)",
+                          args.petsc, command_line);
+  if (shell.parsed())
+    return run_in_session(shell, response, "response takes an axisymmetric shape meshed by gmsh (shell: damped modes "
+                          "only)", args.petsc, command_line);
 
   CLI::App* table_command = shapes.parsed()->app;
   refuse_extras(*table_command, response);
