@@ -5,6 +5,7 @@
 #include "shell_modes.hpp"
 
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
@@ -41,6 +42,19 @@ double change_against(const ViscousMode& mode, const std::vector<ViscousMode>& c
     best = std::min(best, std::max(std::abs(c.lambda.real() - mode.lambda.real()) / std::abs(mode.lambda.real()),
                                    std::abs(c.lambda.imag() - mode.lambda.imag()) / mode.lambda.imag()));
   return best;
+}
+
+// Refuses a truncation whose factors would not fit: measured peaks (2026-11-28, this project's 2-core machine) of
+// 1.4 GB at 73 170 unknowns (the shell, Ek = 1e-6: about 20 kB each, its stricter pivoting's fill) and 1.6 GB at
+// 143 648 (the sphere, 1e-7: 11 kB); with a margin, 30 and 15 kB per unknown against 60 % of the machine's memory.
+void check_memory(const ShellSettings& s) {
+  const double unknowns = double(s.lmax - std::max(s.m, 1) + 1) * s.radial;
+  const double need = unknowns * (s.inner_radius > 0 ? 3e4 : 1.5e4);
+  const double have = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
+  if (have > 0 && need > 0.6 * have)
+    throw std::runtime_error(fmt::format("{:.0f} unknowns need about {:.1f} GB, beyond 60 % of this machine's {:.1f} GB: "
+                                         "a smaller --resolution (or a larger Ekman number)", unknowns, need / 1e9,
+                                         have / 1e9));
 }
 
 }  // namespace
@@ -95,6 +109,7 @@ int ShellCommand::run(const std::string& command_line) const {
     return r;
   };
   const ShellSettings fine = truncation(1.0);
+  check_memory(fine);
   // A guess of the decay (the Ekman layer's Ek^1/2 scaling) puts the shift beside the mode rather than on the real axis.
   const std::complex<double> target(target_, 2.6 * std::sqrt(ekman_));
   const Solved main = solve(fine, target, modes_);

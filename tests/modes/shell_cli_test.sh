@@ -21,6 +21,7 @@ no_csv "unknown symmetry" "--symmetry must be antisymmetric or symmetric" "$BIN"
 no_csv "no modes" "--modes must be in 1..50" "$BIN" shell --ekman 1e-3 --modes 0 -o out.csv
 no_csv "resolution out of range" "--resolution must be in" "$BIN" shell --ekman 1e-3 --resolution 100 -o out.csv
 no_csv "too few Chebyshev coefficients" "at least 8 Chebyshev coefficients" "$BIN" shell --ekman 1e-3 --radial 4 -o out.csv
+no_csv "truncation beyond memory" "beyond 60 % of this machine" "$BIN" shell --ekman 1e-10 -o out.csv
 no_csv "missing output folder" "does not exist" "$BIN" shell --ekman 1e-3 -o nowhere/out.csv
 no_csv "response of a shell" "shell: damped modes only" "$BIN" response shell --ekman 1e-3 -o out.csv
 no_csv "solver failure" "did not converge" "$BIN" shell --ekman 1e-3 -o out.csv -viscous_eps_max_it 1 -viscous_eps_tol 1e-30
