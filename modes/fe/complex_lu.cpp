@@ -48,7 +48,7 @@ void read_options(ZMUMPS_STRUC_C& id, const std::string& prefix) {
 
 }  // namespace
 
-ComplexLu::ComplexLu(MPI_Comm comm, std::string prefix, const ComplexLuSettings& settings)
+ComplexLu::ComplexLu(MPI_Comm comm, std::string prefix)
     : mumps_(std::make_unique<Mumps>()), prefix_(std::move(prefix)), comm_(comm) {
   ZMUMPS_STRUC_C& id = mumps_->id;
   id.comm_fortran = static_cast<int>(MPI_Comm_c2f(comm));
@@ -65,8 +65,6 @@ ComplexLu::ComplexLu(MPI_Comm comm, std::string prefix, const ComplexLuSettings&
   // 100 % more workspace than estimated: the zero pressure block makes MUMPS delay many pivots (about 24 000 of
   // 200 000 on the Ek = 1e-4 sphere); the default 20 % overran (INFOG(1) = −9).
   icntl(id, 14) = 100;
-  if (settings.pivot_threshold > 0) id.cntl[0] = settings.pivot_threshold;
-  if (settings.refinement_steps > 0) icntl(id, 10) = settings.refinement_steps;
   read_options(id, prefix_);
   // The layout this interface hands MUMPS, whatever the options say: the matrix distributed by rows, the dense
   // right-hand side and solution centralised on rank 0.

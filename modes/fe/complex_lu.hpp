@@ -23,16 +23,10 @@
 
 namespace rc::modes {
 
-// What a caller may ask of MUMPS beyond its defaults (the options database still wins).
-struct ComplexLuSettings {
-  double pivot_threshold = 0;  // > 0: CNTL(1), the relative threshold of partial pivoting (MUMPS's default 0.01)
-  int refinement_steps = 0;    // > 0: ICNTL(10), at most this many steps of iterative refinement per solve
-};
-
 class ComplexLu {
  public:
   // `prefix` is the options prefix ("viscous_st_", "response_"); comm the matrices' communicator.
-  ComplexLu(MPI_Comm comm, std::string prefix, const ComplexLuSettings& settings = {});
+  ComplexLu(MPI_Comm comm, std::string prefix);
   ~ComplexLu();
   ComplexLu(const ComplexLu&) = delete;
   ComplexLu& operator=(const ComplexLu&) = delete;

@@ -30,6 +30,21 @@ std::vector<ViscousMode> backward_errors(const ViscousForms& forms, std::vector<
   return modes;
 }
 
+// This rank's share of the pencil: the rows PETSc will give it (block_pencil.cpp splits the complex rows as
+// PetscSplitOwnership does). Every rank assembles the whole pencil (a quarter of a second at 183 000 unknowns), but
+// the matrices' assembly adds up what the ranks hand in, so each hands in only its own rows.
+Triplets owned_rows(const Triplets& all, MPI_Comm comm, int size) {
+  PetscInt local = PETSC_DECIDE, global = size;
+  petsc_check(PetscSplitOwnership(comm, &local, &global), "PetscSplitOwnership");
+  PetscInt end = 0;
+  MPI_Scan(&local, &end, 1, MPIU_INT, MPI_SUM, comm);
+  const PetscInt begin = end - local;
+  Triplets mine;
+  for (std::size_t k = 0; k < all.v.size(); ++k)
+    if (all.i[k] >= begin && all.i[k] < end) mine.add(all.i[k], all.j[k], all.v[k]);
+  return mine;
+}
+
 }  // namespace
 
 std::vector<ViscousMode> shell_modes_near(const ShellSettings& settings, std::complex<double> target, int pairs,
@@ -38,24 +53,19 @@ std::vector<ViscousMode> shell_modes_near(const ShellSettings& settings, std::co
   ViscousForms forms;
   const int n = pencil.size;
   forms.complex_size = n;
-  forms.A = block_operator(comm, n, pencil.a_real, pencil.a_imag, pencil.mass);
-  forms.M = block_mass(comm, n, pencil.mass);
-  forms.iM = block_imaginary_mass(comm, n, pencil.mass);
+  const Triplets a_real = owned_rows(pencil.a_real, comm, n), a_imag = owned_rows(pencil.a_imag, comm, n),
+                 mass = owned_rows(pencil.mass, comm, n);
+  forms.A = block_operator(comm, n, a_real, a_imag, mass);
+  forms.M = block_mass(comm, n, mass);
+  forms.iM = block_imaginary_mass(comm, n, mass);
   forms.coupling = block_vector(forms.A, std::vector<double>(n, 0.0));
   forms.real_slots = block_vector(forms.A, std::vector<double>(n, 1.0));
   ViscousSolveSettings solve;
   solve.pairs = pairs;
-  // A shell's high harmonics vary as r^l and r^−(l+1) across it, and its factors need more care than MUMPS's
-  // defaults (measured, docs/spherical.md §3): with the default pivoting threshold (0.01) they lost the spin-over mode
-  // at twice the default truncation (Ek = 1e-4) and 1e-9 of its decay at Ek = 1e-5 (0.1: Kore's values to 2e-13, same
-  // time); without iterative refinement the decay at Ek = 1e-6 was 2.8e-10 off (backward error 3.7e-12; one step per
-  // solve: 3.5e-13 and 1.3e-17, for half as much time again). The full sphere's basis has no r^−(l+1): at its default
-  // truncations it is as accurate without either (1e-12 … 4e-12 at Ek = 1e-5 … 1e-6), where they cost it a quarter
-  // to two thirds more time.
-  if (settings.inner_radius > 0) {
-    solve.factors.pivot_threshold = 0.1;
-    solve.factors.refinement_steps = 1;
-  }
+  // MUMPS's defaults (pivoting threshold 0.01, no refinement) hold the shell's and the sphere's decay to Kore's at
+  // the rounding floor once each block's wall rows come first (shell_pencil.cpp); with the wall rows last they lost
+  // the mode at high truncations, and the cure then (threshold 0.1, refinement) cost up to five times the time
+  // (docs/spherical.md §3).
   std::vector<ViscousMode> modes = backward_errors(forms, viscous_modes_near(forms, target, solve));
   return modes;
 }

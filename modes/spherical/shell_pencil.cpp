@@ -42,23 +42,24 @@ struct Layout {
 };
 
 // Adds rows 0 … rows − 1 of the equation of block `row_block` (harmonic degree lr), columns of the scalar in block
-// `col_block` (degree lc), of `op` × factor into `out`.
+// `col_block` (degree lc), of `op` × factor into `out`. They go below the block's wall rows: equation row i, whose
+// highest derivative sits in coefficient i + (its order), lands near the diagonal there.
 void add_block(Triplets& out, const Layout& layout, const SparseMatrix& op, double factor, int rows, int row_block,
                int lr, int col_block, int lc) {
-  const int n = layout.s.radial;
+  const int n = layout.s.radial, walls = n - rows;
   for (int i = 0; i < rows; ++i) {
     const int di = layout.degree(lr, i);
     for (SparseMatrix::InnerIterator it(op, di); it; ++it) {
       const int dj = static_cast<int>(it.col());
       const int j = layout.sphere() ? (dj - lc % 2) / 2 : dj;
       if (j < 0 || j >= n || layout.degree(lc, j) != dj) continue;  // the other parity (zero) or beyond the cut
-      out.add(row_block * n + i, col_block * n + j, factor * it.value());
+      out.add(row_block * n + walls + i, col_block * n + j, factor * it.value());
     }
   }
 }
 
-// The wall rows of block b (degree l) replacing its equation's last rows: T = 0 (toroidal) or P = P′ = 0 at r = 1
-// and, in a shell, at r = r_i.
+// The wall rows of block b (degree l), which replace its equation's last rows (the tau method) and are placed first
+// in the block: T = 0 (toroidal) or P = P′ = 0 at r = 1 and, in a shell, at r = r_i.
 void add_walls(Triplets& out, const Layout& layout, const Radial& radial, int b, int l, bool toroidal) {
   const int n = layout.s.radial;
   std::vector<std::pair<double, int>> conditions;  // (x of the wall, derivative order)
@@ -66,7 +67,7 @@ void add_walls(Triplets& out, const Layout& layout, const Radial& radial, int b,
     conditions.emplace_back(x, 0);
     if (!toroidal) conditions.emplace_back(x, 1);
   }
-  int row = b * n + n - static_cast<int>(conditions.size());
+  int row = b * n;
   for (auto [x, order] : conditions) {
     for (int j = 0; j < n; ++j) {
       const int d = layout.degree(l, j);

@@ -59,12 +59,12 @@ PetscErrorCode apply_shift_invert(Mat T, Vec x, Vec y) {
 }
 
 // S = Â − Re τ M̂ − Im τ (block of i𝓜), factorised once (MUMPS's settings and the -viscous_st_ options: complex_lu.hpp).
-void factorise(ShiftInvert& op, std::complex<double> target, MPI_Comm comm, const ComplexLuSettings& factors = {}) {
+void factorise(ShiftInvert& op, std::complex<double> target, MPI_Comm comm) {
   PMat S;
   petsc_check(MatDuplicate(op.forms->A, MAT_COPY_VALUES, S.out()), "MatDuplicate");
   petsc_check(MatAXPY(S, -target.real(), op.forms->M, SUBSET_NONZERO_PATTERN), "MatAXPY");  // Â holds their patterns
   petsc_check(MatAXPY(S, -target.imag(), op.forms->iM, SUBSET_NONZERO_PATTERN), "MatAXPY");
-  op.lu = std::make_unique<ComplexLu>(comm, "viscous_st_", factors);
+  op.lu = std::make_unique<ComplexLu>(comm, "viscous_st_");
   op.lu->factor(S);
   petsc_check(MatCreateVecs(op.forms->M, op.work.out(), nullptr), "MatCreateVecs");
 }
@@ -332,7 +332,7 @@ std::vector<ViscousMode> viscous_modes_near(const ViscousForms& forms, std::comp
   MPI_Comm comm = PetscObjectComm(reinterpret_cast<PetscObject>(forms.A.get()));
   ShiftInvert op;
   op.forms = &forms;
-  factorise(op, target, comm, settings.factors);
+  factorise(op, target, comm);
   PetscInt local = 0, global = 0;
   petsc_check(MatGetLocalSize(forms.A, &local, nullptr), "MatGetLocalSize");
   petsc_check(MatGetSize(forms.A, &global, nullptr), "MatGetSize");

@@ -9,7 +9,6 @@
 // then needs few solves (docs/viscous.md, "Discretisation and solver").
 #pragma once
 
-#include "complex_lu.hpp"
 #include "viscous_forms.hpp"
 
 #include <complex>
@@ -47,7 +46,6 @@ struct ViscousSolveSettings {
   bool keep_vector = false;  // keep each mode's eigenvector (for --fields)
   bool keep_block = false;   // keep each mode's block vector (ViscousMode::block)
   bool left_vectors = false; // also each mode's left eigenvector (ViscousMode::left; implies keep_block)
-  ComplexLuSettings factors;  // MUMPS's pivoting and refinement for the factors of A − τ𝓜 (complex_lu.hpp)
 };
 
 // The damped modes closest to the complex target, sorted by distance from it. Throws std::runtime_error when

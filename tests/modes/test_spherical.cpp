@@ -153,19 +153,21 @@ TEST(SphericalShell, StokesLimitIsTheBesselRoots) {
 
 // Kore's own test (tests/spinover: the shell r_i = 0.35, both walls no-slip, Ek = 1e-3) to its reference eigenvalue,
 // and Kore's runs at Ek = 1e-4 (the shell) and 1e-5 (the full sphere), each converged to 1e-13 … 1e-10 by Kore's own
-// finer runs (data/reference/kore_*_spinover.csv).
+// finer runs (data/reference/kore_*_spinover.csv). The shell at 1e-4 also at twice the truncation: there MUMPS's
+// default pivoting lost the mode while each block's wall rows came last (docs/spherical.md §3).
 TEST(SphericalShell, SpinOverModeIsKoresAndConverges) {
   const auto shell = kore_values("shell"), sphere = kore_values("sphere");
   ASSERT_EQ(shell.count("1e-3") + shell.count("1e-4") + sphere.count("1e-5"), 3u);
-  struct Case { double ri, ek; cd kore; double tolerance; };
+  struct Case { double ri, ek; cd kore; double tolerance, factor = 1.0; };
   for (const Case& c : {Case{0.35, 1e-3, shell.at("1e-3"), 1e-12}, Case{0.35, 1e-4, shell.at("1e-4"), 1e-11},
-                        Case{0, 1e-5, sphere.at("1e-5"), 1e-9}}) {
+                        Case{0.35, 1e-4, shell.at("1e-4"), 1e-11, 2.0}, Case{0, 1e-5, sphere.at("1e-5"), 1e-9}}) {
     const cd target(1.0, 2.6 * std::sqrt(c.ek));  // the command's: the Ekman layer's decay (shell_command.cpp)
-    const ViscousMode m = nearest(settings(c.ri, c.ek), target);
-    const ViscousMode coarse = nearest(settings(c.ri, c.ek, true, 0.8), target);
+    const ViscousMode m = nearest(settings(c.ri, c.ek, true, c.factor), target);
+    const ViscousMode coarse = nearest(settings(c.ri, c.ek, true, 0.8 * c.factor), target);
     const double frequency = relative(m.lambda.real(), c.kore.real()), decay = relative(m.lambda.imag(), c.kore.imag());
-    std::printf("r_i = %g, Ek = %g: against Kore: frequency %.1e, decay %.1e; against 0.8 times the truncation %.1e\n",
-                c.ri, c.ek, frequency, decay, std::abs(m.lambda - coarse.lambda) / std::abs(m.lambda.imag()));
+    std::printf("r_i = %g, Ek = %g, %g times the truncation: against Kore: frequency %.1e, decay %.1e; against 0.8 "
+                "times it %.1e\n", c.ri, c.ek, c.factor, frequency, decay,
+                std::abs(m.lambda - coarse.lambda) / std::abs(m.lambda.imag()));
     EXPECT_LE(frequency, c.tolerance);
     EXPECT_LE(decay, c.tolerance);
     EXPECT_LE(m.residual, 1e-12);
