@@ -13,7 +13,8 @@
 //                                            − 2c_{l+1} l(l+2) [T′_{l+1} + (l+2) T_{l+1}/r]
 // multiplied by r² and r⁴ so that every coefficient is a polynomial; no-slip walls: T_l = P_l = P′_l = 0. The
 // toroidal equation is written in C^(2), the poloidal one in C^(4), and their last rows give way to the wall
-// conditions (the tau method). A full sphere has its centre inside [-1, 1] (r = x): each scalar has the parity of
+// conditions (the tau method), which are placed first in each block (docs/spherical.md §3: the diagonal MUMPS
+// pivots on). A full sphere has its centre inside [-1, 1] (r = x): each scalar has the parity of
 // its l, and only those Chebyshev polynomials are kept; a shell maps [r_i, 1] onto [-1, 1].
 //
 // The pencil is the one viscous/viscous_forms.hpp solves: A x = λ 𝓜 x with e^{iλt} (s = iλ: Re λ the frequency in
