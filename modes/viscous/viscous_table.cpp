@@ -139,11 +139,15 @@ struct BeyondMemory : std::runtime_error {
 };
 
 // The factorisation and its forms take about 10 kB per real unknown (measured 2026-11-27 at P6: 2.26 GB at 224 034
-// unknowns, 7.2 GB at 762 704); a round is allowed 60 % of the machine's memory (all ranks together).
+// unknowns, 7.2 GB at 762 704); a refinement round is allowed 60 % of the machine's memory (all ranks together), the
+// first mesh — the one the user asked for — all of it.
 constexpr double kBytesPerViscousUnknown = 1.2e4;
-long most_viscous_unknowns() {
-  const double have = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
-  return have > 0 ? static_cast<long>(0.6 * have / kBytesPerViscousUnknown) : 0;
+double machine_bytes() {
+  return static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
+}
+long most_viscous_unknowns(double share = 0.6) {
+  const double have = machine_bytes();
+  return have > 0 ? static_cast<long>(share * have / kBytesPerViscousUnknown) : 0;
 }
 
 // Shares out the targets' rows solved on their own ranks (split: rank r solved every ranks-th target from r): the
@@ -477,7 +481,15 @@ ModeTable compute_viscous_table(const geometry::ShapeSpec& shape, const ViscousT
 
   Progress lines(report);  // at least every 5 s, with the time left (progress.hpp)
   const Rounds rounds{shape, ideal, s, lines};
-  Solved fine = solve_targets(shape, mesh, ideal.centroid_z, s, targets, energies, rounds.progress("viscous"));
+  Solved fine;
+  try {
+    fine = solve_targets(shape, mesh, ideal.centroid_z, s, targets, energies, rounds.progress("viscous"),
+                         most_viscous_unknowns(1.0));
+  } catch (const BeyondMemory& e) {  // refused in one line rather than killed by the system half-way
+    throw std::runtime_error(fmt::format("the viscous mesh ({}) has {}, more than this machine's {:.0f} GB: use a "
+                                         "larger --mesh-size or --wall-size (a sphere or spherical shell: cavity-modes "
+                                         "shell, docs/spherical.md)", mesh_text(mesh), e.what(), machine_bytes() / 1e9));
+  }
   drop_repeats(fine, targets, energies, report);
 
   ModeTable t = viscous_rows(ideal, fine, s.ekman, mesh);

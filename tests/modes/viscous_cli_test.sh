@@ -18,6 +18,10 @@ expect_error "NaN Ekman number" "outside" "$BIN" sphere --radius 1 --ekman nan -
 expect_error "Ekman number too small for this machine" "outside" "$BIN" cylinder --radius 1 --height 2 --ekman 1e-9 -o out.h5
 expect_error "wall mesh too coarse for the Ekman layer" "does not resolve the Ekman layer" "$BIN" sphere --radius 1 --ekman 1e-4 --wall-size 0.1 -o out.h5
 expect_error "wall size without --ekman" "applies with --ekman only" "$BIN" sphere --radius 1 --wall-size 0.01 -o out.h5
+# A first mesh beyond the machine's memory (7.2 million real unknowns, 86 GB): refused in one line after meshing
+# (5 s), not killed by the system half-way.
+expect_error "viscous mesh beyond the machine's memory" "more than this machine's" "$BIN" section \
+  "$(dirname "$0")/../../data/sections/shell.geo" --ekman 1e-6 --target 1.0 -o out.h5
 # --fields with --ekman: the damped modes' complex fields, checked against the table (check_viscous_fields.py).
 if "$BIN" sphere --radius 1 --ekman 1e-3 --modes 1 --no-convergence-check --fields \
      -o vfields.h5 > vfields.txt 2>&1 && [ -f vfields.xdmf ] && grep -q "mode0 V_imag" vfields.xdmf &&
