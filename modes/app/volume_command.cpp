@@ -176,18 +176,17 @@ int VolumeCommands::run(const std::string& command_line) const {
   const VolumeTableRequest request = resolve();
   if (common_.ekman > 0 && !common_.sigma.empty()) return run_response(request);
   if (common_.ekman > 0) return run_viscous(request, command_line);
-  // Every rank would compute the same table on its own and write the same file: refused until the 3-D matrices are
-  // distributed (docs/volume.md §6).
-  PetscMPIInt ranks = 1;
-  MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
-  if (ranks > 1)
-    throw std::runtime_error("3-D tables run on one process so far (docs/volume.md, \"What is not done yet\"): run "
-                             "without mpirun");
+  // Under mpirun the survey's matrices and vectors are split between the ranks; the fields re-find each row's modes
+  // in a sequential pencil, which is not (docs/volume.md §6).
+  if (request.fields && world_ranks() > 1)
+    throw std::runtime_error("--fields on a 3-D table runs on one process so far (docs/volume.md, \"What is not done "
+                             "yet\"): run it without mpirun");
   VolumeTableResult result =
       make_volume_table(request, [](const std::string& line) { if (is_root_rank()) std::cerr << line << "\n"; });
+  if (!is_root_rank()) return 0;
   set_provenance(result.table, command_line);
   write_mode_table(result.table, common_.output, result.fields ? &*result.fields : nullptr);
-  if (is_root_rank()) print_report(result);
+  print_report(result);
   return 0;
 }
 
@@ -218,8 +217,9 @@ std::vector<double> shared_from_root(std::vector<double> out, std::string error)
 }
 
 // The damped modes' targets: those given; else, printing only, the ellipsoid's spin-over in closed form (any tilt);
-// else the heaviest rows of the ideal table on the ideal mesh options, made on rank 0 (the ideal 3-D path is
-// sequential), which keeps it in `ideal_table` for a viscous table's tensors (made whenever one is written).
+// else the heaviest rows of the ideal table on the ideal mesh options, made by every rank together (the ideal 3-D
+// path is distributed), which keeps it in `ideal_table` for a viscous table's tensors (made whenever one is written);
+// rank 0's rows are the targets every rank follows.
 std::vector<double> viscous_targets(const VolumeTableRequest& ideal, const std::vector<double>& given, int modes,
                                     bool table_wanted, std::optional<ModeTable>& ideal_table) {
   if (!table_wanted && !given.empty()) return given;
@@ -229,20 +229,19 @@ std::vector<double> viscous_targets(const VolumeTableRequest& ideal, const std::
   }
   std::vector<double> out;
   std::string error;
-  if (is_root_rank()) {
+  if (is_root_rank())
     std::cerr << "3-D viscous: the ideal table first (" << (table_wanted ? "the cavity's tensors" : "the targets")
               << ")\n";
-    try {
-      VolumeTableRequest request = ideal;  // on the interior mesh: no wall grading, no layers (the ideal fluid's)
-      request.fields = false;
-      request.mesh.wall_size = 0;
-      request.mesh.wall_layer = 0;
-      request.mesh.near_wall_size = 0;
-      ideal_table = make_volume_table(request).table;
-      out = given.empty() ? heaviest_rows(*ideal_table, modes) : given;
-    } catch (const std::exception& e) {
-      error = e.what();
-    }
+  try {
+    VolumeTableRequest request = ideal;  // on the interior mesh: no wall grading, no layers (the ideal fluid's)
+    request.fields = false;
+    request.mesh.wall_size = 0;
+    request.mesh.wall_layer = 0;
+    request.mesh.near_wall_size = 0;
+    ideal_table = make_volume_table(request).table;
+    out = given.empty() ? heaviest_rows(*ideal_table, modes) : given;
+  } catch (const std::exception& e) {
+    error = e.what();
   }
   return shared_from_root(std::move(out), std::move(error));
 }

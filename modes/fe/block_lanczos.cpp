@@ -12,12 +12,12 @@ namespace {
 constexpr double kDeflation = 1e-10;  // a column this small against the block's scale is in the span already
 }
 
-BlockLanczos::BlockLanczos(const Eigen::VectorXd& weights, const Eigen::MatrixXd& start, int max_columns)
-    : weights_(weights), basis_(start.rows(), std::max<Eigen::Index>(max_columns, start.cols())),
+BlockLanczos::BlockLanczos(const Eigen::VectorXd& weights, const Eigen::MatrixXd& start, int max_columns,
+                           MPI_Comm comm)
+    : comm_(comm), weights_(weights), basis_(start.rows(), std::max<Eigen::Index>(max_columns, start.cols())),
       T_(Eigen::MatrixXd::Zero(basis_.cols(), basis_.cols())) {
   double scale = 0;
-  for (Eigen::Index j = 0; j < start.cols(); ++j)
-    scale = std::max(scale, std::sqrt(start.col(j).dot(weights_.cwiseProduct(start.col(j)))));
+  for (Eigen::Index j = 0; j < start.cols(); ++j) scale = std::max(scale, weighted_norm(start.col(j)));
   if (!(scale > 0)) throw std::invalid_argument("block Lanczos: zero start block");
   R0_ = append_block(start, scale);
   if (R0_.rows() == 0) throw std::invalid_argument("block Lanczos: zero start block");
@@ -33,17 +33,31 @@ Eigen::MatrixXd BlockLanczos::append_block(Eigen::MatrixXd U, double scale) {
     Eigen::VectorXd u = U.col(j);
     for (int pass = 0; pass < 2; ++pass) {
       const auto Q = basis_.leftCols(used_);
-      const Eigen::VectorXd h = Q.transpose() * weights_.cwiseProduct(u);
+      Eigen::MatrixXd h = Q.transpose() * weights_.cwiseProduct(u);
+      sum_over_ranks(h);
       u.noalias() -= Q * h;
       // The coefficients on this block's own new columns are B's entries (the rest is T's or reorthogonalisation).
       for (Eigen::Index i = first; i < used_; ++i) coef(i - first, j) += h(i);
     }
-    const double norm = std::sqrt(u.dot(weights_.cwiseProduct(u)));
+    const double norm = weighted_norm(u);
     if (!(norm > kDeflation * scale) || used_ >= basis_.cols()) continue;
     basis_.col(used_++) = u / norm;
     coef(kept++, j) = norm;
   }
   return coef.topRows(kept);
+}
+
+void BlockLanczos::sum_over_ranks(Eigen::MatrixXd& m) const {
+  int ranks = 1;
+  MPI_Comm_size(comm_, &ranks);
+  if (ranks > 1) MPI_Allreduce(MPI_IN_PLACE, m.data(), static_cast<int>(m.size()), MPI_DOUBLE, MPI_SUM, comm_);
+}
+
+double BlockLanczos::weighted_norm(const Eigen::VectorXd& u) const {
+  Eigen::MatrixXd square(1, 1);
+  square(0, 0) = u.dot(weights_.cwiseProduct(u));
+  sum_over_ranks(square);
+  return std::sqrt(square(0, 0));
 }
 
 bool BlockLanczos::step(const Apply& apply) {
@@ -56,11 +70,12 @@ bool BlockLanczos::step(const Apply& apply) {
   for (Eigen::Index j = 0; j < b; ++j) {
     apply(basis_.col(block_begin_ + j), out);
     U.col(j) = out;
-    scale = std::max(scale, std::sqrt(out.dot(weights_.cwiseProduct(out))));
+    scale = std::max(scale, weighted_norm(out));
   }
   // T's columns of this block: the projections on every basis vector so far (full orthogonalisation).
   const auto Q = basis_.leftCols(used_);
-  const Eigen::MatrixXd H = Q.transpose() * weights_.asDiagonal() * U;
+  Eigen::MatrixXd H = Q.transpose() * weights_.asDiagonal() * U;
+  sum_over_ranks(H);
   T_.block(0, block_begin_, used_, b) = H;
   U.noalias() -= Q * H;
   const Eigen::Index before = used_;

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <petscsys.h>  // MPI, as PETSc includes it (without the C++ bindings)
 
 #include <functional>
 #include <vector>
@@ -26,8 +27,11 @@ class BlockLanczos {
  public:
   using Apply = std::function<void(const Eigen::VectorXd& in, Eigen::VectorXd& out)>;
 
-  // weights: the inner product; start: the block (columns); at most max_columns basis vectors in all.
-  BlockLanczos(const Eigen::VectorXd& weights, const Eigen::MatrixXd& start, int max_columns);
+  // weights: the inner product; start: the block (columns); at most max_columns basis vectors in all. Under mpirun
+  // each rank may hold some of the vectors' rows (`comm`: the inner products are summed over it); the small
+  // projected problem is then the same on every rank.
+  BlockLanczos(const Eigen::VectorXd& weights, const Eigen::MatrixXd& start, int max_columns,
+               MPI_Comm comm = MPI_COMM_SELF);
 
   // One block step; false when the space became invariant or the column budget is spent.
   bool step(const Apply& apply);
@@ -39,7 +43,11 @@ class BlockLanczos {
   // Orthonormalises the columns of U against the basis and each other (twice), appends the independent ones and
   // returns their coefficients (rows: new columns, in order) — the block's B.
   Eigen::MatrixXd append_block(Eigen::MatrixXd U, double scale);
+  // Sums a block of inner products over the ranks' rows (in place).
+  void sum_over_ranks(Eigen::MatrixXd& m) const;
+  double weighted_norm(const Eigen::VectorXd& u) const;
 
+  MPI_Comm comm_;
   Eigen::VectorXd weights_;
   Eigen::MatrixXd basis_, T_, R0_, last_B_;
   Eigen::Index used_ = 0, block_begin_ = 0, block_end_ = 0;

@@ -39,6 +39,7 @@ using PMat = PetscHandle<Mat, MatDestroy>;
 using PVec = PetscHandle<Vec, VecDestroy>;
 using PKSP = PetscHandle<KSP, KSPDestroy>;
 using PPEP = PetscHandle<PEP, PEPDestroy>;
+using PVecScatter = PetscHandle<VecScatter, VecScatterDestroy>;
 
 // A polynomial eigensolver's spectral transformation: shift-and-invert, each shift's matrix factorised once by MUMPS
 // (pc_type PCLU or PCCHOLESKY), no Krylov iterations around the factorisation. Returns the ST for further settings.

@@ -1,6 +1,6 @@
 #include "volume_forms.hpp"
 
-#include "sparsity.hpp"
+#include "triplet_matrix.hpp"
 
 #include <algorithm>
 #include <vector>
@@ -8,49 +8,45 @@
 namespace rc::modes {
 namespace {
 
-PMat create_matrix(int n, const std::vector<PetscInt>& nnz) {
-  PMat A;
-  petsc_check(MatCreateSeqAIJ(PETSC_COMM_SELF, n, n, 0, nnz.data(), A.out()), "MatCreateSeqAIJ");
-  return A;
-}
-
-void finish(Mat A) {
-  petsc_check(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
-  petsc_check(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
-}
-
-// [A 0; 0 A] (off = false) or [0 −A; A 0] (off = true) from an n × n matrix.
-PMat two_by_two(Mat A, bool off) {
-  PetscInt n = 0;
-  petsc_check(MatGetSize(A, &n, nullptr), "MatGetSize");
-  std::vector<PetscInt> nnz(2 * n);
-  for (PetscInt i = 0; i < n; ++i) {
-    PetscInt nc = 0;
-    petsc_check(MatGetRow(A, i, &nc, nullptr, nullptr), "MatGetRow");
-    nnz[i] = nnz[n + i] = nc;
-    petsc_check(MatRestoreRow(A, i, &nc, nullptr, nullptr), "MatRestoreRow");
+// Element-matrix entries gathered for one matrix (the pinned node, index −1, left out).
+struct Entries {
+  std::vector<PetscInt> rows, cols;
+  std::vector<PetscScalar> values;
+  void add(PetscInt i, PetscInt j, double v) {
+    if (i < 0 || j < 0) return;
+    rows.push_back(i); cols.push_back(j); values.push_back(v);
   }
-  PMat B = create_matrix(2 * n, nnz);
-  for (PetscInt i = 0; i < n; ++i) {
+};
+
+PMat matrix_of(MPI_Comm comm, PetscInt n, const Entries& e) {
+  PetscInt local = PETSC_DECIDE, global = n;
+  petsc_check(PetscSplitOwnership(comm, &local, &global), "PetscSplitOwnership");
+  return triplet_matrix(comm, local, n, e.rows, e.cols, e.values);
+}
+
+// [A 0; 0 A] (off = false) or [0 −A; A 0] (off = true) from an n × n matrix, each rank handing in its rows of A.
+PMat two_by_two(Mat A, bool off) {
+  PetscInt n = 0, lo = 0, hi = 0;
+  petsc_check(MatGetSize(A, &n, nullptr), "MatGetSize");
+  petsc_check(MatGetOwnershipRange(A, &lo, &hi), "MatGetOwnershipRange");
+  Entries e;
+  for (PetscInt i = lo; i < hi; ++i) {
     PetscInt nc = 0;
     const PetscInt* cols = nullptr;
     const PetscScalar* vals = nullptr;
     petsc_check(MatGetRow(A, i, &nc, &cols, &vals), "MatGetRow");
-    std::vector<PetscInt> shifted(cols, cols + nc);
-    std::vector<PetscScalar> negated(vals, vals + nc);
-    for (auto& c : shifted) c += n;
-    for (auto& v : negated) v = -v;
-    const PetscInt lower = n + i;
-    if (off) {
-      petsc_check(MatSetValues(B, 1, &i, nc, shifted.data(), negated.data(), INSERT_VALUES), "MatSetValues");
-      petsc_check(MatSetValues(B, 1, &lower, nc, cols, vals, INSERT_VALUES), "MatSetValues");
-    } else {
-      petsc_check(MatSetValues(B, 1, &i, nc, cols, vals, INSERT_VALUES), "MatSetValues");
-      petsc_check(MatSetValues(B, 1, &lower, nc, shifted.data(), vals, INSERT_VALUES), "MatSetValues");
+    for (PetscInt k = 0; k < nc; ++k) {
+      if (off) {
+        e.add(i, n + cols[k], -vals[k]);
+        e.add(n + i, cols[k], vals[k]);
+      } else {
+        e.add(i, cols[k], vals[k]);
+        e.add(n + i, n + cols[k], vals[k]);
+      }
     }
     petsc_check(MatRestoreRow(A, i, &nc, &cols, &vals), "MatRestoreRow");
   }
-  finish(B);
+  PMat B = matrix_of(PetscObjectComm(reinterpret_cast<PetscObject>(A)), 2 * n, e);
   petsc_check(MatSetOption(B, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
   return B;
 }
@@ -83,17 +79,21 @@ VolumeIntegrals integrate_volume(const VolumeSpace& space) {
   return f;
 }
 
-VolumeForms assemble_volume_forms(const VolumeSpace& space) {
+ElementRange rank_elements(const VolumeSpace& space, MPI_Comm comm) {
+  int rank = 0, ranks = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &ranks);
+  const std::size_t n = space.num_elements(), r = static_cast<std::size_t>(rank), p = static_cast<std::size_t>(ranks);
+  return {n * r / p, n * (r + 1) / p};
+}
+
+VolumeForms assemble_volume_forms(const VolumeSpace& space, MPI_Comm comm) {
   const int n = space.ndof(), npe = space.nodes_per_element();
-  const auto nnz = row_nonzeros(space);
-  VolumeForms F;
-  F.M = create_matrix(n, nnz);
-  F.Kz = create_matrix(n, nnz);
-  F.G = create_matrix(n, nnz);
+  Entries em, ekz, eg;
   VolumeQuadrature eq;
   std::vector<double> m(npe * npe), kz(npe * npe), g(npe * npe);
-  std::vector<PetscInt> idx(npe);
-  for (std::size_t e = 0; e < space.num_elements(); ++e) {
+  const ElementRange mine = rank_elements(space, comm);
+  for (std::size_t e = mine.begin; e < mine.end; ++e) {
     space.quadrature(e, eq);
     std::fill(m.begin(), m.end(), 0.0); std::fill(kz.begin(), kz.end(), 0.0); std::fill(g.begin(), g.end(), 0.0);
     for (std::size_t q = 0; q < eq.w.size(); ++q) {
@@ -106,13 +106,18 @@ VolumeForms assemble_volume_forms(const VolumeSpace& space) {
           g[i * npe + j] += (Y[i] * X[j] - X[i] * Y[j]) * w;  // q_y p_x − q_x p_y
         }
     }
-    const auto dofs = space.element_dofs(e);
-    for (int a = 0; a < npe; ++a) idx[a] = dofs[a];  // the pinned node (-1) is ignored by PETSc
-    petsc_check(MatSetValues(F.M, npe, idx.data(), npe, idx.data(), m.data(), ADD_VALUES), "MatSetValues");
-    petsc_check(MatSetValues(F.Kz, npe, idx.data(), npe, idx.data(), kz.data(), ADD_VALUES), "MatSetValues");
-    petsc_check(MatSetValues(F.G, npe, idx.data(), npe, idx.data(), g.data(), ADD_VALUES), "MatSetValues");
+    const auto dofs = space.element_dofs(e);  // the pinned node (−1) is left out
+    for (int a = 0; a < npe; ++a)
+      for (int b = 0; b < npe; ++b) {
+        em.add(dofs[a], dofs[b], m[a * npe + b]);
+        ekz.add(dofs[a], dofs[b], kz[a * npe + b]);
+        eg.add(dofs[a], dofs[b], g[a * npe + b]);
+      }
   }
-  for (Mat A : {F.M.get(), F.Kz.get(), F.G.get()}) finish(A);
+  VolumeForms F;
+  F.M = matrix_of(comm, n, em);
+  F.Kz = matrix_of(comm, n, ekz);
+  F.G = matrix_of(comm, n, eg);
   petsc_check(MatSetOption(F.M, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
   petsc_check(MatSetOption(F.M, MAT_SPD, PETSC_TRUE), "MatSetOption");
   return F;

@@ -27,12 +27,21 @@ struct VolumeIntegrals {
 };
 VolumeIntegrals integrate_volume(const VolumeSpace& space);
 
+// This rank's share of the elements under mpirun: a contiguous range, as even as the count allows (every rank holds
+// the whole mesh; the forms and the velocity space are built from each rank's share).
+struct ElementRange {
+  std::size_t begin = 0, end = 0;
+};
+ElementRange rank_elements(const VolumeSpace& space, MPI_Comm comm);
+
 struct VolumeForms {
   PMat M, Kz, G;
 };
-VolumeForms assemble_volume_forms(const VolumeSpace& space);
+// On `comm` (PETSC_COMM_SELF: sequential matrices; PETSC_COMM_WORLD: rows split between the ranks, each rank
+// assembling its share of the elements).
+VolumeForms assemble_volume_forms(const VolumeSpace& space, MPI_Comm comm = PETSC_COMM_SELF);
 
-// The real form above as the axisymmetric solver's forms (Kh = M − Kz, Gc = the antisymmetric block, no coupling
+// The real form above (on the forms' communicator) as the axisymmetric solver's forms (Kh = M − Kz, Gc = the antisymmetric block, no coupling
 // functionals): QuadraticEigenSolver solves it (every eigenvalue twice).
 PoincareForms real_form_pencil(const VolumeForms& forms);
 

@@ -99,7 +99,7 @@ template <class Map, class ResidualMap>
 RuleRun run_rule(const VolumeVelocity& V, const Eigen::MatrixXd& start, const BlockLanczos::Apply& apply, int columns,
                  Map map, ResidualMap residual_map, double lo, double hi, double heavy, const VolumeSurveySettings& s,
                  const Finished& finished) {
-  BlockLanczos lanczos(V.weights(), start, columns);
+  BlockLanczos lanczos(V.weights(), start, columns, V.comm());
   RuleRun run;
   std::vector<VolumeMode> before;
   bool more = true;
@@ -243,7 +243,8 @@ VolumeSurvey survey_volume_modes(const VolumeVelocity& V, const StiffnessSolver&
     V.project(M, t);
     out = t;
   };
-  const double mass = 0.5 * (start.transpose() * V.weights().asDiagonal() * start).trace();
+  double mass = 0.5 * (start.transpose() * V.weights().asDiagonal() * start).trace();
+  V.sum_over_ranks(&mass, 1);
   const double heavy = s.floor * mass;
   const RuleRun plain = run_rule(
       V, start, apply, s.max_columns, [](double l) { return l; }, [](double, double r) { return r; }, s.lambda_floor,

@@ -1,5 +1,7 @@
 #include "volume_table.hpp"
 
+#include "mesh_broadcast.hpp"
+
 #include "convergence.hpp"
 #include "progress.hpp"
 #include "table_assembly.hpp"
@@ -128,14 +130,17 @@ VolumeTableResult make_volume_table(const VolumeTableRequest& request,
   const auto start = std::chrono::steady_clock::now();
   Progress lines(progress);
   lines.step("meshing the 3-D cavity");
-  VolumeSpace space(geometry::mesh_volume(request.shape, request.mesh));
+  // Under mpirun rank 0 meshes and sends the mesh (gmsh may mesh differently on two ranks); every rank holds it
+  // whole, the matrices and the velocity space are split between the ranks (volume_forms.hpp, volume_velocity.hpp).
+  VolumeSpace space(volume_mesh_on_root([&] { return geometry::mesh_volume(request.shape, request.mesh); },
+                                        PETSC_COMM_WORLD));
   refuse_beyond_memory(space);
   lines.step(fmt::format("forms and the stiffness factorisation: {} unknowns", space.ndof()));
 
   const VolumeIntegrals fluid = integrate_volume(space);
-  const VolumeForms forms = assemble_volume_forms(space);
+  const VolumeForms forms = assemble_volume_forms(space, PETSC_COMM_WORLD);
   const StiffnessSolver M(forms.M, "stiff_", "the 3-D stiffness matrix");
-  const VolumeVelocity V(space, fluid.centroid);
+  const VolumeVelocity V(space, fluid.centroid, PETSC_COMM_WORLD);
   const Tensor3 J = zhukovsky_tensor(V, M);
   VolumeTableResult out;
   lines.step("block Lanczos survey of the coupling measure");

@@ -2,10 +2,11 @@
 
 namespace rc::modes {
 
-VolumeVelocity::VolumeVelocity(const VolumeSpace& space, const std::array<double, 3>& centroid)
-    : npe_(space.nodes_per_element()), ndof_(space.ndof()) {
+VolumeVelocity::VolumeVelocity(const VolumeSpace& space, const std::array<double, 3>& centroid, MPI_Comm comm)
+    : comm_(comm), npe_(space.nodes_per_element()), ndof_(space.ndof()) {
   VolumeQuadrature eq;
-  for (std::size_t e = 0; e < space.num_elements(); ++e) {
+  const ElementRange mine = rank_elements(space, comm);
+  for (std::size_t e = mine.begin; e < mine.end; ++e) {
     space.quadrature(e, eq);
     const auto dofs = space.element_dofs(e);
     for (std::size_t q = 0; q < eq.w.size(); ++q) {
@@ -66,6 +67,13 @@ void VolumeVelocity::divergence(const Eigen::VectorXd& v, std::vector<double>& g
       g[ndof_ + d] += w * (gx_[i] * a[3] + gy_[i] * a[4] + gz_[i] * a[5]);
     }
   }
+  sum_over_ranks(g.data(), static_cast<int>(g.size()));
+}
+
+void VolumeVelocity::sum_over_ranks(double* values, int count) const {
+  int ranks = 1;
+  MPI_Comm_size(comm_, &ranks);
+  if (ranks > 1) MPI_Allreduce(MPI_IN_PLACE, values, count, MPI_DOUBLE, MPI_SUM, comm_);
 }
 
 void VolumeVelocity::add_gradient(const std::vector<double>& p, double scale, Eigen::VectorXd& v) const {

@@ -20,7 +20,13 @@ namespace rc::modes {
 
 class VolumeVelocity {
  public:
-  VolumeVelocity(const VolumeSpace& space, const std::array<double, 3>& centroid);
+  // Under mpirun (`comm` of several ranks) each rank holds the points of its share of the elements (rank_elements):
+  // the vectors' rows are split, divergence() sums over the ranks, and inner products need sum_over_ranks.
+  VolumeVelocity(const VolumeSpace& space, const std::array<double, 3>& centroid, MPI_Comm comm = PETSC_COMM_SELF);
+
+  MPI_Comm comm() const { return comm_; }
+  // Σ over the ranks, in place (identity on one rank).
+  void sum_over_ranks(double* values, int count) const;
 
   Eigen::Index size() const { return weights_.size(); }
   const Eigen::VectorXd& weights() const { return weights_; }
@@ -31,9 +37,9 @@ class VolumeVelocity {
 
   // out = S v.
   void coriolis(const Eigen::VectorXd& v, Eigen::VectorXd& out) const;
-  // g = Gᵀ Ω v: the weak divergence of (V_r, V_i), 2·ndof.
+  // g = Gᵀ Ω v: the weak divergence of (V_r, V_i), 2·ndof, whole on every rank.
   void divergence(const Eigen::VectorXd& v, std::vector<double>& g) const;
-  // v += scale · G p, p of length 2·ndof.
+  // v += scale · G p, p of length 2·ndof (whole).
   void add_gradient(const std::vector<double>& p, double scale, Eigen::VectorXd& v) const;
   // v <- P_H v (`solver` factorises M).
   void project(const StiffnessSolver& solver, Eigen::VectorXd& v) const;
@@ -41,6 +47,7 @@ class VolumeVelocity {
   static void shifted_coriolis_inverse(double sigma, Eigen::VectorXd& v);
 
  private:
+  MPI_Comm comm_;
   int npe_ = 0, ndof_ = 0;
   std::vector<double> omega_, rel_;   // weight and position relative to the centroid at each point
   std::vector<int> dof_;              // per point, per local basis function
