@@ -86,14 +86,16 @@ void add_volume_bands(ModeTable& t, const VolumeSurvey& survey, double lambda_fl
 // The survey keeps up to 360 velocity-space vectors (six reals per quadrature point) besides the factorisations:
 // measured 2026-11-27, 120 kB per unknown at P6 (61 801 unknowns, 7.4 GB) and 80 kB at P4. A mesh that cannot fit is
 // refused at once rather than killed by the system half-way.
+// Under mpirun on one machine each further rank adds about 60 % of it (each holds the mesh and its own share; measured
+// 2026-11-28 at P6: 7.45 GB on one rank, 5.79 GB on each of two).
 void refuse_beyond_memory(const VolumeSpace& space) {
   constexpr double kBytesPerUnknown = 1.3e5;
-  const double need = kBytesPerUnknown * space.ndof();
+  const double need = kBytesPerUnknown * space.ndof() * (1 + 0.6 * (world_ranks() - 1));
   const double have = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
   if (have > 0 && need > have)
-    throw std::runtime_error(fmt::format("the 3-D mesh has {} unknowns, about {:.0f} GB for the survey, more than this "
-                                         "machine's {:.0f} GB: use a larger --mesh-size, a --wall-size or a lower --order",
-                                         space.ndof(), need / 1e9, have / 1e9));
+    throw std::runtime_error(fmt::format("the 3-D mesh has {} unknowns, about {:.0f} GB for the survey on {} rank(s), "
+                                         "more than this machine's {:.0f} GB: use a larger --mesh-size, a --wall-size or "
+                                         "a lower --order", space.ndof(), need / 1e9, world_ranks(), have / 1e9));
 }
 
 std::string solver_text(const VolumeSurvey& s) {
