@@ -176,11 +176,6 @@ int VolumeCommands::run(const std::string& command_line) const {
   const VolumeTableRequest request = resolve();
   if (common_.ekman > 0 && !common_.sigma.empty()) return run_response(request);
   if (common_.ekman > 0) return run_viscous(request, command_line);
-  // Under mpirun the survey's matrices and vectors are split between the ranks; the fields re-find each row's modes
-  // in a sequential pencil, which is not (docs/volume.md §6).
-  if (request.fields && world_ranks() > 1)
-    throw std::runtime_error("--fields on a 3-D table runs on one process so far (docs/volume.md, \"What is not done "
-                             "yet\"): run it without mpirun");
   VolumeTableResult result =
       make_volume_table(request, [](const std::string& line) { if (is_root_rank()) std::cerr << line << "\n"; });
   if (!is_root_rank()) return 0;

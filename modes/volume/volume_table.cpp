@@ -173,9 +173,13 @@ VolumeTableResult make_volume_table(const VolumeTableRequest& request,
   t.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   t.sort_by_energy();
   t.validate();
-  if (request.fields) {
+  // The fields re-find each row's modes in the pressure pencil, whose solver (qep_solver.hpp) is sequential: under
+  // mpirun rank 0 does it alone, on sequential forms of its own (it holds the whole mesh), and writes them.
+  if (request.fields && is_root_rank()) {
     lines.step("fields: each row's modes re-found in the pressure pencil");
-    out.fields = volume_mode_fields(space, forms, fluid.centroid, t, progress);
+    const bool distributed = world_ranks() > 1;
+    const VolumeForms sequential = distributed ? assemble_volume_forms(space, PETSC_COMM_SELF) : VolumeForms{};
+    out.fields = volume_mode_fields(space, distributed ? sequential : forms, fluid.centroid, t, progress);
   }
   return out;
 }
