@@ -90,34 +90,51 @@ void equilibrate_rows(ShellPencil& p) {
     for (std::size_t k = 0; k < t->v.size(); ++k) t->v[k] /= largest[t->i[k]];
 }
 
-}  // namespace
+// The radial operators of both equations (shell_pencil.hpp), times r² and r⁴ (term(top, derivative, power of r)).
+struct EquationTerms {
+  SparseMatrix viscous_t, t0, t_r2, t_dp, t_p, p4, p_d2, p0, p_lap, p_r2, p_dt, p_t;
+  explicit EquationTerms(const Radial& radial)
+      : viscous_t(radial.term(2, 2, 2) + 2 * radial.term(2, 1, 1)),  // r²T″ + 2rT′ (− L T in the equation)
+        t0(radial.term(2, 0, 0)), t_r2(radial.term(2, 0, 2)),
+        t_dp(radial.term(2, 1, 2)), t_p(radial.term(2, 0, 1)),       // r²P′, rP
+        p4(radial.term(4, 4, 4) + 4 * radial.term(4, 3, 3)),         // r⁴D_l² = p4 − 2L r²P″ + L(L−2)P
+        p_d2(radial.term(4, 2, 2)), p0(radial.term(4, 0, 0)),
+        p_lap(radial.term(4, 2, 4) + 2 * radial.term(4, 1, 3)),      // r⁴D_l = p_lap − L r²P
+        p_r2(radial.term(4, 0, 2)),
+        p_dt(radial.term(4, 1, 4)), p_t(radial.term(4, 0, 3)) {}     // r⁴T′, r³T
+};
 
-ShellPencil assemble_shell_pencil(const ShellSettings& s) {
+void check_settings(const ShellSettings& s) {
   if (!(s.ekman > 0)) throw std::invalid_argument("the Ekman number must be positive");
   if (!(s.inner_radius >= 0 && s.inner_radius < 1)) throw std::invalid_argument("the inner radius must be in [0, 1)");
   if (s.m < 0) throw std::invalid_argument("the azimuthal wavenumber m must be >= 0");
   if (s.radial < 8) throw std::invalid_argument("at least 8 Chebyshev coefficients per scalar are needed");
   if (s.lmax < std::max(s.m, 1) + 1) throw std::invalid_argument("lmax must exceed max(m, 1)");
-  const Layout layout{s};
-  const Radial radial(layout.full(), s.inner_radius);
-  const int l0 = std::max(s.m, 1), n = s.radial;  // l = 0 carries no flow
-  ShellPencil out;
+}
+
+// The blocks' harmonic degrees l = max(m, 1) … lmax (l = 0 carries no flow), toroidal and poloidal alternating.
+void set_blocks(const ShellSettings& s, ShellPencil& out) {
+  const int l0 = std::max(s.m, 1);
   for (int l = l0; l <= s.lmax; ++l) {
     out.degree.push_back(l);
     out.toroidal.push_back(((l - l0) % 2 == 0) == s.toroidal_first);
   }
+}
+
+}  // namespace
+
+ShellPencil assemble_shell_pencil(const ShellSettings& s) {
+  check_settings(s);
+  const Layout layout{s};
+  const Radial radial(layout.full(), s.inner_radius);
+  const int n = s.radial;
+  ShellPencil out;
+  set_blocks(s, out);
   const int blocks = static_cast<int>(out.degree.size());
   out.size = blocks * n;
   const double m = s.m, E = s.ekman;
   auto c = [&](int l) { return l > s.m ? std::sqrt((double(l) * l - m * m) / (4.0 * l * l - 1)) : 0.0; };
-  // The terms of both equations (shell_pencil.hpp), times r² and r⁴ (term(top, derivative, power of r)).
-  const SparseMatrix viscous_t = radial.term(2, 2, 2) + 2 * radial.term(2, 1, 1);  // r²T″ + 2rT′ (− L T below)
-  const SparseMatrix t0 = radial.term(2, 0, 0), t_r2 = radial.term(2, 0, 2);
-  const SparseMatrix t_dp = radial.term(2, 1, 2), t_p = radial.term(2, 0, 1);     // r²P′, rP
-  const SparseMatrix p4 = radial.term(4, 4, 4) + 4 * radial.term(4, 3, 3), p_d2 = radial.term(4, 2, 2),
-                     p0 = radial.term(4, 0, 0);                                   // r⁴D_l² = p4 − 2L r²P″ + L(L−2)P
-  const SparseMatrix p_lap = radial.term(4, 2, 4) + 2 * radial.term(4, 1, 3), p_r2 = radial.term(4, 0, 2);  // r⁴D_l = p_lap − L r²P
-  const SparseMatrix p_dt = radial.term(4, 1, 4), p_t = radial.term(4, 0, 3);     // r⁴T′, r³T
+  const auto& [viscous_t, t0, t_r2, t_dp, t_p, p4, p_d2, p0, p_lap, p_r2, p_dt, p_t] = EquationTerms(radial);
   for (int b = 0; b < blocks; ++b) {
     const int l = out.degree[b];
     const double L = double(l) * (l + 1);
