@@ -570,8 +570,11 @@ void ModeTable::check_identities() const {
                                           : "sum_rule = A_f - J_zh (%.12g against %.12g)", sum_rule, A_f + K2 - J_zh));
   const double tiny = 1e-12 * std::max(std::abs(sum_rule), 1e-300);
   for (std::size_t i = 0; i < E.size(); ++i) {
-    if (lambda[i] == 0) fail(formatted("lambda != 0 (row %zu)", i + 1));
-    if (std::abs(kappa[i] * lambda[i] - 2) > 1e-9) fail(formatted("kappa = 2/lambda (row %zu: kappa %.9g, lambda %.9g)", i + 1, kappa[i], lambda[i]));
+    // A 3-D viscous response table's purely damped rows (the fluid's spin-up, docs/volume.md §7) have no frequency
+    // and no wavelength: lambda = 0, kappa = 0, decay > 0.
+    const bool spin_up = lambda[i] == 0 && viscous() && volume_cavity.present() && decay[i] > 0 && kappa[i] == 0;
+    if (lambda[i] == 0 && !spin_up) fail(formatted("lambda != 0 (row %zu)", i + 1));
+    if (!spin_up && std::abs(kappa[i] * lambda[i] - 2) > 1e-9) fail(formatted("kappa = 2/lambda (row %zu: kappa %.9g, lambda %.9g)", i + 1, kappa[i], lambda[i]));
     if (!(N2[i] > 0)) fail(formatted("N2 > 0 (row %zu: %.9g)", i + 1, N2[i]));
     if (!viscous() && !free_surface.present() && std::abs(lambda[i]) > 2 * (1 + 1e-9))
       fail(formatted("|lambda| <= 2 for an ideal fluid (row %zu: %.9g)", i + 1, lambda[i]));

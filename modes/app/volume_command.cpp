@@ -7,6 +7,7 @@
 #include "viscous_volume_run.hpp"
 #include "viscous_volume_table.hpp"
 #include "viscous_volume_response.hpp"
+#include "viscous_volume_response_table.hpp"
 #include "cavity_response.hpp"
 #include "volume_fields.hpp"
 
@@ -59,8 +60,14 @@ void add_common_options(CLI::App* cmd, Common& o) {
   cmd->add_flag("--no-convergence-check", [&o](std::int64_t) { o.convergence_check = false; },
                 "with --ekman -o: skip the comparison with the coarser mesh");
   cmd->add_option("--sigma", o.sigma, "with --ekman: the forced response's frequencies instead of modes, FROM:TO:N or a "
-                                      "list of complex numbers (0.5+0.1i,1.2): the 3 x 3 response tensor to -o FILE.csv "
-                                      "(docs/volume.md §7)");
+                                      "list of complex numbers (0.5+0.1i,1.2): the 3 x 3 response tensor to -o FILE.csv; "
+                                      "with -o FILE.h5 a response table for chain-rom on the real window FROM:TO:N, "
+                                      "FROM >= 0 (docs/volume.md §7)");
+  cmd->add_option("--max-fit-error", o.max_fit_error, "with --sigma -o FILE.h5: the response table's tolerance, "
+                                                      "relative to each entry's largest value on the window (default "
+                                                      "1e-4)");
+  cmd->add_option("--krylov-vectors", o.krylov_vectors, "with --sigma -o FILE.h5: Krylov vectors per input and "
+                                                        "expansion point, 1..16 (default 4)");
   cmd->add_option("--sigma-imag", o.sigma_imag, "with --sigma FROM:TO:N: the imaginary part of every frequency");
 }
 
@@ -149,8 +156,14 @@ VolumeTableRequest VolumeCommands::resolve() const {
     if (!(o.convergence_tolerance > 0 && o.convergence_tolerance < 1))
       throw std::runtime_error("--convergence-tolerance must be in (0, 1)");
     if (!o.sigma.empty() && !o.targets.empty()) throw std::runtime_error("--sigma computes no modes: drop --target");
-    if (!o.sigma.empty() && std::filesystem::path(o.output).extension() != ".csv")
-      throw std::runtime_error("--sigma writes the response as CSV: give -o FILE.csv");
+    const std::string ext = std::filesystem::path(o.output).extension().string();
+    if (!o.sigma.empty() && ext != ".csv" && ext != ".h5")
+      throw std::runtime_error("--sigma writes the response as CSV (-o FILE.csv) or as a response table (-o FILE.h5)");
+    if (!o.sigma.empty() && ext == ".h5") {
+      if (!(o.max_fit_error > 0 && o.max_fit_error < 1)) throw std::runtime_error("--max-fit-error must be in (0, 1)");
+      if (o.krylov_vectors < 1 || o.krylov_vectors > 16) throw std::runtime_error("--krylov-vectors must be in 1..16");
+      if (o.sigma_imag != 0) throw std::runtime_error("a response table's window is real: drop --sigma-imag");
+    }
   } else if (!o.targets.empty()) {
     throw std::runtime_error("--target needs --ekman");
   } else if (!o.sigma.empty()) {
@@ -174,6 +187,8 @@ void VolumeCommands::set_provenance(ModeTable& table, const std::string& command
 
 int VolumeCommands::run(const std::string& command_line) const {
   const VolumeTableRequest request = resolve();
+  if (common_.ekman > 0 && !common_.sigma.empty() && std::filesystem::path(common_.output).extension() == ".h5")
+    return run_response_table(request, command_line);
   if (common_.ekman > 0 && !common_.sigma.empty()) return run_response(request);
   if (common_.ekman > 0) return run_viscous(request, command_line);
   VolumeTableResult result =
@@ -211,6 +226,18 @@ std::vector<double> shared_from_root(std::vector<double> out, std::string error)
   return out;
 }
 
+// The ideal table of the same cavity on the interior mesh (the same order and --mesh-size; no wall grading and no
+// layers: the ideal fluid's), made by every rank together (the ideal 3-D path is distributed); rank 0's is the table.
+ModeTable ideal_tensors_table(const VolumeTableRequest& ideal, const std::string& what_for) {
+  if (is_root_rank()) std::cerr << "3-D viscous: the ideal table first (" << what_for << ")\n";
+  VolumeTableRequest request = ideal;
+  request.fields = false;
+  request.mesh.wall_size = 0;
+  request.mesh.wall_layer = 0;
+  request.mesh.near_wall_size = 0;
+  return make_volume_table(request).table;
+}
+
 // The damped modes' targets: those given; else, printing only, the ellipsoid's spin-over in closed form (any tilt);
 // else the heaviest rows of the ideal table on the ideal mesh options, made by every rank together (the ideal 3-D
 // path is distributed), which keeps it in `ideal_table` for a viscous table's tensors (made whenever one is written);
@@ -224,16 +251,8 @@ std::vector<double> viscous_targets(const VolumeTableRequest& ideal, const std::
   }
   std::vector<double> out;
   std::string error;
-  if (is_root_rank())
-    std::cerr << "3-D viscous: the ideal table first (" << (table_wanted ? "the cavity's tensors" : "the targets")
-              << ")\n";
   try {
-    VolumeTableRequest request = ideal;  // on the interior mesh: no wall grading, no layers (the ideal fluid's)
-    request.fields = false;
-    request.mesh.wall_size = 0;
-    request.mesh.wall_layer = 0;
-    request.mesh.near_wall_size = 0;
-    ideal_table = make_volume_table(request).table;
+    ideal_table = ideal_tensors_table(ideal, table_wanted ? "the cavity's tensors" : "the targets");
     out = given.empty() ? heaviest_rows(*ideal_table, modes) : given;
   } catch (const std::exception& e) {
     error = e.what();
@@ -349,6 +368,50 @@ int VolumeCommands::run_response(const VolumeTableRequest& ideal) const {
                              request.sigmas[i].imag(), m1.real(), m1.imag(), R(2, 2).real(), R(2, 2).imag());
   }
   std::cout << std::flush;
+  return 0;
+}
+
+int VolumeCommands::run_response_table(const VolumeTableRequest& ideal, const std::string& command_line) const {
+  VolumeResponseTableRequest request;
+  request.shape = ideal.shape;
+  request.mesh = ideal.mesh;
+  if (common_.wall_size == 0) request.mesh.wall_size = 2 * std::sqrt(common_.ekman);  // as for the damped modes
+  request.ekman = common_.ekman;
+  for (const std::complex<double> s : parse_sigma_spec(common_.sigma, 0.0)) {
+    if (s.imag() != 0 || !(s.real() >= 0)) throw std::runtime_error("a response table's window is real sigma >= 0 (the "
+                                                                    "table holds -sigma by symmetry): " + common_.sigma);
+    if (!request.window.empty() && !(s.real() > request.window.back()))
+      throw std::runtime_error("a response table's window must increase: " + common_.sigma);
+    request.window.push_back(s.real());
+  }
+  if (request.window.size() < 3) throw std::runtime_error("a response table's window needs at least 3 frequencies");
+  request.krylov.tolerance = common_.max_fit_error;
+  request.krylov.vectors_per_point = common_.krylov_vectors;
+  std::optional<ModeTable> ideal_table;
+  std::string error;
+  try {
+    ideal_table = ideal_tensors_table(ideal, "the cavity's tensors");
+  } catch (const std::exception& e) {
+    error = e.what();
+  }
+  shared_from_root({}, error);
+  const auto progress = [](const std::string& line) { if (is_root_rank()) std::cerr << line << "\n"; };
+  VolumeResponseTableResult r =
+      viscous_volume_response_table(is_root_rank() ? &*ideal_table : nullptr, request, progress);
+  if (!is_root_rank()) return 0;
+  const VolumeKrylovReduction& k = r.reduction;
+  if (!k.within_tolerance)
+    std::cerr << fmt::format("cavity-modes: warning: after {} expansion points the response table errs by {:.2g}, above "
+                             "--max-fit-error {:.2g}; it is written with that error (fit_error)\n", k.points.size(),
+                             r.table.fit_error, request.krylov.tolerance);
+  set_provenance(r.table, command_line);
+  write_mode_table(r.table, common_.output);
+  std::cout << fmt::format("3-D response table at Ek = {}: {} unknowns, {} expansion points, {} + {} basis vectors, "
+                           "{} poles, {:.1f} s; error estimate {:.2g}, measured at s = {:.6g}: {:.2g}, rows against "
+                           "the model {:.2g} (each relative to its entry's largest value on the window)\n",
+                           request.ekman, r.unknowns, k.points.size(), k.primal_vectors, k.dual_vectors,
+                           r.poles.size(), r.seconds, k.estimate, k.check_point, k.check_error, r.rows_error)
+            << table_text(r.table) << std::flush;
   return 0;
 }
 

@@ -1,7 +1,7 @@
 // The 3-D shape commands of cavity-modes (docs/volume.md): `ellipsoid --a --b --c [--tilt DEG]` and
 // `volume FILE` (.geo/.msh with a 3-D group "fluid", or CAD .step/.stp/.brep), each writing an ideal 3-D mode table,
 // or with --ekman the viscous fluid's damped modes and their coupling tensors, printed and, with -o, as a viscous table,
-// or with --ekman and --sigma its forced response (a CSV).
+// or with --ekman and --sigma its forced response: a CSV, or with -o FILE.h5 a response table for chain-rom.
 // The request is resolved here, once; make_volume_table gets only what it needs.
 #pragma once
 
@@ -30,6 +30,7 @@ class VolumeCommands {
   VolumeTableRequest resolve() const;
   int run_viscous(const VolumeTableRequest& ideal, const std::string& command_line) const;
   int run_response(const VolumeTableRequest& ideal) const;
+  int run_response_table(const VolumeTableRequest& ideal, const std::string& command_line) const;
   void set_provenance(ModeTable& table, const std::string& command_line) const;
   CLI::App *ellipsoid_ = nullptr, *volume_ = nullptr;
   double a_ = 0, b_ = 0, c_ = 0, tilt_degrees_ = 0;
@@ -47,6 +48,8 @@ class VolumeCommands {
     double convergence_tolerance = 1e-3;
     std::string sigma;            // with --ekman: the forced response's frequencies (docs/volume.md §7), no modes
     double sigma_imag = 0;
+    double max_fit_error = 1e-4;  // with --sigma -o FILE.h5: the response table's tolerance
+    int krylov_vectors = 4;       // and its Krylov vectors per input and expansion point
   } common_;
 };
 

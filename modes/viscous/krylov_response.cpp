@@ -1,5 +1,6 @@
 #include "krylov_response.hpp"
 
+#include "block_arrays.hpp"
 #include "dense_blas.hpp"
 #include "reduced_transfer.hpp"
 #include "shifted_solver.hpp"
@@ -17,24 +18,6 @@ namespace {
 
 using cd = std::complex<double>;
 
-// A block vector's local pairs (Re, Im) as complex numbers, and back (pairs never straddle ranks: viscous_forms.cpp).
-Eigen::VectorXcd local_of(Vec v) {
-  PetscInt n = 0;
-  const PetscScalar* a = nullptr;
-  petsc_check(VecGetLocalSize(v, &n), "VecGetLocalSize");
-  petsc_check(VecGetArrayRead(v, &a), "VecGetArrayRead");
-  Eigen::VectorXcd out = Eigen::Map<const Eigen::VectorXcd>(reinterpret_cast<const cd*>(a), n / 2);
-  petsc_check(VecRestoreArrayRead(v, &a), "VecRestoreArrayRead");
-  return out;
-}
-
-void store(const Eigen::VectorXcd& x, Vec v) {
-  PetscScalar* a = nullptr;
-  petsc_check(VecGetArray(v, &a), "VecGetArray");
-  Eigen::Map<Eigen::VectorXcd>(reinterpret_cast<cd*>(a), x.size()) = x;
-  petsc_check(VecRestoreArray(v, &a), "VecRestoreArray");
-}
-
 // The 𝓜-orthonormal basis and the small matrices of both projections, grown a block of vectors at a time (one
 // expansion point's Krylov vectors): the products with the basis are matrix–matrix products, one pass over its
 // memory per block rather than one per vector.
@@ -45,9 +28,9 @@ class KrylovBasis {
     petsc_check(VecDuplicate(forms.coupling, in_.out()), "VecDuplicate");
     petsc_check(VecDuplicate(forms.coupling, out_.out()), "VecDuplicate");
     const bool offset = forms.offset_coupling.get() != nullptr;
-    F_.resize(local_of(forms.coupling).size(), offset ? 2 : 1);
-    F_.col(0) = local_of(forms.coupling);
-    if (offset) F_.col(1) = local_of(forms.offset_coupling);
+    F_.resize(local_pairs(forms.coupling).size(), offset ? 2 : 1);
+    F_.col(0) = local_pairs(forms.coupling);
+    if (offset) F_.col(1) = local_pairs(forms.offset_coupling);
   }
 
   int size() const { return m_; }
@@ -102,9 +85,9 @@ class KrylovBasis {
 };
 
 Eigen::VectorXcd KrylovBasis::apply(Mat op, const Eigen::VectorXcd& x) {
-  store(x, in_);
+  store_pairs(x, in_);
   petsc_check(MatMult(op, in_, out_), "MatMult");
-  return local_of(out_);
+  return local_pairs(out_);
 }
 
 Eigen::MatrixXcd KrylovBasis::apply(Mat op, const Eigen::MatrixXcd& W) {
@@ -223,7 +206,7 @@ class Greedy {
     Eigen::MatrixXcd R(inputs(), inputs());
     for (Eigen::Index j = 0; j < inputs(); ++j) {
       solver_.solve(inputs_[static_cast<std::size_t>(j)], x_);
-      const Eigen::VectorXcd xs = local_of(x_);
+      const Eigen::VectorXcd xs = local_pairs(x_);
       R.col(j) = basis_.moments(xs);
       if (x) x->push_back(xs);
     }
@@ -242,9 +225,9 @@ class Greedy {
       Eigen::VectorXcd q = start;
       for (int j = 0; j < vectors; ++j) {
         if (j > 0) {
-          store(MW.col(k - 1), v_);
+          store_pairs(MW.col(k - 1), v_);
           solver_.solve(v_, x_);
-          q = local_of(x_);
+          q = local_pairs(x_);
         }
         Eigen::VectorXcd mq;
         if (!normalise_against(q, W.leftCols(k), MW.leftCols(k), mq)) break;

@@ -38,10 +38,10 @@ void ShiftedSolver::factor(std::complex<double> sigma) {
   factored_ = true;
 }
 
-void ShiftedSolver::solve(Vec b, Vec x) {
+void ShiftedSolver::solve(Vec b, Vec x, bool transposed) {
   if (!factored_) throw std::logic_error("ShiftedSolver::solve before factor");
   try {
-    lu_.solve(b, x);
+    lu_.solve(b, x, transposed);
   } catch (const std::runtime_error& e) {
     throw std::runtime_error("the forced solve at sigma = " + describe(sigma_) + " failed: " + e.what());
   }

@@ -23,8 +23,10 @@ class ShiftedSolver {
   // memory).
   void factor(std::complex<double> sigma);
 
-  // x = S(σ)⁻¹ b at the last factored σ (block vectors). Throws std::runtime_error when the solve fails.
-  void solve(Vec b, Vec x);
+  // x = S(σ)⁻¹ b at the last factored σ (block vectors); with `transposed`, x = S(σ)⁻ᵀ b (the plain transpose: the
+  // dual problem of a pencil that is not complex symmetric, viscous_volume_krylov.hpp). Throws std::runtime_error when
+  // the solve fails.
+  void solve(Vec b, Vec x, bool transposed = false);
 
  private:
   const ViscousForms& forms_;

@@ -19,27 +19,6 @@ void refuse_repeated_modes(const ViscousVolumeRequest& request, const ViscousVol
                                              request.targets[j], request.targets[i], result.modes[i].lambda.real()));
 }
 
-// One damped mode as a row: E + i·E_imag = H_xx + H_yy (the axisymmetric viscous table's complex coupling, docs/volume.md
-// §7), a + i·a_imag = √((E + i·E_imag)/2) with N2 = 1, κ = 2/λ.
-void add_row(ModeTable& t, const DampedVolumeMode& m) {
-  const std::complex<double> E = m.H(0, 0) + m.H(1, 1), a = std::sqrt(E / 2.0);
-  t.lambda.push_back(m.lambda.real());
-  t.decay.push_back(m.lambda.imag());
-  t.kappa.push_back(2 / m.lambda.real());
-  t.E.push_back(E.real());
-  t.E_imag.push_back(E.imag());
-  t.a.push_back(a.real());
-  t.a_imag.push_back(a.imag());
-  t.N2.push_back(1);
-  t.residual.push_back(std::max(m.residual, m.left_residual));
-  t.members.push_back(1);
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      t.volume_cavity.coupling_re.push_back(m.H(i, j).real());
-      t.volume_cavity.coupling_im.push_back(m.H(i, j).imag());
-    }
-}
-
 // The convergence columns, row by row in the targets' order (before the rows are sorted).
 void add_convergence(ModeTable& t, const ViscousVolumeResult& fine, const ViscousVolumeCheck& check) {
   if (check.coarse->modes.size() != fine.modes.size())
@@ -57,9 +36,27 @@ void add_convergence(ModeTable& t, const ViscousVolumeResult& fine, const Viscou
 
 }  // namespace
 
-ModeTable viscous_volume_table(const ModeTable& ideal, const ViscousVolumeRequest& request,
-                               const ViscousVolumeResult& result, const ViscousVolumeCheck& check) {
-  refuse_repeated_modes(request, result);
+void add_viscous_volume_row(ModeTable& t, std::complex<double> lambda, const Eigen::Matrix3cd& H, double residual) {
+  const std::complex<double> E = H(0, 0) + H(1, 1), a = std::sqrt(E / 2.0);
+  t.lambda.push_back(lambda.real());
+  t.decay.push_back(lambda.imag());
+  t.kappa.push_back(lambda.real() == 0 ? 0.0 : 2 / lambda.real());  // a purely damped row has no wavelength
+  t.E.push_back(E.real());
+  t.E_imag.push_back(E.imag());
+  t.a.push_back(a.real());
+  t.a_imag.push_back(a.imag());
+  t.N2.push_back(1);
+  t.residual.push_back(residual);
+  t.members.push_back(1);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      t.volume_cavity.coupling_re.push_back(H(i, j).real());
+      t.volume_cavity.coupling_im.push_back(H(i, j).imag());
+    }
+}
+
+ModeTable viscous_volume_table_start(const ModeTable& ideal, const geometry::MeshOptions& mesh, double mesh_h,
+                                     int unknowns, double ekman) {
   ModeTable t;
   t.shape = ideal.shape;
   t.dimensions = ideal.dimensions;
@@ -76,18 +73,26 @@ ModeTable viscous_volume_table(const ModeTable& ideal, const ViscousVolumeReques
   t.volume_cavity.band_coupling_re.clear();
   t.volume_cavity.band_coupling_im.clear();
   t.volume_cavity.band_lambda.clear();
-  t.fe_order = request.mesh.order;
-  t.mesh_h = result.mesh_h;
-  t.mesh_h_wall = request.mesh.wall_size;
-  t.ndof = result.unknowns;
-  t.ekman = request.ekman;
+  t.fe_order = mesh.order;
+  t.mesh_h = mesh_h;
+  t.mesh_h_wall = mesh.wall_size;
+  t.ndof = unknowns;
+  t.ekman = ekman;
+  t.tolerance = ideal.tolerance;
+  return t;
+}
+
+ModeTable viscous_volume_table(const ModeTable& ideal, const ViscousVolumeRequest& request,
+                               const ViscousVolumeResult& result, const ViscousVolumeCheck& check) {
+  refuse_repeated_modes(request, result);
+  ModeTable t = viscous_volume_table_start(ideal, request.mesh, result.mesh_h, result.unknowns, request.ekman);
   t.solver = "3-D Taylor-Hood P" + std::to_string(request.mesh.order) + "/P" + std::to_string(request.mesh.order - 1) +
              ", shift-and-invert Krylov-Schur on the damped pencil, left vectors by transposed inverse iteration "
              "(docs/volume.md §7); tensors from the ideal table (" + std::to_string(ideal.ndof) + " unknowns)";
-  t.tolerance = ideal.tolerance;
   t.normalisation = "3-D viscous: H = (f^T x)(f^T y)^T, y^T M x = 1 (docs/volume.md §7); E + i E_imag = H_xx + H_yy, "
                     "a + i a_imag = sqrt((E + i E_imag)/2), N2 = 1";
-  for (const DampedVolumeMode& m : result.modes) add_row(t, m);
+  for (const DampedVolumeMode& m : result.modes)
+    add_viscous_volume_row(t, m.lambda, m.H, std::max(m.residual, m.left_residual));
   if (check.coarse) add_convergence(t, result, check);
   double kept = 0;
   for (double E : t.E) kept += E;

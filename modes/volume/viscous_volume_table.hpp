@@ -7,6 +7,9 @@
 #include "mode_table.hpp"
 #include "viscous_volume_run.hpp"
 
+#include <Eigen/Core>
+
+#include <complex>
 #include <string>
 
 namespace rc::modes {
@@ -19,6 +22,15 @@ struct ViscousVolumeCheck {
   std::string reference;                        // the coarse mesh, in words
   double tolerance = 0;
 };
+
+// A viscous 3-D table's start: the cavity's tensors from the ideal table (`ideal`), the mesh's description; no rows.
+ModeTable viscous_volume_table_start(const ModeTable& ideal, const geometry::MeshOptions& mesh, double mesh_h,
+                                     int unknowns, double ekman);
+
+// One row: λ + i·decay, its coupling tensor H (9 complex entries in /volume), E + i·E_imag = H_xx + H_yy (the
+// axisymmetric viscous table's complex coupling, docs/volume.md §7), a + i·a_imag = √((E + i·E_imag)/2) with N2 = 1,
+// κ = 2/λ (0 for a purely damped row, λ = 0).
+void add_viscous_volume_row(ModeTable& t, std::complex<double> lambda, const Eigen::Matrix3cd& H, double residual);
 
 // `ideal`: the ideal 3-D table of the same cavity (cavity-modes ellipsoid / volume without --ekman). Throws
 // std::runtime_error when two targets found the same damped mode (it would be counted twice) or the table breaks one

@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <iomanip>
 
 namespace rc::rom {
@@ -31,12 +32,18 @@ void print_general_spectrum(std::ostream& os, const GeneralChain& g, const Gener
        << v.growth << " 1/s (e-folding " << 1 / v.growth << " s)\n";
   }
   const double grows = g.dissipative ? v.noise : v.tolerance;
+  const auto outside = [&](std::complex<double> r) { return g.response_window > 0 && std::abs(r.real()) > g.response_window; };
+  const auto beyond = std::count_if(sp.roots.begin(), sp.roots.end(), outside);
+  if (beyond > 0)
+    os << beyond << " root(s) beyond a response table's window (|Re sigma| > " << g.response_window << " rad/s), "
+       << "where the table is its reduced model's extrapolation: marked \"outside\" (docs/volume.md, section 7)\n";
   os << std::setprecision(static_cast<int>(precision));
   os << "  #   Re sigma (rad/s)         Im sigma (1/s)\n";
   for (std::size_t i = 0; i < sp.roots.size(); ++i) {
     const auto r = sp.roots[i];
     os << std::setw(3) << i + 1 << "   " << std::setw(22) << std::setprecision(15) << r.real() << "   "
-       << std::setw(22) << r.imag() << (-r.imag() > grows && std::abs(r) > v.tolerance ? "   grows" : "") << "\n";
+       << std::setw(22) << r.imag() << (-r.imag() > grows && std::abs(r) > v.tolerance ? "   grows" : "")
+       << (outside(r) ? "   outside" : "") << "\n";
   }
   os << std::setprecision(static_cast<int>(precision));
 }

@@ -214,6 +214,7 @@ GeneralChain build_general_chain(const Scene& scene, TableCache* tables) {
       geostrophic += t.geostrophic;
       g.modes.insert(g.modes.end(), t.modes.begin(), t.modes.end());
       g.coverage.emplace_back(k, t.coverage);
+      if (t.window > 0) g.response_window = g.response_window > 0 ? std::min(g.response_window, t.window) : t.window;
     }
     g.geostrophic.push_back(geostrophic);
   }

@@ -33,6 +33,7 @@ struct GeneralChain {
   std::vector<GeneralMode> modes;            // every tank's kept modes, body by body
   std::vector<std::pair<int, double>> coverage;  // per tank, body by body: (body, its kept share of the sum rule)
   bool dissipative = false;                  // joint or axial friction, a viscous tank: roots leave the real axis
+  double response_window = 0;                // the narrowest 3-D response table's window (rad/s, |Re σ|); 0: none
   int dim_q() const { return (axial ? 3 : 2) * n; }
   int n_modes() const { return static_cast<int>(modes.size()); }
 };

@@ -41,7 +41,9 @@ void require_modal(const Scene& scene, const std::string& w, const CavitySpec& c
   if (t.viscous() && t.volume_cavity.present() && spin < 0)
     fail(scene, w + ".table", "a 3-D viscous table holds the modes for a positive spin, and spin -w mirrors the "
                               "cavity: turn the scene's axis over (a positive spin) or mesh the mirrored cavity");
-  if (t.response_fit()) fail(scene, w + ".table", "a response-fit table's poles" + later);
+  // A 3-D response table's rows are its reduced response's poles, each a damped mode of rank one (docs/volume.md §7,
+  // "The response table"); an axisymmetric response fit's are taken by (26) only.
+  if (t.response_fit() && !t.volume_cavity.present()) fail(scene, w + ".table", "a response-fit table's poles" + later);
   if (cav.static_correction) fail(scene, w + ".static_correction", "the static correction" + later);
   if (cav.galerkin) fail(scene, w + ".reduction", "the Galerkin reduction" + later);
   if (!cav.companion.empty()) fail(scene, w + ".companion", "a companion table" + later);
@@ -57,7 +59,7 @@ std::vector<int> kept_rows(const Scene& scene, const std::string& w, const Cavit
   const double total = t.sum_rule, tiny = 1e-14 * std::max(std::abs(total), 1e-300);
   std::vector<int> idx;
   for (std::size_t l = 0; l < t.size(); ++l)
-    if (std::abs(row_coupling(t, l).trace()) > tiny) idx.push_back(static_cast<int>(l));
+    if (row_coupling(t, l).norm() > tiny) idx.push_back(static_cast<int>(l));  // a viscous H's trace may vanish
   std::stable_sort(idx.begin(), idx.end(), [&](int i, int j) { return t.E[i] > t.E[j]; });
   const double geostrophic = t.volume_cavity.present() ? tensor(t.volume_cavity.geostrophic_re).topLeftCorner<2, 2>().trace() / 2 : 0.0;
   std::size_t keep = idx.size();
@@ -170,6 +172,7 @@ GeneralTank general_tank(const Scene& scene, int k, const CavitySpec& cav, const
   const Eigen::Vector3d& d = tank.centroid;
   tank.inertia = unit * inertia + tank.mass * (d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose());
   tank.geostrophic = unit * geostrophic;
+  if (t.response_fit()) tank.window = t.fit_hi * std::abs(spin);
   if (cav.bands) {
     tank.coverage = add_band_modes(scene, w, k, t, unit, tank);
   } else {
