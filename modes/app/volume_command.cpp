@@ -66,6 +66,9 @@ void add_common_options(CLI::App* cmd, Common& o) {
   cmd->add_option("--max-fit-error", o.max_fit_error, "with --sigma -o FILE.h5: the response table's tolerance, "
                                                       "relative to each entry's largest value on the window (default "
                                                       "1e-4)");
+  cmd->add_option("--exact-at", o.exact_at, "with --sigma -o FILE.h5: complex frequencies (0.7-0.003i,1.2) where the "
+                                            "response table's R must be the fluid's own, to rounding (a chain's roots: "
+                                            "docs/volume.md §7)");
   cmd->add_option("--krylov-vectors", o.krylov_vectors, "with --sigma -o FILE.h5: Krylov vectors per input and "
                                                         "expansion point, 1..16 (default 4)");
   cmd->add_option("--sigma-imag", o.sigma_imag, "with --sigma FROM:TO:N: the imaginary part of every frequency");
@@ -164,6 +167,8 @@ VolumeTableRequest VolumeCommands::resolve() const {
       if (o.krylov_vectors < 1 || o.krylov_vectors > 16) throw std::runtime_error("--krylov-vectors must be in 1..16");
       if (o.sigma_imag != 0) throw std::runtime_error("a response table's window is real: drop --sigma-imag");
     }
+    if (!o.exact_at.empty() && (o.sigma.empty() || ext != ".h5"))
+      throw std::runtime_error("--exact-at belongs to a response table: --ekman Ek --sigma FROM:TO:N -o FILE.h5");
   } else if (!o.targets.empty()) {
     throw std::runtime_error("--target needs --ekman");
   } else if (!o.sigma.empty()) {
@@ -387,6 +392,7 @@ int VolumeCommands::run_response_table(const VolumeTableRequest& ideal, const st
   if (request.window.size() < 3) throw std::runtime_error("a response table's window needs at least 3 frequencies");
   request.krylov.tolerance = common_.max_fit_error;
   request.krylov.vectors_per_point = common_.krylov_vectors;
+  if (!common_.exact_at.empty()) request.krylov.exact_at = parse_sigma_spec(common_.exact_at, 0.0);
   std::optional<ModeTable> ideal_table;
   std::string error;
   try {

@@ -50,6 +50,7 @@ class VolumeCommands {
     double sigma_imag = 0;
     double max_fit_error = 1e-4;  // with --sigma -o FILE.h5: the response table's tolerance
     int krylov_vectors = 4;       // and its Krylov vectors per input and expansion point
+    std::string exact_at;         // and the complex frequencies where its R must be exact
   } common_;
 };
 

@@ -283,40 +283,40 @@ class VolumeGreedy {
     return W;
   }
 
-  // W was just appended to X: Hx's new columns XᴴAW and rows WᴴAX = (XᴴAᴴW)ᴴ, fx's rows, P's and Q's columns.
-  void add_primal(const Eigen::MatrixXcd& W) {
-    const Eigen::Index n = X_.size(), k = W.cols(), old = n - k;
-    const Eigen::MatrixXcd AW = ops_.apply(Op::A, W), AhW = ops_.apply(Op::AH, W), MW = ops_.apply(Op::M, W);
-    const Eigen::MatrixXcd cols = ops_.inner(X_.vectors(), AW), rows = ops_.inner(X_.vectors().leftCols(old), AhW);
-    Hx_.conservativeResize(n, n);
-    Hx_.rightCols(k) = cols;
-    Hx_.bottomLeftCorner(k, old) = rows.adjoint();
-    fx_.conservativeResize(n, 3);
-    fx_.bottomRows(k) = ops_.inner(W, F_);
-    const Eigen::Index my = Y_.size();
-    P_.conservativeResize(my, n);
-    Q_.conservativeResize(my, n);
-    if (my > 0) {
-      P_.rightCols(k) = ops_.inner(Y_.vectors(), MW, false);
-      Q_.rightCols(k) = ops_.inner(Y_.vectors(), AW, false);
-    }
+  // A block W just appended to a basis Z: the projection's new columns Zᴴ(op W) and rows Wᴴ op Z = (Zᴴ op' W)ᴴ
+  // (op' the adjoint of op), and the inputs' new rows WᴴF. Returns op W.
+  Eigen::MatrixXcd grow(const SymmetricBasis& Z, const Eigen::MatrixXcd& W, Op op, Op adjoint, Eigen::MatrixXcd& H,
+                        Eigen::MatrixXcd& f) {
+    const Eigen::Index n = Z.size(), k = W.cols(), old = n - k;
+    const Eigen::MatrixXcd OW = ops_.apply(op, W), cols = ops_.inner(Z.vectors(), OW);
+    const Eigen::MatrixXcd rows = ops_.inner(Z.vectors().leftCols(old), ops_.apply(adjoint, W));
+    H.conservativeResize(n, n);
+    H.rightCols(k) = cols;
+    H.bottomLeftCorner(k, old) = rows.adjoint();
+    f.conservativeResize(n, 3);
+    f.bottomRows(k) = ops_.inner(W, F_);
+    return OW;
   }
 
-  // V was just appended to Y: Hy's new columns YᴴAᵀV and rows VᴴAᵀY = (YᴴĀV)ᴴ, fy's rows, P's and Q's rows
-  // Vᵀ𝓜X = (𝓜V)ᵀX and VᵀAX = (AᵀV)ᵀX.
+  // W was just appended to X: Hx and fx grow, and P = Yᵀ𝓜X, Q = YᵀAX by their columns.
+  void add_primal(const Eigen::MatrixXcd& W) {
+    const Eigen::MatrixXcd AW = grow(X_, W, Op::A, Op::AH, Hx_, fx_);
+    const Eigen::Index my = Y_.size(), n = X_.size(), k = W.cols();
+    P_.conservativeResize(my, n);
+    Q_.conservativeResize(my, n);
+    if (my == 0) return;
+    P_.rightCols(k) = ops_.inner(Y_.vectors(), ops_.apply(Op::M, W), false);
+    Q_.rightCols(k) = ops_.inner(Y_.vectors(), AW, false);
+  }
+
+  // V was just appended to Y: Hy (YᴴAᵀY; the adjoint of Aᵀ is Ā) and fy grow, and P, Q by their rows Vᵀ𝓜X = (𝓜V)ᵀX
+  // and VᵀAX = (AᵀV)ᵀX.
   void add_dual(const Eigen::MatrixXcd& V) {
-    const Eigen::Index n = Y_.size(), k = V.cols(), old = n - k;
-    const Eigen::MatrixXcd AtV = ops_.apply(Op::AT, V), AbV = ops_.apply(Op::Abar, V), MV = ops_.apply(Op::M, V);
-    const Eigen::MatrixXcd cols = ops_.inner(Y_.vectors(), AtV), rows = ops_.inner(Y_.vectors().leftCols(old), AbV);
-    Hy_.conservativeResize(n, n);
-    Hy_.rightCols(k) = cols;
-    Hy_.bottomLeftCorner(k, old) = rows.adjoint();
-    fy_.conservativeResize(n, 3);
-    fy_.bottomRows(k) = ops_.inner(V, F_);
-    const Eigen::Index mx = X_.size();
-    P_.conservativeResize(n, mx);
-    Q_.conservativeResize(n, mx);
-    P_.bottomRows(k) = ops_.inner(MV, X_.vectors(), false);
+    const Eigen::MatrixXcd AtV = grow(Y_, V, Op::AT, Op::Abar, Hy_, fy_);
+    const Eigen::Index n = Y_.size(), k = V.cols();
+    P_.conservativeResize(n, X_.size());
+    Q_.conservativeResize(n, X_.size());
+    P_.bottomRows(k) = ops_.inner(ops_.apply(Op::M, V), X_.vectors(), false);
     Q_.bottomRows(k) = ops_.inner(AtV, X_.vectors(), false);
   }
 
@@ -396,6 +396,11 @@ VolumeKrylovReduction volume_krylov_reduction(const ViscousVolumeForms& forms, c
     out.points.push_back(s);
     out.point_errors.push_back(std::numeric_limits<double>::quiet_NaN());
     say(fmt::format("3-D krylov response: point {} at s = {:.6g}; {} + {} vectors", out.points.size(), s,
+                    greedy.primal_size(), greedy.dual_size()));
+  }
+  for (const cd s : options.exact_at) {
+    greedy.expand(s, options.vectors_per_point);
+    say(fmt::format("3-D krylov response: exact at s = {:.6g}{:+.6g}i; {} + {} vectors", s.real(), s.imag(),
                     greedy.primal_size(), greedy.dual_size()));
   }
   for (;;) {

@@ -33,6 +33,10 @@ struct VolumeKrylovOptions {
   double tolerance = 1e-4;    // stop when the estimate and its check are below this, entry by entry (scale below)
   int vectors_per_point = 4;  // Krylov vectors per input and expansion point (each gives two J-symmetric vectors)
   int max_points = 40;        // expansion points (factorisations) at most
+  // Complex frequencies where R_G must be R itself (a chain's roots): expansion points before the greedy search, so
+  // that x(s) and x(−s̄) lie in the basis and the Galerkin projection returns them (R_G(s) = R(s) to rounding). Not
+  // counted in max_points.
+  std::vector<std::complex<double>> exact_at;
 };
 
 // The Galerkin model R_G(s) = bᵀ (s − iK)⁻¹ b (K real m × m, b real m × 3), evaluated by a dense solve.

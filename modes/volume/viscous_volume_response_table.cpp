@@ -48,10 +48,12 @@ std::string solver_line(const VolumeResponseTableRequest& req, const VolumeRespo
   return fmt::format(
       "Galerkin (Hermitian) projection of the 3 x 3 response on J-symmetric rational Krylov spaces (docs/volume.md "
       "section 7, \"The response table\"): {} expansion points chosen greedily on {} frequencies of [{:g}, {:g}] and "
-      "{} beyond it up to {:.3g}, {} vectors per input and point, {} primal and {} dual basis vectors, {} poles; "
+      "{} beyond it up to {:.3g}{}, {} vectors per input and point, {} primal and {} dual basis vectors, {} poles; "
       "dual-weighted residual estimate at most {:.2g} of each entry's scale, measured by a forced solve at its worst, "
       "s = {:.6g}: {:.2g}{}; the rows against the reduced model {:.2g}; Taylor-Hood P{}/P{}, {} unknowns",
       k.points.size(), window, req.window.front(), req.window.back(), beyond.size(), beyond.back(),
+      req.krylov.exact_at.empty() ? std::string() : fmt::format(", and {} more at the given frequencies (--exact-at), "
+                                                                "where R is exact", req.krylov.exact_at.size()),
       req.krylov.vectors_per_point, k.primal_vectors,
       k.dual_vectors, r.poles.size(), k.estimate, k.check_point, k.check_error,
       k.within_tolerance ? "" : fmt::format(" (NOT within --max-fit-error {:.2g})", req.krylov.tolerance),

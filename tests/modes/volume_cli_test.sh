@@ -271,11 +271,11 @@ scale = np.sqrt(np.outer(d, d))
 err = np.max(np.abs(T - R) / scale)
 g, m = (json.load(open(f)) for f in ("rtop.json", "rtopm.json"))
 assert g["model"] == "general" and g["stable"] == m["stable"], (g["stable"], m["stable"])
-nut_g = [complex(*r) - 200 for r in g["roots"] if -150 < r[0] < -100]   # turning frame -> space: sigma - spin
-nut_m = [complex(*r) for r in m["roots"] if -350 < r[0] < -300]
-assert len(nut_g) == 1 and len(nut_m) == 1, (nut_g, nut_m)
-df = abs(nut_g[0].real / nut_m[0].real - 1)
-dd = abs(nut_g[0].imag / nut_m[0].imag - 1)
+# the nutation: the least damped root near 318 rad/s in space (a fluid root beside it decays thousands of times faster)
+nut_g = min((complex(*r) - 200 for r in g["roots"] if -150 < r[0] < -100), key=lambda r: abs(r.imag))  # turning -> space
+nut_m = min((complex(*r) for r in m["roots"] if -350 < r[0] < -300), key=lambda r: abs(r.imag))
+df = abs(nut_g.real / nut_m.real - 1)
+dd = abs(nut_g.imag / nut_m.imag - 1)
 assert err < 1e-4 and df < 1e-4 and dd < 1e-2, (err, df, dd)
 print("R against forced solves %.1e; nutation against (26) with the meridian response table: frequency %.1e, decay %.1e" % (err, df, dd))'); then
   ok "ellipsoid --ekman --sigma -o FILE.h5: a response table, $g"
