@@ -288,6 +288,7 @@ expect_error "a response table's window below 0" "window is real sigma >= 0" "$B
 expect_error "a response table's complex window" "window is real" "$BIN" ellipsoid --a 1 --b 1 --c 1 --ekman 1e-2 --order 2 --sigma 0:1:3 --sigma-imag 0.1 -o r.h5
 expect_error "a response table's window of 2" "at least 3 frequencies" "$BIN" ellipsoid --a 1 --b 1 --c 1 --ekman 1e-2 --order 2 --sigma 0,1 -o r.h5
 expect_error "a response table's decreasing window" "must increase" "$BIN" ellipsoid --a 1 --b 1 --c 1 --ekman 1e-2 --order 2 --sigma 0,1,0.5 -o r.h5
+expect_error "--exact-at without a response table" "--exact-at belongs to a response table" "$BIN" ellipsoid --a 1 --b 1 --c 1 --ekman 1e-2 --exact-at 1 -o r.h5
 expect_error "--max-fit-error out of range" "--max-fit-error must be in (0, 1)" "$BIN" ellipsoid --a 1 --b 1 --c 1 --ekman 1e-2 --sigma 0:1:3 --max-fit-error 2 -o r.h5
 expect_error "--sigma with --target" "drop --target" "$BIN" ellipsoid --a 1 --b 1 --c 1 --ekman 1e-2 --sigma 0.5:1:3 --target 1 -o r.csv
 # Two targets that find one damped mode: refused after the solve (its progress lines before), no table.
