@@ -1,6 +1,7 @@
 #include "confirm_command.hpp"
 
 #include "chain_model.hpp"
+#include "general_chain.hpp"
 #include "output.hpp"
 #include "root_confirmation.hpp"
 #include "spectrum.hpp"
@@ -149,6 +150,10 @@ void print_text(std::ostream& out, const ChainModel& m, const Confirmation& c, c
 }  // namespace
 
 int confirm_roots(const Scene& scene, const ConfirmRequest& req, std::ostream& out) {
+  {
+    TableCache tables;
+    if (needs_general_chain(scene, tables)) return confirm_general_roots(scene, req, out);
+  }
   const auto t0 = std::chrono::steady_clock::now();
   const ChainModel m = build_model(scene);
   std::ostream& log = req.json ? std::cerr : out;

@@ -28,4 +28,9 @@ struct ConfirmRequest {
 // scene or a cavity-modes that cannot start.
 int confirm_roots(const Scene& scene, const ConfirmRequest& request, std::ostream& os);
 
+// The same for a chain without axial symmetry, whose viscous tanks are 3-D response tables: with --refine-tables
+// only (the tables are remade exact at the roots until the roots stop moving; general_confirmation.hpp). Returns the
+// number of roots that did not settle.
+int confirm_general_roots(const Scene& scene, const ConfirmRequest& request, std::ostream& os);
+
 }  // namespace rc::rom

@@ -25,13 +25,9 @@ void add_cavity_modes_option(CLI::App* cmd, ConfirmRequest& req, const char* whe
 
 int confirm_exit(const Scene& scene, const ConfirmRequest& req) { return confirm_roots(scene, req, std::cout) > 0 ? 3 : 0; }
 
-// A chain without axial symmetry (rom/general/): its own model and roots; confirm is for viscous tanks, which it
-// does not take.
+// A chain without axial symmetry (rom/general/): its own model and roots (--confirm goes to confirm, which takes it).
 template <class Options>
 int general_spectrum_command(const Scene& scene, TableCache& tables, const Options& o) {
-  if (o.confirm)
-    throw SceneError(scene.file.string() + ": --confirm: a chain without axial symmetry has no viscous tanks to "
-                     "confirm (docs/rom.md, \"Bodies and tanks without axial symmetry\")");
   const GeneralChain g = build_general_chain(scene, &tables);
   const GeneralSpectrum sp = general_spectrum(g);
   if (o.json) std::cout << general_spectrum_json(g, sp) << "\n";
@@ -59,11 +55,11 @@ Command add_spectrum_command(CLI::App& app) {
   return {cmd, [o] {
             const Scene scene = parse_scene(o->scene);
             TableCache tables;
-            if (needs_general_chain(scene, tables)) return general_spectrum_command(scene, tables, *o);
             if (o->confirm) {
               o->confirm_request.json = o->json;
               return confirm_exit(scene, o->confirm_request);
             }
+            if (needs_general_chain(scene, tables)) return general_spectrum_command(scene, tables, *o);
             const ChainModel model = build_model(scene, &tables);  // the tables needs_general_chain read
             Spectrum sp = compute_spectrum(model);
             if (has_companions(scene))

@@ -1,5 +1,6 @@
 #include "recorded_command.hpp"
 
+#include <cstdio>
 #include <fstream>
 #include <stdexcept>
 
@@ -49,6 +50,16 @@ fs::path section_file(const rc::ModeTable& t, const std::string& recorded, const
   const fs::path file = scratch / ("section" + fs::path(recorded).extension().string());
   std::ofstream(file, std::ios::binary) << t.geometry_text;
   return file;
+}
+
+std::string complex_list(const std::vector<std::complex<double>>& z) {
+  std::string out;
+  char item[96];
+  for (const std::complex<double>& s : z) {
+    std::snprintf(item, sizeof item, "%s%.17g%+.17gi", out.empty() ? "" : ",", s.real(), s.imag());
+    out += item;
+  }
+  return out;
 }
 
 }  // namespace rc::rom

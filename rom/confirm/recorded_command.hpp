@@ -5,6 +5,7 @@
 
 #include "mode_table.hpp"
 
+#include <complex>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -22,5 +23,9 @@ bool is_shape(const std::string& word);
 // when it still exists. Throws std::runtime_error when neither.
 std::filesystem::path section_file(const rc::ModeTable& table, const std::string& recorded,
                                    const std::filesystem::path& scratch);
+
+// --sigma's list syntax (cavity-modes parse_sigma_spec): "re+imi" items separated by commas, full precision; what
+// --exact-at takes.
+std::string complex_list(const std::vector<std::complex<double>>& z);
 
 }  // namespace rc::rom

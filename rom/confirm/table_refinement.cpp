@@ -4,7 +4,6 @@
 
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <map>
 #include <stdexcept>
 
@@ -15,17 +14,6 @@ using cd = std::complex<double>;
 
 bool is_krylov_table(const rc::ModeTable& t) {
   return t.viscous() && t.normalisation.find("rational Krylov space") != std::string::npos;
-}
-
-// --sigma's list syntax (cavity-modes parse_sigma_spec): "re+imi" items separated by commas, full precision.
-std::string complex_list(const std::vector<cd>& z) {
-  std::string out;
-  char item[96];
-  for (const cd& s : z) {
-    std::snprintf(item, sizeof item, "%s%.17g%+.17gi", out.empty() ? "" : ",", s.real(), s.imag());
-    out += item;
-  }
-  return out;
 }
 
 // The options whose value is replaced (the output and the exact frequencies).

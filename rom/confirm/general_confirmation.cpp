@@ -1,0 +1,173 @@
+#include "general_confirmation.hpp"
+
+#include "chain_model.hpp"
+#include "general_chain.hpp"
+#include "recorded_command.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <stdexcept>
+
+namespace rc::rom {
+namespace fs = std::filesystem;
+namespace {
+using cd = std::complex<double>;
+
+bool is_response_table_3d(const rc::ModeTable& t) {
+  return t.viscous() && t.response_fit() && t.volume_cavity.present();
+}
+
+// Every tank's table file with its scene key, body by body.
+std::vector<std::pair<std::string, fs::path>> tank_tables(const Scene& scene) {
+  std::vector<std::pair<std::string, fs::path>> out;
+  for (std::size_t k = 0; k < scene.bodies.size(); ++k) {
+    const auto& b = scene.bodies[k];
+    const std::string key = "body[" + std::to_string(k + 1) + "].cavity";
+    if (b.cavity) out.emplace_back(key, b.cavity->table);
+    for (std::size_t j = 0; j < b.more_cavities.size(); ++j)
+      out.emplace_back(key + "[" + std::to_string(j + 2) + "]", b.more_cavities[j].table);
+  }
+  return out;
+}
+
+// The viscous tanks' table files (each once).
+std::vector<fs::path> viscous_tables(const Scene& scene) {
+  std::vector<fs::path> out;
+  std::set<std::string> seen;
+  for (const auto& [key, file] : tank_tables(scene))
+    if (rc::read_mode_table(file).viscous() && seen.insert(file.string()).second) out.push_back(file);
+  return out;
+}
+
+// The arguments that remake a 3-D response table exact at `exact_at` into `output`: its recorded command line with -o
+// and any earlier --exact-at replaced; a `volume` file from the text the table stores when the recorded path is gone.
+std::vector<std::string> remake_arguments(const rc::ModeTable& t, const std::vector<cd>& exact_at,
+                                          const fs::path& output, const fs::path& scratch) {
+  const std::vector<std::string> w = shell_words(t.command_line);
+  if (w.size() < 2 || (w[1] != "ellipsoid" && w[1] != "volume"))
+    throw std::runtime_error("its recorded command line is not 'cavity-modes ellipsoid|volume ...': " + t.command_line);
+  std::vector<std::string> args{w[1]};
+  bool have_file = w[1] != "volume";
+  for (std::size_t i = 2; i < w.size(); ++i) {
+    const std::string& word = w[i];
+    if (word.size() < 2 || word[0] != '-') {
+      if (!have_file && !fs::exists(word) && !t.geometry_text.empty()) {
+        const fs::path file = scratch / ("volume" + fs::path(word).extension().string());
+        std::ofstream(file, std::ios::binary) << t.geometry_text;
+        args.push_back(file.string());
+      } else {
+        args.push_back(word);
+      }
+      have_file = true;
+      continue;
+    }
+    const auto eq = word.find('=');
+    const std::string name = word.substr(0, eq);
+    if (name == "-o" || name == "--output" || name == "--exact-at") {
+      if (eq == std::string::npos) ++i;  // its value is the next word
+      continue;
+    }
+    args.push_back(word);
+  }
+  args.insert(args.end(), {"--exact-at", complex_list(exact_at), "-o", output.string()});
+  return args;
+}
+
+// Remakes every viscous table exact at the tank frequencies of `roots`; the file replaced only when cavity-modes
+// succeeded.
+void remake_tables(const Scene& scene, double spin, const std::vector<cd>& roots, const std::string& binary,
+                   const fs::path& scratch, const ProgramRunner& run, std::ostream& log) {
+  std::vector<cd> s;
+  for (const cd& sigma : roots) s.push_back(sigma / spin);
+  for (const fs::path& file : viscous_tables(scene)) {
+    const fs::path tmp = file.parent_path() / (file.stem().string() + ".refining.h5");
+    std::vector<std::string> args{binary};
+    for (auto& a : remake_arguments(rc::read_mode_table(file), s, tmp, scratch)) args.push_back(std::move(a));
+    log << "  " << file.string() << ": R made exact at " << s.size() << " frequencies" << std::endl;
+    const int status = run(args, (scratch / "refine.log").string());
+    if (status != 0) {
+      std::error_code gone;
+      fs::remove(tmp, gone);
+      throw std::runtime_error("refining " + file.string() + ": cavity-modes " +
+                               (status < 0 ? "did not start" : "exited with status " + std::to_string(status)) +
+                               " (the table is unchanged; its log: " + (scratch / "refine.log").string() + ")");
+    }
+    fs::rename(tmp, file);
+  }
+}
+
+// The roots to confirm: one of each pair σ, −σ̄ (Re σ ≤ 0), not at σ = 0, within the response tables' window; all of
+// them, or those a verdict rests on — the growing ones and the bodies' roots, taken as those that decay more slowly
+// than half the tanks' slowest pole (a fluid root decays about as fast as its pole) —, or else the least damped one.
+std::vector<cd> selected_roots(const GeneralChain& g, const GeneralSpectrum& sp, bool all) {
+  const Verdict& v = sp.verdict;
+  double slowest_pole = 1e300;
+  for (const GeneralMode& m : g.modes)
+    if (m.damped()) slowest_pole = std::min(slowest_pole, m.lambda.imag());
+  std::vector<cd> candidates, chosen;
+  for (const cd& r : sp.roots) {
+    if (std::abs(r) <= v.tolerance || r.real() > 0) continue;
+    if (g.response_window > 0 && std::abs(r.real()) > g.response_window) continue;
+    candidates.push_back(r);
+    if (-r.imag() > v.noise || r.imag() < 0.5 * slowest_pole) chosen.push_back(r);
+  }
+  if (all || candidates.empty()) return candidates;
+  if (!chosen.empty()) return chosen;
+  return {*std::min_element(candidates.begin(), candidates.end(), [](cd a, cd b) { return a.imag() < b.imag(); })};
+}
+
+cd nearest(const std::vector<cd>& roots, cd r) {
+  return *std::min_element(roots.begin(), roots.end(), [&](cd a, cd b) { return std::abs(a - r) < std::abs(b - r); });
+}
+
+}  // namespace
+
+void check_general_refinable(const Scene& scene) {
+  for (const auto& [key, file] : tank_tables(scene)) {
+    const rc::ModeTable t = rc::read_mode_table(file);
+    if (!t.viscous()) continue;
+    if (!is_response_table_3d(t))
+      throw SceneError(scene.file.string() + ": " + key + ".table " + file.string() + ": a chain without axial "
+                       "symmetry is confirmed by remaking its viscous tanks' 3-D response tables (cavity-modes "
+                       "ellipsoid|volume --ekman Ek --sigma 0:TO:N -o FILE.h5), and this is not one");
+    if (t.command_line.empty())
+      throw SceneError(scene.file.string() + ": " + key + ".table " + file.string() + ": it records no command line");
+  }
+}
+
+GeneralConfirmation confirm_general(const Scene& scene, bool all, double tolerance, const std::string& binary,
+                                    const fs::path& scratch, const ProgramRunner& run, std::ostream& log,
+                                    int max_rounds) {
+  check_general_refinable(scene);
+  GeneralConfirmation out;
+  GeneralChain g = build_general_chain(scene);
+  out.spectrum = general_spectrum(g);
+  out.table_roots = selected_roots(g, out.spectrum, all);
+  out.tables = static_cast<int>(viscous_tables(scene).size());
+  std::vector<cd> current = out.table_roots;
+  out.moved.assign(current.size(), 0.0);
+  out.converged = current.empty() || out.tables == 0;
+  const double spin = g.spin;
+  while (!out.converged && out.rounds < max_rounds) {
+    ++out.rounds;
+    log << "round " << out.rounds << ": the tables remade with R exact at " << current.size() << " root(s)" << std::endl;
+    remake_tables(scene, spin, current, binary, scratch, run, log);
+    g = build_general_chain(scene);
+    out.spectrum = general_spectrum(g);
+    double worst = 0;
+    for (std::size_t i = 0; i < current.size(); ++i) {
+      const cd next = nearest(out.spectrum.roots, current[i]);
+      out.moved[i] = std::abs(next - current[i]) / std::max(std::abs(current[i]), std::abs(spin));
+      worst = std::max(worst, out.moved[i]);
+      current[i] = next;
+    }
+    log << "  the roots moved by " << worst << " at most (relative)" << std::endl;
+    out.converged = worst <= tolerance;
+  }
+  out.confirmed = current;
+  return out;
+}
+
+}  // namespace rc::rom

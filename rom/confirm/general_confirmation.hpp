@@ -1,0 +1,43 @@
+// Roots of a chain without axial symmetry confirmed with the fluid's own response (chain-rom confirm SCENE
+// --refine-tables; docs/rom.md, "Confirmed roots"). Its viscous tanks are 3-D response tables (docs/volume.md §7, "The
+// response table"), whose R is the fluid's own to rounding at the frequencies they were made exact at: each round
+// remakes every such table (cavity-modes ellipsoid|volume ... --exact-at, from its recorded command line) exact at the
+// tank frequencies s = σ/ω0 of the selected roots σ (the frame turning at ω0), and solves the chain again. A root
+// the remade tables leave where they were made exact satisfies the characteristic equation with the fluid's own R:
+// the rounds stop when every selected root moves by less than the tolerance (relative to max(|σ|, |ω0|)).
+#pragma once
+
+#include "general_system.hpp"
+#include "scene.hpp"
+#include "table_refinement.hpp"
+
+#include <complex>
+#include <filesystem>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace rc::rom {
+
+struct GeneralConfirmation {
+  std::vector<std::complex<double>> table_roots;  // the selected roots with the tables as they were
+  std::vector<std::complex<double>> confirmed;    // the same roots after the last round
+  std::vector<double> moved;                      // each root's last step, relative
+  int rounds = 0, tables = 0;
+  bool converged = false;
+  GeneralSpectrum spectrum;                       // the last round's, every root
+};
+
+// Throws SceneError naming the key when a viscous tank's table is not a 3-D response table with a recorded command
+// line (checked before any work).
+void check_general_refinable(const Scene& scene);
+
+// The roots a verdict rests on — the growing ones and those that decay more slowly than half the tanks' slowest pole
+// (the bodies') — or, when `all`, every root with Re σ ≤ 0 within the response tables' window (one of each pair σ,
+// −σ̄), confirmed in at most `max_rounds` rounds. One line per table and round to
+// `log`. Throws std::runtime_error when a table cannot be remade (the old table is then untouched).
+GeneralConfirmation confirm_general(const Scene& scene, bool all, double tolerance, const std::string& binary,
+                                    const std::filesystem::path& scratch, const ProgramRunner& run, std::ostream& log,
+                                    int max_rounds = 4);
+
+}  // namespace rc::rom
