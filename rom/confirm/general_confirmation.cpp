@@ -82,19 +82,11 @@ void remake_tables(const Scene& scene, double spin, const std::vector<cd>& roots
   std::vector<cd> s;
   for (const cd& sigma : roots) s.push_back(sigma / spin);
   for (const fs::path& file : viscous_tables(scene)) {
-    const fs::path tmp = file.parent_path() / (file.stem().string() + ".refining.h5");
+    const fs::path tmp = refining_name(file);
     std::vector<std::string> args{binary};
     for (auto& a : remake_arguments(rc::read_mode_table(file), s, tmp, scratch)) args.push_back(std::move(a));
     log << "  " << file.string() << ": R made exact at " << s.size() << " frequencies" << std::endl;
-    const int status = run(args, (scratch / "refine.log").string());
-    if (status != 0) {
-      std::error_code gone;
-      fs::remove(tmp, gone);
-      throw std::runtime_error("refining " + file.string() + ": cavity-modes " +
-                               (status < 0 ? "did not start" : "exited with status " + std::to_string(status)) +
-                               " (the table is unchanged; its log: " + (scratch / "refine.log").string() + ")");
-    }
-    fs::rename(tmp, file);
+    run_and_replace(args, file, tmp, scratch, run);
   }
 }
 

@@ -65,6 +65,21 @@ std::vector<std::string> refine_arguments(const rc::ModeTable& t, const std::vec
   return args;
 }
 
+fs::path refining_name(const fs::path& file) { return file.parent_path() / (file.stem().string() + ".refining.h5"); }
+
+void run_and_replace(const std::vector<std::string>& args, const fs::path& file, const fs::path& output,
+                     const fs::path& scratch, const ProgramRunner& run) {
+  const int status = run(args, (scratch / "refine.log").string());
+  if (status != 0) {
+    std::error_code gone;
+    fs::remove(output, gone);
+    throw std::runtime_error("refining " + file.string() + ": cavity-modes " +
+                             (status < 0 ? "did not start" : "exited with status " + std::to_string(status)) +
+                             " (the table is unchanged)");
+  }
+  fs::rename(output, file);
+}
+
 void check_refinable(const Scene& scene, const ChainModel& m) {
   for (int k = 0; k < m.n; ++k) {
     if (m.bodies[k].ekman <= 0) continue;
@@ -91,21 +106,13 @@ std::vector<RefinedTable> refine_tables(const Scene& scene, const ChainModel& m,
   for (const auto& [name, exact_at] : frequencies) {
     const auto t0 = std::chrono::steady_clock::now();
     const fs::path file = name;
-    const fs::path tmp = file.parent_path() / (file.stem().string() + ".refining.h5");
+    const fs::path tmp = refining_name(file);
     std::vector<std::string> args{binary};
     for (auto& a : refine_arguments(rc::read_mode_table(file), exact_at, tmp, scratch)) args.push_back(std::move(a));
     log << "  " << file.string() << ": R made exact at " << exact_at.size() << " frequencies:";
     for (const auto& a : args) log << " " << a;
     log << std::endl;
-    const int status = run(args, (scratch / "refine.log").string());
-    if (status != 0) {
-      std::error_code gone;
-      fs::remove(tmp, gone);
-      throw std::runtime_error("refining " + file.string() + ": cavity-modes " +
-                               (status < 0 ? "did not start" : "exited with status " + std::to_string(status)) +
-                               " (the table is unchanged)");
-    }
-    fs::rename(tmp, file);
+    run_and_replace(args, file, tmp, scratch, run);
     out.push_back({file, static_cast<int>(exact_at.size()),
                    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()});
   }

@@ -34,6 +34,14 @@ std::vector<std::string> refine_arguments(const rc::ModeTable& table, const std:
 // status, or -1 when it cannot start.
 using ProgramRunner = std::function<int(const std::vector<std::string>& args, const std::string& log_file)>;
 
+// Runs `args` (the binary first, its output FILE.refining.h5 beside `file`) and, when it succeeds, replaces `file`
+// with that output; otherwise removes it and throws std::runtime_error naming the table (which is unchanged).
+void run_and_replace(const std::vector<std::string>& args, const std::filesystem::path& file,
+                     const std::filesystem::path& output, const std::filesystem::path& scratch, const ProgramRunner& run);
+
+// Where a table's remade version is written before it replaces the table: FILE.refining.h5 beside it.
+std::filesystem::path refining_name(const std::filesystem::path& file);
+
 struct RefinedTable {
   std::filesystem::path file;
   int exact_points = 0;
