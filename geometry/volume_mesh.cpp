@@ -286,7 +286,8 @@ VolumeMesh mesh_volume(const VolumeShapeSpec& shape, const MeshOptions& options)
   check_options(options);
   const std::string where = shape.kind == "volume" ? "volume '" + shape.file.string() + "'" : shape.kind;
   if (options.wall_layer > 0) {
-    VolumeMesh layered = layered_ellipsoid(shape, options);
+    VolumeMesh layered =
+        shape.kind == "ellipsoid" ? layered_ellipsoid(shape, options) : layered_volume_file(shape, options);
     check_jacobians(layered, where);
     return layered;
   }

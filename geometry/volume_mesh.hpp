@@ -37,7 +37,8 @@ struct VolumeMesh {
 // Builds, meshes and returns the cavity. Throws std::runtime_error with a one-line cause on bad input (unknown kind,
 // a missing or non-positive dimension, an unreadable file, no 3-D "fluid", an inverted element).
 // options.order 1..6, options.size 0 = 0.4 of the smallest dimension (semi-axis; a file's
-// smallest half-side of its bounding box), options.wall_size > 0 grades the size towards the wall.
+// smallest half-side of its bounding box), options.wall_size > 0 grades the size towards the wall, or with
+// options.wall_layer > 0 is the first of the anisotropic wall layers (volume_wall_layers.hpp).
 VolumeMesh mesh_volume(const VolumeShapeSpec& shape, const MeshOptions& options);
 
 // The checks of mesh_volume on the shape alone.

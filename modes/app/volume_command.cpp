@@ -33,9 +33,10 @@ void add_common_options(CLI::App* cmd, Common& o) {
   cmd->add_option("--wall-size", o.wall_size, "element size on the wall, graded to --mesh-size inside (the geometry "
                                               "error lives on the wall; docs/volume.md §4; with --ekman 2 Ek^(1/2) "
                                               "unless given, for the Ekman layers, §7)");
-  cmd->add_option("--wall-layer", o.wall_layer, "ellipsoid: anisotropic wall layers this thick in all, the first "
-                                                "--wall-size thick, each next (1 + --wall-growth) times thicker (the "
-                                                "viscous fluid's Ekman layers, docs/volume.md §7); 0 = none");
+  cmd->add_option("--wall-layer", o.wall_layer, "anisotropic wall layers this thick in all (the ellipsoid or a "
+                                                "file), the first --wall-size thick, each next (1 + --wall-growth) "
+                                                "times thicker (the viscous fluid's Ekman layers, docs/volume.md §7); "
+                                                "0 = none");
   cmd->add_option("--near-wall-size", o.near_wall_size, "with --wall-layer: the elements along the wall and just "
                                                         "inside the layers, growing by 1 per unit distance to "
                                                         "--mesh-size (0 = the interior size; docs/volume.md §7)");

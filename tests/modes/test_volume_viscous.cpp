@@ -18,6 +18,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <cstdio>
 #include <numbers>
 
@@ -289,4 +290,102 @@ TEST(ViscousVolume, WallLayersConformAndEndOnTheWall) {
               fine_space.wall_nodes(), wall, fine_worst);
   EXPECT_GT(fine_space.wall_nodes(), 2 * wall);
   EXPECT_LE(fine_worst, 1e-12);
+}
+
+namespace {
+
+// The measure of a mesh: Σ det J over a Gauss rule exact for its isoparametric map's Jacobian.
+double mesh_volume_sum(const geometry::VolumeMesh& m) {
+  const auto ref = geometry::reference_tetrahedron(m.order, 3 * (m.order - 1));
+  const int npe = m.nodes_per_element;
+  double sum = 0;
+  for (std::size_t t = 0; t < m.num_tetrahedra(); ++t)
+    for (std::size_t q = 0; q < ref.weights.size(); ++q) {
+      double j[3][3] = {};
+      for (int a = 0; a < npe; ++a)
+        for (int c = 0; c < 3; ++c)
+          for (int d = 0; d < 3; ++d) j[c][d] += m.nodes[m.tetrahedra[t * npe + a]][c] * ref.dN[(q * npe + a) * 3 + d];
+      sum += ref.weights[q] * (j[0][0] * (j[1][1] * j[2][2] - j[1][2] * j[2][1]) -
+                               j[0][1] * (j[1][0] * j[2][2] - j[1][2] * j[2][0]) +
+                               j[0][2] * (j[1][0] * j[2][1] - j[1][1] * j[2][0]));
+    }
+  return sum;
+}
+
+// The largest |g| over the nodes of the Taylor–Hood space's wall (those with no velocity unknown) and their number.
+template <class Level>
+std::pair<double, int> wall_residual(const geometry::VolumeMesh& m, const Level& g) {
+  const VolumeTaylorHoodSpace space(m);
+  std::vector<char> free(m.nodes.size(), 0);
+  for (std::size_t e = 0; e < space.num_elements(); ++e)
+    for (int i = 0; i < space.velocity_nodes_per_element(); ++i)
+      if (space.velocity(e, 0)[i] >= 0) free[m.tetrahedra[e * m.nodes_per_element + i]] = 1;
+  double worst = 0;
+  int wall = 0;
+  for (std::size_t n = 0; n < m.nodes.size(); ++n)
+    if (!free[n]) {
+      ++wall;
+      worst = std::max(worst, std::abs(g(m.nodes[n])));
+    }
+  EXPECT_EQ(wall, space.wall_nodes());
+  return {worst, wall};
+}
+
+}  // namespace
+
+// Wall layers on a user's file (docs/volume.md §7, "Wall layers"): the file meshed at the wall's size, its wall
+// offset inwards, gmsh's core inside, prisms out to the first mesh's curved wall. On a spheroid file every wall node
+// lies on the spheroid, the layered mesh fills the cavity (its wall is the file's own mesh's without layers, node for
+// node, so its measure must be that mesh's to rounding: no gap, no overlap) and the first layer is as thin as asked. On the cylinder
+// file, whose wall has two circular edges (offset along their bisectors), the same. Layers thicker than the wall's
+// radius of curvature are refused in one line.
+TEST(ViscousVolume, WallLayersOfAUserFileFillItAndEndOnItsWall) {
+  geometry::MeshOptions mesh;
+  mesh.order = 3;
+  mesh.size = 0.3;
+  mesh.wall_size = 0.01;
+  mesh.wall_layer = 0.05;
+  mesh.wall_growth = 1.0;
+  struct Case {
+    const char* file;
+    double volume;
+    std::function<double(const std::array<double, 3>&)> level;  // 0 on the wall, < 0 inside
+  };
+  const Case cases[] = {
+      {"spheroid.geo", 4 * std::numbers::pi / 3 * 0.5,
+       [](const std::array<double, 3>& p) { return p[0] * p[0] + p[1] * p[1] + 4 * p[2] * p[2] - 1; }},
+      {"cylinder.geo", 2 * std::numbers::pi,
+       [](const std::array<double, 3>& p) {
+         return std::max(std::sqrt(p[0] * p[0] + p[1] * p[1]) - 1, std::abs(p[2]) - 1);
+       }}};
+  for (const Case& c : cases) {
+    const geometry::VolumeShapeSpec shape{"volume", {}, std::string(RC_VOLUMES_DIR) + "/" + c.file, 0.0};
+    const auto layered = geometry::mesh_volume(shape, mesh);
+    geometry::MeshOptions plain = mesh;
+    plain.wall_size = 0;
+    plain.wall_layer = 0;
+    const auto unlayered = geometry::mesh_volume(shape, plain);
+    const auto [worst, wall] = wall_residual(layered, c.level);
+    double nearest_inside = 1;
+    for (const auto& p : layered.nodes)
+      if (c.level(p) < -1e-9) nearest_inside = std::min(nearest_inside, -c.level(p));
+    const double measure = mesh_volume_sum(layered), plain_measure = mesh_volume_sum(unlayered);
+    const double gap = std::abs(measure / plain_measure - 1);
+    std::printf("%s with layers: %zu tetrahedra, %d wall nodes, wall residual %.1e, measure against the mesh without "
+                "layers %.1e (both against the exact volume %.1e), the nearest inner node %.4f inside (level set)\n",
+                c.file, layered.num_tetrahedra(), wall, worst, gap, std::abs(measure / c.volume - 1), nearest_inside);
+    EXPECT_LE(worst, 1e-12);
+    EXPECT_LE(gap, 1e-12);
+    EXPECT_LT(nearest_inside, 2 * mesh.wall_size);
+    EXPECT_GT(nearest_inside, 0.05 * mesh.wall_size);
+  }
+  geometry::MeshOptions thick = mesh;
+  thick.wall_size = 0.1;
+  thick.wall_layer = 0.3;  // the spheroid's rim bends with radius c²/a = 0.25
+  try {
+    geometry::mesh_volume({"volume", {}, std::string(RC_VOLUMES_DIR) + "/spheroid.geo", 0.0}, thick);
+    ADD_FAILURE() << "layers thicker than the rim's radius of curvature were taken";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("fold"), std::string::npos) << e.what();
+  }
 }

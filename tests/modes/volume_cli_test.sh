@@ -211,6 +211,23 @@ print("roots %.1e of the spectral radius, nutation decay %.1e" % (gap, decay))' 
 else
   bad "the viscous 3-D table in chain-rom: $(tail -2 sph3d.txt sphm.txt vtop.err)"
 fi
+# Wall layers on a user's file (docs/volume.md §7, "Wall layers"): the same spheroid as data/volumes/spheroid.geo, P3,
+# layers 0.02 + 0.04; its damped spin-over against the meridian table above (measured 2026-11-28: lambda 5.6e-4,
+# decay 1.6e-4; the built-in ellipsoid with the same layers 9.5e-4, 5.4e-4).
+if [ -f sphm.h5 ] && "$BIN" volume "$VOLUMES/spheroid.geo" --ekman 1e-2 --order 3 --mesh-size 0.25 --wall-size 0.02 \
+     --wall-layer 0.06 --wall-growth 1 --target 1.6 > sphl.txt 2>&1 &&
+   g=$(python3 -c '
+import sys
+rows = lambda f: [l.split() for l in open(f)]
+v = next(r for r in rows("sphl.txt") if len(r) > 3 and r[0] == "1.600000")
+m = next(r for r in rows("sphm.txt") if len(r) > 8 and r[0] == "1")
+lam, dec = abs(float(v[1]) / float(m[2]) - 1), abs(float(v[2]) / float(m[7]) - 1)
+assert lam < 2e-3 and dec < 2e-3, (lam, dec)
+print("lambda %.1e, decay %.1e" % (lam, dec))'); then
+  ok "wall layers on a volume file: the spheroid's spin-over against the meridian table: $g"
+else
+  bad "wall layers on a volume file: $(tail -2 sphl.txt)"
+fi
 sed 's/^spin = 200.0$/spin = -200.0/' vtop.toml > vtopneg.toml
 [ -f sph3d.h5 ] && expect_error "a 3-D viscous table on a negative spin" "mirrors the cavity" "$ROM" spectrum vtopneg.toml
 [ -f sph3d.h5 ] && expect_error "a spin sweep with a viscous 3-D table" "does not take yet" "$ROM" sweep vtop.toml --param 'body[1].spin' --from 190 --to 210 --steps 3 -o sw.csv
@@ -335,7 +352,7 @@ expect_error "--ekman at order 1" "--order >= 2" "$BIN" ellipsoid --a 1 --b 1 --
 expect_error "--target without --ekman" "--target needs --ekman" "$BIN" ellipsoid --a 1 --b 1 --c 1 --target 1 -o out.h5
 expect_error "--target out of range" "each frequency must be in (0, 2)" "$BIN" ellipsoid --a 1 --b 1 --c 1 --ekman 1e-2 --target 3
 expect_error "no table named" "-o/--output is required" "$BIN" ellipsoid --a 1 --b 1 --c 1
-expect_error "wall layers on a volume file" "built for the ellipsoid so far" "$BIN" volume "$VOLUMES/box.geo" --wall-size 0.01 --wall-layer 0.05 -o out.h5
+expect_error "wall layers thicker than a file's wall bends" "fold" "$BIN" volume "$VOLUMES/spheroid.geo" --wall-size 0.1 --wall-layer 0.3 -o out.h5
 expect_error "wall layers without a first layer" "need a first layer" "$BIN" ellipsoid --a 1 --b 1 --c 1 --wall-layer 0.05 -o out.h5
 expect_error "a near-wall size without wall layers" "goes with wall layers" "$BIN" ellipsoid --a 1 --b 1 --c 1 --near-wall-size 0.1 -o out.h5
 expect_error "wall layers too thick" "do not fit" "$BIN" ellipsoid --a 1 --b 1 --c 1 --wall-size 0.1 --wall-layer 0.9 -o out.h5
