@@ -19,9 +19,10 @@ VolumeMesh layered_ellipsoid(const VolumeShapeSpec& shape, const MeshOptions& op
 // A user's `volume` file (any shape; the same options): gmsh meshes the file at the layers' along-wall size
 // (near_wall_size, else size) and order; each vertex of that mesh's curved wall is offset inwards so that every face
 // round it moves by H along its normal (at an edge or corner of the wall, by more along the bisector), and gmsh fills
-// the flat-faced core inside the offset wall (a discrete volume). Each core wall node's ray ends on the node of the
-// first mesh's wall that it was offset from, so the layers end on the file's own curved surfaces. Throws
-// std::runtime_error where the offset folds (layers thicker than the wall's radius of curvature or half a gap).
+// the flat-faced core inside the offset wall (a discrete surface bounding a volume of its built-in kernel). Each core
+// wall node's ray ends on the node of the first mesh's wall that it was offset from, so the layers end on the file's
+// own curved surfaces. Throws std::runtime_error where the offset folds (layers thicker than the wall's radius of
+// curvature or half a gap).
 VolumeMesh layered_volume_file(const VolumeShapeSpec& shape, const MeshOptions& options);
 
 }  // namespace rc::geometry
