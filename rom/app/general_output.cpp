@@ -3,21 +3,43 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <iomanip>
 
 namespace rc::rom {
+
+namespace {
+
+// The chain at two spins (floquet.hpp): what its roots are and how well the monodromy settled them.
+void print_floquet(std::ostream& os, const GeneralChain& g, const GeneralSpectrum& sp) {
+  const double omega = 2 * M_PI / g.period;
+  os << "two spins: a body without axial symmetry or with tanks turns against the frame at " << omega
+     << " rad/s, so the coefficients are periodic (period " << g.period << " s); the roots are Floquet exponents, "
+     << "Re sigma defined modulo " << omega << " rad/s and given nearest the period-averaged chain's roots, Im sigma "
+     << "exact (docs/rom.md, \"Bodies at different spins\")\n";
+  os << "monodromy: " << sp.floquet_steps << " sixth-order Magnus steps a period, the roots settled to "
+     << sp.floquet_error << " rad/s against half as many";
+  if (sp.floquet_unresolved > 0)
+    os << "; " << sp.floquet_unresolved << " root(s) decay too fast against the fastest-growing one to settle over a "
+       << "period (their decay rates are not converged)";
+  os << "\n";
+}
+
+}  // namespace
 
 void print_general_spectrum(std::ostream& os, const GeneralChain& g, const GeneralSpectrum& sp) {
   const Verdict& v = sp.verdict;
   const auto precision = os.precision();
   os << std::setprecision(6);
-  const bool own_spins = g.spins.size() > 0 && (g.spins.array() != g.spin).any();  // a dual-spin chain's rotors
+  const bool own_spins = !g.periodic() && g.spins.size() > 0 && (g.spins.array() != g.spin).any();  // a dual-spin chain's rotors
   os << (g.free_chain ? "free" : "fixed") << " chain without axial symmetry, " << g.n << (g.n == 1 ? " body" : " bodies")
-     << (own_spins ? " in the frame turning at " : " at the common spin ") << g.spin << " rad/s"
+     << (g.periodic() ? " in the frame turning at " : own_spins ? " in the frame turning at " : " at the common spin ")
+     << g.spin << " rad/s"
      << (own_spins ? " (axisymmetric bodies without tanks at their own spins)" : "") << ", " << g.n_modes() << (g.n_modes() == 1 ? " fluid mode" : " fluid modes")
      << (g.axial ? "; the spins' rates are coordinates too (a 3-D tank's modes may couple to the spin)" : "") << "\n";
   os << "roots sigma (e^{i sigma t}) in the frame turning with the bodies: the motion in space has sigma -+ spin "
         "too (docs/rom.md, \"Bodies and tanks without axial symmetry\")\n";
+  if (g.periodic()) print_floquet(os, g, sp);
   for (const auto& [k, share] : g.coverage)
     if (share < 1 - 1e-9) os << "body " << k + 1 << ": a tank's kept modes cover " << share << " of its sum rule\n";
   // The verdict as (26)'s (docs/rom.md, "Spectrum", "Verdict with dissipation").
@@ -63,6 +85,9 @@ std::string general_spectrum_json(const GeneralChain& g, const GeneralSpectrum& 
   j["fluid_modes"] = g.n_modes();
   j["coverage"] = nlohmann::ordered_json::array();  // [body (1-based), share] per tank
   for (const auto& [k, share] : g.coverage) j["coverage"].push_back({k + 1, share});
+  if (g.periodic())
+    j["floquet"] = {{"period", g.period}, {"steps_per_period", sp.floquet_steps}, {"settled", sp.floquet_error},
+                    {"unresolved", sp.floquet_unresolved}};
   return j.dump();
 }
 

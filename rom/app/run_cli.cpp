@@ -175,7 +175,8 @@ int run_general(const Scene& scene, TableCache& tables, const std::string& scene
                          "tilts grow without bound and leave the model's small-angle range\n", v.growth);
   const GeneralHistory h = propagate_general(g, scene);
   write_general_history(g, h, out);
-  std::cout << "wrote " << out << ": " << h.t.size() << " samples, the chain without axial symmetry propagated exactly, "
+  std::cout << "wrote " << out << ": " << h.t.size() << " samples, the chain without axial symmetry propagated "
+            << (g.periodic() ? "by sixth-order Magnus steps (periodic coefficients: two spins)" : "exactly") << ", "
             << h.wall_seconds << " s\n";
   if (!std::isnan(h.momentum_drift))
     std::cout << "angular momentum in space: largest relative drift " << h.momentum_drift << "\n";

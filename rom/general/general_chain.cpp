@@ -4,8 +4,8 @@
 #include "general_tank.hpp"
 
 #include <algorithm>
-
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -32,31 +32,45 @@ const rc::ModeTable& read_table(const Scene& scene, const std::string& key, cons
 // or several or off-axis tanks, are fixed in it).
 bool turns_the_frame(const BodySpec& b) { return b.asymmetric() || b.cavity.has_value(); }
 
-// The frame's rate: the spin of the bodies that turn it (all one: else the coefficients are periodic in every frame),
-// or body[1]'s when none does.
-double frame_spin(const Scene& scene) {
-  const std::string later = " (docs/rom.md, \"Bodies and tanks without axial symmetry\")";
+// The frame's rate: body[1]'s spin, or the first body's that turns it. Each body that turns the frame turns against it
+// at ω_k − ω0; the chain's coefficients are periodic when one such rate is not zero (two spins: a dual-spin craft whose
+// rotor lacks axial symmetry or carries a tank, period 2π/|ω_k − ω0|) and quasi-periodic with two rates of different
+// size (three spins), which is refused. `frame` (tests) puts F at another rate.
+struct FrameRates {
+  double spin = 0;    // ω0
+  double period = 0;  // 2π/|ω_k − ω0|, 0 when the coefficients are constant
+};
+
+FrameRates frame_rates(const Scene& scene, std::optional<double> frame = std::nullopt) {
+  const std::string later = " (docs/rom.md, \"Bodies at different spins\")";
+  FrameRates f;
   int first = -1;
+  for (int k = 0; k < static_cast<int>(scene.size()); ++k)
+    if (turns_the_frame(scene.bodies[k])) { first = k; break; }
+  f.spin = frame.value_or(scene.bodies[first < 0 ? 0 : first].spin);
+  int rotor = -1;
   for (int k = 0; k < static_cast<int>(scene.size()); ++k) {
-    const BodySpec& b = scene.bodies[k];
-    if (!turns_the_frame(b)) continue;
-    if (first < 0) {
-      first = k;
-    } else if (std::abs(b.spin - scene.bodies[first].spin) > 1e-12 * std::abs(scene.bodies[first].spin)) {
-      fail(scene, body_key(k) + ".spin", "differs from " + body_key(first) + "'s, and both bodies are without axial "
-           "symmetry or carry tanks: such a chain has periodic coefficients in every frame (a Floquet problem), not "
-           "modelled yet; give them the same spin (an axisymmetric body without tanks may spin at its own rate)" + later);
+    if (!turns_the_frame(scene.bodies[k])) continue;
+    const double rate = std::abs(scene.bodies[k].spin - f.spin);
+    if (rate <= 1e-12 * std::max(std::abs(f.spin), std::abs(scene.bodies[k].spin))) continue;
+    if (rotor < 0) {
+      rotor = k;
+      f.period = 2 * M_PI / rate;
+    } else if (std::abs(2 * M_PI / rate - f.period) > 1e-12 * f.period) {
+      fail(scene, body_key(k) + ".spin", "a third spin among the bodies without axial symmetry or with tanks: the "
+           "chain's coefficients are then quasi-periodic in every frame, not modelled; give it the spin of " +
+           body_key(first) + " or " + body_key(rotor) + " (an axisymmetric body without tanks may spin at its own rate)" + later);
     }
   }
-  return scene.bodies[first < 0 ? 0 : first].spin;
+  return f;
 }
 
 // The general chain's scope so far: the chain's own inertia, gravity, joints and modal tanks, ideal or viscous (general_tank.hpp
-// checks each tank's keys), at the spins frame_spin allows.
+// checks each tank's keys), at the spins frame_rates allows.
 void require_general_scene(const Scene& scene) {
   const std::string later = " (docs/rom.md, \"Bodies and tanks without axial symmetry\")";
   if (scene.field) fail(scene, "field", "a force field is not in the chain without axial symmetry yet" + later);
-  frame_spin(scene);
+  frame_rates(scene);
   for (int k = 0; k < static_cast<int>(scene.size()); ++k) {
     const BodySpec& b = scene.bodies[k];
     if (b.aero) fail(scene, body_key(k) + ".aero", "aerodynamic moments are not in the chain without axial symmetry yet" + later);
@@ -149,6 +163,7 @@ void set_matrices(const ChainModel& cm, const std::vector<Eigen::Matrix3d>& iner
   for (int k = 0; k < n; ++k) {
     const Eigen::Matrix2d I_tt = inertia[k].topLeftCorner<2, 2>();
     const Eigen::Matrix2d Delta = I_tt - 0.5 * I_tt.trace() * Eigen::Matrix2d::Identity();
+    g.anisotropy.push_back(Delta);
     g.M.block<2, 2>(2 * k, 2 * k) -= Delta;
     g.K.block<2, 2>(2 * k, 2 * k) -= w * w * Delta;
   }
@@ -194,7 +209,7 @@ bool needs_general_chain(const Scene& scene, TableCache& tables) {
   return false;
 }
 
-GeneralChain build_general_chain(const Scene& scene, TableCache* tables) {
+GeneralChain build_general_chain(const Scene& scene, TableCache* tables, std::optional<double> frame) {
   require_general_scene(scene);
   TableCache own;
   TableCache& cache = tables ? *tables : own;
@@ -203,7 +218,9 @@ GeneralChain build_general_chain(const Scene& scene, TableCache* tables) {
                                                                                  // fluid: (26) without tanks
   GeneralChain g;
   g.n = cm.n;
-  g.spin = frame_spin(scene);
+  const FrameRates rates = frame_rates(scene, frame);
+  g.spin = rates.spin;
+  g.period = rates.period;
   g.spins.resize(g.n);
   for (int k = 0; k < g.n; ++k) g.spins[k] = scene.bodies[k].spin;
   g.free_chain = scene.free_chain;

@@ -16,6 +16,7 @@
 
 #include <Eigen/Dense>
 
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -23,8 +24,10 @@ namespace rc::rom {
 
 struct GeneralChain {
   int n = 0;
-  double spin = 0;          // ω0 (rad/s): the frame's rate, the spin of every body without axial symmetry or with tanks
-  Eigen::VectorXd spins;    // each body's spin (rad/s): ω0, or its own for an axisymmetric body without tanks
+  double spin = 0;          // ω0 (rad/s): the frame's rate, body[1]'s spin or the first spin of a body that turns it
+  Eigen::VectorXd spins;    // each body's spin (rad/s); body k turns against F at ω_k − ω0
+  double period = 0;        // 2π/|ω_k − ω0| when a body without axial symmetry or with tanks turns against F, else 0
+  std::vector<Eigen::Matrix2d> anisotropy;  // per body: Δ_k = I_tt − Ā_k I at t = 0 (body axes on F's), in M and K
   bool axial = false;       // the axial rates are coordinates (some tank is 3-D: its modes may couple to the spin)
   bool free_chain = false;
   Eigen::MatrixXd M, C, K;  // in Q = (q_1, …, q_n[, ψ_1, …, ψ_n]): the frozen fluid's inertia included, no modes
@@ -35,6 +38,7 @@ struct GeneralChain {
   bool dissipative = false;                  // joint or axial friction, a viscous tank: roots leave the real axis
   double response_window = 0;                // the narrowest 3-D response table's window (rad/s, |Re σ|); 0: none
   int dim_q() const { return (axial ? 3 : 2) * n; }
+  bool periodic() const { return period > 0; }  // Floquet: floquet.hpp
   int n_modes() const { return static_cast<int>(modes.size()); }
 };
 
@@ -53,12 +57,15 @@ std::vector<GeneralBody> general_bodies(const Scene& scene, TableCache& tables);
 // its body's axis or a tank whose table is 3-D. Reads the tables through `tables` (throws SceneError naming the key on a table that cannot be read).
 bool needs_general_chain(const Scene& scene, TableCache& tables);
 
-// Bodies at different spins: the frame turns with the bodies without axial symmetry or with tanks, which must share
-// one spin; an axisymmetric body without tanks may spin at its own rate (its coefficients do not depend on its angle,
-// so the chain's stay constant in that frame: a dual-spin craft's rotor). Throws SceneError naming the key for what
-// the general chain does not take yet (two such bodies at different spins — a periodic, Floquet problem —, aerodynamic, external moments and forces, fields, Galerkin tanks, partial fills), for a body
+// Bodies at different spins: F turns with body[1] (or the first body without axial symmetry or with tanks). An
+// axisymmetric body without tanks may spin at its own rate (its coefficients do not depend on its angle); a second
+// spin among the others makes the coefficients periodic (periodic_system.hpp, floquet.hpp; docs/rom.md, "Bodies at
+// different spins"), a third quasi-periodic (refused). `frame` puts F at another rate (tests: the same chain seen
+// from a frame it turns against). Throws SceneError naming the key for what the general chain does not take yet
+// (three spins, aerodynamic, external moments and forces, fields, Galerkin tanks, partial fills), for a body
 // whose products of inertia with its frozen fluid do not vanish (it cannot spin steadily about its axis), and when the
 // effective inertia with the modes' share taken out is not positive definite.
-GeneralChain build_general_chain(const Scene& scene, TableCache* tables = nullptr);
+GeneralChain build_general_chain(const Scene& scene, TableCache* tables = nullptr,
+                                 std::optional<double> frame = std::nullopt);
 
 }  // namespace rc::rom

@@ -1,6 +1,8 @@
 #include "general_run.hpp"
 
 #include "balancing.hpp"
+#include "floquet.hpp"
+#include "periodic_system.hpp"
 #include "general_system.hpp"
 
 #include <unsupported/Eigen/MatrixFunctions>
@@ -75,6 +77,39 @@ void record(const GeneralChain& g, const GeneralSystem& sys, const Eigen::Vector
     for (int k = 0; k < g.n; ++k) h.spin(j, k) = g.spins[k] + y[nq + 2 * g.n + k];
 }
 
+// The first-order form at t = 0; a periodic chain's only for its scale s and the initial state.
+GeneralSystem initial_system(const GeneralChain& g) {
+  if (!g.periodic()) return build_general_system(g);
+  GeneralSystem sys = build_general_system(turned_chain(g, 0));  // floquet.hpp's scale
+  sys.B = periodic_matrix(g, 0, sys.s);
+  return sys;
+}
+
+// y(t + h) from y(t): exp(B h) (B balanced first) when the coefficients are constant; a periodic chain's Magnus
+// steps (floquet.hpp), as many per period as its roots settled with.
+class OutputStep {
+ public:
+  OutputStep(const GeneralChain& g, const GeneralSystem& sys, double h) : g_(g), s_(sys.s), h_(h) {
+    if (g.periodic()) {
+      substeps_ = std::max(1, static_cast<int>(std::ceil(h * floquet_steps(g).per_period / g.period)));
+      return;
+    }
+    Eigen::MatrixXd B = sys.B;
+    const Eigen::VectorXd S = balance_in_place(B);  // B = S B' S⁻¹: exp(B h) = S exp(B' h) S⁻¹
+    constant_ = S.asDiagonal() * (B * h).exp() * S.cwiseInverse().asDiagonal();
+  }
+  Eigen::VectorXd advance(const Eigen::VectorXd& y, double t) const {
+    if (!g_.periodic()) return constant_ * y;
+    return magnus_transition(g_, s_, t, h_ / substeps_, substeps_) * y;
+  }
+
+ private:
+  const GeneralChain& g_;
+  double s_, h_;
+  int substeps_ = 0;
+  Eigen::MatrixXd constant_;
+};
+
 }  // namespace
 
 GeneralHistory propagate_general(const GeneralChain& g, const Scene& scene) {
@@ -82,12 +117,10 @@ GeneralHistory propagate_general(const GeneralChain& g, const Scene& scene) {
     throw std::runtime_error(scene.file.string() + ": run.method: the chain without axial symmetry is propagated "
                              "exactly only (method = \"exact\")");
   const auto t0 = std::chrono::steady_clock::now();
-  const GeneralSystem sys = build_general_system(g);
+  const GeneralSystem sys = initial_system(g);
   const long steps = std::lround(scene.run.t_end / scene.run.output_step) + 1;
   const double h_step = scene.run.output_step;
-  Eigen::MatrixXd B = sys.B;
-  const Eigen::VectorXd S = balance_in_place(B);  // B = S B' S⁻¹: exp(B h) = S exp(B' h) S⁻¹
-  const Eigen::MatrixXd step = S.asDiagonal() * (B * h_step).exp() * S.cwiseInverse().asDiagonal();
+  const OutputStep step(g, sys, h_step);
   GeneralHistory h;
   h.u.resize(steps, g.n);
   h.z.resize(steps, g.n_modes());
@@ -98,7 +131,7 @@ GeneralHistory propagate_general(const GeneralChain& g, const Scene& scene) {
   const Eigen::Vector3d L0 = momentum ? angular_momentum(g, sys, y, 0, size0) : Eigen::Vector3d::Zero();
   for (long j = 0; j < steps; ++j) {
     const double t = static_cast<double>(j) * h_step;
-    if (j > 0) y = step * y;
+    if (j > 0) y = step.advance(y, static_cast<double>(j - 1) * h_step);
     if (!y.allFinite())
       throw std::runtime_error("the trajectory is not finite at t = " + std::to_string(t) + " s: the chain's magnitudes "
                                "leave double precision; nothing written");

@@ -1,7 +1,8 @@
 // Time histories of the chain without axial symmetry (`chain-rom run`; docs/rom.md, "Bodies and tanks without axial
 // symmetry"): general_system.hpp's first-order form propagated exactly, y_{j+1} = exp(B h) y_j over each output step
-// h, from the scene's tilts and rates (the fluid at rest), and written in (26)'s terms: u_k = e^{−iω0t}(q_x − i q_y) in
-// space.
+// h — or, at two spins (periodic coefficients), by floquet.hpp's Magnus steps, as many a period as its roots settled
+// with —, from the scene's tilts and rates (the fluid at rest), and written in (26)'s terms: u_k = e^{−iω0t}(q_x − i q_y)
+// in space.
 #pragma once
 
 #include "general_chain.hpp"

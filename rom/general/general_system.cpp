@@ -1,6 +1,7 @@
 #include "general_system.hpp"
 
 #include "balancing.hpp"
+#include "floquet.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,17 +9,6 @@
 #include <stdexcept>
 
 namespace rc::rom {
-namespace {
-
-// The maps of general_system.hpp between the coordinates Q, the bodies' 3-vectors (3 per body) and the fluid's Z.
-struct FluidMaps {
-  Eigen::MatrixXd P, R;    // 3n × dim_q: δω = P Q̇ + R Q
-  Eigen::MatrixXd S;       // dim_q × 3n: ω0 on each body's transverse components
-  Eigen::MatrixXd N, G;    // 3n × 3n, block diagonal: the fluid that does not follow the body; the geostrophic part
-  Eigen::MatrixXd W;       // 3n × 2m: Z ↦ h = Σ 2 Re(z c)
-  Eigen::MatrixXd Chat;    // 2m × 3n: x ↦ (Re, Im) of c_left·x (ideal: c̄·x)
-  Eigen::MatrixXd Lambda;  // 2m × 2m: z ↦ iλ z (λ complex for a damped mode)
-};
 
 FluidMaps fluid_maps(const GeneralChain& g) {
   const int n = g.n, d = g.dim_q(), m = g.n_modes();
@@ -59,8 +49,6 @@ FluidMaps fluid_maps(const GeneralChain& g) {
   return f;
 }
 
-}  // namespace
-
 Eigen::MatrixXd effective_inertia(const GeneralChain& g) {
   const FluidMaps f = fluid_maps(g);
   return g.M - f.P.transpose() * f.N * f.P;
@@ -82,7 +70,11 @@ void check_effective_inertia(const Scene& scene, const GeneralChain& g) {
   }
 }
 
-GeneralSystem build_general_system(const GeneralChain& g) {
+GeneralSystem build_general_system(const GeneralChain& g, double s) {
+  if (g.periodic())
+    throw std::runtime_error("the chain's coefficients are periodic (a body without axial symmetry or with tanks turns "
+                             "against another): spectrum, sweep and run take it, response, bench and confirm take "
+                             "chains whose coefficients are constant (docs/rom.md, \"Bodies at different spins\")");
   const FluidMaps f = fluid_maps(g);
   const int nq = 2 * g.n, d = g.dim_q(), nz = 2 * g.n_modes();
   const Eigen::MatrixXd Pt = f.P.transpose();
@@ -94,7 +86,7 @@ GeneralSystem build_general_system(const GeneralChain& g) {
   const Eigen::MatrixXd Xq = -Minv.solve(Keff), Xv = -Minv.solve(Ceff), Xz = -Minv.solve(Bz);
   GeneralSystem sys;
   const double stiff = (Xq.rows() > 0) ? Xq.norm() : 0.0;
-  sys.s = stiff > 0 ? std::sqrt(stiff) : std::max(std::abs(g.spin), 1.0);
+  sys.s = s > 0 ? s : stiff > 0 ? std::sqrt(stiff) : std::max(std::abs(g.spin), 1.0);
   sys.B.setZero(nq + d + nz, nq + d + nz);
   sys.B.block(0, nq, nq, nq) = sys.s * Eigen::MatrixXd::Identity(nq, nq);
   sys.B.block(nq, 0, d, nq) = Xq / sys.s;
@@ -118,6 +110,7 @@ GeneralSystem build_general_system(const GeneralChain& g) {
 }
 
 GeneralSpectrum general_spectrum(const GeneralChain& g) {
+  if (g.periodic()) return floquet_spectrum(g);
   GeneralSystem sys = build_general_system(g);
   balance_in_place(sys.B);
   const Eigen::EigenSolver<Eigen::MatrixXd> es(sys.B, false);

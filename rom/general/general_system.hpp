@@ -30,6 +30,17 @@ struct GeneralSystem {
   int dim() const { return static_cast<int>(B.rows()); }
 };
 
+// The maps above between the coordinates Q, the bodies' 3-vectors (3 per body, in F's axes) and the fluid's Z.
+struct FluidMaps {
+  Eigen::MatrixXd P, R;    // 3n × dim_q: δω = P Q̇ + R Q
+  Eigen::MatrixXd S;       // dim_q × 3n: ω0 on each body's transverse components
+  Eigen::MatrixXd N, G;    // 3n × 3n, block diagonal: the fluid that does not follow the body; the geostrophic part
+  Eigen::MatrixXd W;       // 3n × 2m: Z ↦ h = Σ 2 Re(z c)
+  Eigen::MatrixXd Chat;    // 2m × 3n: x ↦ (Re, Im) of c_left·x (ideal: c̄·x)
+  Eigen::MatrixXd Lambda;  // 2m × 2m: z ↦ iλ z (λ complex for a damped mode)
+};
+FluidMaps fluid_maps(const GeneralChain& g);
+
 // The inertia the bodies' accelerations see with the modes' share taken out, M − Σ_k P_kᵀ N_k P_k.
 Eigen::MatrixXd effective_inertia(const GeneralChain& g);
 
@@ -37,15 +48,20 @@ Eigen::MatrixXd effective_inertia(const GeneralChain& g);
 // their own beyond what the fluid's modes take.
 void check_effective_inertia(const Scene& scene, const GeneralChain& g);
 
-// Throws std::runtime_error when its matrix is not finite (the scene's values overflow together).
-GeneralSystem build_general_system(const GeneralChain& g);
+// Throws std::runtime_error when its matrix is not finite (the scene's values overflow together). `s` > 0 fixes q's
+// scale (a periodic chain's B(t) keeps one state), else it is chosen from the stiffness.
+GeneralSystem build_general_system(const GeneralChain& g, double s = 0);
 
 struct GeneralSpectrum {
   std::vector<std::complex<double>> roots;  // σ (rad/s) in the turning frame, ascending real part
   Verdict verdict;                          // as (26)'s (spectrum.hpp: verdict_of_roots)
+  int floquet_steps = 0;                    // a periodic chain (floquet.hpp): Magnus steps per period, else 0
+  double floquet_error = 0;                 // and how far its roots moved from half as many (rad/s)
+  int floquet_unresolved = 0;               // roots decaying beyond the monodromy's precision (floquet.hpp)
 };
 
-// Throws std::runtime_error when the eigen-solver does not converge.
+// The roots of the chain, by Floquet's theory when its coefficients are periodic (floquet.hpp). Throws
+// std::runtime_error when the eigen-solver does not converge.
 GeneralSpectrum general_spectrum(const GeneralChain& g);
 
 }  // namespace rc::rom

@@ -101,6 +101,17 @@ inline double spectral_radius(const std::vector<std::complex<double>>& r) {
   return m;
 }
 
+// Every root σ of (26) (u ∝ e^{iσt}) is, in the frame turning at ω0, the pair σ + ω0 and −(σ̄ + ω0) of the real
+// system (u = e^{−iω0t}(q_x − i q_y)).
+inline std::vector<std::complex<double>> turned(const std::vector<std::complex<double>>& sigma, double w) {
+  std::vector<std::complex<double>> out;
+  for (const auto& s : sigma) {
+    out.push_back(s + w);
+    out.push_back(-std::conj(s) - w);
+  }
+  return out;
+}
+
 // Drops the n roots closest to zero (fluid integrators, free-chain neutral tilts).
 inline std::vector<std::complex<double>> drop_smallest(std::vector<std::complex<double>> r, std::size_t n) {
   std::sort(r.begin(), r.end(), [](auto p, auto q) { return std::abs(p) < std::abs(q); });

@@ -1,0 +1,197 @@
+#include "floquet.hpp"
+
+#include "balancing.hpp"
+#include "periodic_system.hpp"
+#include "spectrum.hpp"
+
+#include <unsupported/Eigen/MatrixFunctions>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace rc::rom {
+namespace {
+
+using cd = std::complex<double>;
+
+Eigen::MatrixXd commutator(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) { return a * b - b * a; }
+
+// One sixth-order Magnus step over [t, t + h] (Blanes, Casas and Ros 2000): A_i = h B(t + c_i h) at the Gauss points
+// c = ½ ∓ √15/10, ½; α1 = A2, α2 = √15/3 (A3 − A1), α3 = 10/3 (A3 − 2A2 + A1); C1 = [α1, α2],
+// C2 = −[α1, 2α3 + C1]/60; Ω = α1 + α3/12 + [−20α1 − α3 + C1, α2 + C2]/240; the step is exp(Ω).
+Eigen::MatrixXd magnus_step(const GeneralChain& g, double s, double t, double h, Eigen::MatrixXd* mean = nullptr) {
+  const double r = std::sqrt(15.0) / 10;
+  const Eigen::MatrixXd A1 = h * periodic_matrix(g, t + (0.5 - r) * h, s);
+  const Eigen::MatrixXd A2 = h * periodic_matrix(g, t + 0.5 * h, s);
+  const Eigen::MatrixXd A3 = h * periodic_matrix(g, t + (0.5 + r) * h, s);
+  if (mean) *mean += (5 * A1 + 8 * A2 + 5 * A3) / 18;  // Gauss's rule: ∫B over the step
+  const Eigen::MatrixXd a1 = A2, a2 = std::sqrt(15.0) / 3 * (A3 - A1), a3 = 10.0 / 3 * (A3 - 2 * A2 + A1);
+  const Eigen::MatrixXd C1 = commutator(a1, a2);
+  const Eigen::MatrixXd C2 = -commutator(a1, 2 * a3 + C1) / 60;
+  const Eigen::MatrixXd omega = a1 + a3 / 12 + commutator(-20 * a1 - a3 + C1, a2 + C2) / 240;
+  return omega.exp();
+}
+
+Eigen::MatrixXd monodromy(const GeneralChain& g, double s, int steps, Eigen::MatrixXd& mean) {
+  const double h = g.period / steps;
+  Eigen::MatrixXd phi;
+  mean.setZero();
+  for (int j = 0; j < steps; ++j) {
+    const Eigen::MatrixXd step = magnus_step(g, s, j * h, h, &mean);
+    phi = j == 0 ? step : (step * phi).eval();
+  }
+  mean /= g.period;
+  return phi;
+}
+
+Eigen::VectorXcd eigenvalues(Eigen::MatrixXd A, const std::string& what) {
+  balance_in_place(A);
+  const Eigen::EigenSolver<Eigen::MatrixXd> es(A, false);
+  if (es.info() != Eigen::Success) throw std::runtime_error(what + ": the eigen-solver did not converge");
+  return es.eigenvalues();
+}
+
+// The exponents' principal values: Re σ = arg μ / T in (−Ω/2, Ω/2], Im σ = −ln|μ|/T.
+std::vector<cd> principal_exponents(const Eigen::VectorXcd& mu, double T) {
+  std::vector<cd> sigma;
+  // A multiplier below 1e-300 (a mode damped by more than 690 e-foldings a period) is held there.
+  for (const cd m : mu) sigma.emplace_back(std::arg(m) / T, -std::log(std::max(std::abs(m), 1e-300)) / T);
+  return sigma;
+}
+
+// x − a wrapped into (−Ω/2, Ω/2].
+double wrapped(double x, double a, double omega) { return x - a - omega * std::round((x - a) / omega); }
+
+// Greedy pairing (smallest distance first) of two equally long lists of exponents, Re compared modulo Ω.
+std::vector<int> pair_up(const std::vector<cd>& a, const std::vector<cd>& b, double omega) {
+  struct Pair { double d; int i, j; };
+  std::vector<Pair> pairs;
+  for (int i = 0; i < static_cast<int>(a.size()); ++i)
+    for (int j = 0; j < static_cast<int>(b.size()); ++j)
+      pairs.push_back({std::hypot(wrapped(a[i].real(), b[j].real(), omega), a[i].imag() - b[j].imag()), i, j});
+  std::sort(pairs.begin(), pairs.end(), [](const Pair& x, const Pair& y) { return x.d < y.d; });
+  std::vector<int> of(a.size(), -1);
+  std::vector<bool> taken(b.size(), false);
+  for (const Pair& p : pairs)
+    if (of[p.i] < 0 && !taken[p.j]) { of[p.i] = p.j; taken[p.j] = true; }
+  return of;
+}
+
+// The monodromy's eigenvalues are good to about ε‖Φ‖: a multiplier below 1e-6 of the largest (a root decaying by
+// ln 10⁶ = 13.8 more e-foldings a period than the fastest-growing one) may be known to less than 1e-10 of itself,
+// and the steps are not doubled for its sake.
+constexpr double kResolvedRange = 13.815510557964274;  // ln 10⁶
+
+bool resolved(cd sigma, double fastest_growth, double period) {
+  return -sigma.imag() >= fastest_growth - kResolvedRange / period;
+}
+
+double fastest_growth(const std::vector<cd>& a) {
+  double g = -std::numeric_limits<double>::infinity();
+  for (const cd x : a) g = std::max(g, -x.imag());
+  return g;
+}
+
+// Each root's move from its partner in `b`.
+std::vector<double> moves(const std::vector<cd>& a, const std::vector<cd>& b, double omega) {
+  const std::vector<int> of = pair_up(a, b, omega);
+  std::vector<double> d(a.size());
+  for (std::size_t i = 0; i < a.size(); ++i)
+    d[i] = std::hypot(wrapped(a[i].real(), b[of[i]].real(), omega), a[i].imag() - b[of[i]].imag());
+  return d;
+}
+
+double spectral_radius(const Eigen::MatrixXd& B) {
+  double r = 0;
+  for (const cd e : eigenvalues(B, "the periodic chain at t = 0")) r = std::max(r, std::abs(e));
+  return r;
+}
+
+struct Settled {
+  std::vector<cd> exponents;  // principal values
+  Eigen::MatrixXd mean;       // B averaged over the period
+  std::vector<double> moves;  // each root's move from the monodromy with half the steps (rad/s)
+  int steps = 0;
+  double error = 0, radius = 0, s = 1;  // error: the largest move of a resolved root
+};
+
+// Doubles the steps per period until two monodromies' resolved exponents agree to 1e-10 of the spectral radius.
+Settled settle(const GeneralChain& g) {
+  Settled out;
+  out.s = build_general_system(turned_chain(g, 0)).s;
+  out.radius = std::max(spectral_radius(periodic_matrix(g, 0, out.s)), 2 * M_PI / g.period);
+  const double omega = 2 * M_PI / g.period;
+  // The Magnus series converges for h‖B‖ < π: start at h ρ ≈ 0.5.
+  int steps = 16;
+  while (steps < 2 * out.radius * g.period && steps < (1 << 16)) steps *= 2;
+  const Eigen::Index dim = periodic_matrix(g, 0, out.s).rows();
+  Eigen::MatrixXd mean(dim, dim);
+  std::vector<cd> last = principal_exponents(eigenvalues(monodromy(g, out.s, steps, mean), "the monodromy"), g.period);
+  for (steps *= 2; steps <= (1 << 16); steps *= 2) {
+    const std::vector<cd> now = principal_exponents(eigenvalues(monodromy(g, out.s, steps, mean), "the monodromy"), g.period);
+    out.moves = moves(now, last, omega);
+    out.error = 0;
+    const double fastest = fastest_growth(now);
+    for (std::size_t i = 0; i < now.size(); ++i)
+      if (resolved(now[i], fastest, g.period)) out.error = std::max(out.error, out.moves[i]);
+    out.exponents = now;
+    out.mean = mean;
+    out.steps = steps;
+    if (out.error <= 1e-10 * out.radius) return out;
+    last = now;
+  }
+  throw std::runtime_error("the periodic chain's monodromy did not settle: its roots moved by " + std::to_string(out.error) +
+                           " rad/s from 2^15 to 2^16 Magnus steps per period (more than 1e-10 of the spectral radius " +
+                           std::to_string(out.radius) + " rad/s)");
+}
+
+}  // namespace
+
+Eigen::MatrixXd magnus_transition(const GeneralChain& g, double s, double t0, double h, int steps) {
+  const Eigen::Index dim = periodic_matrix(g, t0, s).rows();
+  Eigen::MatrixXd phi = Eigen::MatrixXd::Identity(dim, dim);
+  for (int j = 0; j < steps; ++j) phi = (magnus_step(g, s, t0 + j * h, h) * phi).eval();
+  return phi;
+}
+
+FloquetSteps floquet_steps(const GeneralChain& g) {
+  const Settled st = settle(g);
+  return {st.steps, st.s};
+}
+
+GeneralSpectrum floquet_spectrum(const GeneralChain& g) {
+  const Settled st = settle(g);
+  const double omega = 2 * M_PI / g.period;
+  std::vector<cd> averaged;
+  for (const cd mu : eigenvalues(st.mean, "the averaged chain")) averaged.emplace_back(mu.imag(), -mu.real());
+  const std::vector<int> of = pair_up(st.exponents, averaged, omega);
+  GeneralSpectrum sp;
+  Eigen::VectorXcd sigma(st.exponents.size());
+  for (std::size_t i = 0; i < st.exponents.size(); ++i) {
+    const double a = averaged[of[i]].real();
+    sigma[i] = cd(a + wrapped(st.exponents[i].real(), a, omega), st.exponents[i].imag());
+    sp.roots.push_back(sigma[i]);
+  }
+  std::sort(sp.roots.begin(), sp.roots.end(), [](cd a, cd b) {
+    return a.real() != b.real() ? a.real() < b.real() : a.imag() < b.imag();
+  });
+  sp.verdict = verdict_of_roots(sigma, g.dissipative);
+  if (g.dissipative && sp.verdict.noise < 10 * st.error) {
+    sp.verdict.noise = 10 * st.error;
+    sp.verdict.growing = 0;
+    for (Eigen::Index j = 0; j < sigma.size(); ++j)
+      if (std::abs(sigma[j]) > sp.verdict.tolerance && -sigma[j].imag() > sp.verdict.noise) ++sp.verdict.growing;
+    sp.verdict.stable = sp.verdict.growing == 0;
+  }
+  for (const double d : st.moves) sp.floquet_unresolved += d > 1e-9 * st.radius;
+  sp.floquet_steps = st.steps;
+  sp.floquet_error = st.error;
+  return sp;
+}
+
+}  // namespace rc::rom

@@ -1,0 +1,36 @@
+// The roots of the chain at two spins (docs/rom.md, "Bodies at different spins"): its coefficients are T-periodic in
+// every frame (periodic_system.hpp), so its motions are Floquet solutions y = p(t) e^{iσt}, p T-periodic, whose
+// multipliers μ = e^{iσT} are the eigenvalues of the monodromy matrix Φ(T) (y(T) = Φ(T) y(0)). Φ is built by the
+// sixth-order Magnus method (Blanes, Casas and Ros, "Improved high order integrators based on the Magnus expansion",
+// BIT 40, 2000: three Gauss points per step, each step the exponential of a combination of B and its commutators),
+// which keeps a conservative chain's monodromy in its Lie group — the multipliers of a stable chain stay on the unit
+// circle to rounding — and doubles its steps until two monodromies give the same roots.
+#pragma once
+
+#include "general_chain.hpp"
+#include "general_system.hpp"
+
+#include <Eigen/Dense>
+
+namespace rc::rom {
+
+// y(t0 + steps·h) = transition · y(t0) for y' = B(t) y (periodic_matrix with q's scale s).
+Eigen::MatrixXd magnus_transition(const GeneralChain& g, double s, double t0, double h, int steps);
+
+// σ = −i log(μ)/T: Im σ = −ln|μ|/T exactly; Re σ is defined modulo Ω = 2π/T, and each is given in the branch nearest
+// the averaged chain's root (B averaged over a period) it is paired with. The verdict as general_spectrum's, a
+// dissipative chain's growth noise raised to ten times the measured error. The monodromy's eigenvalues are good to
+// about ε‖Φ‖: a root whose multiplier is far below the largest (it decays by many e-foldings a period more than the
+// fastest-growing root) can stay unsettled; it is counted as unresolved when it moved by more than 1e-9 of the
+// spectral radius in the last doubling. Throws std::runtime_error when the roots whose multipliers are within 1e-6
+// of the largest have not settled to 1e-10 of the spectral radius at 2^16 steps per period.
+GeneralSpectrum floquet_spectrum(const GeneralChain& g);
+
+// The steps per period floquet_spectrum settles with, and q's scale s: what `run` propagates with.
+struct FloquetSteps {
+  int per_period = 0;
+  double s = 1;
+};
+FloquetSteps floquet_steps(const GeneralChain& g);
+
+}  // namespace rc::rom
