@@ -10,6 +10,7 @@
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -112,6 +113,8 @@ double spectral_radius(const Eigen::MatrixXd& B) {
   return r;
 }
 
+constexpr int kMostSteps = 1 << 16;  // Magnus steps a period
+
 struct Settled {
   std::vector<cd> exponents;  // principal values
   Eigen::MatrixXd mean;       // B averaged over the period
@@ -128,11 +131,18 @@ Settled settle(const GeneralChain& g) {
   const double omega = 2 * M_PI / g.period;
   // The Magnus series converges for h‖B‖ < π: start at h ρ ≈ 0.5.
   int steps = 16;
-  while (steps < 2 * out.radius * g.period && steps < (1 << 16)) steps *= 2;
+  while (steps < 2 * out.radius * g.period && steps <= kMostSteps / 2) steps *= 2;
+  if (steps > kMostSteps / 2) {
+    std::ostringstream os;
+    os << "the spins differ by only " << omega << " rad/s: a period (" << g.period << " s) spans " << out.radius * g.period
+       << " radians of the chain's fastest motion, more than 2^16 Magnus steps resolve; give the bodies the same spin "
+          "or spins further apart";
+    throw std::runtime_error(os.str());
+  }
   const Eigen::Index dim = periodic_matrix(g, 0, out.s).rows();
   Eigen::MatrixXd mean(dim, dim);
   std::vector<cd> last = principal_exponents(eigenvalues(monodromy(g, out.s, steps, mean), "the monodromy"), g.period);
-  for (steps *= 2; steps <= (1 << 16); steps *= 2) {
+  for (steps *= 2; steps <= kMostSteps; steps *= 2) {
     const std::vector<cd> now = principal_exponents(eigenvalues(monodromy(g, out.s, steps, mean), "the monodromy"), g.period);
     out.moves = moves(now, last, omega);
     out.error = 0;
@@ -146,7 +156,7 @@ Settled settle(const GeneralChain& g) {
     last = now;
   }
   throw std::runtime_error("the periodic chain's monodromy did not settle: its roots moved by " + std::to_string(out.error) +
-                           " rad/s from 2^15 to 2^16 Magnus steps per period (more than 1e-10 of the spectral radius " +
+                           " rad/s from 2^15 to 2^16 Magnus steps a period (more than 1e-10 of the spectral radius " +
                            std::to_string(out.radius) + " rad/s)");
 }
 
