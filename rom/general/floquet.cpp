@@ -169,6 +169,22 @@ Eigen::MatrixXd magnus_transition(const GeneralChain& g, double s, double t0, do
   return phi;
 }
 
+PeriodicPropagator::PeriodicPropagator(const GeneralChain& g, double s, int steps_per_period, const Eigen::VectorXd& y0)
+    : g_(g), s_(s), h_(g.period / steps_per_period), steps_(static_cast<std::size_t>(steps_per_period)), y_(y0) {}
+
+Eigen::VectorXd PeriodicPropagator::at(double t) {
+  const long n = static_cast<long>(steps_.size());
+  while ((grid_ + 1) * h_ <= t) {
+    Eigen::MatrixXd& step = steps_[static_cast<std::size_t>(grid_ % n)];
+    if (step.size() == 0) step = magnus_step(g_, s_, static_cast<double>(grid_ % n) * h_, h_);
+    y_ = step * y_;
+    ++grid_;
+  }
+  const double rest = t - grid_ * h_;
+  if (rest <= 1e-14 * h_) return y_;
+  return magnus_step(g_, s_, static_cast<double>(grid_ % n) * h_, rest) * y_;
+}
+
 FloquetSteps floquet_steps(const GeneralChain& g) {
   const Settled st = settle(g);
   return {st.steps, st.s};

@@ -12,6 +12,8 @@
 
 #include <Eigen/Dense>
 
+#include <vector>
+
 namespace rc::rom {
 
 // y(t0 + steps·h) = transition · y(t0) for y' = B(t) y (periodic_matrix with q's scale s).
@@ -25,6 +27,21 @@ Eigen::MatrixXd magnus_transition(const GeneralChain& g, double s, double t0, do
 // spectral radius in the last doubling. Throws std::runtime_error when the roots whose multipliers are within 1e-6
 // of the largest have not settled to 1e-10 of the spectral radius at 2^16 steps per period.
 GeneralSpectrum floquet_spectrum(const GeneralChain& g);
+
+// y(t) of the periodic chain from y(0), t increasing from call to call: Magnus steps on the grid of T/N (each of the N
+// steps of a period made once and kept), and one step of its own from the last grid point to t.
+class PeriodicPropagator {
+ public:
+  PeriodicPropagator(const GeneralChain& g, double s, int steps_per_period, const Eigen::VectorXd& y0);
+  Eigen::VectorXd at(double t);
+
+ private:
+  const GeneralChain& g_;
+  double s_, h_;
+  std::vector<Eigen::MatrixXd> steps_;  // over [i h, (i + 1) h], made when first needed
+  long grid_ = 0;                       // the grid point y_ stands at
+  Eigen::VectorXd y_;
+};
 
 // The steps per period floquet_spectrum settles with, and q's scale s: what `run` propagates with.
 struct FloquetSteps {

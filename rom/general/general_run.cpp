@@ -9,6 +9,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 namespace rc::rom {
@@ -85,29 +86,29 @@ GeneralSystem initial_system(const GeneralChain& g) {
   return sys;
 }
 
-// y(t + h) from y(t): exp(B h) (B balanced first) when the coefficients are constant; a periodic chain's Magnus
-// steps (floquet.hpp), as many per period as its roots settled with.
-class OutputStep {
+// y at the output times: exp(B h) (B balanced first) over each output step h when the coefficients are constant; a
+// periodic chain's Magnus steps (floquet.hpp), as many a period as its roots settled with.
+class OutputSteps {
  public:
-  OutputStep(const GeneralChain& g, const GeneralSystem& sys, double h) : g_(g), s_(sys.s), h_(h) {
+  OutputSteps(const GeneralChain& g, const GeneralSystem& sys, double h, const Eigen::VectorXd& y0) : y_(y0) {
     if (g.periodic()) {
-      substeps_ = std::max(1, static_cast<int>(std::ceil(h * floquet_steps(g).per_period / g.period)));
+      periodic_.emplace(g, sys.s, floquet_steps(g).per_period, y0);
       return;
     }
     Eigen::MatrixXd B = sys.B;
     const Eigen::VectorXd S = balance_in_place(B);  // B = S B' S⁻¹: exp(B h) = S exp(B' h) S⁻¹
     constant_ = S.asDiagonal() * (B * h).exp() * S.cwiseInverse().asDiagonal();
   }
-  Eigen::VectorXd advance(const Eigen::VectorXd& y, double t) const {
-    if (!g_.periodic()) return constant_ * y;
-    return magnus_transition(g_, s_, t, h_ / substeps_, substeps_) * y;
+  // y at the next output time t.
+  const Eigen::VectorXd& next(double t) {
+    y_ = periodic_ ? periodic_->at(t) : (constant_ * y_).eval();
+    return y_;
   }
 
  private:
-  const GeneralChain& g_;
-  double s_, h_;
-  int substeps_ = 0;
+  std::optional<PeriodicPropagator> periodic_;
   Eigen::MatrixXd constant_;
+  Eigen::VectorXd y_;
 };
 
 }  // namespace
@@ -120,18 +121,18 @@ GeneralHistory propagate_general(const GeneralChain& g, const Scene& scene) {
   const GeneralSystem sys = initial_system(g);
   const long steps = std::lround(scene.run.t_end / scene.run.output_step) + 1;
   const double h_step = scene.run.output_step;
-  const OutputStep step(g, sys, h_step);
   GeneralHistory h;
   h.u.resize(steps, g.n);
   h.z.resize(steps, g.n_modes());
   if (g.axial) h.spin.resize(steps, g.n);
   Eigen::VectorXd y = general_initial_state(g, sys, scene);
+  OutputSteps steps_to(g, sys, h_step, y);
   const bool momentum = has_momentum_integral(g, scene);
   double size0 = 0, largest = 0, drift = 0;
   const Eigen::Vector3d L0 = momentum ? angular_momentum(g, sys, y, 0, size0) : Eigen::Vector3d::Zero();
   for (long j = 0; j < steps; ++j) {
     const double t = static_cast<double>(j) * h_step;
-    if (j > 0) y = step.advance(y, static_cast<double>(j - 1) * h_step);
+    if (j > 0) y = steps_to.next(t);
     if (!y.allFinite())
       throw std::runtime_error("the trajectory is not finite at t = " + std::to_string(t) + " s: the chain's magnitudes "
                                "leave double precision; nothing written");
