@@ -135,9 +135,15 @@ GeneralConfirmation confirm_general(const Scene& scene, bool all, double toleran
   check_general_refinable(scene);
   GeneralConfirmation out;
   GeneralChain g = build_general_chain(scene);
+  out.tables = static_cast<int>(viscous_tables(scene).size());
+  // At two spins a root is a Floquet exponent, defined modulo the period's frequency, and each tank sees it shifted
+  // by its own body's turning: there is no one frequency to make a table exact at.
+  if (g.periodic() && out.tables > 0)
+    throw SceneError(scene.file.string() + ": confirm remakes response tables exact at the chain's roots, which at two "
+                     "spins are defined only modulo the period's frequency (docs/rom.md, \"Bodies at different "
+                     "spins\"); confirm the chain at one spin");
   out.spectrum = general_spectrum(g);
   out.table_roots = selected_roots(g, out.spectrum, all);
-  out.tables = static_cast<int>(viscous_tables(scene).size());
   std::vector<cd> current = out.table_roots;
   out.moved.assign(current.size(), 0.0);
   out.converged = current.empty() || out.tables == 0;
