@@ -4,6 +4,8 @@
 
 #include "chain_model.hpp"
 #include "general_chain.hpp"
+#include "general_confirmation.hpp"
+#include "general_confirmed_sweep.hpp"
 #include "confirmed_sweep.hpp"
 #include "external_programs.hpp"
 #include "scene.hpp"
@@ -34,6 +36,7 @@ struct SweepRequest {
   SweepAxis a1;
   std::optional<SweepAxis> a2;
   bool by_forced_solves = false;  // a key that moves a viscous tank's Ek, or --confirm
+  bool general = false;           // ... on a chain without axial symmetry: by remade 3-D response tables
 };
 
 SweepRequest resolve(const SweepOptions& o) {
@@ -59,35 +62,35 @@ SweepRequest resolve(const SweepOptions& o) {
   if (moves && two)
     throw SweepError("a key that moves a viscous tank's Ekman number sweeps one value at a time (no --param2): "
                      "each point serves forced solves at its own Ek");
-  // The forced solves serve the meridian solver's response: a chain without axial symmetry (a 3-D table, B != A, a tank
-  // off its axis) has no such path yet.
+  // A chain without axial symmetry has no served forced solves: its 3-D response tables are remade instead
+  // (general_confirmed_sweep.hpp).
   if (moves || o.confirm) {
     TableCache tables;
-    if (needs_general_chain(r.scene, tables))
-      throw SweepError(std::string(o.confirm ? "--confirm" : r.a1.key.text + " moves a viscous tank's Ekman number, so each "
-                                                             "point needs forced solves at its own Ek, which") +
-                       " the chain without axial symmetry does not take yet (docs/rom.md, \"Bodies and tanks without "
-                       "axial symmetry\"): sweep a key that keeps the Ekman numbers");
+    r.general = needs_general_chain(r.scene, tables);
   }
   if (o.confirm && two) throw SweepError("--confirm sweeps one value at a time (no --param2)");
-  if (o.confirm && !build_model(r.scene).viscous)
+  if (o.confirm && !(r.general ? has_viscous_tables(r.scene) : build_model(r.scene).viscous))
     throw SweepError("--confirm: the scene has no viscous tank (its roots are (22)'s own)");
+  if (r.general) check_general_refinable(r.scene);
   r.by_forced_solves = moves || o.confirm;
   if (!o.png.empty()) check_plot_tools(RC_PLOT_SWEEP_SCRIPT, "map");  // fail before the sweep, not after it
   return r;
 }
 
 int sweep_by_forced_solves(const SweepOptions& o, const SweepRequest& r) {
-  const auto points = run_confirmed_sweep(r.scene, r.a1, cavity_modes_binary(o.cavity_modes), 1e-10, std::cerr);
+  const auto points = r.general ? run_general_confirmed_sweep(r.scene, r.a1, cavity_modes_binary(o.cavity_modes), 1e-10,
+                                                              run_program_logged, std::cerr)
+                                : run_confirmed_sweep(r.scene, r.a1, cavity_modes_binary(o.cavity_modes), 1e-10, std::cerr);
   write_confirmed_sweep(points, r.a1, o.out);
   int stable = 0, failed = 0;
   for (const auto& p : points) {
     stable += p.ok && p.stable ? 1 : 0;
     failed += p.ok ? 0 : 1;
   }
-  std::printf("wrote %s and its roots beside it: %zu points (%d stable, %d unstable, %d failed), roots of (22) "
-              "with the fluid's own response\n", o.out.c_str(), points.size(), stable,
-              static_cast<int>(points.size()) - stable - failed, failed);
+  std::printf("wrote %s and its roots beside it: %zu points (%d stable, %d unstable, %d failed), roots %s with the "
+              "fluid's own response\n", o.out.c_str(), points.size(), stable,
+              static_cast<int>(points.size()) - stable - failed, failed,
+              r.general ? "of the chain without axial symmetry" : "of (22)");
   if (!o.png.empty()) draw_plot(RC_PLOT_SWEEP_SCRIPT, o.out, o.png, {"--growth"});
   return 0;
 }

@@ -170,16 +170,22 @@ std::vector<ConfirmedSweepPoint> run_confirmed_sweep(const Scene& base, const Sw
       p.value = v;
       p.error = e.what();
     }
-    log << std::setprecision(6) << "  " << axis.key.text << " = " << v << ": ";
-    if (!p.ok) log << "not evaluated: " << p.error;
-    else
-      log << p.roots.size() << " roots" << (p.unconfirmed ? " (" + std::to_string(p.unconfirmed) + " NOT confirmed)" : "")
-          << ", largest growth " << p.growth << " 1/s" << (p.stable ? " (stable)" : " (unstable)") << ", " << p.solves
-          << " forced solves, " << std::setprecision(3) << p.seconds << " s";
-    log << " [" << i + 1 << "/" << axis.steps << "]" << std::endl;
+    log_sweep_point(log, axis, p, i, std::to_string(p.solves) + " forced solves");
     points.push_back(p);
   }
   return points;
+}
+
+void log_sweep_point(std::ostream& log, const SweepAxis& axis, const ConfirmedSweepPoint& p, int index,
+                     const std::string& work) {
+  log << std::setprecision(6) << "  " << axis.key.text << " = " << p.value << ": ";
+  if (!p.ok)
+    log << "not evaluated: " << p.error;
+  else
+    log << p.roots.size() << " roots" << (p.unconfirmed ? " (" + std::to_string(p.unconfirmed) + " NOT confirmed)" : "")
+        << ", largest growth " << p.growth << " 1/s" << (p.stable ? " (stable)" : " (unstable)") << ", " << work << ", "
+        << std::setprecision(3) << p.seconds << " s";
+  log << " [" << index + 1 << "/" << axis.steps << "]" << std::endl;
 }
 
 void write_confirmed_sweep(const std::vector<ConfirmedSweepPoint>& points, const SweepAxis& axis,

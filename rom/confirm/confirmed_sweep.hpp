@@ -48,6 +48,10 @@ std::vector<ConfirmedSweepPoint> run_confirmed_sweep(const Scene& base, const Sw
                                                      const std::string& cavity_modes, double tolerance,
                                                      std::ostream& log);
 
+// One line of a sweep's progress: the point's value, its roots and verdict, `work` (what was run for it) and its time.
+void log_sweep_point(std::ostream& log, const SweepAxis& axis, const ConfirmedSweepPoint& p, int index,
+                     const std::string& work);
+
 // The sweep CSV of write_sweep_csv (<key>,stable,margin,nonreal; margin = the largest growth rate, nonreal = the
 // roots followed), and beside it OUT.roots.csv: <key>,owner,sigma_re,sigma_im,confirmed, one row per root and point.
 void write_confirmed_sweep(const std::vector<ConfirmedSweepPoint>& points, const SweepAxis& axis,

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <iomanip>
+#include <sstream>
 #include <set>
 #include <stdexcept>
 
@@ -41,10 +43,11 @@ std::vector<fs::path> viscous_tables(const Scene& scene) {
   return out;
 }
 
-// The arguments that remake a 3-D response table exact at `exact_at` into `output`: its recorded command line with -o
-// and any earlier --exact-at replaced; a `volume` file from the text the table stores when the recorded path is gone.
+// The arguments that remake a 3-D response table exact at `exact_at` (none: no --exact-at) into `output`, at another
+// Ekman number when `ekman` > 0: its recorded command line with -o, any earlier --exact-at and, then, --ekman
+// replaced; a `volume` file from the text the table stores when the recorded path is gone.
 std::vector<std::string> remake_arguments(const rc::ModeTable& t, const std::vector<cd>& exact_at,
-                                          const fs::path& output, const fs::path& scratch) {
+                                          const fs::path& output, const fs::path& scratch, double ekman = 0) {
   const std::vector<std::string> w = shell_words(t.command_line);
   if (w.size() < 2 || (w[1] != "ellipsoid" && w[1] != "volume"))
     throw std::runtime_error("its recorded command line is not 'cavity-modes ellipsoid|volume ...': " + t.command_line);
@@ -65,13 +68,19 @@ std::vector<std::string> remake_arguments(const rc::ModeTable& t, const std::vec
     }
     const auto eq = word.find('=');
     const std::string name = word.substr(0, eq);
-    if (name == "-o" || name == "--output" || name == "--exact-at") {
+    if (name == "-o" || name == "--output" || name == "--exact-at" || (ekman > 0 && name == "--ekman")) {
       if (eq == std::string::npos) ++i;  // its value is the next word
       continue;
     }
     args.push_back(word);
   }
-  args.insert(args.end(), {"--exact-at", complex_list(exact_at), "-o", output.string()});
+  if (ekman > 0) {
+    std::ostringstream ek;
+    ek << std::setprecision(17) << ekman;
+    args.insert(args.end(), {"--ekman", ek.str()});
+  }
+  if (!exact_at.empty()) args.insert(args.end(), {"--exact-at", complex_list(exact_at)});
+  args.insert(args.end(), {"-o", output.string()});
   return args;
 }
 
@@ -115,6 +124,16 @@ cd nearest(const std::vector<cd>& roots, cd r) {
 }
 
 }  // namespace
+
+bool has_viscous_tables(const Scene& scene) { return !viscous_tables(scene).empty(); }
+
+void remake_at_ekman(const fs::path& table, double ekman, const fs::path& output, const std::string& binary,
+                     const fs::path& scratch, const ProgramRunner& run) {
+  std::vector<std::string> args{binary};
+  for (auto& a : remake_arguments(rc::read_mode_table(table), {}, refining_name(output), scratch, ekman))
+    args.push_back(std::move(a));
+  run_and_replace(args, output, refining_name(output), scratch, run);
+}
 
 void check_general_refinable(const Scene& scene) {
   for (const auto& [key, file] : tank_tables(scene)) {

@@ -32,6 +32,15 @@ struct GeneralConfirmation {
 // line (checked before any work).
 void check_general_refinable(const Scene& scene);
 
+// True when some tank of the scene has a viscous table.
+bool has_viscous_tables(const Scene& scene);
+
+// Makes the 3-D response table `table` again from its recorded command line at the Ekman number `ekman` (any
+// --exact-at dropped) into `output`, through output.refining.h5. Throws std::runtime_error naming it when cavity-modes
+// fails.
+void remake_at_ekman(const std::filesystem::path& table, double ekman, const std::filesystem::path& output,
+                     const std::string& binary, const std::filesystem::path& scratch, const ProgramRunner& run);
+
 // The roots a verdict rests on — the growing ones and those that decay more slowly than half the tanks' slowest pole
 // (the bodies') — or, when `all`, every root with Re σ ≤ 0 within the response tables' window (one of each pair σ,
 // −σ̄), confirmed in at most `max_rounds` rounds. One line per table and round to
