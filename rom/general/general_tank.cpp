@@ -1,6 +1,7 @@
 #include "general_tank.hpp"
 
 #include "chain_model.hpp"
+#include "row_coupling.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -17,12 +18,13 @@ using RowMajor3d = Eigen::Matrix<double, 3, 3, Eigen::RowMajor>;
 
 Eigen::Matrix3d tensor(const std::vector<double>& v) { return Eigen::Map<const RowMajor3d>(v.data()); }
 
-// A row's coupling tensor H: the 3-D table's, or an axisymmetric m = 1 row's E/2 (1, i, 0)(1, −i, 0)ᵀ — with a
-// viscous row's complex E + i·E_imag (the rank-one product of its right and left couplings, docs/volume.md §7).
-Eigen::Matrix3cd row_coupling(const rc::ModeTable& t, std::size_t l) {
+// A row's coupling tensor H about the body's joint: the 3-D table's, or an axisymmetric m = 1 row's
+// E/2 (1, i, 0)(1, −i, 0)ᵀ — with a viscous row's complex E + i·E_imag (the rank-one product of its right and left
+// couplings, docs/volume.md §7), and a partially filled tank's E = 2(a + c t)²/N² about the joint (row_coupling.hpp).
+Eigen::Matrix3cd row_coupling(const rc::ModeTable& t, std::size_t l, const RowCoupling& about) {
   Eigen::Matrix3cd H = Eigen::Matrix3cd::Zero();
   if (!t.volume_cavity.present()) {
-    const std::complex<double> E(t.E[l], t.viscous() ? t.E_imag[l] : 0.0), I(0, 1);
+    const std::complex<double> E = about.E_c(l), I(0, 1);
     return E / 2.0 * Eigen::Vector3cd(1, I, 0) * Eigen::RowVector3cd(1, -I, 0);
   }
   const rc::ModeTable::Volume& v = t.volume_cavity;
@@ -47,20 +49,35 @@ void require_modal(const Scene& scene, const std::string& w, const CavitySpec& c
   if (cav.static_correction) fail(scene, w + ".static_correction", "the static correction" + later);
   if (cav.galerkin) fail(scene, w + ".reduction", "the Galerkin reduction" + later);
   if (!cav.companion.empty()) fail(scene, w + ".companion", "a companion table" + later);
-  if (t.free_surface.present()) fail(scene, w + ".table", "a partially filled tank" + later);
   if (t.m != 1) fail(scene, w + ".table", cav.table.string() + " holds m = " + std::to_string(t.m) +
                                   " modes; only m = 1 modes couple to the tilt");
+}
+
+// A partially filled tank so far: on the axis of the first body of a fixed chain, whose joint stays put (on a body
+// whose joint moves its modes couple to the earlier bodies' tilts too: docs/rom.md, "Partially filled tanks"; off the
+// axis its free surface would face the spin axis sideways, which no axisymmetric table describes).
+void require_fixed_joint(const Scene& scene, int k, const CavitySpec& cav, const std::string& w) {
+  const std::string later = " (docs/rom.md, \"Bodies and tanks without axial symmetry\")";
+  if (cav.offset && ((*cav.offset)[0] != 0 || (*cav.offset)[1] != 0))
+    fail(scene, w + ".offset", "a partially filled tank off its body's axis is not modelled (its free surface faces the "
+                               "spin axis sideways)" + later);
+  if (k > 0 || scene.free_chain)
+    fail(scene, w + ".table", "a partially filled tank in the chain without axial symmetry sits on the first body of a "
+                              "fixed chain so far (a moving joint couples its modes to the earlier bodies)" + later);
 }
 
 // The rows kept, heaviest E first: every one that couples, or the first `modes`, or as many as reach `coverage` of
 // the sum rule (a 3-D table's λ = 0 weight counted as kept). Returns the coverage reached in `covered`.
 std::vector<int> kept_rows(const Scene& scene, const std::string& w, const CavitySpec& cav, const rc::ModeTable& t,
-                           double& covered) {
-  const double total = t.sum_rule, tiny = 1e-14 * std::max(std::abs(total), 1e-300);
+                           const RowCoupling& about, double& covered) {
+  // About the joint: a partially filled tank's rows weigh E = 2(a + c t)²/N² there, its sum rule A_f + K − J_zh.
+  const bool surface = t.free_surface.present();
+  const double total = surface ? about.sum_rule() : t.sum_rule, tiny = 1e-14 * std::max(std::abs(total), 1e-300);
+  const auto E = [&](int l) { return surface ? about.E(static_cast<std::size_t>(l)) : t.E[l]; };
   std::vector<int> idx;
   for (std::size_t l = 0; l < t.size(); ++l)
-    if (row_coupling(t, l).norm() > tiny) idx.push_back(static_cast<int>(l));  // a viscous H's trace may vanish
-  std::stable_sort(idx.begin(), idx.end(), [&](int i, int j) { return t.E[i] > t.E[j]; });
+    if (row_coupling(t, l, about).norm() > tiny) idx.push_back(static_cast<int>(l));  // a viscous H's trace may vanish
+  std::stable_sort(idx.begin(), idx.end(), [&](int i, int j) { return E(i) > E(j); });
   const double geostrophic = t.volume_cavity.present() ? tensor(t.volume_cavity.geostrophic_re).topLeftCorner<2, 2>().trace() / 2 : 0.0;
   std::size_t keep = idx.size();
   if (cav.modes) {
@@ -71,7 +88,7 @@ std::vector<int> kept_rows(const Scene& scene, const std::string& w, const Cavit
   } else if (cav.coverage) {
     double acc = geostrophic;
     keep = 0;
-    while (keep < idx.size() && acc < *cav.coverage * total * (1 - 1e-12)) acc += t.E[idx[keep++]];
+    while (keep < idx.size() && acc < *cav.coverage * total * (1 - 1e-12)) acc += E(idx[keep++]);
     if (acc < *cav.coverage * total * (1 - 1e-12)) {
       std::ostringstream os;
       os << "coverage " << *cav.coverage << " not reachable: the table's modes cover " << acc / total;
@@ -80,7 +97,7 @@ std::vector<int> kept_rows(const Scene& scene, const std::string& w, const Cavit
   }
   idx.resize(keep);
   covered = geostrophic;
-  for (const int l : idx) covered += t.E[l];
+  for (const int l : idx) covered += E(l);
   covered /= total;
   return idx;
 }
@@ -171,17 +188,25 @@ GeneralTank general_tank(const Scene& scene, int k, const CavitySpec& cav, const
   // About O_k: the parallel-axis theorem, m (|d|² I − d dᵀ).
   const Eigen::Vector3d& d = tank.centroid;
   tank.inertia = unit * inertia + tank.mass * (d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose());
+  const RowCoupling about{t, d.z() / L};
+  if (t.free_surface.present()) {
+    require_fixed_joint(scene, k, cav, w);
+    // The surface re-centres on the tilted spin axis: K(O_k) more transverse inertia (docs/physics.md §2).
+    const double K = unit * t.free_surface.K(about.c);
+    tank.inertia(0, 0) += K;
+    tank.inertia(1, 1) += K;
+  }
   tank.geostrophic = unit * geostrophic;
   if (t.response_fit()) tank.window = t.fit_hi * std::abs(spin);
   if (cav.bands) {
     tank.coverage = add_band_modes(scene, w, k, t, unit, tank);
   } else {
     double covered = 0;
-    for (const int l : kept_rows(scene, w, cav, t, covered)) {
+    for (const int l : kept_rows(scene, w, cav, t, about, covered)) {
       if (t.viscous())
-        add_damped_row_mode(scene, w, k, l, row_coupling(t, l), spin, t.lambda[l], t.decay[l], unit, tank);
+        add_damped_row_mode(scene, w, k, l, row_coupling(t, l, about), spin, t.lambda[l], t.decay[l], unit, tank);
       else
-        add_ideal_row_modes(k, l, row_coupling(t, l), spin, t.lambda[l], unit, tank);
+        add_ideal_row_modes(k, l, row_coupling(t, l, about), spin, t.lambda[l], unit, tank);
     }
     tank.coverage = covered;
   }

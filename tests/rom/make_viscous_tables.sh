@@ -15,4 +15,9 @@ done
 # The sphere's Galerkin response table (P3, 41 samples of [-1.5, 2]): pseudo-modes whose fluid keeps an energy.
 "$BIN" response sphere --radius 1 --ekman 1e-3 --order 3 --sigma -1.5:2:41 --galerkin -o "$DST/sphere_galerkin_ek1e-3.h5" \
   > "$DST/sphere_galerkin_ek1e-3.txt"
+# The sphere filled to 0.4 (a free surface), ideal and at Ek = 1e-3 (two damped modes), for the chain without axial
+# symmetry's partially filled tank (test_viscous_chain.cpp).
+"$BIN" sphere --radius 1 --fill 0.4 -o "$DST/sphere_fill0.4.h5" > "$DST/sphere_fill0.4.txt"
+"$BIN" sphere --radius 1 --fill 0.4 --ekman 1e-3 --modes 2 --no-convergence-check -o "$DST/sphere_fill0.4_ek1e-3.h5" \
+  > "$DST/sphere_fill0.4_ek1e-3.txt"
 echo "viscous tables in $DST"
