@@ -22,6 +22,7 @@ namespace {
 
 using detail::Point;
 using detail::SurfaceKey;
+using detail::place;
 
 // Above this the offset of a wall vertex is taken for a fold (a spike or a cusp of the wall), not a corner: a 90°
 // edge needs √2 H, a cube's corner √3 H.
@@ -40,13 +41,6 @@ std::string number(double v) {
   std::ostringstream os;
   os.precision(6);
   os << v;
-  return os.str();
-}
-
-std::string place(const Point& p) {
-  std::ostringstream os;
-  os.precision(4);
-  os << "(" << p[0] << ", " << p[1] << ", " << p[2] << ")";
   return os.str();
 }
 

@@ -19,13 +19,6 @@ double signed_volume(const std::array<Point, 4>& x) {
          e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
 }
 
-std::string place(const Point& p) {
-  std::ostringstream os;
-  os.precision(4);
-  os << "(" << p[0] << ", " << p[1] << ", " << p[2] << ")";
-  return os.str();
-}
-
 // Builds the layers' tetrahedra onto the core mesh m (nodes appended).
 class LayerBuilder {
  public:
@@ -141,6 +134,13 @@ class LayerBuilder {
 };
 
 }  // namespace
+
+std::string place(const Point& p) {
+  std::ostringstream os;
+  os.precision(4);
+  os << "(" << p[0] << ", " << p[1] << ", " << p[2] << ")";
+  return os.str();
+}
 
 WallRay ray_between(const Point& start, const Point& end) {
   WallRay r;

@@ -10,6 +10,7 @@
 #include <array>
 #include <functional>
 #include <map>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -23,6 +24,9 @@ struct WallRay {
   Point start{}, direction{};  // a core wall node and the unit direction towards the true wall
   double length = 0;           // to the true wall along it
 };
+
+// "(x, y, z)" to four digits: where an error message points.
+std::string place(const Point& p);
 
 // The ray from a core wall node to the point of the true wall it maps to.
 WallRay ray_between(const Point& start, const Point& end);

@@ -85,6 +85,11 @@ std::string general_spectrum_json(const GeneralChain& g, const GeneralSpectrum& 
   j["fluid_modes"] = g.n_modes();
   j["coverage"] = nlohmann::ordered_json::array();  // [body (1-based), share] per tank
   for (const auto& [k, share] : g.coverage) j["coverage"].push_back({k + 1, share});
+  if (g.response_window > 0) {  // the roots beyond a response table's window, as the text marks them "outside"
+    j["window"] = g.response_window;
+    j["outside"] = nlohmann::ordered_json::array();
+    for (const auto& r : sp.roots) j["outside"].push_back(std::abs(r.real()) > g.response_window);
+  }
   if (g.periodic())
     j["floquet"] = {{"period", g.period}, {"steps_per_period", sp.floquet_steps}, {"settled", sp.floquet_error},
                     {"unresolved", sp.floquet_unresolved}};
