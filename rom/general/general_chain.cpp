@@ -32,7 +32,7 @@ const rc::ModeTable& read_table(const Scene& scene, const std::string& key, cons
 // or several or off-axis tanks, are fixed in it).
 bool turns_the_frame(const BodySpec& b) { return b.asymmetric() || b.cavity.has_value(); }
 
-// The frame's rate: body[1]'s spin, or the first body's that turns it. Each body that turns the frame turns against it
+// The frame's rate: the first spin of a body that turns it (else body[1]'s). Each body that turns the frame turns against it
 // at ω_k − ω0; the chain's coefficients are periodic when one such rate is not zero (two spins: a dual-spin craft whose
 // rotor lacks axial symmetry or carries a tank, period 2π/|ω_k − ω0|) and quasi-periodic with two rates of different
 // size (three spins), which is refused. `frame` (tests) puts F at another rate.

@@ -24,7 +24,7 @@ namespace rc::rom {
 
 struct GeneralChain {
   int n = 0;
-  double spin = 0;          // ω0 (rad/s): the frame's rate, body[1]'s spin or the first spin of a body that turns it
+  double spin = 0;          // ω0 (rad/s): the frame's rate, the first spin of a body that turns it (else body[1]'s)
   Eigen::VectorXd spins;    // each body's spin (rad/s); body k turns against F at ω_k − ω0
   double period = 0;        // 2π/|ω_k − ω0| when a body without axial symmetry or with tanks turns against F, else 0
   std::vector<Eigen::Matrix2d> anisotropy;  // per body: Δ_k = I_tt − Ā_k I at t = 0 (body axes on F's), in M and K
@@ -57,12 +57,13 @@ std::vector<GeneralBody> general_bodies(const Scene& scene, TableCache& tables);
 // its body's axis or a tank whose table is 3-D. Reads the tables through `tables` (throws SceneError naming the key on a table that cannot be read).
 bool needs_general_chain(const Scene& scene, TableCache& tables);
 
-// Bodies at different spins: F turns with body[1] (or the first body without axial symmetry or with tanks). An
+// Bodies at different spins: F turns with the first body without axial symmetry or with tanks (else body[1]). An
 // axisymmetric body without tanks may spin at its own rate (its coefficients do not depend on its angle); a second
 // spin among the others makes the coefficients periodic (periodic_system.hpp, floquet.hpp; docs/rom.md, "Bodies at
 // different spins"), a third quasi-periodic (refused). `frame` puts F at another rate (tests: the same chain seen
 // from a frame it turns against). Throws SceneError naming the key for what the general chain does not take yet
-// (three spins, aerodynamic, external moments and forces, fields, Galerkin tanks, partial fills), for a body
+// (three spins, aerodynamic, external moments and forces, fields, Galerkin tanks, partial fills off the first body's
+// axis or on a moving joint), for a body
 // whose products of inertia with its frozen fluid do not vanish (it cannot spin steadily about its axis), and when the
 // effective inertia with the modes' share taken out is not positive definite.
 GeneralChain build_general_chain(const Scene& scene, TableCache* tables = nullptr,
