@@ -171,7 +171,9 @@ TEST(ViscousChain, TanksAtTwoSpinsThroughFloquetAreTheAxisymmetricChain) {
     EXPECT_EQ(general.verdict.stable, axisymmetric.stable);
     // Without gravity (26) has neutral roots at σ = 0, which its growth leaves out; in the turning frame they sit at
     // ±ω0 and count (−5e-13 1/s): the growth is compared with gravity.
-    if (gravity > 0) EXPECT_NEAR(general.verdict.growth, axisymmetric.growth, 1e-9 * spectral_radius(expected));
+    if (gravity > 0) {
+      EXPECT_NEAR(general.verdict.growth, axisymmetric.growth, 1e-9 * spectral_radius(expected));
+    }
   }
 }
 
