@@ -58,25 +58,26 @@ def main() -> int:
     roots = [r for r in rows if r["part"] == "roots"]
     fig, (ax1, ax2, ax3) = plt.subplots(1, 3, figsize=(17, 5.4), dpi=100)
 
-    colours = {"exact": "black", "gauss": "tab:blue", "rk45": "tab:orange"}
-    for method in ("gauss", "rk45", "exact"):
+    colours = {"exact": "black", "gauss": "tab:blue", "rk45": "tab:orange", "magnus": "tab:purple"}
+    for method in ("gauss", "rk45", "exact", "magnus"):
         pts = [(num(r["wall_seconds"]), max(num(r["error"]), FLOOR), r) for r in work if r["method"] == method]
         if not pts:
             continue
         x, y = [p[0] for p in pts], [p[1] for p in pts]
         ax1.plot(x, y, "o-" if method != "exact" else "s", color=colours[method], ms=5 if method != "exact" else 8,
                  label={"exact": "exact (double)", "gauss": "gauss: step sweep",
-                        "rk45": "rk45: tolerance sweep"}[method])
+                        "rk45": "rk45: tolerance sweep", "magnus": "magnus (two spins): step sweep"}[method])
         for xi, yi, r in pts:
             if method == "rk45":
                 ax1.annotate(f"{num(r['value']):.0e}", (xi, yi), fontsize=6, xytext=(3, 3), textcoords="offset points")
-            elif method == "gauss":
+            elif method in ("gauss", "magnus"):
                 ax1.annotate(f"h={num(r['value']):.1e}", (xi, yi), fontsize=6, xytext=(3, -9),
                              textcoords="offset points")
-    ref = [r for r in work if r["method"] == "reference" and r["parameter"] == "method_difference"]
+    ref = [r for r in work if r["method"] == "reference" and r["parameter"] in ("method_difference", "magnus_difference")]
     if ref:
         ax1.axhline(max(num(ref[0]["error"]), FLOOR), color="tab:green", ls=":", lw=1.2,
-                    label="reference: long double eig vs expm")
+                    label="reference: long double eig vs expm" if ref[0]["parameter"] == "method_difference"
+                    else "reference: Magnus, 4 vs 2 times the steps")
     ax1.set_xscale("log")
     ax1.set_yscale("log")
     ax1.set_xlabel("wall time (s, best of repeated runs)")

@@ -216,6 +216,7 @@ std::string format_bench_row(const BenchRow& r) {
     if (r.parameter == "step") what += " h = " + field(r.value, "%.3g") + " s (" + std::to_string(r.steps) + " steps)";
     else if (r.parameter == "tolerance") what += " tol = " + field(r.value, "%.0e") + " (" + std::to_string(r.steps) + " steps)";
     else if (r.parameter == "method_difference") what += ": eigen-decomposition vs matrix exponential, long double";
+    else if (r.parameter == "magnus_difference") what += ": Magnus steps, 4 against 2 times the roots' count";
     else if (r.parameter == "energy_drift") what += ": energy change 0 -> t_end, relative";
     else what += " (double)";
     std::snprintf(buf, sizeof buf, "%-62s error %9.2e   wall %s s  cpu %s s", what.c_str(), r.error,

@@ -35,8 +35,13 @@ Command add_bench_command(CLI::App& app) {
               std::printf("%s\n", format_bench_row(row).c_str());
               std::fflush(stdout);
             });
-            std::printf("t_end = %g s, first-order dimension %d, fastest root |sigma| = %.4g rad/s, reference: long "
-                        "double (%d-bit mantissa)\n", r.t_end, r.dimension, r.spectral_radius, r.reference_mantissa_bits);
+            if (r.reference_mantissa_bits > 0)
+              std::printf("t_end = %g s, first-order dimension %d, fastest root |sigma| = %.4g rad/s, reference: long "
+                          "double (%d-bit mantissa)\n", r.t_end, r.dimension, r.spectral_radius, r.reference_mantissa_bits);
+            else  // two spins: periodic coefficients (docs/rom.md, "Bodies at different spins")
+              std::printf("t_end = %g s, first-order dimension %d, fastest root |sigma| = %.4g rad/s, reference: Magnus "
+                          "steps in double, four times as many a period as the roots settled with\n", r.t_end,
+                          r.dimension, r.spectral_radius);
             if (!o->out.empty()) {
               write_bench_csv(r, out);
               std::printf("wrote %s: %zu rows\n", o->out.c_str(), r.rows.size());

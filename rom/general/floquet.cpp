@@ -116,6 +116,7 @@ double spectral_radius(const Eigen::MatrixXd& B) {
 constexpr int kMostSteps = 1 << 16;  // Magnus steps a period
 
 struct Settled {
+  Eigen::MatrixXd phi;        // the last monodromy
   std::vector<cd> exponents;  // principal values
   Eigen::MatrixXd mean;       // B averaged over the period
   std::vector<double> moves;  // each root's move from the monodromy with half the steps (rad/s)
@@ -143,7 +144,8 @@ Settled settle(const GeneralChain& g) {
   Eigen::MatrixXd mean(dim, dim);
   std::vector<cd> last = principal_exponents(eigenvalues(monodromy(g, out.s, steps, mean), "the monodromy"), g.period);
   for (steps *= 2; steps <= kMostSteps; steps *= 2) {
-    const std::vector<cd> now = principal_exponents(eigenvalues(monodromy(g, out.s, steps, mean), "the monodromy"), g.period);
+    out.phi = monodromy(g, out.s, steps, mean);
+    const std::vector<cd> now = principal_exponents(eigenvalues(out.phi, "the monodromy"), g.period);
     out.moves = moves(now, last, omega);
     out.error = 0;
     const double fastest = fastest_growth(now);
@@ -158,6 +160,20 @@ Settled settle(const GeneralChain& g) {
   throw std::runtime_error("the periodic chain's monodromy did not settle: its roots moved by " + std::to_string(out.error) +
                            " rad/s from 2^15 to 2^16 Magnus steps a period (more than 1e-10 of the spectral radius " +
                            std::to_string(out.radius) + " rad/s)");
+}
+
+// Each principal exponent in the branch nearest the averaged chain's root it pairs with.
+std::vector<cd> unfolded(const std::vector<cd>& exponents, const Eigen::MatrixXd& mean, double period) {
+  const double omega = 2 * M_PI / period;
+  std::vector<cd> averaged;
+  for (const cd mu : eigenvalues(mean, "the averaged chain")) averaged.emplace_back(mu.imag(), -mu.real());
+  const std::vector<int> of = pair_up(exponents, averaged, omega);
+  std::vector<cd> out;
+  for (std::size_t i = 0; i < exponents.size(); ++i) {
+    const double a = averaged[of[i]].real();
+    out.emplace_back(a + wrapped(exponents[i].real(), a, omega), exponents[i].imag());
+  }
+  return out;
 }
 
 }  // namespace
@@ -190,18 +206,21 @@ FloquetSteps floquet_steps(const GeneralChain& g) {
   return {st.steps, st.s};
 }
 
+FloquetModes floquet_modes(const GeneralChain& g) {
+  const Settled st = settle(g);
+  const Eigen::EigenSolver<Eigen::MatrixXd> es(st.phi, true);
+  if (es.info() != Eigen::Success) throw std::runtime_error("the monodromy: the eigen-solver did not converge");
+  return {unfolded(principal_exponents(es.eigenvalues(), g.period), st.mean, g.period), es.eigenvectors()};
+}
+
 GeneralSpectrum floquet_spectrum(const GeneralChain& g) {
   const Settled st = settle(g);
-  const double omega = 2 * M_PI / g.period;
-  std::vector<cd> averaged;
-  for (const cd mu : eigenvalues(st.mean, "the averaged chain")) averaged.emplace_back(mu.imag(), -mu.real());
-  const std::vector<int> of = pair_up(st.exponents, averaged, omega);
+  const std::vector<cd> roots = unfolded(st.exponents, st.mean, g.period);
   GeneralSpectrum sp;
-  Eigen::VectorXcd sigma(st.exponents.size());
-  for (std::size_t i = 0; i < st.exponents.size(); ++i) {
-    const double a = averaged[of[i]].real();
-    sigma[i] = cd(a + wrapped(st.exponents[i].real(), a, omega), st.exponents[i].imag());
-    sp.roots.push_back(sigma[i]);
+  Eigen::VectorXcd sigma(static_cast<Eigen::Index>(roots.size()));
+  for (std::size_t i = 0; i < roots.size(); ++i) {
+    sigma[static_cast<Eigen::Index>(i)] = roots[i];
+    sp.roots.push_back(roots[i]);
   }
   std::sort(sp.roots.begin(), sp.roots.end(), [](cd a, cd b) {
     return a.real() != b.real() ? a.real() < b.real() : a.imag() < b.imag();

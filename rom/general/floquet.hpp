@@ -12,6 +12,7 @@
 
 #include <Eigen/Dense>
 
+#include <complex>
 #include <vector>
 
 namespace rc::rom {
@@ -27,6 +28,14 @@ Eigen::MatrixXd magnus_transition(const GeneralChain& g, double s, double t0, do
 // spectral radius in the last doubling. Throws std::runtime_error when the roots whose multipliers are within 1e-6
 // of the largest have not settled to 1e-10 of the spectral radius at 2^16 steps per period.
 GeneralSpectrum floquet_spectrum(const GeneralChain& g);
+
+// The Floquet roots as floquet_spectrum gives them (unfolded, unsorted) with the eigenvectors of the monodromy (each
+// the Floquet solution's state at t = 0), column by column.
+struct FloquetModes {
+  std::vector<std::complex<double>> roots;
+  Eigen::MatrixXcd vectors;
+};
+FloquetModes floquet_modes(const GeneralChain& g);
 
 // y(t) of the periodic chain from y(0), t increasing from call to call: Magnus steps on the grid of T/N (each of the N
 // steps of a period made once and kept), and one step of its own from the last grid point to t.

@@ -5,6 +5,7 @@
 // (26), which takes each body's spin exactly; (c) a platform and a rotor, both without axial symmetry, grow at the
 // rate the nonlinear chain (rigid bodies at any angle, a separate model) grows at; (d) the Magnus monodromy converges
 // at sixth order.
+#include "bench.hpp"
 #include "ellipsoid_table.hpp"
 #include "floquet.hpp"
 #include "general_chain.hpp"
@@ -163,6 +164,46 @@ TEST(TwoSpins, AsymmetricRotorGrowsAsTheNonlinearChain) {
               std::abs(floquet - measured) / measured, symmetric);
   EXPECT_NEAR(floquet, measured, 0.01 * measured);
   EXPECT_GT(std::abs(symmetric - measured), 0.1 * measured);  // the rotor's asymmetry is what the check sees
+}
+
+// `chain-rom bench` at two spins (general_bench.hpp): a heavy top with B ≠ A and the four-mode table at 40 rad/s, an
+// unbalanced rotor at 90 rad/s above it. The Magnus run's state at t_end converges at sixth order down to its
+// reference's own difference, and the body roots with 1, 2 and 4 rows kept approach those with all of them (the same
+// chain with all kept: to the monodromy's settling).
+TEST(TwoSpins, BenchMeasuresTheMagnusStepsAndTheKeptRows) {
+  if (!std::filesystem::exists(test_dir() / "four_modes.h5")) write_table(four_mode_table(), test_dir() / "four_modes.h5");
+  std::vector<Body> b(2);
+  b[0].table = "four_modes.h5";
+  b[0].spin = 40;
+  b[0].center = 0.1;
+  b[1].A = 0.02;
+  b[1].C = 0.03;
+  b[1].spin = 90;
+  std::string text = scene_text(b, {{300.0, 0.0}}, 9.81, false, 0.0, "[initial]\ntilt = [[0.01, 0.0], [0.0, 0.0]]\n"
+                                                                     "[run]\nt_end = 0.5\noutput_step = 0.01\n");
+  text.insert(text.find("\nC = ") + 1, "B = 0.12\n");
+  text.insert(text.rfind("\nC = ") + 1, "B = 0.024\n");
+  const Scene scene = parse_scene_text(text, test_dir(), "t");
+  ASSERT_TRUE(build_general_chain(scene).periodic());
+  const BenchResult r = run_bench(scene);
+  double reference = 1, order = 0;
+  std::vector<double> magnus, roots;
+  for (const BenchRow& row : r.rows) {
+    if (row.method == "reference") reference = row.error;
+    if (row.method == "magnus") magnus.push_back(row.error);
+    if (row.part == "roots") roots.push_back(row.error);
+  }
+  for (std::size_t i = 1; i < magnus.size(); ++i)  // the asymptotic range: error ratio per halving of h
+    if (magnus[i - 1] < 1e-4 && magnus[i] > 10 * reference) order = std::log2(magnus[i - 1] / magnus[i]);
+  for (const double e : magnus) std::printf("  magnus row error %.3e\n", e);
+  std::printf("bench at two spins (dimension %d): reference %.1e, %zu Magnus rows, order %.2f; body roots with 1, 2, 4 of "
+              "4 rows: %.1e %.1e %.1e\n", r.dimension, reference, magnus.size(), order,
+              roots.size() > 0 ? roots[0] : -1, roots.size() > 1 ? roots[1] : -1, roots.size() > 2 ? roots[2] : -1);
+  EXPECT_LT(reference, 1e-10);
+  EXPECT_NEAR(order, 6, 0.3);
+  ASSERT_EQ(roots.size(), 3u);
+  EXPECT_GT(roots[0], 1e3 * roots[2]);
+  EXPECT_LT(roots[2], 1e-9);
 }
 
 // The monodromy's error against one with 64 times the steps falls by 2^6 = 64 at each doubling (sixth order).
