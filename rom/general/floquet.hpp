@@ -2,9 +2,8 @@
 // every frame (periodic_system.hpp), so its motions are Floquet solutions y = p(t) e^{iσt}, p T-periodic, whose
 // multipliers μ = e^{iσT} are the eigenvalues of the monodromy matrix Φ(T) (y(T) = Φ(T) y(0)). Φ is built by the
 // sixth-order Magnus method (Blanes, Casas and Ros, "Improved high order integrators based on the Magnus expansion",
-// BIT 40, 2000: three Gauss points per step, each step the exponential of a combination of B and its commutators),
-// which keeps a conservative chain's monodromy in its Lie group — the multipliers of a stable chain stay on the unit
-// circle to rounding — and doubles its steps until two monodromies give the same roots.
+// BIT 40, 2000: three Gauss points per step, each step the exponential of a combination of B and its commutators;
+// error O(h⁶)), doubling the steps until two monodromies give the same roots.
 #pragma once
 
 #include "general_chain.hpp"
