@@ -169,11 +169,12 @@ int run_linear(const Scene& scene, const ChainModel& model, const std::string& s
 int run_general(const Scene& scene, TableCache& tables, const std::string& scene_file, const std::string& out) {
   if (!scene.run.present) throw std::runtime_error(scene_file + ": run: missing [run] section");
   const GeneralChain g = build_general_chain(scene, &tables);
-  const Verdict v = general_spectrum(g).verdict;
+  const GeneralSpectrum sp = general_spectrum(g);
+  const Verdict& v = sp.verdict;
   if (!v.stable)
     std::fprintf(stderr, "chain-rom: warning: the scene is unstable (largest growth rate %.6g 1/s): the linearised "
                          "tilts grow without bound and leave the model's small-angle range\n", v.growth);
-  const GeneralHistory h = propagate_general(g, scene);
+  const GeneralHistory h = propagate_general(g, scene, sp.floquet_steps);
   write_general_history(g, h, out);
   std::cout << "wrote " << out << ": " << h.t.size() << " samples, the chain without axial symmetry propagated "
             << (g.periodic() ? "by sixth-order Magnus steps (periodic coefficients: two spins)" : "exactly") << ", "

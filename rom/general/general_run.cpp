@@ -90,9 +90,10 @@ GeneralSystem initial_system(const GeneralChain& g) {
 // periodic chain's Magnus steps (floquet.hpp), as many a period as its roots settled with.
 class OutputSteps {
  public:
-  OutputSteps(const GeneralChain& g, const GeneralSystem& sys, double h, const Eigen::VectorXd& y0) : y_(y0) {
+  OutputSteps(const GeneralChain& g, const GeneralSystem& sys, double h, const Eigen::VectorXd& y0, int per_period)
+      : y_(y0) {
     if (g.periodic()) {
-      periodic_.emplace(g, sys.s, floquet_steps(g).per_period, y0);
+      periodic_.emplace(g, sys.s, per_period > 0 ? per_period : floquet_steps(g).per_period, y0);
       return;
     }
     Eigen::MatrixXd B = sys.B;
@@ -113,7 +114,7 @@ class OutputSteps {
 
 }  // namespace
 
-GeneralHistory propagate_general(const GeneralChain& g, const Scene& scene) {
+GeneralHistory propagate_general(const GeneralChain& g, const Scene& scene, int steps_per_period) {
   if (scene.run.method != "exact")
     throw std::runtime_error(scene.file.string() + ": run.method: the chain without axial symmetry is propagated "
                              "exactly only (method = \"exact\")");
@@ -126,7 +127,7 @@ GeneralHistory propagate_general(const GeneralChain& g, const Scene& scene) {
   h.z.resize(steps, g.n_modes());
   if (g.axial) h.spin.resize(steps, g.n);
   Eigen::VectorXd y = general_initial_state(g, sys, scene);
-  OutputSteps steps_to(g, sys, h_step, y);
+  OutputSteps steps_to(g, sys, h_step, y, steps_per_period);
   const bool momentum = has_momentum_integral(g, scene);
   double size0 = 0, largest = 0, drift = 0;
   const Eigen::Vector3d L0 = momentum ? angular_momentum(g, sys, y, 0, size0) : Eigen::Vector3d::Zero();

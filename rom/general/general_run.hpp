@@ -32,7 +32,8 @@ struct GeneralHistory {
 Eigen::VectorXd general_initial_state(const GeneralChain& g, const GeneralSystem& sys, const Scene& scene);
 
 // Throws std::runtime_error for what the general run does not take (a method other than "exact", initial fluid
-// amplitudes) and when the trajectory leaves double precision.
-GeneralHistory propagate_general(const GeneralChain& g, const Scene& scene);
+// amplitudes) and when the trajectory leaves double precision. At two spins `steps_per_period` > 0 is the Magnus steps
+// a period the roots settled with (general_spectrum's floquet_steps), else they are settled here.
+GeneralHistory propagate_general(const GeneralChain& g, const Scene& scene, int steps_per_period = 0);
 
 }  // namespace rc::rom
