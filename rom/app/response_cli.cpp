@@ -53,8 +53,10 @@ FrequencyRange parse_range(const std::string& text) {
   return r;
 }
 
-// `mirror` (the chain without axial symmetry): each body's mirror tilt A₋ at −σ − 2ω0 too (general_response.hpp).
-void write_response_csv(const FrequencyResponse& r, const std::string& out, const Eigen::MatrixXcd* mirror = nullptr) {
+// `mirror` (the chain without axial symmetry): each body's mirror tilt A₋ at −σ − 2ω0 too (general_response.hpp);
+// `sideband` (at two spins): the root mean square tilt at every other frequency (periodic_response.hpp).
+void write_response_csv(const FrequencyResponse& r, const std::string& out, const Eigen::MatrixXcd* mirror = nullptr,
+                        const Eigen::MatrixXd* sideband = nullptr) {
   write_text_atomically(out, [&](std::ostream& os) {
     // Resonances as comment lines (numpy's loadtxt and genfromtxt skip them): the plot marks them.
     for (std::size_t j = 0; j < r.resonances.size(); ++j) {
@@ -66,6 +68,8 @@ void write_response_csv(const FrequencyResponse& r, const std::string& out, cons
     for (Eigen::Index k = 0; k < r.tilt.cols(); ++k) os << ",abs_" << k + 1 << ",phase_deg_" << k + 1;
     if (mirror)
       for (Eigen::Index k = 0; k < r.tilt.cols(); ++k) os << ",mirror_abs_" << k + 1 << ",mirror_phase_deg_" << k + 1;
+    if (sideband)
+      for (Eigen::Index k = 0; k < r.tilt.cols(); ++k) os << ",sideband_rms_" << k + 1;
     os << "\n";
     for (std::size_t i = 0; i < r.sigma.size(); ++i) {
       char buf[64];
@@ -79,6 +83,10 @@ void write_response_csv(const FrequencyResponse& r, const std::string& out, cons
       for (Eigen::Index k = 0; mirror && k < mirror->cols(); ++k) {
         const auto u = (*mirror)(static_cast<Eigen::Index>(i), k);
         std::snprintf(buf, sizeof buf, ",%.9e,%.6f", std::abs(u), std::arg(u) * 180 / std::numbers::pi);
+        os << buf;
+      }
+      for (Eigen::Index k = 0; sideband && k < sideband->cols(); ++k) {
+        std::snprintf(buf, sizeof buf, ",%.9e", (*sideband)(static_cast<Eigen::Index>(i), k));
         os << buf;
       }
       os << "\n";
@@ -117,12 +125,21 @@ int run_response(const ResponseOptions& o) {
   if (!o.png.empty()) check_plot_tools(RC_PLOT_RESPONSE_SCRIPT, "Bode plot");
   TableCache tables;
   if (needs_general_chain(scene, tables)) {
-    const GeneralFrequencyResponse g = general_frequency_response(build_general_chain(scene, &tables), o.body - 1,
-                                                                  range.from, range.to, range.steps);
+    const GeneralChain chain = build_general_chain(scene, &tables);
+    const GeneralFrequencyResponse g =
+        general_frequency_response(chain, o.body - 1, range.from, range.to, range.steps);
     const FrequencyResponse r{g.body, g.sigma, g.tilt, g.resonances, g.resonance_growth, g.singular};
-    write_response_csv(r, o.out, &g.mirror);
+    const bool periodic = chain.periodic();
+    write_response_csv(r, o.out, &g.mirror, periodic ? &g.sideband : nullptr);
     std::printf("chain without axial symmetry: the tilt A+ at sigma and the mirror tilt A- at -sigma - 2 spin "
                 "(docs/rom.md, \"Frequency response\"); resonances from every root of the turning frame\n");
+    if (periodic) {
+      const double nu = 2 * std::numbers::pi / chain.period;
+      std::printf("two spins: the coefficients are periodic (period %g s), so the steady tilt also holds the frequencies "
+                  "sigma + k %g and -sigma - 2 spin + k %g rad/s (k != 0): their root mean square in sideband_rms_k; "
+                  "%d sixth-order Magnus steps a period (docs/rom.md, \"Frequency response at two spins\")\n",
+                  chain.period, nu, nu, g.steps_per_period);
+    }
     print_summary(r, o);
   } else {
     const ChainModel m = build_model(scene, &tables);

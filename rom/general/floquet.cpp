@@ -1,6 +1,7 @@
 #include "floquet.hpp"
 
 #include "balancing.hpp"
+#include "magnus.hpp"
 #include "periodic_system.hpp"
 #include "spectrum.hpp"
 
@@ -20,22 +21,13 @@ namespace {
 
 using cd = std::complex<double>;
 
-Eigen::MatrixXd commutator(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) { return a * b - b * a; }
-
-// One sixth-order Magnus step over [t, t + h] (Blanes, Casas and Ros 2000): A_i = h B(t + c_i h) at the Gauss points
-// c = ½ ∓ √15/10, ½; α1 = A2, α2 = √15/3 (A3 − A1), α3 = 10/3 (A3 − 2A2 + A1); C1 = [α1, α2],
-// C2 = −[α1, 2α3 + C1]/60; Ω = α1 + α3/12 + [−20α1 − α3 + C1, α2 + C2]/240; the step is exp(Ω).
+// One sixth-order Magnus step over [t, t + h] (magnus.hpp).
 Eigen::MatrixXd magnus_step(const GeneralChain& g, double s, double t, double h, Eigen::MatrixXd* mean = nullptr) {
-  const double r = std::sqrt(15.0) / 10;
-  const Eigen::MatrixXd A1 = h * periodic_matrix(g, t + (0.5 - r) * h, s);
-  const Eigen::MatrixXd A2 = h * periodic_matrix(g, t + 0.5 * h, s);
-  const Eigen::MatrixXd A3 = h * periodic_matrix(g, t + (0.5 + r) * h, s);
+  const Eigen::MatrixXd A1 = h * periodic_matrix(g, t + kMagnusNodes[0] * h, s);
+  const Eigen::MatrixXd A2 = h * periodic_matrix(g, t + kMagnusNodes[1] * h, s);
+  const Eigen::MatrixXd A3 = h * periodic_matrix(g, t + kMagnusNodes[2] * h, s);
   if (mean) *mean += (5 * A1 + 8 * A2 + 5 * A3) / 18;  // Gauss's rule: ∫B over the step
-  const Eigen::MatrixXd a1 = A2, a2 = std::sqrt(15.0) / 3 * (A3 - A1), a3 = 10.0 / 3 * (A3 - 2 * A2 + A1);
-  const Eigen::MatrixXd C1 = commutator(a1, a2);
-  const Eigen::MatrixXd C2 = -commutator(a1, 2 * a3 + C1) / 60;
-  const Eigen::MatrixXd omega = a1 + a3 / 12 + commutator(-20 * a1 - a3 + C1, a2 + C2) / 240;
-  return omega.exp();
+  return magnus_exponent(A1, A2, A3).exp();
 }
 
 Eigen::MatrixXd monodromy(const GeneralChain& g, double s, int steps, Eigen::MatrixXd& mean) {
@@ -203,7 +195,7 @@ Eigen::VectorXd PeriodicPropagator::at(double t) {
 
 FloquetSteps floquet_steps(const GeneralChain& g) {
   const Settled st = settle(g);
-  return {st.steps, st.s};
+  return {st.steps, st.s, st.radius};
 }
 
 FloquetModes floquet_modes(const GeneralChain& g) {

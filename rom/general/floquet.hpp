@@ -51,10 +51,12 @@ class PeriodicPropagator {
   Eigen::VectorXd y_;
 };
 
-// The steps per period floquet_spectrum settles with, and q's scale s: what `run` propagates with.
+// The steps per period floquet_spectrum settles with, and q's scale s: what `run` propagates with; and the spectral
+// radius of B(0) (at least the period's frequency), which the steps resolve.
 struct FloquetSteps {
   int per_period = 0;
   double s = 1;
+  double radius = 0;
 };
 FloquetSteps floquet_steps(const GeneralChain& g);
 

@@ -1,6 +1,7 @@
 #include "general_response.hpp"
 
 #include "general_system.hpp"
+#include "periodic_response.hpp"
 
 #include <cmath>
 #include <complex>
@@ -10,8 +11,19 @@ namespace rc::rom {
 
 using cd = std::complex<double>;
 
+void mark_resonances(const GeneralChain& g, double from, double to, GeneralFrequencyResponse& r) {
+  for (const cd root : general_spectrum(g).roots) {
+    const double at = root.real() - g.spin;
+    if (at >= std::min(from, to) && at <= std::max(from, to)) {
+      r.resonances.push_back(at);
+      r.resonance_growth.push_back(g.dissipative ? -root.imag() : 0.0);
+    }
+  }
+}
+
 GeneralFrequencyResponse general_frequency_response(const GeneralChain& g, int body, double from, double to,
                                                     int steps) {
+  if (g.periodic()) return periodic_frequency_response(g, body, from, to, steps);
   const GeneralSystem sys = build_general_system(g);
   const int dim = sys.dim();
   GeneralFrequencyResponse r;
@@ -41,13 +53,7 @@ GeneralFrequencyResponse general_frequency_response(const GeneralChain& g, int b
       r.mirror(i, k) = 0.5 * std::conj(qx + I * qy);
     }
   }
-  for (const cd root : general_spectrum(g).roots) {
-    const double at = root.real() - g.spin;
-    if (at >= std::min(from, to) && at <= std::max(from, to)) {
-      r.resonances.push_back(at);
-      r.resonance_growth.push_back(g.dissipative ? -root.imag() : 0.0);
-    }
-  }
+  mark_resonances(g, from, to, r);
   return r;
 }
 

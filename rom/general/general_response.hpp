@@ -23,13 +23,21 @@ struct GeneralFrequencyResponse {
   std::vector<double> sigma;         // rad/s, the moment's frequency in the inertial frame
   Eigen::MatrixXcd tilt;             // sigma.size() × n: A₊ per unit moment (rad per N m); NaN where singular
   Eigen::MatrixXcd mirror;           // sigma.size() × n: A₋ per unit moment, at the frequency −σ − 2ω0
+  Eigen::MatrixXd sideband;          // at two spins (periodic_response.hpp): sigma.size() × n, the root mean square
+                                     // tilt at every other frequency per unit moment; empty at one spin
+  int steps_per_period = 0;          // at two spins: the Magnus steps a period (at the largest |σ + ω0|)
   std::vector<double> resonances;    // σ = Re σ_F − ω0 of the chain's roots σ_F (turning frame) inside the range
   std::vector<double> resonance_growth;  // their −Im σ_F (1/s)
   int singular = 0;                  // frequencies where iΩ − B could not be solved
 };
 
-// `steps` >= 2 frequencies from `from` to `to`. Throws std::runtime_error as build_general_system.
+// `steps` >= 2 frequencies from `from` to `to`; a periodic chain's through periodic_response.hpp. Throws
+// std::runtime_error as build_general_system.
 GeneralFrequencyResponse general_frequency_response(const GeneralChain& g, int body, double from, double to,
                                                     int steps);
+
+// The resonances and their growth from the chain's roots (at two spins the Floquet roots in the branch of the
+// period-averaged chain's).
+void mark_resonances(const GeneralChain& g, double from, double to, GeneralFrequencyResponse& r);
 
 }  // namespace rc::rom

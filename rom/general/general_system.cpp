@@ -73,7 +73,7 @@ void check_effective_inertia(const Scene& scene, const GeneralChain& g) {
 GeneralSystem build_general_system(const GeneralChain& g, double s) {
   if (g.periodic())
     throw std::runtime_error("the chain's coefficients are periodic (a body without axial symmetry or with tanks turns "
-                             "against another): spectrum, sweep, run and bench take it, response and confirm take "
+                             "against another): spectrum, sweep, run, bench and response take it, confirm takes "
                              "chains whose coefficients are constant (docs/rom.md, \"Bodies at different spins\")");
   const FluidMaps f = fluid_maps(g);
   const int nq = 2 * g.n, d = g.dim_q(), nz = 2 * g.n_modes();

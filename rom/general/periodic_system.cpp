@@ -42,7 +42,7 @@ GeneralChain turned_chain(const GeneralChain& g, double t) {
   return out;
 }
 
-Eigen::MatrixXd periodic_matrix(const GeneralChain& g, double t, double s) {
+GeneralSystem periodic_system(const GeneralChain& g, double t, double s) {
   const GeneralChain gt = turned_chain(g, t);
   const GeneralSystem frozen = build_general_system(gt, s);
   const FluidMaps f = fluid_maps(gt);
@@ -63,10 +63,16 @@ Eigen::MatrixXd periodic_matrix(const GeneralChain& g, double t, double s) {
   const Eigen::MatrixXd Pt = f.P.transpose();
   force.rightCols(nz) -= Pt * TJ * f.W;
   force -= Pt * (f.W * f.Chat * TJ - (TJ * f.G - f.G * TJ)) * dw;
-  Eigen::MatrixXd B = frozen.B + frozen.input * force;
-  B.bottomRows(nz) += f.Chat * TJ * dw;
-  if (!B.allFinite()) throw std::runtime_error("the periodic chain's first-order matrix is not finite at t = " + std::to_string(t) + " s");
-  return B;
+  GeneralSystem out;
+  out.s = s;
+  out.B = frozen.B + frozen.input * force;
+  out.B.bottomRows(nz) += f.Chat * TJ * dw;
+  if (!out.B.allFinite())
+    throw std::runtime_error("the periodic chain's first-order matrix is not finite at t = " + std::to_string(t) + " s");
+  out.input = frozen.input;  // an external moment is not turned: it acts on Q in F's axes
+  return out;
 }
+
+Eigen::MatrixXd periodic_matrix(const GeneralChain& g, double t, double s) { return periodic_system(g, t, s).B; }
 
 }  // namespace rc::rom

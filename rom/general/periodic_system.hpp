@@ -10,6 +10,7 @@
 #pragma once
 
 #include "general_chain.hpp"
+#include "general_system.hpp"
 
 #include <Eigen/Dense>
 
@@ -22,5 +23,9 @@ GeneralChain turned_chain(const GeneralChain& g, double t);
 // B(t) of y' = B(t) y in general_system.hpp's state (s q, Q̇, Z), q carried as s q with the s given. Throws
 // std::runtime_error when it is not finite.
 Eigen::MatrixXd periodic_matrix(const GeneralChain& g, double t, double s);
+
+// The same B(t) with the input of an external generalised force at t (y' = B y + input F; the input turns with the
+// bodies' anisotropy through the effective inertia).
+GeneralSystem periodic_system(const GeneralChain& g, double t, double s);
 
 }  // namespace rc::rom
