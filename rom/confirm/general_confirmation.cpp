@@ -1,6 +1,7 @@
 #include "general_confirmation.hpp"
 
 #include "chain_model.hpp"
+#include "driven_frequencies.hpp"
 #include "general_chain.hpp"
 #include "recorded_command.hpp"
 
@@ -8,6 +9,7 @@
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <numbers>
 #include <sstream>
 #include <set>
 #include <stdexcept>
@@ -21,25 +23,35 @@ bool is_response_table_3d(const rc::ModeTable& t) {
   return t.viscous() && t.response_fit() && t.volume_cavity.present();
 }
 
+struct TankTable {
+  std::string key;  // the scene's key, body[k].cavity[j]
+  fs::path file;
+  int body = 0;     // 0-based
+};
+
 // Every tank's table file with its scene key, body by body.
-std::vector<std::pair<std::string, fs::path>> tank_tables(const Scene& scene) {
-  std::vector<std::pair<std::string, fs::path>> out;
+std::vector<TankTable> tank_tables(const Scene& scene) {
+  std::vector<TankTable> out;
   for (std::size_t k = 0; k < scene.bodies.size(); ++k) {
     const auto& b = scene.bodies[k];
     const std::string key = "body[" + std::to_string(k + 1) + "].cavity";
-    if (b.cavity) out.emplace_back(key, b.cavity->table);
+    const int body = static_cast<int>(k);
+    if (b.cavity) out.push_back({key, b.cavity->table, body});
     for (std::size_t j = 0; j < b.more_cavities.size(); ++j)
-      out.emplace_back(key + "[" + std::to_string(j + 2) + "]", b.more_cavities[j].table);
+      out.push_back({key + "[" + std::to_string(j + 2) + "]", b.more_cavities[j].table, body});
   }
   return out;
 }
 
-// The viscous tanks' table files (each once).
-std::vector<fs::path> viscous_tables(const Scene& scene) {
-  std::vector<fs::path> out;
-  std::set<std::string> seen;
-  for (const auto& [key, file] : tank_tables(scene))
-    if (rc::read_mode_table(file).viscous() && seen.insert(file.string()).second) out.push_back(file);
+// The viscous tanks' table files (each once), with the bodies that carry them.
+std::vector<std::pair<fs::path, std::set<int>>> viscous_tables(const Scene& scene) {
+  std::vector<std::pair<fs::path, std::set<int>>> out;
+  for (const TankTable& t : tank_tables(scene)) {
+    if (!rc::read_mode_table(t.file).viscous()) continue;
+    auto it = std::find_if(out.begin(), out.end(), [&](const auto& x) { return x.first == t.file; });
+    if (it == out.end()) it = out.insert(out.end(), {t.file, {}});
+    it->second.insert(t.body);
+  }
   return out;
 }
 
@@ -84,13 +96,14 @@ std::vector<std::string> remake_arguments(const rc::ModeTable& t, const std::vec
   return args;
 }
 
-// Remakes every viscous table exact at the tank frequencies of `roots`; the file replaced only when cavity-modes
-// succeeded.
-void remake_tables(const Scene& scene, double spin, const std::vector<cd>& roots, const std::string& binary,
-                   const fs::path& scratch, const ProgramRunner& run, std::ostream& log) {
-  std::vector<cd> s;
-  for (const cd& sigma : roots) s.push_back(sigma / spin);
-  for (const fs::path& file : viscous_tables(scene)) {
+// Remakes every viscous table exact at the tank frequencies s = f/ω_k of the frequencies f at which its bodies' tanks
+// are driven (driven_frequencies.hpp); the file replaced only when cavity-modes succeeded.
+void remake_tables(const Scene& scene, const GeneralChain& g, const std::vector<std::vector<cd>>& driven,
+                   const std::string& binary, const fs::path& scratch, const ProgramRunner& run, std::ostream& log) {
+  for (const auto& [file, bodies] : viscous_tables(scene)) {
+    std::vector<cd> s;
+    for (const int k : bodies)
+      for (const cd& f : driven[static_cast<std::size_t>(k)]) s.push_back(f / g.spins[k]);
     const fs::path tmp = refining_name(file);
     std::vector<std::string> args{binary};
     for (auto& a : remake_arguments(rc::read_mode_table(file), s, tmp, scratch)) args.push_back(std::move(a));
@@ -119,8 +132,16 @@ std::vector<cd> selected_roots(const GeneralChain& g, const GeneralSpectrum& sp,
   return {*std::min_element(candidates.begin(), candidates.end(), [](cd a, cd b) { return a.imag() < b.imag(); })};
 }
 
-cd nearest(const std::vector<cd>& roots, cd r) {
-  return *std::min_element(roots.begin(), roots.end(), [&](cd a, cd b) { return std::abs(a - r) < std::abs(b - r); });
+// |a − b|, the real parts compared modulo ν when ν > 0 (Floquet exponents).
+double distance(cd a, cd b, double nu) {
+  double re = a.real() - b.real();
+  if (nu > 0) re -= nu * std::round(re / nu);
+  return std::hypot(re, a.imag() - b.imag());
+}
+
+cd nearest(const std::vector<cd>& roots, cd r, double nu) {
+  return *std::min_element(roots.begin(), roots.end(),
+                           [&](cd a, cd b) { return distance(a, r, nu) < distance(b, r, nu); });
 }
 
 }  // namespace
@@ -136,7 +157,7 @@ void remake_at_ekman(const fs::path& table, double ekman, const fs::path& output
 }
 
 void check_general_refinable(const Scene& scene) {
-  for (const auto& [key, file] : tank_tables(scene)) {
+  for (const auto& [key, file, body] : tank_tables(scene)) {
     const rc::ModeTable t = rc::read_mode_table(file);
     if (!t.viscous()) continue;
     if (!is_response_table_3d(t))
@@ -150,33 +171,29 @@ void check_general_refinable(const Scene& scene) {
 
 GeneralConfirmation confirm_general(const Scene& scene, bool all, double tolerance, const std::string& binary,
                                     const fs::path& scratch, const ProgramRunner& run, std::ostream& log,
-                                    int max_rounds) {
+                                    int max_rounds, std::optional<double> frame) {
   check_general_refinable(scene);
   GeneralConfirmation out;
-  GeneralChain g = build_general_chain(scene);
+  GeneralChain g = build_general_chain(scene, nullptr, frame);
   out.tables = static_cast<int>(viscous_tables(scene).size());
-  // At two spins a root is a Floquet exponent, defined modulo the period's frequency, and each tank sees it shifted
-  // by its own body's turning: there is no one frequency to make a table exact at.
-  if (g.periodic() && out.tables > 0)
-    throw SceneError(scene.file.string() + ": confirm remakes response tables exact at the chain's roots, which at two "
-                     "spins are defined only modulo the period's frequency (docs/rom.md, \"Bodies at different "
-                     "spins\"); confirm the chain at one spin");
   out.spectrum = general_spectrum(g);
   out.table_roots = selected_roots(g, out.spectrum, all);
   std::vector<cd> current = out.table_roots;
   out.moved.assign(current.size(), 0.0);
   out.converged = current.empty() || out.tables == 0;
   const double spin = g.spin;
+  // At two spins a root is a Floquet exponent (Re σ modulo ν = 2π/T), compared so.
+  const double nu = g.periodic() ? 2 * std::numbers::pi / g.period : 0.0;
   while (!out.converged && out.rounds < max_rounds) {
     ++out.rounds;
     log << "round " << out.rounds << ": the tables remade with R exact at " << current.size() << " root(s)" << std::endl;
-    remake_tables(scene, spin, current, binary, scratch, run, log);
-    g = build_general_chain(scene);
+    remake_tables(scene, g, driven_frequencies(g, current, log), binary, scratch, run, log);
+    g = build_general_chain(scene, nullptr, frame);
     out.spectrum = general_spectrum(g);
     double worst = 0;
     for (std::size_t i = 0; i < current.size(); ++i) {
-      const cd next = nearest(out.spectrum.roots, current[i]);
-      out.moved[i] = std::abs(next - current[i]) / std::max(std::abs(current[i]), std::abs(spin));
+      const cd next = nearest(out.spectrum.roots, current[i], nu);
+      out.moved[i] = distance(next, current[i], nu) / std::max(std::abs(current[i]), std::abs(spin));
       worst = std::max(worst, out.moved[i]);
       current[i] = next;
     }

@@ -4,7 +4,9 @@
 // remakes every such table (cavity-modes ellipsoid|volume ... --exact-at, from its recorded command line) exact at the
 // tank frequencies s = σ/ω0 of the selected roots σ (the frame turning at ω0), and solves the chain again. A root
 // the remade tables leave where they were made exact satisfies the characteristic equation with the fluid's own R:
-// the rounds stop when every selected root moves by less than the tolerance (relative to max(|σ|, |ω0|)).
+// the rounds stop when every selected root moves by less than the tolerance (relative to max(|σ|, |ω0|)). At two
+// spins a root is a Floquet exponent and each tank is driven at the frequencies of its harmonics: the tables are made
+// exact at those that carry the motion (driven_frequencies.hpp), and the roots compared modulo the period's frequency.
 #pragma once
 
 #include "general_system.hpp"
@@ -13,6 +15,7 @@
 
 #include <complex>
 #include <filesystem>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -43,10 +46,10 @@ void remake_at_ekman(const std::filesystem::path& table, double ekman, const std
 
 // The roots a verdict rests on — the growing ones and those that decay more slowly than half the tanks' slowest pole
 // (the bodies') — or, when `all`, every root with Re σ ≤ 0 within the response tables' window (one of each pair σ,
-// −σ̄), confirmed in at most `max_rounds` rounds. One line per table and round to
+// −σ̄), confirmed in at most `max_rounds` rounds (`frame`: build_general_chain's, for tests). One line per table and round to
 // `log`. Throws std::runtime_error when a table cannot be remade (the old table is then untouched).
 GeneralConfirmation confirm_general(const Scene& scene, bool all, double tolerance, const std::string& binary,
                                     const std::filesystem::path& scratch, const ProgramRunner& run, std::ostream& log,
-                                    int max_rounds = 4);
+                                    int max_rounds = 4, std::optional<double> frame = std::nullopt);
 
 }  // namespace rc::rom

@@ -19,7 +19,8 @@ namespace rc::rom {
 
 // Runs the sweep point by point (each point's cavity-modes runs are the work); one line per point to `log`. A point
 // whose tables cannot be made is reported in its row (not evaluated); a scene whose tables cannot be remade at all
-// (not 3-D response tables, no recorded command line) or whose chain is at two spins throws SceneError.
+// (not 3-D response tables, no recorded command line) throws SceneError. At two spins each point is confirmed as
+// confirm_general does (driven_frequencies.hpp).
 std::vector<ConfirmedSweepPoint> run_general_confirmed_sweep(const Scene& base, const SweepAxis& axis,
                                                              const std::string& cavity_modes, double tolerance,
                                                              const ProgramRunner& run, std::ostream& log);
