@@ -5,7 +5,8 @@
 //   ellipsoid  semi-axes a (x), b (y), c (z)      centre at the origin
 //   volume     a user .geo/.msh file with a 3-D physical group "fluid", or a CAD .step/.stp/.brep file whose
 //              every volume is fluid (gmsh's OpenCASCADE kernel)
-// tilt rotates the ellipsoid's own axis about x by that angle (radians) against the spin axis z.
+// tilt rotates the ellipsoid's own axis about x by that angle (radians) against the spin axis z; a file's cavity is
+// turned the same way about the file's origin.
 #pragma once
 
 #include "meridian_mesh.hpp"
@@ -22,7 +23,7 @@ struct VolumeShapeSpec {
   std::string kind;                    // ellipsoid | volume
   std::map<std::string, double> dims;  // ellipsoid: a, b, c
   std::filesystem::path file;          // volume only
-  double tilt = 0.0;                   // radians, built-in shapes only
+  double tilt = 0.0;                   // radians, about x
 };
 
 struct VolumeMesh {

@@ -122,6 +122,8 @@ VolumeCommands::VolumeCommands(CLI::App& app) {
   volume_ = app.add_subcommand("volume", "3-D: the user's cavity (.geo/.msh with a 3-D physical group \"fluid\", or "
                                          "CAD .step/.stp/.brep): its 3-D mode table (docs/volume.md)");
   volume_->add_option("file", file_, "geometry file")->required();
+  volume_->add_option("--tilt", tilt_degrees_, "angle (degrees) by which the file's cavity is turned about x against "
+                                               "the spin axis z (the file's own coordinates turned about its origin)");
   add_common_options(volume_, common_);
 }
 
@@ -132,7 +134,7 @@ VolumeTableRequest VolumeCommands::resolve() const {
   if (ellipsoid_->parsed()) {
     r.shape = {"ellipsoid", {{"a", a_}, {"b", b_}, {"c", c_}}, {}, tilt_degrees_ * std::numbers::pi / 180};
   } else {
-    r.shape = {"volume", {}, file_, 0};
+    r.shape = {"volume", {}, file_, tilt_degrees_ * std::numbers::pi / 180};
   }
   geometry::check_volume_shape(r.shape);
   const Common& o = common_;
@@ -187,6 +189,7 @@ void VolumeCommands::set_provenance(ModeTable& table, const std::string& command
     table.geometry_source = os.str();
   } else {
     table.geometry_source = std::filesystem::path(file_).filename().string();
+    if (tilt_degrees_ != 0) table.geometry_source += " tilt=" + std::to_string(tilt_degrees_) + "deg";
     table.geometry_text = text_of(file_);
   }
 }
