@@ -65,20 +65,14 @@ FrameRates frame_rates(const Scene& scene, std::optional<double> frame = std::nu
   return f;
 }
 
-// The general chain's scope so far: the chain's own inertia, gravity, joints and modal tanks, ideal or viscous (general_tank.hpp
-// checks each tank's keys), at the spins frame_rates allows.
+// The general chain's scope: the chain's own inertia, gravity, joints, modal tanks, ideal or viscous (general_tank.hpp
+// checks each tank's keys), a projectile's aerodynamic moments and a force field's stiffness (both isotropic about the
+// spin axis: (26)'s terms carried into the turning frame, as they stand in build_model's chain), at the spins
+// frame_rates allows. External moments, forces and a field's transverse parts drive the chain without changing its
+// roots: a linear run refuses them (general_run.hpp), the other commands do not depend on them, as for (26).
 void require_general_scene(const Scene& scene) {
-  const std::string later = " (docs/rom.md, \"Bodies and tanks without axial symmetry\")";
-  if (scene.field) fail(scene, "field", "a force field is not in the chain without axial symmetry yet" + later);
   frame_rates(scene);
-  for (int k = 0; k < static_cast<int>(scene.size()); ++k) {
-    const BodySpec& b = scene.bodies[k];
-    if (b.aero) fail(scene, body_key(k) + ".aero", "aerodynamic moments are not in the chain without axial symmetry yet" + later);
-    if (b.moment) fail(scene, body_key(k) + ".moment", "external moments are not in the chain without axial symmetry yet" + later);
-    if (b.force) fail(scene, body_key(k) + ".force", "external forces are not in the chain without axial symmetry yet" + later);
-  }
 }
-
 // Shell k's inertia tensor about O_k in its axes.
 Eigen::Matrix3d shell_inertia(const BodySpec& b) {
   Eigen::Matrix3d I;
@@ -145,6 +139,7 @@ Eigen::Matrix2d real_block(double a, double b) {
 }
 
 // (26) carried into the turning frame (u = e^{−iω0t} v): M v̈ + (i(G − 2ω0 M) + D) v̇ + (K − ω0² M + ω0 G − iω0 D) v,
+// K with its aerodynamic and field terms and the Magnus moments' −i·circulatory (complex_stiffness),
 // each complex coefficient as its real block; then each body's anisotropy and, with axial rates, the spins' block
 // (axial_rotation.hpp: C_k ψ̈_k + axial friction).
 void set_matrices(const ChainModel& cm, const std::vector<Eigen::Matrix3d>& inertia, GeneralChain& g) {
@@ -158,7 +153,9 @@ void set_matrices(const ChainModel& cm, const std::vector<Eigen::Matrix3d>& iner
       const double G = (k == i) ? cm.G[k] : 0.0, M = cm.M(k, i), D = cm.D(k, i);
       g.M.block<2, 2>(2 * k, 2 * i) = real_block(M, 0);
       g.C.block<2, 2>(2 * k, 2 * i) = real_block(D, G - 2 * w * M);
-      g.K.block<2, 2>(2 * k, 2 * i) = real_block(cm.K(k, i) - w * w * M + w * G, -w * D);
+      // The Magnus moments' circulatory stiffness −i·circulatory (chain_model.hpp) on the diagonal.
+      const double circulatory = (k == i && cm.circulatory.size() > k) ? cm.circulatory[k] : 0.0;
+      g.K.block<2, 2>(2 * k, 2 * i) = real_block(cm.K(k, i) - w * w * M + w * G, -w * D - circulatory);
     }
   for (int k = 0; k < n; ++k) {
     const Eigen::Matrix2d I_tt = inertia[k].topLeftCorner<2, 2>();
@@ -235,7 +232,7 @@ GeneralChain build_general_chain(const Scene& scene, TableCache* tables, std::op
     }
     g.geostrophic.push_back(geostrophic);
   }
-  g.dissipative = cm.has_friction() || (g.axial && cm.axial.D.cwiseAbs().maxCoeff() > 0) ||
+  g.dissipative = cm.has_friction() || cm.has_circulatory() || (g.axial && cm.axial.D.cwiseAbs().maxCoeff() > 0) ||
                   std::any_of(g.modes.begin(), g.modes.end(), [](const GeneralMode& m) { return m.damped(); });
   g.axial_inertia.resize(g.n);
   for (int k = 0; k < g.n; ++k) g.axial_inertia[k] = cm.bodies[k].C;

@@ -21,7 +21,23 @@ using cd = std::complex<double>;
 
 // y(0) from the scene's u_k(0), u̇_k(0): in F, v = e^{iω0t}u gives v(0) = u(0), v̇(0) = u̇(0) + iω0 u(0), and
 // q = (Re v, −Im v); the spins at ω0 and the fluid at rest.
+void require_unforced(const Scene& scene) {
+  const std::string why = " drives the chain, which a linear run of the chain without axial symmetry does not take "
+                          "yet: run it with [run] model = \"nonlinear\" (its roots, maps and responses do not depend on it)";
+  for (std::size_t k = 0; k < scene.bodies.size(); ++k) {
+    const std::string key = "body[" + std::to_string(k + 1) + "]";
+    if (scene.bodies[k].moment) throw SceneError(scene.file.string() + ": " + key + ".moment: an external moment" + why);
+    if (scene.bodies[k].force) throw SceneError(scene.file.string() + ": " + key + ".force: an external force" + why);
+  }
+  if (scene.field) {
+    const FieldSpec& f = *scene.field;
+    if (f.space[0] != 0 || f.space[1] != 0 || f.harmonic[0] != 0 || f.harmonic[1] != 0)
+      throw SceneError(scene.file.string() + ": field: a transverse field" + why);
+  }
+}
+
 Eigen::VectorXd general_initial_state(const GeneralChain& g, const GeneralSystem& sys, const Scene& scene) {
+  require_unforced(scene);
   if (!scene.fluid.empty())
     throw std::runtime_error(scene.file.string() + ": initial.fluid: the chain without axial symmetry starts with its "
                              "fluid at rest (its modes are not (26)'s); leave it out");
@@ -39,10 +55,11 @@ Eigen::VectorXd general_initial_state(const GeneralChain& g, const GeneralSystem
 
 namespace {
 
-// One body, no gravity, field or friction: the angular momentum in space is an integral (general_run.hpp).
+// One body, no gravity, field, aerodynamic moment or friction: the angular momentum in space is an integral
+// (general_run.hpp).
 bool has_momentum_integral(const GeneralChain& g, const Scene& scene) {
-  return g.n == 1 && (scene.free_chain || scene.gravity == 0) && !scene.field && !g.dissipative &&
-         scene.support_friction == 0;
+  return g.n == 1 && (scene.free_chain || scene.gravity == 0) && !scene.field && !scene.bodies[0].aero &&
+         !g.dissipative && scene.support_friction == 0;
 }
 
 // δL in space and the size of its largest term, from the state y at time t (general_run.hpp; docs/rom.md).

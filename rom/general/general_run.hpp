@@ -27,8 +27,12 @@ struct GeneralHistory {
   double wall_seconds = 0;
 };
 
+// Throws SceneError naming the key for what drives the chain in a linear run and is not modelled there yet: external
+// moments and forces, a field's transverse parts (the aerodynamic moments and a field's axial part are in its matrices).
+void require_unforced(const Scene& scene);
+
 // y(0) from the scene's u_k(0), u̇_k(0) (the spins at ω0 and the fluid at rest). Throws std::runtime_error for initial
-// fluid amplitudes (the general chain's modes are not (26)'s).
+// fluid amplitudes (the general chain's modes are not (26)'s), SceneError as require_unforced.
 Eigen::VectorXd general_initial_state(const GeneralChain& g, const GeneralSystem& sys, const Scene& scene);
 
 // Throws std::runtime_error for what the general run does not take (a method other than "exact", initial fluid

@@ -66,6 +66,19 @@ void require_fixed_joint(const Scene& scene, int k, const CavitySpec& cav, const
                               "fixed chain so far (a moving joint couples its modes to the earlier bodies)" + later);
 }
 
+// A field that moves the free surface sideways (its transverse parts, or a gradient) is not modelled, as in (26)
+// (rom/model/chain_model.cpp); an axial field is taken, as gravity is.
+void require_axial_field(const Scene& scene) {
+  if (!scene.field) return;
+  const FieldSpec& f = *scene.field;
+  if (f.space[0] != 0 || f.space[1] != 0 || f.harmonic[0] != 0 || f.harmonic[1] != 0)
+    fail(scene, "field", "a transverse field moves a partially filled tank's free surface, which the chain does not "
+                         "model yet (an axial field is taken, as gravity is)");
+  if (f.has_gradient())
+    fail(scene, "field.gradient", "a field varying in space moves a partially filled tank's free surface, which the "
+                                  "chain does not model yet");
+}
+
 // The rows kept, heaviest E first: every one that couples, or the first `modes`, or as many as reach `coverage` of
 // the sum rule (a 3-D table's λ = 0 weight counted as kept). Returns the coverage reached in `covered`.
 std::vector<int> kept_rows(const Scene& scene, const std::string& w, const CavitySpec& cav, const rc::ModeTable& t,
@@ -191,6 +204,7 @@ GeneralTank general_tank(const Scene& scene, int k, const CavitySpec& cav, const
   const RowCoupling about{t, d.z() / L};
   if (t.free_surface.present()) {
     require_fixed_joint(scene, k, cav, w);
+    require_axial_field(scene);
     // The surface re-centres on the tilted spin axis: K(O_k) more transverse inertia (docs/physics.md §2).
     const double K = unit * t.free_surface.K(about.c);
     tank.inertia(0, 0) += K;

@@ -100,11 +100,15 @@ if(_no_mpl EQUAL 0)
 endif()
 
 # The nonlinear model (docs/rom.md, "Nonlinear chain"): a run at 17 degrees writes attitudes and spins; what only
-# it takes (B != A, moments) is refused by the linear commands; a tank rides along; a bad moment is refused.
+# it takes (B != A, moments) goes to the chain without axial symmetry in the linear commands, whose linear run refuses
+# the moment; a tank rides along; a bad moment is refused.
 rom_cli(run_nonlinear ARGS run;nonlinear_chain.toml;-o;out_nonlinear.h5 EXPECT_EXIT 0
         MATCH "wrote out_nonlinear.h5: 5001 samples, model nonlinear[^\n]*\nenergy: [^\n]*angular momentum")
-rom_cli(nonlinear_scene_linear_spectrum ARGS spectrum;nonlinear_chain.toml EXPECT_EXIT 1
-        MATCH "^chain-rom: error: [^\n]*body\\[3\\]\\.moment: external moments are not in the chain without axial symmetry[^\n]*\n?$")
+rom_cli(nonlinear_scene_linear_spectrum ARGS spectrum;nonlinear_chain.toml EXPECT_EXIT 0
+        MATCH "^fixed chain without axial symmetry, 3 bodies")
+rom_cli(asymmetric_moment_linear_run ARGS run;bad_asymmetric_moment_linear_run.toml;-o;out_asym_moment.h5 EXPECT_EXIT 1
+        MATCH "^chain-rom: error: [^\n]*body\\[1\\]\\.moment: an external moment drives the chain[^\n]*model = \"nonlinear\"[^\n]*\n?$"
+        NO_FILE out_asym_moment.h5)
 # The chain without axial symmetry (docs/rom.md, "Bodies and tanks without axial symmetry"): bench, run and sweep.
 rom_cli(asymmetric_top_bench ARGS bench;asymmetric_top.toml;-o;out_asym_bench.csv EXPECT_EXIT 0
         MATCH "exact \\(double\\)[^\n]*\n[^\n]*gauss[^$]*wrote out_asym_bench.csv")

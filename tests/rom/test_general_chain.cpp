@@ -347,6 +347,64 @@ void expect_quadratic_validity(const std::function<std::string(double)>& scene_a
   }
 }
 
+// A projectile's aerodynamic moments — the static moment, pitch damping and the Magnus moment (−i M_p ω in the
+// stiffness) — and a constant axial field are isotropic about the spin axis: (26)'s terms carried into the turning
+// frame. An axisymmetric shell with a tank through the general chain must give (26)'s roots, overturning (the slow arm
+// grows) and fin-stabilised.
+std::string shell(double static_moment, double B, const std::string& rest = "") {
+  return "[system]\nkind = \"fixed\"\ngravity = 0.0\n[field]\nspace = [0.0, 0.0, -4.0]\n[[body]]\nmass = 2.0\n"
+         "A = 0.025\nB = " + num(B) + "\nC = 0.012\ncom = 0.02\nspin = 400.0\n[body.aero]\nstatic_moment = " +
+         num(static_moment) + "\npitch_damping = 0.002\nmagnus = 2e-6\n[body.cavity]\ntable = \"" + spheroid_file(1, 0.6) +
+         "\"\ndensity = 1000\nscale = 0.03\ncenter = 0.01\n" + rest;
+}
+
+TEST(GeneralChain, AerodynamicMomentsAndAxialFieldAreTheAxisymmetricChains) {
+  for (const double static_moment : {4.0, -4.0}) {
+    const std::string text = shell(static_moment, 0.025);
+    const ChainModel m = model_of(text);
+    ASSERT_TRUE(m.has_circulatory());
+    const Roots expected = turned(roots_of(compute_spectrum(m)), 400.0);
+    const Roots got = general_roots(text);
+    const double err = root_set_distance(got, expected, spectral_radius(expected));
+    const Verdict v26 = compute_verdict(m);
+    const GeneralSpectrum gs = general_spectrum(build_general_chain(parse_scene_text(text, test_dir(), "t")));
+    std::printf("shell with a tank, %s (M_alpha %g N m), pitch damping, Magnus, axial field: %zu roots against (26)'s "
+                "%.2e of the spectral radius; growth %.6g and %.6g 1/s\n", static_moment > 0 ? "overturning" : "fin-stabilised",
+                static_moment, got.size(), err, gs.verdict.growth, v26.growth);
+    EXPECT_LT(err, 1e-11);
+    EXPECT_EQ(gs.verdict.stable, v26.stable);
+  }
+}
+
+// The fin-stabilised shell with B ≠ A: its linear run against the nonlinear chain (which takes the aerodynamic moments
+// as M_α e_z × n, −M_q Ω_⊥ and M_p s (n − n_z e_z) at any yaw), the difference falling as the amplitude squared.
+TEST(GeneralChain, AsymmetricShellRunIsTheNonlinearChainAtSmallAmplitude) {
+  expect_quadratic_validity([](double amplitude) {
+    return shell(-4.0, 0.03, "[initial]\ntilt = [[" + num(amplitude) + ", 0.0]]\nrate = [[0.0, " + num(amplitude) +
+                              "]]\n[run]\nt_end = 0.3\noutput_step = 0.0005\n");
+  }, "fin-stabilised shell B != A with a tank, aerodynamic moments and an axial field", 2e-3);
+}
+
+// External moments and forces drive the chain without changing its roots: `spectrum` takes the scene (the same roots
+// as without them), a linear run refuses it naming the key and the nonlinear model.
+TEST(GeneralChain, ExternalMomentsLeaveTheRootsAndAreRefusedByALinearRun) {
+  const std::string quiet = shell(-4.0, 0.03, "[initial]\ntilt = [[0.01, 0.0]]\n[run]\nt_end = 0.1\noutput_step = 0.001\n");
+  std::string driven = quiet;
+  driven.insert(driven.find("[body.aero]"), "[body.moment]\nspace = [0.01, 0.0, 0.0]\n");
+  const Roots a = general_roots(quiet), b = general_roots(driven);
+  EXPECT_LT(root_set_distance(a, b, spectral_radius(a)), 1e-14);
+  const Scene scene = parse_scene_text(driven, test_dir(), "t");
+  std::string what;
+  try {
+    propagate_general(build_general_chain(scene), scene);
+  } catch (const SceneError& e) {
+    what = e.what();
+  }
+  std::printf("a linear run with an external moment: %s\n", what.c_str());
+  EXPECT_NE(what.find("body[1].moment: an external moment drives the chain"), std::string::npos) << what;
+  EXPECT_NE(what.find("model = \"nonlinear\""), std::string::npos) << what;
+}
+
 TEST(GeneralChain, RunIsTheNonlinearChainAtSmallAmplitude) {
   expect_quadratic_validity([](double amplitude) {
     return "[system]\nkind = \"fixed\"\ngravity = 9.81\n[[body]]\nmass = 2\nA = 0.05\nB = 0.06\nC = 0.08\ncom = 0.05\n"
