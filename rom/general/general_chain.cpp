@@ -66,12 +66,18 @@ FrameRates frame_rates(const Scene& scene, std::optional<double> frame = std::nu
 }
 
 // The general chain's scope: the chain's own inertia, gravity, joints, modal tanks, ideal or viscous (general_tank.hpp
-// checks each tank's keys), a projectile's aerodynamic moments and a force field's stiffness (both isotropic about the
-// spin axis: (26)'s terms carried into the turning frame, as they stand in build_model's chain), at the spins
+// checks each tank's keys), a projectile's aerodynamic moments and a uniform field's axial stiffness (both isotropic
+// about the spin axis: (26)'s terms carried into the turning frame, as they stand in build_model's chain), at the spins
 // frame_rates allows. External moments, forces and a field's transverse parts drive the chain without changing its
 // roots: a linear run refuses them (general_run.hpp), the other commands do not depend on them, as for (26).
 void require_general_scene(const Scene& scene) {
   frame_rates(scene);
+  // A field varying in space turns a body through its whole inertia tensor (∫ r × (G r) dm), which without axial
+  // symmetry is not isotropic: (26)'s term, built on the mean transverse moment, would miss its anisotropic part.
+  if (scene.field && scene.field->has_gradient())
+    fail(scene, "field.gradient", "a field varying in space acts on a body's whole inertia tensor, which the chain "
+                                  "without axial symmetry does not take yet (docs/rom.md, \"Aerodynamic moments, "
+                                  "fields and external loads\"); [run] model = \"nonlinear\" takes it");
 }
 // Shell k's inertia tensor about O_k in its axes.
 Eigen::Matrix3d shell_inertia(const BodySpec& b) {

@@ -401,6 +401,18 @@ TEST(GeneralChain, ExternalMomentsLeaveTheRootsAndAreRefusedByALinearRun) {
     what = e.what();
   }
   std::printf("a linear run with an external moment: %s\n", what.c_str());
+  // A field varying in space acts on the whole inertia tensor (anisotropic with B ≠ A): refused in every command.
+  std::string graded = quiet;
+  graded.replace(graded.find("space = [0.0, 0.0, -4.0]"), 24, "space = [0.0, 0.0, -4.0]\ngradient = [[-1.0, 0.0, 0.0], "
+                 "[0.0, -1.0, 0.0], [0.0, 0.0, 2.0]]");
+  std::string gradient_refusal;
+  try {
+    build_general_chain(parse_scene_text(graded, test_dir(), "t"));
+  } catch (const SceneError& e) {
+    gradient_refusal = e.what();
+  }
+  EXPECT_NE(gradient_refusal.find("field.gradient: a field varying in space acts on a body's whole inertia tensor"),
+            std::string::npos) << gradient_refusal;
   EXPECT_NE(what.find("body[1].moment: an external moment drives the chain"), std::string::npos) << what;
   EXPECT_NE(what.find("model = \"nonlinear\""), std::string::npos) << what;
 }
