@@ -11,7 +11,6 @@
 #include <complex>
 #include <limits>
 #include <map>
-#include <optional>
 #include <numbers>
 #include <vector>
 
