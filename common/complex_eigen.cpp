@@ -1,6 +1,6 @@
 #include "complex_eigen.hpp"
 
-#include <Eigen/Eigenvalues>
+#include "eigen_dense.hpp"
 
 #include <complex>
 #include <stdexcept>

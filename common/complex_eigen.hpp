@@ -6,7 +6,7 @@
 // single-threaded OpenBLAS need not be thread-safe): the sweep's threads keep Eigen (spectrum.hpp, compute_verdict).
 #pragma once
 
-#include <Eigen/Dense>
+#include "eigen_dense.hpp"
 
 namespace rc {
 

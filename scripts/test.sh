@@ -9,6 +9,12 @@ if [ "${1:-}" = "--help" ] || [ "${1:-}" = "-h" ]; then
 fi
 cd "$(dirname "$0")/.."
 source scripts/blas-core.sh
+start=$SECONDS
 bash scripts/build.sh
+built=$SECONDS
 cd build
-ctest --output-on-failure -j "$(nproc)" "$@"
+status=0
+ctest --output-on-failure -j "$(nproc)" "$@" || status=$?
+# The suite's cost in one line, so that a regression shows the day it lands (README.md gives the measured figures).
+echo "test.sh: set-up and build $((built - start)) s, ctest $((SECONDS - built)) s, in all $((SECONDS - start)) s"
+exit "$status"

@@ -3,7 +3,7 @@
 // is several times faster than Eigen's portable kernels built without -march flags.
 #pragma once
 
-#include <Eigen/Dense>
+#include "eigen_dense.hpp"
 
 namespace rc::modes {
 

@@ -2,7 +2,7 @@
 
 #include "progress.hpp"
 
-#include <Eigen/Eigenvalues>
+#include "eigen_dense.hpp"
 
 #include <cmath>
 #include <stdexcept>

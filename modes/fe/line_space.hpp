@@ -4,7 +4,7 @@
 // to right. The left end's dof can be left out (p = 0 on the axis for m = 1, docs/physics.md §2).
 #pragma once
 
-#include <Eigen/Dense>
+#include "eigen_dense.hpp"
 
 #include <vector>
 

@@ -3,7 +3,7 @@
 #include "complex_eigen.hpp"
 #include "free_surface_quadratic.hpp"
 
-#include <Eigen/Dense>
+#include "eigen_dense.hpp"
 #include <fmt/format.h>
 
 #include <algorithm>

@@ -4,7 +4,7 @@
 #include "partial_fill_closed_form.hpp"
 #include "separable_forms.hpp"
 
-#include <Eigen/Eigenvalues>
+#include "eigen_dense.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 #include "line_space.hpp"
 #include "separable_forms.hpp"
 
-#include <Eigen/Eigenvalues>
+#include "eigen_dense.hpp"
 
 #include <algorithm>
 #include <atomic>

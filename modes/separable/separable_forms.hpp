@@ -5,7 +5,7 @@
 
 #include "line_space.hpp"
 
-#include <Eigen/Dense>
+#include "eigen_dense.hpp"
 
 namespace rc::modes {
 

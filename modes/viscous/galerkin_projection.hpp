@@ -11,7 +11,7 @@
 
 #include "viscous_forms.hpp"
 
-#include <Eigen/Dense>
+#include "eigen_dense.hpp"
 
 #include <complex>
 #include <vector>

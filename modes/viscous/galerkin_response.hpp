@@ -13,7 +13,7 @@
 #include "galerkin_projection.hpp"
 #include "viscous_response.hpp"
 
-#include <Eigen/Dense>
+#include "eigen_dense.hpp"
 
 #include <complex>
 #include <vector>

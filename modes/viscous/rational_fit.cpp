@@ -1,7 +1,6 @@
 #include "rational_fit.hpp"
 
-#include <Eigen/Dense>
-#include <Eigen/Eigenvalues>
+#include "eigen_dense.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -7,7 +7,7 @@
 // is then the matrix of every pair's transfer function.
 #pragma once
 
-#include <Eigen/Dense>
+#include "eigen_dense.hpp"
 
 #include <complex>
 #include <vector>

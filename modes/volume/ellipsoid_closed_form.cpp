@@ -1,6 +1,6 @@
 #include "ellipsoid_closed_form.hpp"
 
-#include <Eigen/Eigenvalues>
+#include "eigen_dense.hpp"
 #include <Eigen/Geometry>
 
 #include <cmath>

@@ -20,7 +20,7 @@
 
 #include "viscous_volume_forms.hpp"
 
-#include <Eigen/Dense>
+#include "eigen_dense.hpp"
 
 #include <complex>
 #include <functional>

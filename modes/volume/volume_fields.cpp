@@ -4,7 +4,7 @@
 #include "tetrahedron_nodes.hpp"
 #include "volume_coupling.hpp"
 
-#include <Eigen/Dense>
+#include "eigen_dense.hpp"
 #include <fmt/format.h>
 
 #include <algorithm>

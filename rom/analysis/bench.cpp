@@ -14,7 +14,7 @@
 #include "spectrum.hpp"
 #include "work_precision.hpp"
 
-#include <Eigen/Eigenvalues>
+#include "eigen_dense.hpp"
 #include <unsupported/Eigen/MatrixFunctions>
 
 #include <algorithm>

@@ -11,7 +11,7 @@
 
 #include "chain_model.hpp"
 
-#include <Eigen/Dense>
+#include "eigen_dense.hpp"
 #include <complex>
 #include <vector>
 

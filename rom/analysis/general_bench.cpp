@@ -9,7 +9,7 @@
 #include "reference_propagation.hpp"
 #include "work_precision.hpp"
 
-#include <Eigen/Eigenvalues>
+#include "eigen_dense.hpp"
 #include <unsupported/Eigen/MatrixFunctions>
 
 #include <algorithm>

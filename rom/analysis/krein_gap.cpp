@@ -2,7 +2,7 @@
 
 #include "characteristic.hpp"
 
-#include <Eigen/Eigenvalues>
+#include "eigen_dense.hpp"
 #include <algorithm>
 #include <cmath>
 #include <utility>

@@ -14,7 +14,7 @@
 
 #include "chain_model.hpp"
 
-#include <Eigen/Dense>
+#include "eigen_dense.hpp"
 #include <limits>
 
 namespace rc::rom {

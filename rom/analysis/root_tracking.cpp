@@ -2,7 +2,7 @@
 
 #include "first_order_system.hpp"
 
-#include <Eigen/LU>
+#include "eigen_dense.hpp"
 #include <algorithm>
 #include <cmath>
 #include <limits>

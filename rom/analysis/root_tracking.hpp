@@ -21,7 +21,7 @@
 
 #include "chain_model.hpp"
 
-#include <Eigen/Dense>
+#include "eigen_dense.hpp"
 #include <complex>
 #include <string>
 #include <vector>

@@ -6,7 +6,7 @@
 #include "real_root_certificate.hpp"
 #include "root_newton.hpp"
 
-#include <Eigen/Eigenvalues>
+#include "eigen_dense.hpp"
 #include <algorithm>
 #include <cmath>
 #include <limits>

@@ -6,7 +6,7 @@
 #include "bench.hpp"
 #include "scene.hpp"
 
-#include <Eigen/Dense>
+#include "eigen_dense.hpp"
 
 #include <functional>
 

@@ -3,7 +3,7 @@
 #include "base_translation.hpp"
 #include "characteristic.hpp"
 
-#include <Eigen/LU>
+#include "eigen_dense.hpp"
 #include <algorithm>
 #include <cmath>
 #include <limits>

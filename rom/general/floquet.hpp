@@ -9,7 +9,7 @@
 #include "general_chain.hpp"
 #include "general_system.hpp"
 
-#include <Eigen/Dense>
+#include "eigen_dense.hpp"
 
 #include <complex>
 #include <vector>

@@ -14,7 +14,7 @@
 #include "scene.hpp"
 #include "general_tank.hpp"
 
-#include <Eigen/Dense>
+#include "eigen_dense.hpp"
 
 #include <optional>
 #include <utility>

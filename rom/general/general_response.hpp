@@ -12,7 +12,7 @@
 
 #include "general_chain.hpp"
 
-#include <Eigen/Dense>
+#include "eigen_dense.hpp"
 
 #include <vector>
 

@@ -16,7 +16,7 @@
 #include "general_chain.hpp"
 #include "spectrum.hpp"
 
-#include <Eigen/Dense>
+#include "eigen_dense.hpp"
 
 #include <complex>
 #include <vector>

@@ -7,7 +7,7 @@
 #include "mode_table.hpp"
 #include "scene.hpp"
 
-#include <Eigen/Dense>
+#include "eigen_dense.hpp"
 
 #include <complex>
 #include <string>

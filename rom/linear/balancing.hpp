@@ -7,7 +7,7 @@
 // balancing first makes the roots, and exact propagation over many periods, that much more accurate.
 #pragma once
 
-#include <Eigen/Dense>
+#include "eigen_dense.hpp"
 
 #include <cmath>
 

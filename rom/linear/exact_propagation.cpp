@@ -3,7 +3,7 @@
 #include "balancing.hpp"
 #include "real_matrix_product.hpp"
 
-#include <Eigen/Eigenvalues>
+#include "eigen_dense.hpp"
 
 #include <algorithm>
 #include <atomic>

@@ -14,7 +14,7 @@
 
 #include "first_order_system.hpp"
 
-#include <Eigen/Dense>
+#include "eigen_dense.hpp"
 
 #include <functional>
 

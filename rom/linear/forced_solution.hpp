@@ -15,7 +15,7 @@
 #include "first_order_system.hpp"
 #include "scene.hpp"
 
-#include <Eigen/Dense>
+#include "eigen_dense.hpp"
 #include <complex>
 #include <utility>
 #include <vector>

@@ -7,7 +7,7 @@
 #include "spectrum.hpp"
 
 #include <unsupported/Eigen/MatrixFunctions>
-#include <Eigen/Eigenvalues>
+#include "eigen_dense.hpp"
 
 #include <chrono>
 #include <cmath>

@@ -6,7 +6,7 @@
 // twice with different instruction sets (which would break the one-definition rule).
 #pragma once
 
-#include <Eigen/Dense>
+#include "eigen_dense.hpp"
 
 namespace rc::rom {
 

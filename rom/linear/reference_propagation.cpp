@@ -4,7 +4,7 @@
 #include "first_order_system.hpp"
 
 #include <unsupported/Eigen/MatrixFunctions>
-#include <Eigen/Eigenvalues>
+#include "eigen_dense.hpp"
 
 #include <cfloat>
 #include <chrono>

@@ -12,7 +12,7 @@
 
 #include "chain_model.hpp"
 
-#include <Eigen/Dense>
+#include "eigen_dense.hpp"
 
 namespace rc::rom {
 

@@ -14,7 +14,7 @@
 
 #include "scene.hpp"
 
-#include <Eigen/Dense>
+#include "eigen_dense.hpp"
 
 #include <complex>
 #include <vector>

@@ -2,7 +2,7 @@
 
 #include "base_translation.hpp"
 
-#include <Eigen/SVD>
+#include "eigen_dense.hpp"
 #include <cmath>
 #include <limits>
 

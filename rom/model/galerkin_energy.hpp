@@ -15,7 +15,7 @@
 #include "chain_model.hpp"
 #include "first_order_system.hpp"
 
-#include <Eigen/Dense>
+#include "eigen_dense.hpp"
 
 #include <string>
 #include <vector>

@@ -15,7 +15,7 @@
 
 #include "mode_table.hpp"
 
-#include <Eigen/Dense>
+#include "eigen_dense.hpp"
 
 #include <vector>
 

@@ -16,7 +16,7 @@
 
 #include "volume_fluid.hpp"
 
-#include <Eigen/Dense>
+#include "eigen_dense.hpp"
 #include <Eigen/Geometry>
 
 #include <cmath>

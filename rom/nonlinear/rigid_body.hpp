@@ -12,7 +12,7 @@
 // its order (tests/rom/test_rigid_body.cpp).
 #pragma once
 
-#include <Eigen/Dense>
+#include "eigen_dense.hpp"
 #include <Eigen/Geometry>
 
 namespace rc::rom {

@@ -11,7 +11,7 @@
 // the scene's: nonlinear_run.hpp reports how far it did).
 #pragma once
 
-#include <Eigen/Dense>
+#include "eigen_dense.hpp"
 
 #include <cmath>
 #include <complex>

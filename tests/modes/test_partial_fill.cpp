@@ -11,7 +11,7 @@
 #include "line_space.hpp"
 #include "separable_forms.hpp"
 
-#include <Eigen/Eigenvalues>
+#include "eigen_dense.hpp"
 #include <complex>
 
 #include <gtest/gtest.h>

@@ -2,7 +2,7 @@
 // form, or by a Hessenberg solve where that form cannot be trusted, against a direct LU solve at the same σ.
 #include "reduced_transfer.hpp"
 
-#include <Eigen/Dense>
+#include "eigen_dense.hpp"
 #include <gtest/gtest.h>
 
 #include <complex>

@@ -14,7 +14,7 @@
 #include "viscous_response.hpp"
 #include "viscous_table.hpp"
 
-#include <Eigen/Dense>
+#include "eigen_dense.hpp"
 #include <gtest/gtest.h>
 
 #include <algorithm>
