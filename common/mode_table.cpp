@@ -336,6 +336,7 @@ void write_root_attributes(hid_t root, const ModeTable& t) {
   put_string(root, "normalisation", t.normalisation);
   put_double(root, "ekman", t.ekman);
   if (t.mesh_h_wall > 0) put_double(root, "mesh_h_wall", t.mesh_h_wall);
+  if (t.mesh_h_near_wall > 0) put_double(root, "mesh_h_near_wall", t.mesh_h_near_wall);
   if (t.response_fit()) {
     put_double(root, "fit_lo", t.fit_lo);
     put_double(root, "fit_hi", t.fit_hi);
@@ -433,6 +434,7 @@ void read_root_attributes(hid_t root, ModeTable& t) {
   if (has_attr(root, "normalisation")) t.normalisation = get_string(root, "normalisation");
   if (has_attr(root, "ekman")) t.ekman = get_double(root, "ekman");
   if (has_attr(root, "mesh_h_wall")) t.mesh_h_wall = get_double(root, "mesh_h_wall");
+  if (has_attr(root, "mesh_h_near_wall")) t.mesh_h_near_wall = get_double(root, "mesh_h_near_wall");
   if (has_attr(root, "fit_lo") || has_attr(root, "fit_hi") || has_attr(root, "fit_error")) {
     t.fit_lo = get_double(root, "fit_lo");
     t.fit_hi = get_double(root, "fit_hi");

@@ -44,6 +44,7 @@ struct ModeTable {
   double convergence_tolerance = 0;   // a cluster is "converged" if its λ and E moved less than this (relative)
   double ekman = 0;          // Ek = ν/(ω0 L²); 0: ideal fluid (docs/viscous.md)
   double mesh_h_wall = 0;    // > 0: element size at the wall of a wall-graded mesh (viscous tables)
+  double mesh_h_near_wall = 0;  // > 0: the near-wall zone's element size (viscous tables; chain-rom confirm serves it)
   // Response-fit tables (`cavity-modes response ... -o FILE.h5`, docs/viscous.md "Response fit"): the modes are
   // the poles and residues of a rational fit of R(s) on the real window [fit_lo, fit_hi], which matches R between
   // its samples to fit_error (max |R − fit| / max |R|). fit_hi > fit_lo marks such a table; 0, 0 otherwise.

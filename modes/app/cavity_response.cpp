@@ -18,6 +18,7 @@
 #include "table_assembly.hpp"
 #include "separable_table.hpp"
 #include "viscous_response.hpp"
+#include "viscous_table.hpp"
 
 #include <fmt/format.h>
 
@@ -214,12 +215,14 @@ void serve_response(const ResponseRequest& req, std::istream& in, std::ostream& 
   if (ranks > 1) throw std::runtime_error("--serve runs on one rank (it reads standard input)");
   // A partially filled tank: the liquid's part of the cavity, and each answer R, R_fg, R_gg (viscous_response.hpp).
   const bool offset = req.fill < 1;
-  const ViscousForms forms =
-      assemble_cavity_forms(offset ? geometry::partially_filled(req.shape, req.fill) : req.shape, req.mesh, req.ekman);
+  geometry::MeshOptions used = req.mesh;
+  const ViscousForms forms = assemble_cavity_forms(offset ? geometry::partially_filled(req.shape, req.fill) : req.shape,
+                                                   req.mesh, req.ekman, PETSC_COMM_WORLD, &used);
   ForcedResponse response(forms);
-  out << fmt::format("ready: viscous fluid, Ekman number {:g}, {}forced solves on Taylor-Hood P{}/P{} ({} real unknowns)",
+  out << fmt::format("ready: viscous fluid, Ekman number {:g}, {}forced solves on Taylor-Hood P{}/P{} ({} real unknowns)"
+                     " [mesh: {}]",
                      req.ekman, offset ? fmt::format("partially filled (fill {:g}; R R_fg R_gg), ", req.fill) : "",
-                     req.mesh.order, req.mesh.order - 1, 2L * forms.complex_size)
+                     req.mesh.order, req.mesh.order - 1, 2L * forms.complex_size, mesh_text(used))
       << std::endl;
   std::string line;
   while (std::getline(in, line) && !line.empty()) {
@@ -363,6 +366,7 @@ ModeTable response_table_start(const ResponseRequest& req, long unknowns) {
   t.fe_order = req.mesh.order;
   t.mesh_h = req.mesh.size;
   t.mesh_h_wall = req.mesh.wall_size;
+  t.mesh_h_near_wall = req.mesh.near_wall_size;
   t.ndof = unknowns;
   t.fit_lo = req.sigmas.front().real();
   t.fit_hi = req.sigmas.back().real();

@@ -64,6 +64,7 @@ struct ViscousOptions {
   std::string exact_at;         // response to FILE.h5, Krylov: complex frequencies where R must be exact
   bool serve = false;           // response: answer sigma lines on stdin with R on stdout (chain-rom confirm)
   bool stokes_series = false;   // response: print the strong-viscosity series' coefficients (stokes_series.hpp)
+  int mesh_level = 0;           // response: every mesh size halved this many times (chain-rom confirm's mesh study)
 };
 
 // The mesh of every command; --radial-size and --method (auto|mesh|separable: auto is separable for a cylinder
@@ -113,7 +114,14 @@ void add_viscous_options(CLI::App* cmd, ViscousOptions& viscous, bool response) 
   cmd->add_option("--mesh-ekman", viscous.mesh_ekman,
                   "with --ekman: make the wall-layer mesh as for this Ekman number, at most --ekman (default --ekman): "
                   "one mesh for several Ekman numbers (chain-rom's sweeps over spin)");
-  if (response) return;
+  if (response) {
+    cmd->add_option("--mesh-level", viscous.mesh_level,
+                    "with --ekman: the same mesh with every size (interior, wall, near-wall zone) halved this many "
+                    "times, a mesh study's finer levels (chain-rom confirm measures the roots' mesh error so: "
+                    "docs/viscous.md, \"Mesh study of a response\") (default 0)")
+        ->check(CLI::Range(0, 4));
+    return;
+  }
   cmd->add_flag("--no-shear-layers", viscous.no_shear_layers,
                 "with --ekman, a sphere at Ek <= 1e-5 or a section at Ek <= 1e-4: do not refine the mesh along the "
                 "internal shear layers from the critical latitudes (docs/viscous.md, \"Internal shear layers\")");
@@ -404,8 +412,12 @@ rc::modes::ViscousTableSettings resolve_viscous(const CLI::App& cmd, bool respon
     if (!response && fill >= 1 && cmd.count("--near-wall-size") == 0)
       s.mesh.near_wall_size = rc::modes::default_near_wall_size(
           req.shape, viscous.mesh_ekman > 0 ? viscous.mesh_ekman : viscous.ekman);
+    for (int level = 0; level < viscous.mesh_level; ++level)
+      s.mesh = rc::modes::halved_viscous_mesh(viscous.mesh_ekman > 0 ? viscous.mesh_ekman : viscous.ekman, s.mesh);
     return s;
   }
+  if (cmd.get_option_no_throw("--mesh-level") && cmd.count("--mesh-level") > 0)
+    throw std::runtime_error("--mesh-level applies with --ekman only (the viscous mesh's levels)");
   if (cmd.count("--wall-size") > 0) throw std::runtime_error("--wall-size applies with --ekman only");
   if (cmd.count("--near-wall-size") > 0) throw std::runtime_error("--near-wall-size applies with --ekman only");
   if (cmd.count("--mesh-ekman") > 0) throw std::runtime_error("--mesh-ekman applies with --ekman only");

@@ -164,6 +164,7 @@ std::string table_json(const ModeTable& t) {
   j["normalisation"] = t.normalisation;
   j["ekman"] = t.ekman;
   if (t.mesh_h_wall > 0) j["mesh_h_wall"] = t.mesh_h_wall;
+  if (t.mesh_h_near_wall > 0) j["mesh_h_near_wall"] = t.mesh_h_near_wall;
   if (t.response_fit()) {
     j["fit_lo"] = t.fit_lo;
     j["fit_hi"] = t.fit_hi;

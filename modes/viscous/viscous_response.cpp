@@ -4,6 +4,7 @@
 #include "shifted_solver.hpp"
 #include "poincare_forms.hpp"
 #include "taylor_hood_space.hpp"
+#include "viscous_mesh.hpp"
 
 #include <numbers>
 #include <stdexcept>
@@ -83,8 +84,10 @@ std::vector<std::complex<double>> viscous_response(const ViscousForms& forms,
 }
 
 ViscousForms assemble_cavity_forms(const geometry::ShapeSpec& shape, const geometry::MeshOptions& mesh, double ekman,
-                                   MPI_Comm comm) {
-  const TaylorHoodSpace space(mesh_on_root([&] { return geometry::mesh_meridian(shape, mesh); }, PETSC_COMM_WORLD));
+                                   MPI_Comm comm, geometry::MeshOptions* used) {
+  geometry::MeshOptions made = mesh;
+  const TaylorHoodSpace space(mesh_on_root([&] { return viscous_mesh(shape, made); }, PETSC_COMM_WORLD));
+  if (used) *used = made;
   const double centroid_z = integrate_fluid(space.geometry()).centroid_z;
   return assemble_viscous_forms(space, centroid_z, ekman, comm);
 }

@@ -61,9 +61,10 @@ std::vector<std::shared_ptr<PVec>> forced_solutions(const ViscousForms& forms,
 // measured from the fluid centroid. Assemble once, then call viscous_response as often as needed (the response
 // fit asks for more σ where its fit errs).
 // `comm`: the matrices' communicator; PETSC_COMM_SELF gives every rank the whole problem (the mesh still comes from
-// rank 0), for frequencies split between ranks (docs/viscous.md, "Response fit").
+// rank 0), for frequencies split between ranks (docs/viscous.md, "Response fit"). The mesh falls back as a table's does
+// where gmsh cannot make the wall layers (viscous_mesh.hpp); `used` (rank 0's) receives the options it was made with.
 ViscousForms assemble_cavity_forms(const geometry::ShapeSpec& shape, const geometry::MeshOptions& mesh, double ekman,
-                                   MPI_Comm comm = PETSC_COMM_WORLD);
+                                   MPI_Comm comm = PETSC_COMM_WORLD, geometry::MeshOptions* used = nullptr);
 
 // assemble_cavity_forms, then viscous_response at every σ. `unknowns` receives the real unknowns' count.
 std::vector<std::complex<double>> cavity_response(const geometry::ShapeSpec& shape, geometry::MeshOptions mesh,

@@ -8,6 +8,7 @@
 #include "poincare_forms.hpp"
 #include "taylor_hood_space.hpp"
 #include "viscous_fields.hpp"
+#include "viscous_mesh.hpp"
 
 #include <fmt/format.h>
 
@@ -92,28 +93,6 @@ void drop_repeats(Solved& solved, std::vector<double>& targets, std::vector<doub
   solved = std::move(kept);
   targets = std::move(kept_targets);
   energies = std::move(kept_energies);
-}
-
-// Anisotropic wall layers where they fit, else isotropic grading. gmsh's layers can invert an element where a wall
-// meets the axis at one interior size and not at a slightly smaller one (Kore's shell at Ek = 1e-4: at 0.125 and 0.1,
-// not at 0.08; docs/benchmarks.md, "Kore"), and the grading costs several times the unknowns (645 000 against 105 500
-// there), so up to four smaller interior sizes (× 0.8 each) are tried first (the same shell at Ek = 1e-5 holds its
-// layers from 0.064 down; the grading there took 2.2 million unknowns, 105 s and 22 GB). What was used is `mesh` afterwards,
-// recorded in the table (its size, and wall_layer = 0 for the grading).
-geometry::MeridianMesh viscous_mesh(const geometry::ShapeSpec& shape, geometry::MeshOptions& mesh) {
-  geometry::MeshOptions tried = mesh;
-  for (int attempt = 0; attempt < 7 && tried.wall_layer > tried.wall_size && tried.size > 0; ++attempt) {
-    try {
-      geometry::MeridianMesh layered = geometry::mesh_meridian(shape, tried);
-      mesh = tried;
-      return layered;
-    } catch (const std::runtime_error&) {
-      tried.size *= 0.8;
-      tried.wall_layer = std::min(tried.wall_layer, tried.size / 2);
-    }
-  }
-  mesh.wall_layer = 0;
-  return geometry::mesh_meridian(shape, mesh);
 }
 
 // The damped continuation of one ideal mode (λ0, E0): the mode nearest the complex target, unless its coupling is
@@ -305,6 +284,16 @@ geometry::MeshOptions refined_viscous_mesh(const geometry::ShapeSpec& shape, dou
     finer.near_wall_size = mesh.near_wall_size / 2;
     return finer;
   }
+  return halved_viscous_mesh(ekman, mesh);
+}
+
+std::string mesh_text(const geometry::MeshOptions& m) {
+  const std::string near = m.near_wall_size > 0 ? fmt::format(", near-wall {:.3g}", m.near_wall_size) : "";
+  return fmt::format("order {}, h = {:.3g}, wall {:.3g}{}", m.order, m.size, m.wall_size, near);
+}
+
+geometry::MeshOptions halved_viscous_mesh(double ekman, const geometry::MeshOptions& mesh) {
+  geometry::MeshOptions finer = mesh;
   finer.size /= 2;
   finer.wall_size /= 2;
   finer.band_size /= 2;
@@ -324,6 +313,7 @@ ModeTable viscous_rows(const ModeTable& ideal, const Solved& fine, double ekman,
   t.mesh_h = mesh.size;
   t.mesh_h_radial = 0;
   t.mesh_h_wall = mesh.wall_size;
+  t.mesh_h_near_wall = mesh.near_wall_size;
   t.ndof = fine.unknowns;
   t.bands = {};
   t.kappa.clear(); t.lambda.clear(); t.E.clear(); t.a.clear(); t.N2.clear(); t.residual.clear();
@@ -398,11 +388,6 @@ void fields_in_row_order(Solved& fine, ModeFields& fields) {
     fields.modes.push_back(std::move(modes[order[k]]));
     fields.modes.back().row = k;
   }
-}
-
-std::string mesh_text(const geometry::MeshOptions& m) {
-  const std::string near = m.near_wall_size > 0 ? fmt::format(", near-wall {:.3g}", m.near_wall_size) : "";
-  return fmt::format("order {}, h = {:.3g}, wall {:.3g}{}", m.order, m.size, m.wall_size, near);
 }
 
 bool every_row_converged(const ModeTable& t) {

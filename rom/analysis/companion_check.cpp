@@ -42,13 +42,22 @@ Scene with_companions(const Scene& scene) {
 void mark_companion_shifts(Spectrum& sp, const Spectrum& companion) {
   sp.companion_moved = 0;
   sp.companion_worst = 0;
+  sp.companion_worst_rate = 0;
   for (Root& r : sp.roots) {
-    double nearest = std::numeric_limits<double>::infinity();
-    for (const Root& c : companion.roots) nearest = std::min(nearest, std::abs(c.sigma - r.sigma));
-    r.companion_shift = nearest / std::max(std::abs(r.sigma), 1e-300);
-    r.companion_moved = !(r.companion_shift <= kCompanionTolerance);
+    const Root* nearest = nullptr;
+    for (const Root& c : companion.roots)
+      if (!nearest || std::abs(c.sigma - r.sigma) < std::abs(nearest->sigma - r.sigma)) nearest = &c;
+    if (!nearest) continue;
+    r.companion_shift = std::abs(nearest->sigma - r.sigma) / std::max(std::abs(r.sigma), 1e-300);
+    const bool has_rate = std::abs(r.sigma.imag()) > std::max(sp.tolerance, sp.noise);
+    if (has_rate) r.companion_rate_shift = std::abs(nearest->sigma.imag() - r.sigma.imag()) / std::abs(r.sigma.imag());
+    const bool decides = r.owner.rfind("body", 0) == 0 || -r.sigma.imag() > std::max(sp.noise, sp.tolerance);
+    if (!decides) continue;
+    r.companion_moved = !(r.companion_shift <= kCompanionTolerance) ||
+                        (has_rate && !(r.companion_rate_shift <= kCompanionRateTolerance));
     if (r.companion_moved) ++sp.companion_moved;
     sp.companion_worst = std::max(sp.companion_worst, r.companion_shift);
+    if (has_rate) sp.companion_worst_rate = std::max(sp.companion_worst_rate, r.companion_rate_shift);
   }
   sp.companion_checked = true;
 }

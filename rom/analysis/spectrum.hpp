@@ -28,6 +28,8 @@ struct Root {
   // With companion tables (companion_check.hpp): the relative distance to the nearest root computed with them, and
   // whether that passes kCompanionTolerance. NaN and false without companions.
   double companion_shift = std::numeric_limits<double>::quiet_NaN();
+  // The relative change of the growth or decay rate -Im sigma (NaN for a root on the real axis).
+  double companion_rate_shift = std::numeric_limits<double>::quiet_NaN();
   bool companion_moved = false;
 };
 
@@ -63,7 +65,8 @@ struct Spectrum {
   int fits_not_passive = 0;
   bool companion_checked = false;  // the roots were recomputed with the companion tables
   int companion_moved = 0;         // roots that moved past kCompanionTolerance
-  double companion_worst = 0;      // the largest relative move
+  double companion_worst = 0;      // the largest relative move of a root the verdict rests on
+  double companion_worst_rate = 0; // the largest relative change of such a root's growth or decay rate
 };
 
 // The verdict alone (eigenvalues only: no eigenvectors, owners or det residuals), by the same

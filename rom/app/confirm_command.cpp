@@ -17,6 +17,7 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 namespace rc::rom {
@@ -65,7 +66,21 @@ struct Confirmation {
   nlohmann::ordered_json roots = nlohmann::ordered_json::array();
   std::vector<cd> sigmas;  // the converged roots
   int unconfirmed = 0;
+  std::vector<std::size_t> selected;  // the confirmed roots' places in `spectrum`
+  std::vector<cd> level0;             // each selected root on the table's mesh (NaN: not confirmed)
 };
+
+// The verdict again from the spectrum's roots as they now stand.
+void give_verdict(const ChainModel& m, Confirmation& c) {
+  Eigen::VectorXcd sigma(static_cast<Eigen::Index>(c.spectrum.roots.size()));
+  for (std::size_t j = 0; j < c.spectrum.roots.size(); ++j)
+    sigma[static_cast<Eigen::Index>(j)] = c.spectrum.roots[j].sigma;
+  c.verdict = verdict_from_roots(m, sigma);
+  c.spectrum.stable = c.verdict.stable;
+  c.spectrum.growth = c.verdict.growth;
+  c.spectrum.margin = c.verdict.margin;
+  c.spectrum.growing = c.verdict.growing;
+}
 
 // Iterates every selected root of `sp` on (22) with the tanks' own R, one line each on `log`, and gives the verdict
 // again from the confirmed roots (the others as the table gives them).
@@ -73,12 +88,13 @@ Confirmation confirm_selected(const ChainModel& m, const Spectrum& sp, const Tan
                               const ConfirmRequest& req, std::ostream& log) {
   ConfirmSettings settings;
   settings.tolerance = req.tolerance;
-  Confirmation c{sp, {}, {}, {}, 0};
+  Confirmation c{sp, {}, {}, {}, 0, {}, {}};
   int count = 0;
   for (const Root& r : sp.roots) count += selected(r, sp, req.all) ? 1 : 0;
   log << "roots of (22) with R itself, from the table's (" << count << " roots; docs/rom.md, \"Confirmed roots\"):"
       << std::endl;
-  for (Root& r : c.spectrum.roots) {
+  for (std::size_t j = 0; j < c.spectrum.roots.size(); ++j) {
+    Root& r = c.spectrum.roots[j];
     if (!selected(r, sp, req.all)) continue;
     const ConfirmedRoot root = confirm_root(m, tanks.responses, r.sigma, settings);
     log << "  " << std::setw(10) << r.owner << "  " << std::setw(34) << complex_text(root.start) << "  ->  "
@@ -88,22 +104,38 @@ Confirmation confirm_selected(const ChainModel& m, const Spectrum& sp, const Tan
     c.roots.push_back({{"owner", r.owner}, {"table", {root.start.real(), root.start.imag()}},
                        {"confirmed", {root.sigma.real(), root.sigma.imag()}}, {"converged", root.converged},
                        {"moved", root.moved()}, {"evaluations", root.evaluations}});
+    c.selected.push_back(j);
     if (root.converged) {
       r.sigma = root.sigma;
       c.sigmas.push_back(root.sigma);
+      c.level0.push_back(root.sigma);
     } else {
       ++c.unconfirmed;
+      c.level0.push_back({std::nan(""), std::nan("")});
     }
   }
-  Eigen::VectorXcd sigma(static_cast<Eigen::Index>(c.spectrum.roots.size()));
-  for (std::size_t j = 0; j < c.spectrum.roots.size(); ++j)
-    sigma[static_cast<Eigen::Index>(j)] = c.spectrum.roots[j].sigma;
-  c.verdict = verdict_from_roots(m, sigma);
-  c.spectrum.stable = c.verdict.stable;
-  c.spectrum.growth = c.verdict.growth;
-  c.spectrum.margin = c.verdict.margin;
-  c.spectrum.growing = c.verdict.growing;
+  give_verdict(m, c);
   return c;
+}
+
+// The mesh study's finest roots in place of the table mesh's, the verdict again from them, and each root's levels
+// and rate error in its JSON row.
+void take_finest_roots(const ChainModel& m, const MeshStudyResult& study, Confirmation& c) {
+  for (std::size_t j = 0; j < c.selected.size(); ++j) {
+    const MeshErrorEstimate& e = study.errors[j];
+    auto& row = c.roots[j];
+    nlohmann::ordered_json levels = nlohmann::ordered_json::array();
+    for (const auto& level : study.levels) levels.push_back({level[j].real(), level[j].imag()});
+    row["mesh_levels"] = levels;
+    row["growth"] = e.growth;
+    row["growth_error"] = e.error;
+    row["mesh_converged"] = e.converged;
+    row["sign_settled"] = e.sign_settled;
+    if (e.order > 0) row["observed_order"] = e.order, row["extrapolated_growth"] = e.extrapolated;
+    if (std::isfinite(e.sigma.real()) && std::isfinite(e.sigma.imag()))
+      c.spectrum.roots[c.selected[j]].sigma = e.sigma;
+  }
+  give_verdict(m, c);
 }
 
 // --refine-tables: the remade tables and how far their spectrum's roots are from the confirmed ones (-1: none).
@@ -117,14 +149,22 @@ struct Refinement {
   }
 };
 
-void print_json(std::ostream& out, const Confirmation& c, const Refinement& refinement, bool refine, int solves,
-                double seconds) {
+void print_json(std::ostream& out, const Confirmation& c, const Refinement& refinement, bool refine,
+                const MeshStudyResult* study, int solves, double seconds) {
   nlohmann::ordered_json j;
   j["roots"] = c.roots;
   j["stable"] = c.verdict.stable;
   j["growth"] = c.verdict.growth;
   j["growing"] = c.verdict.growing;
   j["unconfirmed"] = c.unconfirmed;
+  if (study) {
+    j["mesh_levels"] = study->levels.size();
+    j["mesh_unknowns"] = study->unknowns;
+    j["mesh_converged"] = study->all_converged();
+    j["signs_settled"] = study->signs_settled();
+    j["symmetry_defect"] = study->symmetry_defect;
+    if (!study->failure.empty()) j["mesh_failure"] = study->failure;
+  }
   j["forced_solves"] = solves;
   if (refine) {
     j["refined_tables"] = refinement.tables.size();
@@ -135,9 +175,62 @@ void print_json(std::ostream& out, const Confirmation& c, const Refinement& refi
   out << j.dump() << "\n";
 }
 
+// One line per selected root: its growth rate on the finest level with the mesh error.
+void print_mesh_errors(std::ostream& out, const Confirmation& c, const MeshStudyResult& study, double tolerance) {
+  out << "growth rates with their mesh error (" << study.levels.size() << " mesh levels, each "
+      << (study.by_order ? "raising the order by one" : "halving every size") << "; "
+      << "tolerance " << std::setprecision(2) << 100 * tolerance << " %; docs/rom.md, \"Mesh error of confirmed roots\"):\n";
+  for (std::size_t j = 0; j < c.selected.size(); ++j) {
+    const MeshErrorEstimate& e = study.errors[j];
+    out << "  " << std::setw(10) << c.spectrum.roots[c.selected[j]].owner << "  " << std::setw(34)
+        << complex_text(e.sigma) << "  " << rate_with_error(e)
+        << (e.converged ? "  converged" : "  NOT CONVERGED") << (e.sign_settled ? "" : ", sign not settled");
+    if (e.order > 0)
+      out << std::setprecision(3) << "  (order " << e.order << ", extrapolated " << e.extrapolated << " 1/s)";
+    out << "\n";
+  }
+  if (study.symmetry_defect.empty() || std::isnan(study.symmetry_defect.front())) return;
+  out << "mirror symmetry: |R_fg| / sqrt(|R_ff R_gg|) at the roots, 0 for the liquid itself (its mid-plane), on each "
+      << "level:";
+  for (double d : study.symmetry_defect) out << " " << std::setprecision(2) << d;
+  out << " (the mesh's own asymmetry)\n";
+}
+
+// What the mesh study adds to the verdict line: converged to what, or which rate is not and by how much.
+std::string mesh_verdict(const Confirmation& c, const MeshStudyResult& study, double tolerance) {
+  if (study.errors.empty()) return "";
+  std::ostringstream os;
+  os << std::setprecision(2);
+  std::size_t worst = 0;
+  for (std::size_t j = 1; j < study.errors.size(); ++j)
+    if (!(study.errors[j].relative() <= study.errors[worst].relative())) worst = j;
+  const MeshErrorEstimate& w = study.errors[worst];
+  const std::string who = c.spectrum.roots[c.selected[worst]].owner;
+  if (study.all_converged()) {
+    os << "; mesh error: every growth rate within " << 100 * tolerance << " % (largest: " << who << ", "
+       << rate_with_error(w) << ")";
+    return os.str();
+  }
+  os << "; NOT CONVERGED in the mesh: " << who << "'s " << rate_with_error(w) << " against the " << 100 * tolerance
+     << " % tolerance";
+  if (!study.signs_settled()) os << ", and the sign of a growth rate is not settled by the mesh";
+  if (!study.failure.empty()) os << " (" << study.failure << ")";
+  os << " -- a finer mesh: chain-rom confirm --mesh-size, --order, --refine (docs/rom.md, \"Mesh error of confirmed "
+     << "roots\")";
+  return os.str();
+}
+
 void print_text(std::ostream& out, const ChainModel& m, const Confirmation& c, const Refinement& refinement,
-                int solves, double seconds) {
-  out << std::setprecision(6) << "with the confirmed roots: " << verdict_with_dissipation(m, c.spectrum) << "\n";
+                const MeshStudyResult* study, double tolerance, int solves, double seconds) {
+  if (study) print_mesh_errors(out, c, *study, tolerance);
+  // The mesh's word goes on the verdict's own line, the first.
+  std::ostringstream verdict;
+  verdict << std::setprecision(6) << verdict_with_dissipation(m, c.spectrum);
+  std::string text = verdict.str();
+  const std::string mesh = study ? mesh_verdict(c, *study, tolerance)
+                                 : "; mesh error NOT MEASURED (--refine 0: the roots on the tables' mesh only)";
+  text.insert(std::min(text.find('\n'), text.size()), mesh);
+  out << "with the confirmed roots: " << text << "\n";
   if (c.unconfirmed)
     out << "warning: " << c.unconfirmed << " roots NOT CONFIRMED (marked above): the verdict takes the table's value "
         << "for them\n";
@@ -166,20 +259,36 @@ int confirm_roots(const Scene& scene, const ConfirmRequest& req, std::ostream& o
   const ScratchFolder scratch;
   log << "the fluid's own response R(s) by forced solves (cavity-modes response ... --serve), one per viscous tank:"
       << std::endl;
-  TankResponses tanks = serve_tanks(scene, m, cavity_modes_binary(req.cavity_modes), scratch.path, log);
-  const Confirmation c = confirm_selected(m, compute_spectrum(m), tanks, req, log);
-  const int solves = tanks.solves();
+  const std::string binary = cavity_modes_binary(req.cavity_modes);
+  TankResponses tanks = serve_tanks(scene, m, binary, scratch.path, log, {}, nullptr, req.mesh.base);
+  const Spectrum sp = compute_spectrum(m);
+  Confirmation c = confirm_selected(m, sp, tanks, req, log);
+  int solves = tanks.solves();
+  std::optional<MeshStudyResult> study;
+  if (req.mesh.refine > 0 && !c.selected.empty()) {
+    std::vector<long> unknowns;
+    for (const auto& s : tanks.served) unknowns.push_back(s->unknowns());
+    const double symmetry = symmetry_defect(m, tanks.responses, c.level0);
+    solves = tanks.solves();
+    tanks = {};  // one level's factorisations in memory at a time
+    ConfirmSettings settings;
+    settings.tolerance = req.tolerance;
+    study = study_mesh(scene, m, c.level0, unknowns, symmetry, req.mesh, binary, scratch.path, settings, sp.noise,
+                       log);
+    solves += study->solves;
+    take_finest_roots(m, *study, c);
+  }
   Refinement refinement;
   if (req.refine_tables && !c.sigmas.empty()) {
     tanks = {};  // the served solvers' memory back before the tables are remade
     log << "tables remade with R exact at the confirmed roots (cavity-modes response ... --exact-at):" << std::endl;
-    refinement.tables = refine_tables(scene, m, c.sigmas, cavity_modes_binary(req.cavity_modes), scratch.path,
-                                      req.run, log);
+    refinement.tables = refine_tables(scene, m, c.sigmas, binary, scratch.path, req.run, log);
     refinement.distance = compare_refined(scene, c.sigmas, log);
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (req.json) print_json(out, c, refinement, req.refine_tables, solves, seconds);
-  else print_text(out, m, c, refinement, solves, seconds);
+  const MeshStudyResult* measured = study ? &*study : nullptr;
+  if (req.json) print_json(out, c, refinement, req.refine_tables, measured, solves, seconds);
+  else print_text(out, m, c, refinement, measured, req.mesh.tolerance, solves, seconds);
   return c.unconfirmed;
 }
 

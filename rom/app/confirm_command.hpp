@@ -4,6 +4,7 @@
 // and the verdict is given again from the confirmed roots (docs/rom.md, "Confirmed roots").
 #pragma once
 
+#include "mesh_study.hpp"
 #include "scene.hpp"
 #include "table_refinement.hpp"
 
@@ -21,10 +22,14 @@ struct ConfirmRequest {
   // then say how far the new tables' roots are from the confirmed ones. `run` starts cavity-modes.
   bool refine_tables = false;
   ProgramRunner run;
+  // The mesh study (docs/rom.md, "Mesh error of confirmed roots"): the roots again on `mesh.refine` finer levels of
+  // each tank's mesh (1 by default; 0: the table's mesh only), and each growth rate with its mesh error.
+  MeshStudy mesh;
 };
 
-// Prints the tanks' forced-solve meshes, one line per root as it is confirmed, and the verdict from the confirmed
-// roots. Returns the number of roots that could not be confirmed. Throws std::runtime_error / SceneError on a bad
+// Prints the tanks' forced-solve meshes, one line per root as it is confirmed, the same on each level of the mesh
+// study, each selected root's growth rate with its mesh error, and the verdict from the confirmed roots on the finest
+// level with whether the mesh has converged them. Returns the number of roots that could not be confirmed. Throws std::runtime_error / SceneError on a bad
 // scene or a cavity-modes that cannot start.
 int confirm_roots(const Scene& scene, const ConfirmRequest& request, std::ostream& os);
 

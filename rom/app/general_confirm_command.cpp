@@ -44,12 +44,14 @@ void print_general_text(std::ostream& out, const GeneralConfirmation& c, double 
         << c.moved[i] << (c.moved[i] <= tolerance ? "" : "   NOT CONFIRMED") << std::setprecision(12) << "\n";
   const Verdict& v = c.spectrum.verdict;
   out << std::setprecision(6);
+  // The 3-D tables' mesh is not studied yet (docs/rom.md, "Mesh error of confirmed roots"): said where the verdict is.
+  const char* mesh = "; mesh error NOT MEASURED (3-D tables: compare tables made on two meshes, docs/volume.md)";
   if (v.stable)
     out << "with the confirmed roots: stable -- no root grows by more than rounding; the slowest decays at "
-        << -v.growth << " 1/s\n";
+        << -v.growth << " 1/s" << mesh << "\n";
   else
     out << "with the confirmed roots: unstable -- " << v.growing << (v.growing == 1 ? " root grows" : " roots grow")
-        << ", the fastest at " << v.growth << " 1/s\n";
+        << ", the fastest at " << v.growth << " 1/s" << mesh << "\n";
   out << c.tables << (c.tables == 1 ? " table" : " tables") << " remade in " << c.rounds << " round(s) (the files "
       << "replaced: spectrum, run and sweep now give these roots), " << std::setprecision(3) << seconds << " s\n";
 }

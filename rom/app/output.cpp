@@ -325,7 +325,10 @@ std::string spectrum_json(const ChainModel& m, const Spectrum& sp) {
     j["companion_moved"] = sp.companion_moved;
     j["companion_worst"] = sp.companion_worst;
     j["companion_shift"] = nlohmann::ordered_json::array();
+    j["companion_worst_rate"] = sp.companion_worst_rate;
     for (const Root& r : sp.roots) j["companion_shift"].push_back(r.companion_shift);
+    j["companion_rate_shift"] = nlohmann::ordered_json::array();
+    for (const Root& r : sp.roots) j["companion_rate_shift"].push_back(r.companion_rate_shift);
   }
   return j.dump();
 }
@@ -513,9 +516,11 @@ void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp, b
          << "docs/rom.md, \"Spectrum\")\n";
   }
   if (sp.companion_checked)
-    os << "companion tables: " << sp.companion_moved << " roots (marked ~) move by more than " << kCompanionTolerance
-       << " (relative) when the tables are replaced by their coarser companions; the largest move "
-       << sp.companion_worst << (sp.companion_moved ? ": those roots depend on the mesh (docs/trust.md)" : "") << "\n";
+    os << "companion tables: " << sp.companion_moved << " of the roots the verdict rests on (body and growing roots, "
+       << "marked ~) move by more than " << kCompanionTolerance << " in frequency or " << kCompanionRateTolerance
+       << " in growth or decay rate (relative) when the tables are replaced by their coarser companions; the largest "
+       << "moves " << sp.companion_worst << " and " << sp.companion_worst_rate
+       << (sp.companion_moved ? ": those roots depend on the mesh (docs/trust.md)" : "") << "\n";
   if (sp.outside_fit) print_outside_fit(os, m, sp);
   for (int k = 0; k < m.n; ++k)
     if (!sp.passivity[k].passive())

@@ -29,6 +29,9 @@ struct TankResponse {
   // answers the form R e eᵀ + R_fg (e gᵀ + g eᵀ) + R_gg g gᵀ (e its own body), docs/physics.md §2.
   std::function<std::array<std::complex<double>, 3>(std::complex<double>)> R_offset;
   Eigen::VectorXd offset_row;
+  // The liquid is symmetric about its mid-plane (a built-in sphere, spheroid or cylinder, whose free surface is a
+  // coaxial cylinder): R_fg vanishes, and what the forced solves give of it measures the mesh's own asymmetry.
+  bool mirror_symmetric = false;
 };
 
 struct ConfirmSettings {

@@ -34,15 +34,27 @@ bool is_flag(const std::string& name) {
 // What the served forced solves need: the shape's dimensions and the viscous mesh.
 bool is_kept(const std::string& name) {
   for (const char* k : {"--radius", "--height", "--inner-radius", "--a", "--c", "--order", "--mesh-size", "--radial-size", "--wall-size",
-                        "--mesh-ekman", "--fill"})
+                        "--near-wall-size", "--mesh-ekman", "--fill"})
     if (name == k) return true;
   return false;
+}
+
+// A length as the command line takes it, to full precision.
+std::string number_text(double v) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.17g", v);
+  return text;
 }
 
 }  // namespace
 
 std::vector<std::string> serve_arguments(const rc::ModeTable& t, const fs::path& scratch, double ekman,
                                          double mesh_ekman) {
+  return serve_arguments(t, scratch, ekman, mesh_ekman, ServedMesh{});
+}
+
+std::vector<std::string> serve_arguments(const rc::ModeTable& t, const fs::path& scratch, double ekman,
+                                         double mesh_ekman, const ServedMesh& mesh) {
   if (!t.viscous()) throw std::runtime_error("it is an ideal-fluid table (its roots need no confirmation)");
   if (t.command_line.empty()) throw std::runtime_error("it records no command line (made before provenance)");
   const std::vector<std::string> w = shell_words(t.command_line);
@@ -52,7 +64,7 @@ std::vector<std::string> serve_arguments(const rc::ModeTable& t, const fs::path&
     throw std::runtime_error("its recorded command line names no shape: " + t.command_line);
   std::vector<std::string> args{"response", w[i]};
   const bool section = w[i] == "section";
-  bool have_file = false;
+  bool have_file = false, have_near_wall = false;
   for (++i; i < w.size(); ++i) {
     std::string name = w[i], value;
     const bool option = name.size() > 1 && name[0] == '-';
@@ -71,9 +83,12 @@ std::vector<std::string> serve_arguments(const rc::ModeTable& t, const fs::path&
     }
     if (is_flag(name)) continue;
     if (!inline_value && i + 1 < w.size()) value = w[++i];
-    if (is_kept(name) && !(name == "--mesh-ekman" && mesh_ekman > 0)) {
+    const bool replaced = (name == "--mesh-ekman" && mesh_ekman > 0) || (name == "--mesh-size" && mesh.mesh_size > 0) ||
+                          (name == "--order" && (mesh.order > 0 || mesh.order_raise > 0));
+    if (is_kept(name) && !replaced) {
       args.push_back(name);
       args.push_back(value);
+      have_near_wall = have_near_wall || name == "--near-wall-size";
     }
   }
   if (section && !have_file) throw std::runtime_error("its recorded command line names no section file");
@@ -85,6 +100,19 @@ std::vector<std::string> serve_arguments(const rc::ModeTable& t, const fs::path&
     std::snprintf(mek, sizeof mek, "%.17g", mesh_ekman);
     args.insert(args.end(), {"--mesh-ekman", mek});
   }
+  // A table's default near-wall zone (a whole cylinder or spheroid at Ek <= 1e-5) is not on its command line: the
+  // table records the size it used.
+  if (!have_near_wall && t.mesh_h_near_wall > 0 && !(mesh_ekman > 0))
+    args.insert(args.end(), {"--near-wall-size", number_text(t.mesh_h_near_wall)});
+  if (mesh.mesh_size > 0) args.insert(args.end(), {"--mesh-size", number_text(mesh.mesh_size)});
+  if (mesh.order > 0 || mesh.order_raise > 0) {
+    const int order = (mesh.order > 0 ? mesh.order : t.fe_order) + mesh.order_raise;
+    if (order > 6 || order < 2)
+      throw std::runtime_error("a study in the order reaches order " + std::to_string(order) + ": Taylor-Hood orders are "
+                               "2..6 (start from a lower --order, or refine by size)");
+    args.insert(args.end(), {"--order", std::to_string(order)});
+  }
+  if (mesh.level > 0) args.insert(args.end(), {"--mesh-level", std::to_string(mesh.level)});
   args.push_back("--serve");
   return args;
 }

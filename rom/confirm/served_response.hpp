@@ -17,6 +17,16 @@
 
 namespace rc::rom {
 
+// The mesh of a tank's served forced solves: its table's own, or a mesh study's — the table's with --mesh-size and
+// --order replaced where given, then every size halved `level` times (cavity-modes response --mesh-level).
+struct ServedMesh {
+  int level = 0;
+  double mesh_size = 0;  // > 0: in place of the table's --mesh-size
+  int order = 0;         // > 0: in place of the table's --order
+  int order_raise = 0;   // the order (the table's or `order`) raised by this much: a study in the order (at most 6)
+  bool is_tables() const { return level == 0 && mesh_size == 0 && order == 0 && order_raise == 0; }
+};
+
 // The arguments after the program's name of `cavity-modes response ... --serve` for a viscous table: the shape and
 // its dimensions, --order, --mesh-size, --radial-size, --wall-size from the table's command line, --ekman from the
 // table (or `ekman` when positive: the same cavity and mesh at another Ekman number, for sweeps over spin). A
@@ -24,6 +34,10 @@ namespace rc::rom {
 // std::runtime_error with one line when the table is not viscous or its command line cannot be read back.
 // `mesh_ekman` (when positive) makes the mesh as for that Ekman number (cavity-modes --mesh-ekman): one mesh for
 // every point of a sweep over spin, its wall layers those of the sweep's smallest Ek.
+// `mesh` (when not the table's) changes the mesh for a mesh study (docs/rom.md, "Mesh error of confirmed roots").
+struct ServedMesh;
+std::vector<std::string> serve_arguments(const rc::ModeTable& table, const std::filesystem::path& scratch,
+                                         double ekman, double mesh_ekman, const ServedMesh& mesh);
 std::vector<std::string> serve_arguments(const rc::ModeTable& table, const std::filesystem::path& scratch,
                                          double ekman = 0, double mesh_ekman = 0);
 

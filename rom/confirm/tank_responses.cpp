@@ -36,7 +36,8 @@ Eigen::VectorXd offset_row(const Scene& scene, const ChainModel& m, int k) {
 }  // namespace
 
 TankResponses serve_tanks(const Scene& scene, const ChainModel& m, const std::string& binary, const fs::path& scratch,
-                          std::ostream& log, const std::vector<double>& mesh_ekman, TableCache* tables) {
+                          std::ostream& log, const std::vector<double>& mesh_ekman, TableCache* tables,
+                          const ServedMesh& mesh) {
   TankResponses t;
   for (int k = 0; k < m.n; ++k) {
     if (m.bodies[k].ekman <= 0) continue;
@@ -52,7 +53,7 @@ TankResponses serve_tanks(const Scene& scene, const ChainModel& m, const std::st
                                                ? mesh_ekman[static_cast<std::size_t>(k)] : 0.0);
     std::vector<std::string> args;
     try {
-      args = serve_arguments(table, scratch, ekman, mesh_ek);
+      args = serve_arguments(table, scratch, ekman, mesh_ek, mesh);
     } catch (const std::exception& e) {
       throw SceneError("body[" + std::to_string(k + 1) + "].cavity.table " + cav.table.string() + ": " + e.what());
     }
@@ -61,16 +62,19 @@ TankResponses serve_tanks(const Scene& scene, const ChainModel& m, const std::st
     log << std::endl;
     auto& s = *t.served.emplace_back(std::make_unique<ServedResponse>(binary, args));
     log << "    " << s.ready_line();
-    if (same_ek && mesh_ek == 0 && table.ndof > 0 && s.unknowns() > 0 && s.unknowns() != table.ndof)
-      log << " -- NOT the table's mesh (" << table.ndof << " unknowns): the table was made by another version or "
-          << "with other defaults, so the check is against a different discretisation";
+    if (same_ek && mesh_ek == 0 && mesh.is_tables() && table.ndof > 0 && s.unknowns() > 0 && s.unknowns() != table.ndof)
+      log << " -- NOT the table's mesh (" << table.ndof << " unknowns): its recorded command line does not give "
+          << "back its mesh (a table made by an older cavity-modes, whose defaults differed), so the check is against "
+          << "a different discretisation";
     log << std::endl;
     ServedResponse* p = &s;
     t.responses.push_back({k, cav.density * std::pow(cav.scale, 5), [p](std::complex<double> x) { return (*p)(x); },
-                           {}, {}});
+                           {}, {}, false});
     if (m.bodies[k].free_surface) {  // served with --fill (its table's command line): R, R_fg, R_gg
       t.responses.back().R_offset = [p](std::complex<double> x) { return p->offset(x); };
       t.responses.back().offset_row = offset_row(scene, m, k);
+      t.responses.back().mirror_symmetric =
+          table.shape == "sphere" || table.shape == "spheroid" || table.shape == "cylinder";
     }
   }
   return t;

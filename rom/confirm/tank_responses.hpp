@@ -35,10 +35,12 @@ struct TankResponses {
 // scene's viscosity and spin, nu/(|spin| scale^2) (the table's own when they agree within kEkmanTolerance, so that
 // the mesh is the table's); `mesh_ekman` (per body, 0: none) makes the mesh as for that Ek instead; `tables` (when
 // given) holds the tables already read, which a sweep does not read again at every point. Writes one line per tank to
-// `log` (the command and the served mesh, and a warning when it is not the table's mesh). Throws SceneError naming
-// the table when its provenance cannot be read back, std::runtime_error when cavity-modes does not start.
+// `log` (the command and the served mesh, and a warning when it is not the table's mesh); `mesh` (when not the
+// table's) serves a mesh study's level instead. Throws SceneError naming the table when its provenance cannot be
+// read back, std::runtime_error when cavity-modes does not start.
 TankResponses serve_tanks(const Scene& scene, const ChainModel& m, const std::string& binary,
                           const std::filesystem::path& scratch, std::ostream& log,
-                          const std::vector<double>& mesh_ekman = {}, TableCache* tables = nullptr);
+                          const std::vector<double>& mesh_ekman = {}, TableCache* tables = nullptr,
+                          const ServedMesh& mesh = {});
 
 }  // namespace rc::rom

@@ -80,8 +80,8 @@ TEST(RootConfirmation, ReachesTheRootsOfTheTrueResponse) {
   const std::string fit_file = fit_table(fit, "confirm_fit"), true_file = fit_table(truth, "confirm_true");
   for (const double spin : {100.0, -100.0}) {
     const ChainModel m_fit = chain(fit_file, spin), m_true = chain(true_file, spin);
-    const std::vector<TankResponse> tanks{{1, 1000 * std::pow(0.05, 5), [&](cd s) { return sum(truth, s); }, {}, {}}};
-    const std::vector<TankResponse> own{{1, 1000 * std::pow(0.05, 5), [&](cd s) { return sum(fit, s); }, {}, {}}};
+    const std::vector<TankResponse> tanks{{1, 1000 * std::pow(0.05, 5), [&](cd s) { return sum(truth, s); }, {}, {}, false}};
+    const std::vector<TankResponse> own{{1, 1000 * std::pow(0.05, 5), [&](cd s) { return sum(fit, s); }, {}, {}, false}};
     const Spectrum sp_fit = compute_spectrum(m_fit), sp_true = compute_spectrum(m_true);
     double worst = 0, worst_own = 0, largest_move = 0;
     int body_roots = 0;

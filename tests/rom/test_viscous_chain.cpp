@@ -12,6 +12,7 @@
 //    difference falling as the amplitude squared.
 #include "bench.hpp"
 #include "chain_model.hpp"
+#include "companion_check.hpp"
 #include "closed_form_tables.hpp"
 #include "general_chain.hpp"
 #include "general_run.hpp"
@@ -86,6 +87,47 @@ TEST(ViscousChain, OneBodyRootsAreTheClosedForm) {
                 lam.real(), lam.imag(), r1.real(), r1.imag(), r2.real(), r2.imag(), err);
     EXPECT_EQ(sp.roots.size(), 3u);
     EXPECT_LT(err, 1e-13);
+  }
+}
+
+// The companion check (companion_check.hpp) on a viscous tank judges what the verdict rests on: a companion whose
+// damped mode decays 1 % faster (Ek = 1e-5, an oblate body whose nutation decays) changes the nutation's decay rate
+// (the body root) by 0.3 % and must mark it; the fluid's own root moves three times more and is not marked (before,
+// every one of a response table's pseudo-mode roots was marked and the body root's decay was not looked at).
+TEST(ViscousChain, CompanionCheckMarksTheBodyRootsDecay) {
+  const rc::ModeTable table = rc::read_mode_table(table_path("1e-5"));
+  rc::ModeTable faster = table;
+  for (double& d : faster.decay) d *= 1.01;
+  const auto same = test::write_table(table, test::test_dir() / "companion_visc_same.h5");
+  const auto moved = test::write_table(faster, test::test_dir() / "companion_visc_faster.h5");
+  for (const auto& companion : {same, moved}) {
+    std::ostringstream s;
+    s << "[system]\nkind = \"fixed\"\ngravity = 0.0\n[[body]]\nmass = 0.5\nA = 0.002\nC = 0.003\ncom = 0.0\n"
+      << "spin = " << kSpin << "\n[body.cavity]\ntable = \"" << table_path("1e-5") << "\"\ncompanion = \""
+      << companion.string() << "\"\ndensity = " << kDensity << "\nscale = " << kScale << "\ncenter = 0.0\nviscosity = "
+      << 1e-5 * kSpin * kScale * kScale << "\n";
+    const Scene scene = parse_scene_text(s.str(), ".", "companion");
+    Spectrum sp = compute_spectrum(build_model(scene));
+    mark_companion_shifts(sp, compute_spectrum(build_model(with_companions(scene))));
+    const Root* body = nullptr;
+    const Root* fluid = nullptr;
+    for (const Root& r : sp.roots) {
+      if (r.owner.rfind("body", 0) == 0 && (!body || std::abs(r.sigma) > std::abs(body->sigma))) body = &r;
+      if (r.owner.rfind("fluid", 0) == 0) fluid = &r;
+    }
+    ASSERT_TRUE(body && fluid);
+    std::printf("  %s: body root %.9f%+.3ei moved %.2e, its decay %.2e; fluid root moved %.2e (rate %.2e); %d marked\n",
+                companion.filename().c_str(), body->sigma.real(), body->sigma.imag(), body->companion_shift,
+                body->companion_rate_shift, fluid->companion_shift, fluid->companion_rate_shift, sp.companion_moved);
+    if (companion == same) {
+      EXPECT_EQ(sp.companion_moved, 0);
+      continue;
+    }
+    EXPECT_GT(body->companion_rate_shift, kCompanionRateTolerance);
+    EXPECT_TRUE(body->companion_moved);
+    EXPECT_GT(fluid->companion_rate_shift, 0.005);  // the fluid root carries the 1 % ...
+    EXPECT_FALSE(fluid->companion_moved);          // ... but the answer is the body's
+    EXPECT_EQ(sp.companion_moved, 1);
   }
 }
 

@@ -36,7 +36,7 @@ A1, C, a, w = body["A_prime"], body["C"], body["a"], body["spin"]
 g = float(re.search(r"^gravity = (\S+)", text, re.M).group(1))
 rho = float(re.search(r"^density = (\S+)", text, re.M).group(1))
 L = float(re.search(r"^scale = (\S+)", text, re.M).group(1))
-p = subprocess.run([rom, "confirm", "scene.toml", "--json", "--cavity-modes", modes], capture_output=True, text=True)
+p = subprocess.run([rom, "confirm", "scene.toml", "--json", "--refine", "0", "--cavity-modes", modes], capture_output=True, text=True)
 print(p.stderr)
 if p.returncode != 0:
     sys.exit("chain-rom confirm exited %d" % p.returncode)
@@ -107,7 +107,7 @@ for spin in (800, 1500, 2000, 3000):
                    check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     ks = re.sub(r"^spin = .*$", "spin = %d.0" % spin, text, flags=re.M)
     open("k%d.toml" % spin, "w").write(ks.replace('"../../out/tables/%s"' % name, '"k%d.h5"' % spin))
-    p = subprocess.run([rom, "confirm", "k%d.toml" % spin, "--json", "--cavity-modes", modes], capture_output=True,
+    p = subprocess.run([rom, "confirm", "--refine", "0", "k%d.toml" % spin, "--json", "--cavity-modes", modes], capture_output=True,
                        text=True)
     assert p.returncode == 0, p.stderr
     kr = json.loads(p.stdout)["roots"]
@@ -119,7 +119,7 @@ for spin in (800, 1500, 2000, 3000):
         print("  %4d rad/s (Ek %.4g): %s; table roots to %.1e of the confirmed" % (
             spin, ek, ", ".join("%s %.6f%+.6fi" % (r["owner"], *r["confirmed"]) for r in kr), d))
         continue
-    p = subprocess.run([rom, "confirm", "k%d.toml" % spin, "--json", "--refine-tables", "--cavity-modes", modes],
+    p = subprocess.run([rom, "confirm", "--refine", "0", "k%d.toml" % spin, "--json", "--refine-tables", "--cavity-modes", modes],
                        capture_output=True, text=True)
     assert p.returncode == 0, p.stderr
     assert "--exact-at" in subprocess.run([modes, "info", "k%d.h5" % spin], capture_output=True, text=True).stdout
@@ -136,7 +136,7 @@ assert worst_k < 1e-6, worst_k
 assert worst_r < 1e-9, worst_r
 # A response fit cannot be refined: one line, the table untouched.
 before = os.path.getmtime(name)
-p = subprocess.run([rom, "confirm", "scene.toml", "--refine-tables", "--cavity-modes", modes], capture_output=True,
+p = subprocess.run([rom, "confirm", "--refine", "0", "scene.toml", "--refine-tables", "--cavity-modes", modes], capture_output=True,
                    text=True)
 assert p.returncode != 0 and "Krylov response tables only" in p.stderr and len(p.stderr.strip().splitlines()) == 1, \
     p.stderr
@@ -150,7 +150,7 @@ two = text[:text.index("[[body]]")] + body.replace("spin = ", "next_joint = 0.1\
       "[[joint]]\nstiffness = 50.0\n\n[initial]\ntilt = [[0.01, 0.0], [0.0, 0.0]]\nrate = [[0.0, 0.0], [0.0, 0.0]]\n"
 open("two.toml", "w").write(two.replace('"../../out/tables/%s"' % name, '"%s"' % name))
 try:
-    p = subprocess.run([rom, "confirm", "two.toml", "--cavity-modes", modes], capture_output=True, text=True,
+    p = subprocess.run([rom, "confirm", "--refine", "0", "two.toml", "--cavity-modes", modes], capture_output=True, text=True,
                        timeout=150)
 except subprocess.TimeoutExpired:
     sys.exit("chain-rom confirm on two tanks did not finish in 150 s (served processes left waiting?)")
