@@ -1,53 +1,33 @@
 // Eigen's dense module with its decompositions compiled once (common/eigen_dense_*.cpp), not in every file that uses
 // them: each decomposition of the matrix types we use is declared an explicit instantiation here, so a file that
-// includes this header instead of <Eigen/Dense> calls the one compiled copy. Measured 2026-11-29 on this 2-core
-// machine (-O3, the build's per-file times): modes/viscous/rational_fit.cpp 74 s -> 17 s,
-// freesurface/free_surface_radial.cpp 32 s -> 4 s, partial_fill_cylinder.cpp 36 s -> 25 s (docs/benchmarks.md,
-// "Build time"). A decomposition of another type still compiles in the file that uses it, as before.
+// includes this header instead of <Eigen/Dense> calls the one compiled copy (modes/viscous/rational_fit.cpp: 74 s ->
+// 17 s at -O3). A decomposition of another type still compiles in the file that uses it, as before.
 #pragma once
 
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
 
-// Three lists, each compiled in its own file (eigen_dense_*.cpp) so that the build's cores share them.
-#define RC_EIGEN_DENSE_FACTORISATIONS(X)                                              \
-  X(Eigen::PartialPivLU<Eigen::MatrixXd>)                                             \
-  X(Eigen::PartialPivLU<Eigen::MatrixXcd>)                                            \
-  X(Eigen::FullPivLU<Eigen::MatrixXd>)                                                \
-  X(Eigen::FullPivLU<Eigen::MatrixXcd>)                                               \
-  X(Eigen::LLT<Eigen::MatrixXd>)                                                      \
-  X(Eigen::LLT<Eigen::MatrixXcd>)                                                     \
-  X(Eigen::LDLT<Eigen::MatrixXd>)                                                     \
-  X(Eigen::HouseholderQR<Eigen::MatrixXd>)                                            \
-  X(Eigen::HouseholderQR<Eigen::MatrixXcd>)                                           \
-  X(Eigen::ColPivHouseholderQR<Eigen::MatrixXd>)                                      \
-  X(Eigen::ColPivHouseholderQR<Eigen::MatrixXcd>)                                     \
-  X(Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXcd>)
+// Only the decompositions that several files use and that cost seconds to compile are listed: an explicit
+// instantiation compiles every member, so a type used once costs more here than where it is used (measured 2026-11-29,
+// each alone at -O3: BDCSVD<MatrixXcd> 60 s, SelfAdjointEigenSolver 12-14 s, PartialPivLU 7 s; the first list of 33
+// types took 247 s and made the clean build slower, docs/benchmarks.md "Build time"). Three lists, each compiled in its
+// own file (eigen_dense_*.cpp) so that the build's cores share them.
+#define RC_EIGEN_DENSE_FACTORISATIONS(X)  \
+  X(Eigen::PartialPivLU<Eigen::MatrixXd>)  \
+  X(Eigen::PartialPivLU<Eigen::MatrixXcd>) \
+  X(Eigen::FullPivLU<Eigen::MatrixXcd>)    \
+  X(Eigen::LLT<Eigen::MatrixXd>)
 
-#define RC_EIGEN_DENSE_SVDS(X)                                                        \
-  X(Eigen::JacobiSVD<Eigen::MatrixXd>)                                                \
-  X(Eigen::JacobiSVD<Eigen::MatrixXcd>)                                               \
-  X(Eigen::JacobiSVD<Eigen::Matrix3cd>)                                               \
-  X(Eigen::BDCSVD<Eigen::MatrixXd>)                                                   \
-  X(Eigen::BDCSVD<Eigen::MatrixXcd>)
+#define RC_EIGEN_DENSE_SVDS(X) X(Eigen::BDCSVD<Eigen::MatrixXcd>)
 
-#define RC_EIGEN_DENSE_EIGENSOLVERS(X)                                                \
-  X(Eigen::EigenSolver<Eigen::MatrixXd>)                                              \
-  X(Eigen::EigenSolver<Eigen::Matrix3d>)                                              \
-  X(Eigen::GeneralizedEigenSolver<Eigen::MatrixXd>)                                   \
-  X(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>)                                   \
-  X(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXcd>)                                  \
-  X(Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>)                                   \
-  X(Eigen::SelfAdjointEigenSolver<Eigen::Matrix3cd>)                                  \
-  X(Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd>)                        \
-  X(Eigen::ComplexEigenSolver<Eigen::MatrixXcd>)                                      \
-  X(Eigen::ComplexSchur<Eigen::MatrixXcd>)                                            \
-  X(Eigen::RealSchur<Eigen::MatrixXd>)                                                \
-  X(Eigen::RealQZ<Eigen::MatrixXd>)                                                   \
-  X(Eigen::HessenbergDecomposition<Eigen::MatrixXd>)                                  \
-  X(Eigen::HessenbergDecomposition<Eigen::MatrixXcd>)                                 \
-  X(Eigen::Tridiagonalization<Eigen::MatrixXd>)                                       \
-  X(Eigen::Tridiagonalization<Eigen::MatrixXcd>)
+#define RC_EIGEN_DENSE_EIGENSOLVERS(X)                             \
+  X(Eigen::EigenSolver<Eigen::MatrixXd>)                           \
+  X(Eigen::RealSchur<Eigen::MatrixXd>)                             \
+  X(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>)                \
+  X(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXcd>)               \
+  X(Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd>)     \
+  X(Eigen::ComplexEigenSolver<Eigen::MatrixXcd>)                   \
+  X(Eigen::ComplexSchur<Eigen::MatrixXcd>)
 
 #ifndef RC_EIGEN_DENSE_DEFINITIONS
 #define RC_EIGEN_DENSE_DECLARE(T) extern template class T;
