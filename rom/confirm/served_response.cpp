@@ -39,7 +39,7 @@ bool is_kept(const std::string& name) {
   return false;
 }
 
-// A length as the command line takes it, to full precision.
+// A number as the command line takes it, to full precision.
 std::string number_text(double v) {
   char text[40];
   std::snprintf(text, sizeof text, "%.17g", v);
@@ -53,10 +53,12 @@ std::vector<std::string> serve_arguments(const rc::ModeTable& t, const fs::path&
   return serve_arguments(t, scratch, ekman, mesh_ekman, ServedMesh{});
 }
 
-std::vector<std::string> serve_arguments(const rc::ModeTable& t, const fs::path& scratch, double ekman,
-                                         double mesh_ekman, const ServedMesh& mesh) {
-  if (!t.viscous()) throw std::runtime_error("it is an ideal-fluid table (its roots need no confirmation)");
-  if (t.command_line.empty()) throw std::runtime_error("it records no command line (made before provenance)");
+namespace {
+
+// The shape and the kept options of the table's recorded command line (the section's file written from the table),
+// less those that `mesh_ekman` and `mesh` replace. Sets `near_wall` when the line gives --near-wall-size.
+std::vector<std::string> recorded_arguments(const rc::ModeTable& t, const fs::path& scratch, double mesh_ekman,
+                                            const ServedMesh& mesh, bool& near_wall) {
   const std::vector<std::string> w = shell_words(t.command_line);
   std::size_t i = 1;
   if (i < w.size() && w[i] == "response") ++i;
@@ -64,46 +66,31 @@ std::vector<std::string> serve_arguments(const rc::ModeTable& t, const fs::path&
     throw std::runtime_error("its recorded command line names no shape: " + t.command_line);
   std::vector<std::string> args{"response", w[i]};
   const bool section = w[i] == "section";
-  bool have_file = false, have_near_wall = false;
+  bool have_file = false;
   for (++i; i < w.size(); ++i) {
     std::string name = w[i], value;
-    const bool option = name.size() > 1 && name[0] == '-';
-    if (!option) {  // a positional word: the section's file
-      if (section && !have_file) {
-        args.push_back(section_file(t, name, scratch).string());
-        have_file = true;
-      }
+    if (!(name.size() > 1 && name[0] == '-')) {  // a positional word: the section's file
+      if (section && !have_file) args.push_back(section_file(t, name, scratch).string());
+      have_file = have_file || section;
       continue;
     }
     const auto eq = name.find('=');
     const bool inline_value = eq != std::string::npos;
-    if (inline_value) {
-      value = name.substr(eq + 1);
-      name = name.substr(0, eq);
-    }
+    if (inline_value) value = name.substr(eq + 1), name = name.substr(0, eq);
     if (is_flag(name)) continue;
     if (!inline_value && i + 1 < w.size()) value = w[++i];
     const bool replaced = (name == "--mesh-ekman" && mesh_ekman > 0) || (name == "--mesh-size" && mesh.mesh_size > 0) ||
                           (name == "--order" && (mesh.order > 0 || mesh.order_raise > 0));
-    if (is_kept(name) && !replaced) {
-      args.push_back(name);
-      args.push_back(value);
-      have_near_wall = have_near_wall || name == "--near-wall-size";
-    }
+    if (!is_kept(name) || replaced) continue;
+    args.insert(args.end(), {name, value});
+    near_wall = near_wall || name == "--near-wall-size";
   }
   if (section && !have_file) throw std::runtime_error("its recorded command line names no section file");
-  char ek[40];
-  std::snprintf(ek, sizeof ek, "%.17g", ekman > 0 ? ekman : t.ekman);
-  args.insert(args.end(), {"--ekman", ek});
-  if (mesh_ekman > 0) {
-    char mek[40];
-    std::snprintf(mek, sizeof mek, "%.17g", mesh_ekman);
-    args.insert(args.end(), {"--mesh-ekman", mek});
-  }
-  // A table's default near-wall zone (a whole cylinder or spheroid at Ek <= 1e-5) is not on its command line: the
-  // table records the size it used.
-  if (!have_near_wall && t.mesh_h_near_wall > 0 && !(mesh_ekman > 0))
-    args.insert(args.end(), {"--near-wall-size", number_text(t.mesh_h_near_wall)});
+  return args;
+}
+
+// A mesh study's options (ServedMesh): the size and order in place of the table's, and the level.
+void add_study_mesh(std::vector<std::string>& args, const rc::ModeTable& t, const ServedMesh& mesh) {
   if (mesh.mesh_size > 0) args.insert(args.end(), {"--mesh-size", number_text(mesh.mesh_size)});
   if (mesh.order > 0 || mesh.order_raise > 0) {
     const int order = (mesh.order > 0 ? mesh.order : t.fe_order) + mesh.order_raise;
@@ -113,6 +100,23 @@ std::vector<std::string> serve_arguments(const rc::ModeTable& t, const fs::path&
     args.insert(args.end(), {"--order", std::to_string(order)});
   }
   if (mesh.level > 0) args.insert(args.end(), {"--mesh-level", std::to_string(mesh.level)});
+}
+
+}  // namespace
+
+std::vector<std::string> serve_arguments(const rc::ModeTable& t, const fs::path& scratch, double ekman,
+                                         double mesh_ekman, const ServedMesh& mesh) {
+  if (!t.viscous()) throw std::runtime_error("it is an ideal-fluid table (its roots need no confirmation)");
+  if (t.command_line.empty()) throw std::runtime_error("it records no command line (made before provenance)");
+  bool near_wall = false;
+  std::vector<std::string> args = recorded_arguments(t, scratch, mesh_ekman, mesh, near_wall);
+  args.insert(args.end(), {"--ekman", number_text(ekman > 0 ? ekman : t.ekman)});
+  if (mesh_ekman > 0) args.insert(args.end(), {"--mesh-ekman", number_text(mesh_ekman)});
+  // A table's default near-wall zone (a whole cylinder or spheroid at Ek <= 1e-5) is not on its command line: the
+  // table records the size it used.
+  if (!near_wall && t.mesh_h_near_wall > 0 && !(mesh_ekman > 0))
+    args.insert(args.end(), {"--near-wall-size", number_text(t.mesh_h_near_wall)});
+  add_study_mesh(args, t, mesh);
   args.push_back("--serve");
   return args;
 }
