@@ -144,7 +144,21 @@ void grade_towards_wall(const MeshOptions& options, double size, const std::stri
   field::setAsBackgroundMesh(threshold);
 }
 
-void generate(int order, double size, const std::string& where, const MeshOptions& options) {
+// The linear mesh of the 'fluid' group, counted (linear_tet_counts.hpp).
+LinearTetCounts count_fluid_tets(const std::string& where) {
+  std::vector<int> entities;
+  gmsh::model::getEntitiesForPhysicalGroup(3, fluid_group(where), entities);
+  std::vector<std::array<std::size_t, 4>> tets;
+  for (int e : entities) {
+    std::vector<std::size_t> tags, nodes;
+    gmsh::model::mesh::getElementsByType(4, tags, nodes, e);  // 4: gmsh's linear tetrahedron
+    for (std::size_t i = 0; i + 3 < nodes.size(); i += 4) tets.push_back({nodes[i], nodes[i + 1], nodes[i + 2], nodes[i + 3]});
+  }
+  return count_linear_tets(tets);
+}
+
+void generate(int order, double size, const std::string& where, const MeshOptions& options,
+              const LinearMeshCheck& check) {
   if (model_extent() / size > kMaxCellsPerExtent)
     throw std::runtime_error(where + ": mesh size " + number(size) + " is too small for a model of extent " +
                              number(model_extent()));
@@ -155,6 +169,7 @@ void generate(int order, double size, const std::string& where, const MeshOption
   gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
   gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
   gmsh::model::mesh::generate(3);
+  if (check) check(count_fluid_tets(where));
   // After the linear mesh: setOrder puts the new boundary nodes on the CAD surfaces. A coarse mesh's curved
   // elements can fold where a boundary face bends into a thin element; gmsh's high-order optimiser (elastic
   // analogy, then untangling; boundary nodes stay on the surfaces) unfolds them.
@@ -201,7 +216,7 @@ GmshTets read_tets(const std::string& where) {
 }
 
 GmshTets mesh_in_gmsh(const VolumeShapeSpec& shape, const MeshOptions& options, const std::string& where,
-                      double& size) {
+                      double& size, const LinearMeshCheck& check) {
   return detail::with_gmsh(where, [&](detail::GmshSession& session) {
     gmsh::model::add("volume");
     if (shape.kind == "volume")
@@ -216,7 +231,7 @@ GmshTets mesh_in_gmsh(const VolumeShapeSpec& shape, const MeshOptions& options, 
     size = options.size > 0 ? options.size
                             : kDefaultSizeFraction * (shape.kind == "volume" ? model_smallest_side()
                                                                               : smallest_dimension(shape));
-    generate(options.order, size, where, options);
+    generate(options.order, size, where, options, check);
     session.throw_if_error(where);
     return read_tets(where);
   });
@@ -295,7 +310,7 @@ void tilt_file_mesh(const VolumeShapeSpec& shape, VolumeMesh& m) {
 
 }  // namespace
 
-VolumeMesh mesh_volume(const VolumeShapeSpec& shape, const MeshOptions& options) {
+VolumeMesh mesh_volume(const VolumeShapeSpec& shape, const MeshOptions& options, const LinearMeshCheck& check) {
   check_volume_shape(shape);
   check_options(options);
   const std::string where = shape.kind == "volume" ? "volume '" + shape.file.string() + "'" : shape.kind;
@@ -307,7 +322,7 @@ VolumeMesh mesh_volume(const VolumeShapeSpec& shape, const MeshOptions& options)
     return layered;
   }
   double size = 0;
-  const GmshTets g = mesh_in_gmsh(shape, options, where, size);
+  const GmshTets g = mesh_in_gmsh(shape, options, where, size, check);
   VolumeMesh m;
   m.order = g.order;
   m.nodes_per_element = (g.order + 1) * (g.order + 2) * (g.order + 3) / 6;

@@ -9,6 +9,7 @@
 // turned the same way about the file's origin.
 #pragma once
 
+#include "linear_tet_counts.hpp"
 #include "meridian_mesh.hpp"
 
 #include <array>
@@ -40,7 +41,9 @@ struct VolumeMesh {
 // options.order 1..6, options.size 0 = 0.4 of the smallest dimension (semi-axis; a file's
 // smallest half-side of its bounding box), options.wall_size > 0 grades the size towards the wall, or with
 // options.wall_layer > 0 is the first of the anisotropic wall layers (volume_wall_layers.hpp).
-VolumeMesh mesh_volume(const VolumeShapeSpec& shape, const MeshOptions& options);
+// `check`, if given, sees the linear mesh's counts before the high-order nodes are placed (not on a read .msh file or
+// with wall layers) and may throw to refuse it.
+VolumeMesh mesh_volume(const VolumeShapeSpec& shape, const MeshOptions& options, const LinearMeshCheck& check = {});
 
 // The checks of mesh_volume on the shape alone.
 void check_volume_shape(const VolumeShapeSpec& shape);

@@ -24,11 +24,11 @@ namespace {
 // more; a P4 layered mesh of 140 170 unknowns passed 22 GB), 63 kB per unknown and rank on two ranks (127 kB in all).
 // A mesh beyond the machine's memory is refused after meshing in one line, rather than killed by the system half-way.
 // Isotropic meshes: 60 kB per unknown measured at P3 (117 812 unknowns, 7.1 GB, 2026-11-28), 89 kB at P4.
-void refuse_beyond_memory(int unknowns, bool layered) {
+void refuse_beyond_memory(std::size_t unknowns, bool layered) {
   int ranks = 1;
   MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
   const double per_unknown = ranks == 1 ? (layered ? 1.3e5 : 9e4) : 9e4 * ranks;  // all ranks on this machine
-  const double need = per_unknown * unknowns;
+  const double need = per_unknown * static_cast<double>(unknowns);
   const double have = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
   if (have > 0 && need > 0.9 * have)
     throw std::runtime_error(fmt::format("the 3-D viscous mesh has {} unknowns, about {:.0f} GB for the factorisation "
@@ -43,10 +43,16 @@ ViscousVolumeSystem viscous_volume_system(const geometry::VolumeShapeSpec& shape
                                           double ekman, const std::function<void(const std::string&)>& progress) {
   if (!(ekman > 0)) throw std::runtime_error("the Ekman number must be > 0");
   ViscousVolumeSystem out;
+  // Refused on the linear mesh's counts already (VolumeTaylorHoodSpace's unknowns: three velocity components on every
+  // node off the wall, the order k − 1 pressure on its nodes but one), before the high-order nodes are placed.
+  const int k = mesh.order;
+  const auto check = [k](const geometry::LinearTetCounts& c) {
+    refuse_beyond_memory(3 * (c.nodes(k) - c.wall_nodes(k)) + c.nodes(k - 1) - 1, false);
+  };
   out.space = std::make_unique<VolumeTaylorHoodSpace>(
-      volume_mesh_on_root([&] { return geometry::mesh_volume(shape, mesh); }, PETSC_COMM_WORLD));
+      volume_mesh_on_root([&] { return geometry::mesh_volume(shape, mesh, check); }, PETSC_COMM_WORLD));
   const VolumeTaylorHoodSpace& space = *out.space;
-  refuse_beyond_memory(space.size(), mesh.wall_layer > 0);
+  refuse_beyond_memory(static_cast<std::size_t>(space.size()), mesh.wall_layer > 0);
   if (progress)
     progress(fmt::format("3-D viscous: {} tetrahedra of order {}, {} unknowns ({} velocity, {} wall nodes)",
                          space.num_elements(), space.order(), space.size(), space.velocity_dofs(), space.wall_nodes()));

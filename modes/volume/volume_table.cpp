@@ -88,14 +88,16 @@ void add_volume_bands(ModeTable& t, const VolumeSurvey& survey, double lambda_fl
 // refused at once rather than killed by the system half-way.
 // Under mpirun on one machine each further rank adds about 60 % of it (each holds the mesh and its own share; measured
 // 2026-11-28 at P6: 7.45 GB on one rank, 5.79 GB on each of two).
-void refuse_beyond_memory(const VolumeSpace& space) {
+// Called twice: on the linear mesh's counts (VolumeSpace's unknowns: every node but one; before gmsh spends most of a
+// large mesh's time on the high-order nodes) and on the mesh itself (a read .msh file, wall layers).
+void refuse_beyond_memory(std::size_t unknowns) {
   constexpr double kBytesPerUnknown = 1.3e5;
-  const double need = kBytesPerUnknown * space.ndof() * (1 + 0.6 * (world_ranks() - 1));
+  const double need = kBytesPerUnknown * static_cast<double>(unknowns) * (1 + 0.6 * (world_ranks() - 1));
   const double have = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
   if (have > 0 && need > have)
     throw std::runtime_error(fmt::format("the 3-D mesh has {} unknowns, about {:.0f} GB for the survey on {} rank(s), "
                                          "more than this machine's {:.0f} GB: use a larger --mesh-size, a --wall-size or "
-                                         "a lower --order", space.ndof(), need / 1e9, world_ranks(), have / 1e9));
+                                         "a lower --order", unknowns, need / 1e9, world_ranks(), have / 1e9));
 }
 
 std::string solver_text(const VolumeSurvey& s) {
@@ -134,9 +136,11 @@ VolumeTableResult make_volume_table(const VolumeTableRequest& request,
   lines.step("meshing the 3-D cavity");
   // Under mpirun rank 0 meshes and sends the mesh (gmsh may mesh differently on two ranks); every rank holds it
   // whole, the matrices and the velocity space are split between the ranks (volume_forms.hpp, volume_velocity.hpp).
-  VolumeSpace space(volume_mesh_on_root([&] { return geometry::mesh_volume(request.shape, request.mesh); },
+  const int order = request.mesh.order;
+  const auto check = [order](const geometry::LinearTetCounts& c) { refuse_beyond_memory(c.nodes(order) - 1); };
+  VolumeSpace space(volume_mesh_on_root([&] { return geometry::mesh_volume(request.shape, request.mesh, check); },
                                         PETSC_COMM_WORLD));
-  refuse_beyond_memory(space);
+  refuse_beyond_memory(space.ndof());
   lines.step(fmt::format("forms and the stiffness factorisation: {} unknowns", space.ndof()));
 
   const VolumeIntegrals fluid = integrate_volume(space);

@@ -389,3 +389,30 @@ TEST(ViscousVolume, WallLayersOfAUserFileFillItAndEndOnItsWall) {
     EXPECT_NE(std::string(e.what()).find("fold"), std::string::npos) << e.what();
   }
 }
+
+// The early memory refusal's arithmetic (geometry/linear_tet_counts.hpp): the linear mesh's counts, taken before gmsh
+// places the high-order nodes, give exactly the unknowns the two spaces then number on their own — VolumeSpace's every
+// node but one, VolumeTaylorHoodSpace's velocity off the wall and pressure of one order less — at orders 2 to 4, on a
+// tilted ellipsoid (curved wall) and on a user's box (flat faces, sharp edges).
+TEST(VolumeMemory, LinearCountsPredictTheSpacesUnknowns) {
+  const geometry::VolumeShapeSpec shapes[] = {{"ellipsoid", {{"a", 1.0}, {"b", 0.8}, {"c", 0.6}}, {}, 0.3},
+                                              {"volume", {}, std::string(RC_VOLUMES_DIR) + "/box.geo", 0.0}};
+  for (const auto& shape : shapes)
+    for (int order = 2; order <= 4; ++order) {
+      geometry::MeshOptions mesh;
+      mesh.order = order;
+      mesh.size = 0.3;
+      geometry::LinearTetCounts counts;
+      const auto m = geometry::mesh_volume(shape, mesh, [&](const geometry::LinearTetCounts& c) { counts = c; });
+      ASSERT_GT(counts.tetrahedra, 0u);
+      EXPECT_EQ(counts.tetrahedra, m.num_tetrahedra());
+      EXPECT_EQ(counts.vertices - counts.edges + counts.faces - counts.tetrahedra, 1u);  // Euler: a ball
+      const VolumeSpace scalar(m);
+      EXPECT_EQ(counts.nodes(order) - 1, static_cast<std::size_t>(scalar.ndof())) << shape.kind << " P" << order;
+      const VolumeTaylorHoodSpace th(m);
+      EXPECT_EQ(3 * (counts.nodes(order) - counts.wall_nodes(order)) + counts.nodes(order - 1) - 1,
+                static_cast<std::size_t>(th.size()))
+          << shape.kind << " P" << order;
+      EXPECT_EQ(counts.wall_nodes(order), static_cast<std::size_t>(th.wall_nodes())) << shape.kind << " P" << order;
+    }
+}
