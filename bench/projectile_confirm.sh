@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The projectile with a liquid payload (data/scenes/projectile_liquid.toml) at real Ekman numbers: its response-fit
 # table by the scene's recipe (timed), spectrum with the fit, chain-rom confirm (the roots with the liquid's own
-# response, timed), and the sweep over spin 3000 -> 800 rad/s by forced solves (timed, with its PNG). Writes
+# response, timed), the sweep over spin 3000 -> 800 rad/s by forced solves (timed, with its PNG), and the test's
+# checks with Krylov tables at four spins (tests/scenes/confirm_scene_check.py; about 5 minutes more). Writes
 # OUT/projectile_* and prints the times; docs/benchmarks.md, "Viscous chain at real Ekman numbers", records a run.
 #   bash bench/projectile_confirm.sh [BUILD_DIR] [OUT]        (about 10 minutes idle on 2 cores)
 set -euo pipefail
@@ -34,3 +35,9 @@ start=$(python3 -c 'import time; print(time.time())')
   -o "$OUT/projectile_spin_sweep_$day.csv" --png "$OUT/projectile_spin_sweep_$day.png" 2> "$OUT/projectile_spin_sweep_$day.log"
 echo "spin sweep, 12 points: $(seconds "$start") s"
 cat "$OUT/projectile_spin_sweep_$day.csv"
+# The test's checks (tests/scenes/confirm_scene_check.py) with the recipe's Krylov tables at four spins, where the
+# suite takes one (3000 rad/s) to keep its test short.
+start=$(python3 -c 'import time; print(time.time())')
+python3 "$ROOT/tests/scenes/confirm_scene_check.py" "$MODES" "$ROM" "$SCENE" "$work/check" 800,1500,2000,3000 |
+  grep -E "rad/s|Krylov tables"
+echo "Krylov tables at four spins against confirm: $(seconds "$start") s"

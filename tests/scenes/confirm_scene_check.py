@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """data/scenes/projectile_liquid.toml end to end at low cost, the confirmed roots checked independently.
 
-  confirm_scene_check.py CAVITY_MODES CHAIN_ROM SCENE DIR
+  confirm_scene_check.py CAVITY_MODES CHAIN_ROM SCENE DIR [SPINS]
 
 1. cavity-modes makes a deliberately coarse response fit (--fit --max-fit-error 1e-2) from the scene's "# recipe:"
    line on a P3 mesh; chain-rom confirm iterates the roots on Kononov's (22) with R from cavity-modes served forced
@@ -11,15 +11,17 @@
      Phi(sigma) = A' + C w/sigma + a g/sigma^2 - rho L^5 s R(s),
    from the body's A', C, a that `chain-rom spectrum --json` gives; |Phi| over the sum of its terms' sizes must be
    below 1e-9. Also: the fit's own roots move, and the verdict line names the growing root.
-2. The recipe's Krylov response table (docs/viscous.md), at --max-fit-error 1e-5, at 800, 1500, 2000 and 3000 rad/s,
-   each at its own Ekman number on the same P3 mesh: every root of its spectrum is the confirmed one to 1e-6
-   relative (at the recipe's 1e-4 they were 9e-7 to 3.9e-6 apart); after `confirm --refine-tables` (the table remade
-   with R exact at those roots; at 800 and 3000 rad/s) `spectrum`'s roots are the confirmed ones to 1e-9. A response
-   fit is refused.
+2. The recipe's Krylov response table (docs/viscous.md), at --max-fit-error 1e-5, at 3000 rad/s (Ek 1.3e-6; SPINS, a
+   comma-separated list, for others: bench/projectile_confirm.sh runs 800,1500,2000,3000), at its Ekman number on the
+   same P3 mesh: every root of its spectrum
+   is the confirmed one to 1e-6 relative (at the recipe's 1e-4 they were 9e-7 to 3.9e-6 apart); after `confirm
+   --refine-tables` (the table remade with R exact at those roots) `spectrum`'s roots are the confirmed ones to 1e-9.
+   A response fit is refused. Confirm runs with --refine 0 except once (its mesh study: scenes_confirm_mesh_error).
 3. Two tanks (two served processes) finish."""
 import json, os, re, shlex, subprocess, sys
 
 modes, rom, scene, out = sys.argv[1:5]
+spins = [float(x) for x in (sys.argv[5] if len(sys.argv) > 5 else "3000").split(",")]
 os.makedirs(out, exist_ok=True)
 os.chdir(out)
 text = open(scene).read()
@@ -63,7 +65,7 @@ for r in res["roots"]:
 print("worst residual of (22) at the confirmed roots %.2e; the fit's roots moved by up to %.2e" % (worst, moved))
 assert worst < 1e-9, "a confirmed root does not satisfy (22) with R itself"
 assert moved > 1e-6, "the coarse fit's roots should move: the check would pass by standing still"
-text_out = subprocess.run([rom, "confirm", "scene.toml", "--cavity-modes", modes], capture_output=True, text=True).stdout
+text_out = subprocess.run([rom, "confirm", "scene.toml", "--refine", "0", "--cavity-modes", modes], capture_output=True, text=True).stdout
 assert re.search(r"with the confirmed roots: stable: (no -- unstable .*: .* at|yes)", text_out), text_out
 
 # A sweep over spin: each point's roots by (22) with R served at its own Ek, on one mesh (the smallest Ek's, here
@@ -97,10 +99,10 @@ crow = [l.strip().split(",") for l in open("c.csv")][1:]
 assert len(crow) == 2 and abs(float(crow[0][2]) - res["growth"]) < 1e-9 * res["growth"], (crow, res["growth"])
 print("spectrum --confirm = confirm; sweep --confirm over C: growth %s 1/s" % [float(r[2]) for r in crow])
 
-# The recipe's own table kind at four spins: its roots are the forced-solve iteration's.
+# The recipe's own table kind at each spin of SPINS: its roots are the forced-solve iteration's.
 nu = float(re.search(r"^viscosity = (\S+)", text, re.M).group(1))
 worst_k = worst_r = 0.0
-for spin in (800, 1500, 2000, 3000):
+for spin in spins:
     ek = nu / (spin * L ** 2)
     kargs = re.sub(r" --max-fit-error \S+", " --max-fit-error 1e-5", re.sub(r" --ekman \S+", " --ekman %.10g" % ek, args))
     subprocess.run([modes] + shlex.split(kargs) + ["--order", "3", "--mesh-size", "0.25", "-o", "k%d.h5" % spin],
@@ -130,8 +132,8 @@ for spin in (800, 1500, 2000, 3000):
     worst_r = max(worst_r, dr)
     print("  %4d rad/s (Ek %.4g): %s; table roots to %.1e of the confirmed, %.1e after --refine-tables" % (
         spin, ek, ", ".join("%s %.6f%+.6fi" % (r["owner"], *r["confirmed"]) for r in kr), d, dr))
-print("Krylov tables at four spins: roots within %.1e of the forced-solve iteration's; refined: %.1e" % (
-    worst_k, worst_r))
+print("Krylov tables at %d spin(s): roots within %.1e of the forced-solve iteration's; refined: %.1e" % (
+    len(spins), worst_k, worst_r))
 assert worst_k < 1e-6, worst_k
 assert worst_r < 1e-9, worst_r
 # A response fit cannot be refined: one line, the table untouched.
