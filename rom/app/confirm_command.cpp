@@ -31,12 +31,6 @@ bool selected(const Root& r, const Spectrum& sp, bool all) {
   return all || r.owner.rfind("body", 0) == 0 || -r.sigma.imag() > sp.noise;
 }
 
-std::string complex_text(cd z) {
-  std::ostringstream os;
-  os << std::setprecision(10) << z.real() << (z.imag() < 0 ? " - " : " + ") << std::abs(z.imag()) << "i";
-  return os.str();
-}
-
 // After --refine-tables: the spectrum of the remade tables against the confirmed roots, one line per root; returns
 // the largest relative distance.
 double compare_refined(const Scene& scene, const std::vector<cd>& confirmed, std::ostream& log) {
@@ -49,7 +43,7 @@ double compare_refined(const Scene& scene, const std::vector<cd>& confirmed, std
     });
     const double d = std::abs(nearest->sigma - c) / std::abs(c);
     worst = std::max(worst, d);
-    log << "  " << std::setw(10) << nearest->owner << "  " << std::setw(34) << complex_text(nearest->sigma)
+    log << "  " << std::setw(10) << nearest->owner << "  " << std::setw(34) << root_text(nearest->sigma)
         << std::setprecision(2) << "  relative distance " << d << std::endl;
   }
   return worst;
@@ -97,8 +91,8 @@ Confirmation confirm_selected(const ChainModel& m, const Spectrum& sp, const Tan
     Root& r = c.spectrum.roots[j];
     if (!selected(r, sp, req.all)) continue;
     const ConfirmedRoot root = confirm_root(m, tanks.responses, r.sigma, settings);
-    log << "  " << std::setw(10) << r.owner << "  " << std::setw(34) << complex_text(root.start) << "  ->  "
-        << std::setw(34) << complex_text(root.sigma) << std::setprecision(2) << "  moved " << root.moved() << ", "
+    log << "  " << std::setw(10) << r.owner << "  " << std::setw(34) << root_text(root.start) << "  ->  "
+        << std::setw(34) << root_text(root.sigma) << std::setprecision(2) << "  moved " << root.moved() << ", "
         << root.evaluations << " evaluations" << (root.converged ? "" : "  NOT CONFIRMED: " + root.failure)
         << std::endl;
     c.roots.push_back({{"owner", r.owner}, {"table", {root.start.real(), root.start.imag()}},
@@ -183,7 +177,7 @@ void print_mesh_errors(std::ostream& out, const Confirmation& c, const MeshStudy
   for (std::size_t j = 0; j < c.selected.size(); ++j) {
     const MeshErrorEstimate& e = study.errors[j];
     out << "  " << std::setw(10) << c.spectrum.roots[c.selected[j]].owner << "  " << std::setw(34)
-        << complex_text(e.sigma) << "  " << rate_with_error(e)
+        << root_text(e.sigma) << "  " << rate_with_error(e)
         << (e.converged ? "  converged" : "  NOT CONVERGED") << (e.sign_settled ? "" : ", sign not settled");
     if (e.order > 0)
       out << std::setprecision(3) << "  (order " << e.order << ", extrapolated " << e.extrapolated << " 1/s)";

@@ -1,5 +1,6 @@
 #include "mesh_study.hpp"
 
+#include "root_confirmation.hpp"
 #include "tank_responses.hpp"
 
 #include <algorithm>
@@ -14,12 +15,6 @@ using cd = std::complex<double>;
 const cd kMissing{std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
 
 bool known(cd z) { return std::isfinite(z.real()) && std::isfinite(z.imag()); }
-
-std::string complex_text(cd z) {
-  std::ostringstream os;
-  os << std::setprecision(10) << z.real() << (z.imag() < 0 ? " - " : " + ") << std::abs(z.imag()) << "i";
-  return os.str();
-}
 
 // Root j's values on the levels where it converged, from level 0 up to the first level where it did not.
 std::vector<cd> converged_levels(const MeshStudyResult& r, std::size_t j) {
@@ -48,7 +43,7 @@ std::vector<cd> confirm_level(const Scene& scene, const ChainModel& m, const std
   for (std::size_t j = 0; j < before.size(); ++j) {
     if (!known(before[j])) continue;
     const ConfirmedRoot root = confirm_root(m, tanks.responses, before[j], settings);
-    log << "  " << std::setw(34) << complex_text(before[j]) << "  ->  " << std::setw(34) << complex_text(root.sigma)
+    log << "  " << std::setw(34) << root_text(before[j]) << "  ->  " << std::setw(34) << root_text(root.sigma)
         << std::setprecision(2) << "  moved " << root.moved() << ", " << root.evaluations << " evaluations"
         << (root.converged ? "" : "  NOT CONFIRMED: " + root.failure) << std::endl;
     if (root.converged) out[j] = root.sigma;

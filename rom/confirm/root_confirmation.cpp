@@ -6,7 +6,9 @@
 #include "eigen_dense.hpp"
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
+#include <sstream>
 
 namespace rc::rom {
 namespace {
@@ -116,6 +118,12 @@ ConfirmedRoot confirm_root(const ChainModel& m, const std::vector<TankResponse>&
   r.sigma = x1;
   r.failure = "no convergence in " + std::to_string(settings.max_steps) + " steps";
   return r;
+}
+
+std::string root_text(std::complex<double> z) {
+  std::ostringstream os;
+  os << std::setprecision(10) << z.real() << (z.imag() < 0 ? " - " : " + ") << std::abs(z.imag()) << "i";
+  return os.str();
 }
 
 }  // namespace rc::rom

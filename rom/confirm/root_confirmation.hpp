@@ -57,4 +57,7 @@ Eigen::MatrixXcd characteristic_matrix_with(const ChainModel& m, const std::vect
 ConfirmedRoot confirm_root(const ChainModel& m, const std::vector<TankResponse>& tanks, std::complex<double> start,
                            const ConfirmSettings& settings = {});
 
+// A root as confirm's lines print it: 10 significant digits, "re + imi" (or "re - |im|i").
+std::string root_text(std::complex<double> z);
+
 }  // namespace rc::rom
