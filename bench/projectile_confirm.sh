@@ -2,9 +2,10 @@
 # The projectile with a liquid payload (data/scenes/projectile_liquid.toml) at real Ekman numbers: its response-fit
 # table by the scene's recipe (timed), spectrum with the fit, chain-rom confirm (the roots with the liquid's own
 # response, timed), the sweep over spin 3000 -> 800 rad/s by forced solves (timed, with its PNG), and the test's
-# checks with Krylov tables at four spins (tests/scenes/confirm_scene_check.py; about 5 minutes more). Writes
+# checks with Krylov tables at four spins (tests/scenes/confirm_scene_check.py; 577 s idle when the suite ran them,
+# 2026-11-26). Writes
 # OUT/projectile_* and prints the times; docs/benchmarks.md, "Viscous chain at real Ekman numbers", records a run.
-#   bash bench/projectile_confirm.sh [BUILD_DIR] [OUT]        (about 10 minutes idle on 2 cores)
+#   bash bench/projectile_confirm.sh [BUILD_DIR] [OUT]        (about 20 minutes idle on 2 cores)
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 source "$ROOT/scripts/blas-core.sh"
