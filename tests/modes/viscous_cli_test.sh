@@ -2,16 +2,25 @@
 # cavity-modes --ekman on the command line: bad input gives one line, a non-zero exit and no file; a small good
 # run writes a viscous table that info --json shows; chain-rom reads it with the fluid's viscosity (and refuses it
 # with one line without one, or with one whose Ekman number is not the table's).
+#
+#   viscous_cli_test.sh CAVITY_MODES CHAIN_ROM [PART]
+#
+# PART runs one part (ctest registers each as its own test, so that neither takes two minutes): 'tables' (bad input,
+# tables, responses) or 'runs' (identical runs side by side, mpirun, the table in chain-rom); without it, both.
 set -u
-source "$(cd "$(dirname "$0")" && pwd)/cli_checks.sh"
+here=$(cd "$(dirname "$0")" && pwd)
+source "$here/cli_checks.sh"
 BIN=$1
 ROM=$2
+part=${3:-all}
+in_part() { [ "$part" = all ] || [ "$part" = "$1" ]; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
 small=(--order 3 --mesh-size 0.5 --no-convergence-check)
 small_response=(--order 3 --mesh-size 0.5)  # a response has no convergence check
 
+if in_part tables; then
 expect_error "zero Ekman number" "outside" "$BIN" sphere --radius 1 --ekman 0 -o out.h5
 expect_error "negative Ekman number" "outside" "$BIN" sphere --radius 1 --ekman -1e-3 -o out.h5
 expect_error "NaN Ekman number" "outside" "$BIN" sphere --radius 1 --ekman nan -o out.h5
@@ -21,11 +30,11 @@ expect_error "wall size without --ekman" "applies with --ekman only" "$BIN" sphe
 # A first mesh beyond the machine's memory (7.2 million real unknowns, 86 GB): refused in one line after meshing
 # (5 s), not killed by the system half-way.
 expect_error "viscous mesh beyond the machine's memory" "more than this machine's" "$BIN" section \
-  "$(dirname "$0")/../../data/sections/shell.geo" --ekman 1e-6 --target 1.0 -o out.h5
+  "$here/../../data/sections/shell.geo" --ekman 1e-6 --target 1.0 -o out.h5
 # --fields with --ekman: the damped modes' complex fields, checked against the table (check_viscous_fields.py).
 if "$BIN" sphere --radius 1 --ekman 1e-3 --modes 1 --no-convergence-check --fields \
      -o vfields.h5 > vfields.txt 2>&1 && [ -f vfields.xdmf ] && grep -q "mode0 V_imag" vfields.xdmf &&
-   /usr/bin/python3 "$(dirname "$0")/check_viscous_fields.py" vfields.h5; then
+   /usr/bin/python3 "$here/check_viscous_fields.py" vfields.h5; then
   ok "viscous --fields"
 else
   bad "viscous --fields: $(tail -2 vfields.txt)"
@@ -196,6 +205,12 @@ print("response: |R| peaks at sigma = %.2f%+.2fi (the damped spin-over mode is n
 assert abs(peak[0] - 1) <= 0.15
 '; then ok "response CSV"; else bad "response: $(tail -2 resp.txt)"; fi
 
+fi  # tables
+
+if in_part runs; then
+# visc.h5 and visc.json, made in tables
+[ -f visc.h5 ] || "$BIN" sphere --radius 1 --ekman 1e-2 --modes 1 "${small[@]}" -o visc.h5 > run.txt 2>&1
+[ -f visc.json ] || "$BIN" info visc.h5 --json > visc.json 2> /dev/null
 # The same command, the same table to far below the eigensolver's tolerance (1e-10): runs side by side (each loading
 # the other's core). They are not always identical to the bit: gmsh numbers the same mesh differently from run to run
 # (its order follows heap addresses), and the sums round differently (up to 4e-13 seen; docs/viscous.md,
@@ -421,4 +436,5 @@ print("viscous sweep: growth rates from %.3g to %.3g 1/s, %d of 24 stable" % (mi
 '; then ok "sweep of a viscous scene: growth rates, PNG"
 else bad "viscous sweep: $(tail -3 gsweep.txt)"
 fi
+fi  # runs
 finish
