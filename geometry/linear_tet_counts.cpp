@@ -7,26 +7,19 @@
 namespace rc::geometry {
 namespace {
 
-// Nodes of the order-p Lagrange simplex's interior, per entity of dimension d (0 vertex, 1 edge, 2 face, 3 tet).
-std::size_t interior_nodes(int order, int d) {
-  const std::size_t q = order > d ? static_cast<std::size_t>(order - 1) : 0;
-  switch (d) {
-    case 0: return 1;
-    case 1: return q;
-    case 2: return order >= 3 ? q * (q - 1) / 2 : 0;
-    default: return order >= 4 ? q * (q - 1) * (q - 2) / 6 : 0;
-  }
-}
+// Nodes inside one edge, face and tetrahedron of an order-p Lagrange mesh (p >= 1: each is 0 where none fits).
+std::size_t edge_nodes(int p) { return static_cast<std::size_t>(p - 1); }
+std::size_t face_nodes(int p) { return static_cast<std::size_t>((p - 1) * (p - 2) / 2); }
+std::size_t tet_nodes(int p) { return static_cast<std::size_t>((p - 1) * (p - 2) * (p - 3) / 6); }
 
 }  // namespace
 
 std::size_t LinearTetCounts::nodes(int order) const {
-  return vertices + edges * interior_nodes(order, 1) + faces * interior_nodes(order, 2) +
-         tetrahedra * interior_nodes(order, 3);
+  return vertices + edges * edge_nodes(order) + faces * face_nodes(order) + tetrahedra * tet_nodes(order);
 }
 
 std::size_t LinearTetCounts::wall_nodes(int order) const {
-  return wall_vertices + wall_edges * interior_nodes(order, 1) + wall_faces * interior_nodes(order, 2);
+  return wall_vertices + wall_edges * edge_nodes(order) + wall_faces * face_nodes(order);
 }
 
 LinearTetCounts count_linear_tets(const std::vector<std::array<std::size_t, 4>>& tets) {

@@ -47,7 +47,7 @@ ViscousVolumeSystem viscous_volume_system(const geometry::VolumeShapeSpec& shape
   // node off the wall, the order k − 1 pressure on its nodes but one), before the high-order nodes are placed.
   const int k = mesh.order;
   const auto check = [k](const geometry::LinearTetCounts& c) {
-    refuse_beyond_memory(3 * (c.nodes(k) - c.wall_nodes(k)) + c.nodes(k - 1) - 1, false);
+    if (k >= 2) refuse_beyond_memory(3 * (c.nodes(k) - c.wall_nodes(k)) + c.nodes(k - 1) - 1, false);  // else the space refuses
   };
   out.space = std::make_unique<VolumeTaylorHoodSpace>(
       volume_mesh_on_root([&] { return geometry::mesh_volume(shape, mesh, check); }, PETSC_COMM_WORLD));

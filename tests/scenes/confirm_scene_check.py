@@ -16,7 +16,8 @@
    same P3 mesh: every root of its spectrum
    is the confirmed one to 1e-6 relative (at the recipe's 1e-4 they were 9e-7 to 3.9e-6 apart); after `confirm
    --refine-tables` (the table remade with R exact at those roots) `spectrum`'s roots are the confirmed ones to 1e-9.
-   A response fit is refused. Confirm runs with --refine 0 except once (its mesh study: scenes_confirm_mesh_error).
+   A response fit is refused. `confirm` runs with --refine 0 (the mesh study is scenes_confirm_mesh_error's);
+   `spectrum --confirm`, which has no --refine, makes confirm's default study once.
 3. Two tanks (two served processes) finish."""
 import json, os, re, shlex, subprocess, sys
 
