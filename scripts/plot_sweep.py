@@ -12,7 +12,8 @@ Two: a map over both values, the margin in colour (log scale) on the unstable po
 white, the stability boundary drawn. Points the sweep could not evaluate (nan) are grey.
 --growth (chains with friction or viscous tanks, where the margin column is the largest growth rate -Im sigma,
 1/s, negative when every root decays; chain-rom sweep --png passes it for such scenes): the growth rate in colour
-on every point, red growing, blue decaying, on a symmetric log scale, the stability boundary drawn.
+on every point, red growing, blue decaying, on a symmetric log scale, the stability boundary drawn; over one value,
+the growth rate against it, with the mesh error as a bar where the CSV has a margin_error column (confirmed sweeps).
 `chain-rom sweep --png` runs this script. Uses Debian's python3-matplotlib and python3-numpy.
 """
 import argparse
@@ -22,11 +23,15 @@ import sys
 import plotting
 
 
-def draw_growth(fig, ax, np, SymLogNorm, keys, data, stable, growth):
-    """The largest growth rate (1/s; < 0: every root decays) of a dissipative chain."""
+def draw_growth(fig, ax, np, SymLogNorm, keys, data, stable, growth, error):
+    """The largest growth rate (1/s; < 0: every root decays) of a dissipative chain, with its measured mesh error
+    as a bar where the sweep made a mesh study."""
     if len(keys) == 1:
         x = data[:, 0]
         ax.plot(x, growth, "-", color="0.3", lw=1)
+        if np.isfinite(error).any():
+            ax.errorbar(x, growth, yerr=np.where(np.isfinite(error), error, 0), fmt="none", ecolor="0.4", capsize=3,
+                        lw=0.8, label="mesh error (confirm's mesh study)")
         ax.plot(x[stable == 0], growth[stable == 0], "o", ms=3, color="tab:red", label="growing (unstable)")
         ax.plot(x[stable == 1], growth[stable == 1], "o", ms=3, color="tab:blue", label="decaying (stable)")
         ax.axhline(0, color="k", lw=0.8)
@@ -96,9 +101,11 @@ def main() -> int:
         with open(args.csv) as f:
             header = f.readline().strip().split(",")
         data = np.genfromtxt(args.csv, delimiter=",", skip_header=1, ndmin=2)
-        tail = 4 if header[-1:] == ["gap"] else 3  # older CSVs and confirmed sweeps have no gap column
+        # the roots' sweeps end in gap, confirmed sweeps in their mesh study's margin_error,mesh_converged
+        tail = {"gap": 4, "mesh_converged": 5}.get(header[-1], 3)
         if header[-tail:][:3] != ["stable", "margin", "nonreal"] or len(header) - tail not in (1, 2):
-            raise ValueError("not a chain-rom sweep CSV (header must end in stable,margin,nonreal[,gap])")
+            raise ValueError("not a chain-rom sweep CSV (header must end in stable,margin,nonreal"
+                             "[,gap | ,margin_error,mesh_converged])")
         if data.size == 0 or data.shape[1] != len(header):
             raise ValueError("no rows, or rows do not match the header")
     except (OSError, ValueError) as e:
@@ -108,10 +115,11 @@ def main() -> int:
     keys = header[:-tail]
     stable, margin = data[:, -tail], data[:, 1 - tail]
     gap = data[:, -1] if tail == 4 else np.full(len(data), np.nan)
+    error = data[:, -2] if tail == 5 else np.full(len(data), np.nan)  # the growth rate's mesh error
     title = args.title or os.path.basename(args.csv)
     fig, ax = plt.subplots(figsize=(7, 5), dpi=110)
     if args.growth:
-        draw_growth(fig, ax, np, SymLogNorm, keys, data, stable, margin)
+        draw_growth(fig, ax, np, SymLogNorm, keys, data, stable, margin, error)
     elif len(keys) == 1:
         draw_distance(ax, np, keys, data[:, 0], stable, margin, gap)
     else:

@@ -7,6 +7,7 @@
 #include "confirm_command.hpp"
 #include "external_programs.hpp"
 #include "general_output.hpp"
+#include "mesh_study_options.hpp"
 #include "output.hpp"
 #include "scene.hpp"
 #include "spectrum.hpp"
@@ -52,6 +53,7 @@ Command add_spectrum_command(CLI::App& app) {
   cmd->add_flag("--confirm", o->confirm, "viscous tanks: what chain-rom confirm prints, the roots the verdict rests "
                                          "on with the fluid's own response (docs/rom.md, \"Confirmed roots\")");
   add_cavity_modes_option(cmd, o->confirm_request, "with --confirm: ");
+  add_mesh_study_options(cmd, o->confirm_request.mesh, "with --confirm: ");
   return {cmd, [o] {
             const Scene scene = parse_scene(o->scene);
             TableCache tables;
@@ -90,24 +92,7 @@ Command add_confirm_command(CLI::App& app) {
                 "then remake each viscous tank's Krylov response table with its R exact at the confirmed roots "
                 "(cavity-modes response ... --exact-at; the file replaced when that succeeds), so that spectrum, run "
                 "and sweep give the confirmed roots; prints how far the new tables' roots are from them");
-  cmd->add_option("--refine", o->request.mesh.refine,
-                  "mesh study: the roots again on this many finer meshes, each with every size of the one before "
-                  "halved, and each growth rate with its measured mesh error; 2 or more: the observed order and "
-                  "Richardson's extrapolation; 0: the table's mesh only, no error measured (default 1)")
-      ->check(CLI::Range(0, 3));
-  cmd->add_option("--mesh-size", o->request.mesh.base.mesh_size,
-                  "mesh study: the forced solves' interior element size in place of the tables' (a study of your own; "
-                  "the roots are then not the tables')")->check(CLI::PositiveNumber);
-  cmd->add_option("--order", o->request.mesh.base.order,
-                  "mesh study: the forced solves' Taylor-Hood order (2..6) in place of the tables'")->check(CLI::Range(2, 6));
-  cmd->add_option_function<std::string>(
-         "--refine-by", [o](const std::string& by) { o->request.mesh.by_order = by == "order"; },
-         "mesh study: 'size' (each level halves every element size) or 'order' (each level raises the Taylor-Hood "
-         "order by one, up to 6: where a halved mesh would not fit in memory) (default size)")
-      ->check(CLI::IsMember({"size", "order"}));
-  cmd->add_option("--mesh-tolerance", o->request.mesh.tolerance,
-                  "mesh study: a growth rate whose measured mesh error exceeds this fraction of it is NOT CONVERGED "
-                  "(default 0.02)")->check(CLI::PositiveNumber);
+  add_mesh_study_options(cmd, o->request.mesh);
   o->request.run = run_program_logged;
   return {cmd, [o] { return confirm_exit(parse_scene(o->scene), o->request); }};
 }

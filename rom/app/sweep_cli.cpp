@@ -8,15 +8,19 @@
 #include "general_confirmed_sweep.hpp"
 #include "confirmed_sweep.hpp"
 #include "external_programs.hpp"
+#include "mesh_study_options.hpp"
 #include "scene.hpp"
 #include "served_response.hpp"
 #include "sweep.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <iomanip>
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <sstream>
 #include <string>
 
 namespace rc::rom::app {
@@ -27,6 +31,7 @@ struct SweepOptions {
   double from1 = 0, to1 = 0, from2 = 0, to2 = 0;
   int steps1 = 0, steps2 = 0, threads = 0;
   bool confirm = false, no_track = false;
+  MeshStudy study;  // the confirmed sweeps' mesh study
   CLI::Option *from2_opt = nullptr, *to2_opt = nullptr, *steps2_opt = nullptr;
 };
 
@@ -77,10 +82,50 @@ SweepRequest resolve(const SweepOptions& o) {
   return r;
 }
 
+// The line under the sweep's summary: whether the mesh study converged every point's growth rates, and where not.
+std::string mesh_summary(const std::vector<ConfirmedSweepPoint>& points, const SweepOptions& o, bool general) {
+  if (general) return "mesh error NOT MEASURED: a chain without axial symmetry's 3-D tables have no mesh study yet";
+  if (o.study.refine == 0) return "mesh error NOT MEASURED (--refine 0: the roots on the tables' mesh only)";
+  std::ostringstream os;
+  os << std::setprecision(3);
+  const ConfirmedSweepPoint* first = nullptr;  // the first point not converged
+  const ConfirmedSweepPoint* worst = nullptr;  // the largest relative error of a point's largest growth
+  int open = 0, unsettled = 0, measured = 0;
+  for (const ConfirmedSweepPoint& p : points) {
+    if (!p.ok) continue;
+    ++measured;
+    if (!p.mesh_converged()) {
+      ++open;
+      if (!first) first = &p;
+    }
+    if (!p.sign_settled()) ++unsettled;
+    const double rel = p.growth_error / std::abs(p.growth);
+    if (!worst || !(rel <= worst->growth_error / std::abs(worst->growth))) worst = &p;
+  }
+  const auto where = [&](const ConfirmedSweepPoint& p) {
+    std::ostringstream w;
+    w << std::setprecision(6) << o.key1 << " = " << p.value << ": largest growth " << p.growth << std::setprecision(2)
+      << " ± " << p.growth_error << " 1/s";
+    if (!p.mesh_failure.empty()) w << " (" << p.mesh_failure << ")";
+    return w.str();
+  };
+  if (!worst) return "mesh error NOT MEASURED: no point was evaluated";
+  if (open == 0) {
+    os << "mesh error: every point's growth rates within " << 100 * o.study.tolerance << " % (largest at "
+       << where(*worst) << ")";
+    return os.str();
+  }
+  os << "NOT CONVERGED in the mesh at " << open << " of " << measured << " points (first at " << where(*first) << ")";
+  if (unsettled) os << "; the sign of a growth rate not settled at " << unsettled << " points";
+  os << " -- a finer mesh: --mesh-size, --order, --refine (docs/rom.md, \"Mesh error of confirmed roots\")";
+  return os.str();
+}
+
 int sweep_by_forced_solves(const SweepOptions& o, const SweepRequest& r) {
   const auto points = r.general ? run_general_confirmed_sweep(r.scene, r.a1, cavity_modes_binary(o.cavity_modes), 1e-10,
                                                               run_program_logged, std::cerr)
-                                : run_confirmed_sweep(r.scene, r.a1, cavity_modes_binary(o.cavity_modes), 1e-10, std::cerr);
+                                : run_confirmed_sweep(r.scene, r.a1, cavity_modes_binary(o.cavity_modes), 1e-10, o.study,
+                                                      std::cerr);
   write_confirmed_sweep(points, r.a1, o.out);
   int stable = 0, failed = 0;
   for (const auto& p : points) {
@@ -91,6 +136,7 @@ int sweep_by_forced_solves(const SweepOptions& o, const SweepRequest& r) {
               "fluid's own response\n", o.out.c_str(), points.size(), stable,
               static_cast<int>(points.size()) - stable - failed, failed,
               r.general ? "of the chain without axial symmetry" : "of (22)");
+  std::printf("%s\n", mesh_summary(points, o, r.general).c_str());
   if (!o.png.empty()) draw_plot(RC_PLOT_SWEEP_SCRIPT, o.out, o.png, {"--growth"});
   return 0;
 }
@@ -158,6 +204,7 @@ Command add_sweep_command(CLI::App& app) {
   cmd->add_flag("--confirm", o->confirm, "viscous tanks: every point's body and growing roots confirmed with the "
                 "fluid's own response by forced solves (docs/rom.md, \"Confirmed roots\"; always so for a key that "
                 "moves a viscous tank's Ekman number)");
+  add_mesh_study_options(cmd, o->study, "with --confirm or a key that moves Ek: ");
   cmd->add_flag("--no-track", o->no_track, "every point's roots by the eigen-solver (default: tracked from the "
                                            "neighbouring point's, checked, the eigen-solver where the check fails)");
   return {cmd, [o] {

@@ -17,9 +17,9 @@ const cd kMissing{std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<
 bool known(cd z) { return std::isfinite(z.real()) && std::isfinite(z.imag()); }
 
 // Root j's values on the levels where it converged, from level 0 up to the first level where it did not.
-std::vector<cd> converged_levels(const MeshStudyResult& r, std::size_t j) {
+std::vector<cd> converged_levels(const std::vector<std::vector<cd>>& levels, std::size_t j) {
   std::vector<cd> out;
-  for (const auto& level : r.levels) {
+  for (const auto& level : levels) {
     if (!known(level[j])) break;
     out.push_back(level[j]);
   }
@@ -34,26 +34,57 @@ std::vector<cd> confirm_level(const Scene& scene, const ChainModel& m, const std
   ServedMesh mesh = study.base;
   if (study.by_order) mesh.order_raise = level;
   else mesh.level = level;
-  if (study.by_order) log << "mesh level " << level << " (the order of level 0 raised by " << level << "):" << std::endl;
-  else log << "mesh level " << level << " (every size of level 0 halved " << level << (level == 1 ? " time" : " times")
-           << "):" << std::endl;
-  TankResponses tanks = serve_tanks(scene, m, binary, scratch, log, {}, nullptr, mesh);
+  log << level_title(level, study.by_order) << std::endl;
+  TankResponses tanks = serve_tanks(scene, m, binary, scratch, log, study.mesh_ekman, nullptr, mesh);
   r.unknowns.push_back(tanks.served.empty() ? 0 : tanks.served.front()->unknowns());
-  std::vector<cd> out(before.size(), kMissing);
-  for (std::size_t j = 0; j < before.size(); ++j) {
-    if (!known(before[j])) continue;
-    const ConfirmedRoot root = confirm_root(m, tanks.responses, before[j], settings);
-    log << "  " << std::setw(34) << root_text(before[j]) << "  ->  " << std::setw(34) << root_text(root.sigma)
-        << std::setprecision(2) << "  moved " << root.moved() << ", " << root.evaluations << " evaluations"
-        << (root.converged ? "" : "  NOT CONFIRMED: " + root.failure) << std::endl;
-    if (root.converged) out[j] = root.sigma;
-  }
+  std::vector<cd> out = iterate_roots(m, tanks.responses, before, settings, log);
   r.symmetry_defect.push_back(symmetry_defect(m, tanks.responses, out));
   r.solves += tanks.solves();
   return out;
 }
 
 }  // namespace
+
+std::string level_title(int level, bool by_order) {
+  std::ostringstream os;
+  if (by_order) os << "mesh level " << level << " (the order of level 0 raised by " << level << "):";
+  else os << "mesh level " << level << " (every size of level 0 halved " << level << (level == 1 ? " time" : " times")
+          << "):";
+  return os.str();
+}
+
+std::vector<cd> iterate_roots(const ChainModel& m, const std::vector<TankResponse>& tanks, const std::vector<cd>& before,
+                              const ConfirmSettings& settings, std::ostream& log) {
+  std::vector<cd> out(before.size(), kMissing);
+  for (std::size_t j = 0; j < before.size(); ++j) {
+    if (!known(before[j])) continue;
+    const ConfirmedRoot root = confirm_root(m, tanks, before[j], settings);
+    log << "  " << std::setw(34) << root_text(before[j]) << "  ->  " << std::setw(34) << root_text(root.sigma)
+        << std::setprecision(2) << "  moved " << root.moved() << ", " << root.evaluations << " evaluations"
+        << (root.converged ? "" : "  NOT CONFIRMED: " + root.failure) << std::endl;
+    if (root.converged) out[j] = root.sigma;
+  }
+  return out;
+}
+
+std::vector<MeshErrorEstimate> level_errors(const std::vector<std::vector<cd>>& levels, const MeshStudy& study,
+                                            double floor) {
+  std::vector<MeshErrorEstimate> errors;
+  for (std::size_t j = 0; j < (levels.empty() ? 0 : levels.front().size()); ++j) {
+    const std::vector<cd> values = converged_levels(levels, j);
+    if (values.size() >= 2) {
+      errors.push_back(mesh_error(values, study.tolerance, floor, !study.by_order));
+      continue;
+    }
+    MeshErrorEstimate none;  // one level only: nothing measured
+    none.sigma = values.empty() ? kMissing : values.front();
+    none.growth = -none.sigma.imag();
+    none.extrapolated = none.growth;
+    none.error = std::numeric_limits<double>::infinity();
+    errors.push_back(none);
+  }
+  return errors;
+}
 
 bool MeshStudyResult::all_converged() const {
   return !errors.empty() && std::all_of(errors.begin(), errors.end(), [](const auto& e) { return e.converged; });
@@ -98,19 +129,7 @@ MeshStudyResult study_mesh(const Scene& scene, const ChainModel& m, const std::v
       break;
     }
   }
-  for (std::size_t j = 0; j < level0.size(); ++j) {
-    const std::vector<cd> levels = converged_levels(r, j);
-    if (levels.size() >= 2) {
-      r.errors.push_back(mesh_error(levels, study.tolerance, floor, !study.by_order));
-      continue;
-    }
-    MeshErrorEstimate none;  // one level only: nothing measured
-    none.sigma = levels.empty() ? kMissing : levels.front();
-    none.growth = -none.sigma.imag();
-    none.extrapolated = none.growth;
-    none.error = std::numeric_limits<double>::infinity();
-    r.errors.push_back(none);
-  }
+  r.errors = level_errors(r.levels, study, floor);
   return r;
 }
 

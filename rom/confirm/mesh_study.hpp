@@ -23,6 +23,9 @@ struct MeshStudy {
   int refine = 1;           // finer levels after level 0; 0: no study
   bool by_order = false;    // each level raises the Taylor-Hood order by one instead of halving every size
   double tolerance = 0.02;  // relative error of a growth rate above which it is "not converged"
+  // Per body, the Ekman number whose wall layers every level's mesh is made for (a sweep over spin: its smallest,
+  // so that each level is one mesh for the whole sweep); empty or 0: the served Ek's own, as the tables'.
+  std::vector<double> mesh_ekman;
 };
 
 struct MeshStudyResult {
@@ -45,6 +48,20 @@ struct MeshStudyResult {
 // root and tank.
 double symmetry_defect(const ChainModel& m, const std::vector<TankResponse>& tanks,
                        const std::vector<std::complex<double>>& roots);
+
+// "mesh level 1 (every size of level 0 halved 1 time):", the heading of a level's lines in the log.
+std::string level_title(int level, bool by_order);
+
+// Each root of `before` (NaN: skipped) iterated on (22) with `tanks`' R from its value there, one line per root to
+// `log`: the root where its iteration converged, NaN where it did not. One level of a mesh study.
+std::vector<std::complex<double>> iterate_roots(const ChainModel& m, const std::vector<TankResponse>& tanks,
+                                                const std::vector<std::complex<double>>& before,
+                                                const ConfirmSettings& settings, std::ostream& log);
+
+// Root j's mesh error from its values levels[0][j], levels[1][j], ... up to the first level where it did not converge
+// (mesh_error.hpp); a root with one level only has an infinite error (nothing measured).
+std::vector<MeshErrorEstimate> level_errors(const std::vector<std::vector<std::complex<double>>>& levels,
+                                            const MeshStudy& study, double floor);
 
 // Levels 1 .. study.refine: every viscous tank served on the level (the level before shut first, so that one level's
 // factorisations are in memory at a time), each root of `level0` iterated from its value on the level before.

@@ -16,8 +16,8 @@
    same P3 mesh: every root of its spectrum
    is the confirmed one to 1e-6 relative (at the recipe's 1e-4 they were 9e-7 to 3.9e-6 apart); after `confirm
    --refine-tables` (the table remade with R exact at those roots) `spectrum`'s roots are the confirmed ones to 1e-9.
-   A response fit is refused. `confirm` runs with --refine 0 (the mesh study is scenes_confirm_mesh_error's);
-   `spectrum --confirm`, which has no --refine, makes confirm's default study once.
+   A response fit is refused. `confirm`, `spectrum --confirm` and the sweeps run with --refine 0 (the mesh study is
+   scenes_confirm_mesh_error's).
 3. Two tanks (two served processes) finish."""
 import json, os, re, shlex, subprocess, sys
 
@@ -72,7 +72,7 @@ assert re.search(r"with the confirmed roots: stable: (no -- unstable .*: .* at|y
 # A sweep over spin: each point's roots by (22) with R served at its own Ek, on one mesh (the smallest Ek's, here
 # the table's at 3000 rad/s): the first point's roots must be confirm's.
 sw = subprocess.run([rom, "sweep", "scene.toml", "--param", "body[1].spin", "--from", "3000", "--to", "2000", "--steps",
-                     "3", "-o", "spin.csv", "--cavity-modes", modes], capture_output=True, text=True)
+                     "3", "-o", "spin.csv", "--refine", "0", "--cavity-modes", modes], capture_output=True, text=True)
 print(sw.stderr)
 assert sw.returncode == 0, sw.stdout + sw.stderr
 rows = [l.strip().split(",") for l in open("spin.csv")][1:]
@@ -90,11 +90,11 @@ two = subprocess.run([rom, "sweep", "scene.toml", "--param", "body[1].spin", "--
                      capture_output=True, text=True)
 assert two.returncode == 1 and "one value at a time" in two.stderr and not os.path.exists("x.csv"), two.stderr
 # spectrum --confirm is confirm; sweep --confirm over a key that leaves Ek alone serves each tank once.
-alias = json.loads(subprocess.run([rom, "spectrum", "scene.toml", "--confirm", "--json", "--cavity-modes", modes],
+alias = json.loads(subprocess.run([rom, "spectrum", "scene.toml", "--confirm", "--refine", "0", "--json", "--cavity-modes", modes],
                                   capture_output=True, text=True, check=True).stdout)
 assert [r["confirmed"] for r in alias["roots"]] == [r["confirmed"] for r in res["roots"]], alias
 sc = subprocess.run([rom, "sweep", "scene.toml", "--param", "body[1].C", "--from", "0.004", "--to", "0.005", "--steps",
-                     "2", "--confirm", "-o", "c.csv", "--cavity-modes", modes], capture_output=True, text=True)
+                     "2", "--confirm", "--refine", "0", "-o", "c.csv", "--cavity-modes", modes], capture_output=True, text=True)
 assert sc.returncode == 0 and "served once for every point" in sc.stderr, sc.stderr
 crow = [l.strip().split(",") for l in open("c.csv")][1:]
 assert len(crow) == 2 and abs(float(crow[0][2]) - res["growth"]) < 1e-9 * res["growth"], (crow, res["growth"])
