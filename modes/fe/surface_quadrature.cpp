@@ -4,9 +4,9 @@
 
 namespace rc::modes {
 
-std::vector<SurfacePoint> free_surface_points(const geometry::MeridianMesh& mesh, const geometry::ReferenceEdge& edge) {
+std::vector<FreeSurfacePoint> free_surface_points(const geometry::MeridianMesh& mesh, const geometry::ReferenceEdge& edge) {
   const int nn = mesh.order + 1;
-  std::vector<SurfacePoint> out;
+  std::vector<FreeSurfacePoint> out;
   for (std::size_t e = 0; e < mesh.free_edges.size(); e += nn) {
     const int* v = &mesh.free_edges[e];
     for (std::size_t q = 0; q < edge.weights.size(); ++q) {

@@ -8,7 +8,7 @@
 
 namespace rc::modes {
 
-struct SurfacePoint {
+struct FreeSurfacePoint {
   double z = 0;                  // height of the point
   double w = 0;                  // quadrature weight of dz (the surface is the line r = b)
   const int* nodes = nullptr;    // the edge's order + 1 mesh nodes
@@ -16,6 +16,6 @@ struct SurfacePoint {
 };
 
 // Every Gauss point of `edge`'s rule on every free edge; `edge` must outlive the points (they point into it).
-std::vector<SurfacePoint> free_surface_points(const geometry::MeridianMesh& mesh, const geometry::ReferenceEdge& edge);
+std::vector<FreeSurfacePoint> free_surface_points(const geometry::MeridianMesh& mesh, const geometry::ReferenceEdge& edge);
 
 }  // namespace rc::modes

@@ -48,7 +48,7 @@ FreeSurfaceForms assemble_free_surface_forms(const FESpace& space, double centro
   const geometry::ReferenceEdge edge = geometry::reference_edge(p, 2 * p + 2);
   std::vector<Eigen::Triplet<double>> entries;
   double z0 = 0, z1 = 0, z2 = 0;
-  for (const SurfacePoint& q : free_surface_points(mesh, edge)) {
+  for (const FreeSurfacePoint& q : free_surface_points(mesh, edge)) {
     const double w = q.w, zp = q.z - centroid_z;
     z0 += w; z1 += zp * w; z2 += zp * zp * w;
     for (int a = 0; a < nn; ++a) {

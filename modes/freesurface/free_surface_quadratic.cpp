@@ -14,7 +14,6 @@ namespace rc::modes {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // Zhukovsky's potential with the free surface at zero potential: data r = f1 − f2 about the centroid, q = g1 per
 // unit offset, solved on the dofs off the surface; J(c) = π (r + cq)ᵀ M⁻¹ (r + cq).
@@ -32,9 +31,9 @@ void zhukovsky_dirichlet(const FreeSurfaceQuadratic& f, PartialFillSpectrum& out
   if (ldlt.info() != Eigen::Success) throw std::runtime_error("free surface: Zhukovsky's factorisation failed");
   const Eigen::VectorXd r = select * (f.f1 - f.f2), q = select * f.surface.g1;
   const Eigen::VectorXd Ar = ldlt.solve(r);
-  out.J_D = kPi * r.dot(Ar);
-  out.J_D1 = kPi * q.dot(Ar);
-  out.J_D2 = kPi * q.dot(ldlt.solve(q));
+  out.J_D = std::numbers::pi * r.dot(Ar);
+  out.J_D1 = std::numbers::pi * q.dot(Ar);
+  out.J_D2 = std::numbers::pi * q.dot(ldlt.solve(q));
 }
 
 }  // namespace

@@ -24,7 +24,6 @@ struct Projections {
   Eigen::VectorXd mu, s, t, w;  // per axial vector: μ, ∫ z′ψ, ∫ ψ′, ∫ ψ (Bz-orthonormal ψ)
 };
 
-constexpr double kPi = std::numbers::pi;
 
 // The quartic's radial vector x of one eigenvector of the companion form (z = (x, y, λx, λy)), made real: the
 // eigenvalue is real, so the eigenvector is real up to a complex phase.
@@ -106,9 +105,9 @@ void zhukovsky_dirichlet(const Projections& P, PartialFillSpectrum& out) {
     Eigen::LLT<Eigen::MatrixXd> llt((f.A + P.mu(k) * f.B).bottomRightCorner(n - 1, n - 1));
     if (llt.info() != Eigen::Success) throw std::runtime_error("partially filled cylinder: Zhukovsky factorisation failed");
     const Eigen::VectorXd Ar = llt.solve(r);
-    out.J_D += kPi * r.dot(Ar);
-    out.J_D1 += kPi * q.dot(Ar);
-    out.J_D2 += kPi * q.dot(llt.solve(q));
+    out.J_D += std::numbers::pi * r.dot(Ar);
+    out.J_D1 += std::numbers::pi * q.dot(Ar);
+    out.J_D2 += std::numbers::pi * q.dot(llt.solve(q));
   }
 }
 
@@ -135,9 +134,9 @@ PartialFillSpectrum solve_partially_filled_cylinder(double radius, double height
                z2 = Z.integral([](double z) { return z * z; });
   out.fluid = fluid_from_moments(r1 * z0, r1 * z1, r1 * z2, r3 * z0);
   const double zc = out.fluid.centroid_z;
-  out.K0 = kPi * b * b * z0;
-  out.K1 = kPi * b * b * (z1 - zc * z0);
-  out.K2 = kPi * b * b * (z2 - 2 * zc * z1 + zc * zc * z0);
+  out.K0 = std::numbers::pi * b * b * z0;
+  out.K1 = std::numbers::pi * b * b * (z1 - zc * z0);
+  out.K2 = std::numbers::pi * b * b * (z2 - 2 * zc * z1 + zc * zc * z0);
   out.radial_dofs = R.ndof();
   out.axial_dofs = Z.ndof();
 

@@ -11,7 +11,6 @@
 namespace rc::modes::exact {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 double J0(double x) { return std::cyl_bessel_j(0.0, x); }
 double J1(double x) { return std::cyl_bessel_j(1.0, x); }
@@ -40,8 +39,8 @@ double mode_energy(double b, double a, double h, double k, double q, double lamb
       norm += (Vr * Vr + Vphi * Vphi + Vz * Vz) * r * w;
     }
   }
-  coupling *= -kPi;
-  norm *= 2 * kPi;
+  coupling *= -std::numbers::pi;
+  norm *= 2 * std::numbers::pi;
   return 2 * coupling * coupling / norm;
 }
 
@@ -75,7 +74,7 @@ void for_each_root(const std::function<double(double)>& f, double max_xi, const 
 
 SpheroidValues spheroid(double a, double c) {
   SpheroidValues s;
-  s.volume = 4 * kPi * a * a * c / 3;
+  s.volume = 4 * std::numbers::pi * a * a * c / 3;
   s.A_f = s.volume * (a * a + c * c) / 5;
   s.J_zh = s.volume * (a * a - c * c) * (a * a - c * c) / (5 * (a * a + c * c));
   s.mode.lambda = 2 * a * a / (a * a + c * c);
@@ -88,7 +87,7 @@ std::vector<Mode> cylinder_modes(double a, double height, int max_axial, double 
   const double h = height / 2;
   std::vector<Mode> modes;
   for (int n = 0; n < max_axial; ++n) {
-    const double ka = (2 * n + 1) * kPi / (2 * h) * a;
+    const double ka = (2 * n + 1) * std::numbers::pi / (2 * h) * a;
     for (int sign : {+1, -1}) {
       // Along the branch κ = ±sqrt(1 + ξ²/(ka)²), f(ξ) = ξ J0(ξ) + (κ − 1) J1(ξ) (since ξ J1′ = ξ J0 − J1).
       auto f = [&](double xi) {
@@ -112,7 +111,7 @@ std::vector<Mode> cylinder_modes(double a, double height, int max_axial, double 
 }
 
 double cylinder_zhukovsky(double a, double height, int terms) {
-  const double h = height / 2, mass = kPi * a * a * height;
+  const double h = height / 2, mass = std::numbers::pi * a * a * height;
   // Roots of J1′(ξ) = J0(ξ) − J1(ξ)/ξ: one in each interval of length π beyond the first at ≈ 1.8412.
   auto g = [](double x) { return J1prime(x); };
   double sum = 0, x0 = 0.5;
@@ -133,7 +132,7 @@ std::vector<Mode> annular_cylinder_modes(double b, double a, double height, int 
   const double h = height / 2, beta = b / a;
   std::vector<Mode> modes;
   for (int n = 0; n < max_axial; ++n) {
-    const double ka = (2 * n + 1) * kPi / (2 * h) * a;
+    const double ka = (2 * n + 1) * std::numbers::pi / (2 * h) * a;
     for (int sign : {+1, -1}) {
       const auto kappa_of = [&](double xi) { return sign * std::sqrt(1 + xi * xi / (ka * ka)); };
       // x F' + κ F at x for F = J1 and F = Y1 (x F' = x F0 − F1 for both kinds).

@@ -12,7 +12,6 @@
 namespace rc::modes {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 }  // namespace
 
@@ -154,10 +153,10 @@ Combination combine(const PoincareForms& forms, const std::vector<Eigenpair>& me
   std::vector<double> a(k), gram(k * k);
   for (std::size_t l = 0; l < k; ++l) {
     const double ll = members[l].lambda, Dl = 4 - ll * ll;
-    a[l] = -kPi * (dot(forms.f1, x[l]) / (2 - ll) + dot(forms.f2, x[l]) / ll);
+    a[l] = -std::numbers::pi * (dot(forms.f1, x[l]) / (2 - ll) + dot(forms.f2, x[l]) / ll);
     for (std::size_t j = 0; j < k; ++j) {
       const double lj = members[j].lambda, Dj = 4 - lj * lj;
-      gram[l * k + j] = 2 * kPi * (((ll * lj + 4) * dot(x[l], khx[j]) + 2 * (ll + lj) * dot(x[l], gcx[j])) / (Dl * Dj) +
+      gram[l * k + j] = 2 * std::numbers::pi * (((ll * lj + 4) * dot(x[l], khx[j]) + 2 * (ll + lj) * dot(x[l], gcx[j])) / (Dl * Dj) +
                                    dot(x[l], kzx[j]) / (ll * lj));
     }
   }

@@ -10,7 +10,6 @@
 namespace rc::modes {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 PMat create_matrix(int n, const std::vector<PetscInt>& nnz) {
   PMat A;
@@ -54,11 +53,11 @@ FluidIntegrals integrate_fluid(const FESpace& space) {
 
 FluidIntegrals fluid_from_moments(double r1, double zr, double zzr, double r3) {
   FluidIntegrals f;
-  f.volume = 2 * kPi * r1;
+  f.volume = 2 * std::numbers::pi * r1;
   f.centroid_z = zr / r1;
   const double zz_about_centroid = zzr - r1 * f.centroid_z * f.centroid_z;
-  f.A_f = kPi * (r3 + 2 * zz_about_centroid);
-  f.C_f = 2 * kPi * r3;
+  f.A_f = std::numbers::pi * (r3 + 2 * zz_about_centroid);
+  f.C_f = 2 * std::numbers::pi * r3;
   return f;
 }
 

@@ -16,7 +16,6 @@
 namespace rc::modes {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // Every eigenpair of one radial problem (header), with its E from the well-conditioned formula
 // (coupling.hpp) and the projections s_n, t_n of the coupling functionals on the axial vector.
@@ -155,7 +154,7 @@ SeparableSpectrum solve_separable_cylinder(double radius, double height, const S
     const Eigen::VectorXd b = rf.g1 * s(k) - rf.g2 * t(k);
     Eigen::LLT<Eigen::MatrixXd> llt(rf.A + mu(k) * rf.B);
     if (llt.info() != Eigen::Success) throw std::runtime_error("separable cylinder: Zhukovsky factorisation failed");
-    out.J_zh += kPi * b.dot(llt.solve(b));
+    out.J_zh += std::numbers::pi * b.dot(llt.solve(b));
   }
   out.sum_rule = out.fluid.A_f - out.J_zh;
 

@@ -6,7 +6,6 @@
 namespace rc::modes {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // 8-point Gauss–Legendre on [0, 1]: the integrand has only |x|^{1/2} kinks (critical latitudes, where
 // λ0 ± 2c = 0), so many short panels beat a high order.
@@ -40,7 +39,7 @@ std::complex<double> boundary_layer_correction(double lambda0, const std::vector
     const double c = w.sr;  // ẑ·(s × e_φ) with s × e_φ = (−s_z, 0, s_r)
     const std::complex<double> qp = std::sqrt(I * (lambda0 + 2 * c)), qm = std::sqrt(I * (lambda0 - 2 * c));
     const double Wp = std::norm(Us + I * Uphi), Wm = std::norm(Us - I * Uphi);
-    sum += 0.5 * (qp * Wp + qm * Wm) * 2.0 * kPi * w.r * w.weight;  // dS = 2π r dl
+    sum += 0.5 * (qp * Wp + qm * Wm) * 2.0 * std::numbers::pi * w.r * w.weight;  // dS = 2π r dl
   }
   return I * sum / norm2;
 }
@@ -74,10 +73,10 @@ std::vector<SurfacePoint> ellipsoid_surface(double a, double b, double c, int pa
   std::vector<SurfacePoint> wall;
   for (int i = 0; i < panels; ++i)
     for (std::size_t gi = 0; gi < kX.size(); ++gi) {
-      const double t = kPi * (i + kX[gi]) / panels, wt = kW[gi] * kPi / panels;
+      const double t = std::numbers::pi * (i + kX[gi]) / panels, wt = kW[gi] * std::numbers::pi / panels;
       for (int j = 0; j < 2 * panels; ++j)
         for (std::size_t gj = 0; gj < kX.size(); ++gj) {
-          const double f = kPi * (j + kX[gj]) / panels, wf = kW[gj] * kPi / panels;
+          const double f = std::numbers::pi * (j + kX[gj]) / panels, wf = kW[gj] * std::numbers::pi / panels;
           const double st = std::sin(t), ct = std::cos(t), sf = std::sin(f), cf = std::cos(f);
           SurfacePoint p;
           p.x = {a * st * cf, b * st * sf, c * ct};
@@ -96,9 +95,9 @@ std::vector<WallPoint> ellipse_wall(double a, double c, int panels) {
   std::vector<WallPoint> wall;
   for (int p = 0; p < panels; ++p)
     for (std::size_t g = 0; g < kX.size(); ++g) {
-      const double t = -kPi / 2 + kPi * (p + kX[g]) / panels;  // r = a cos t, z = c sin t
+      const double t = -std::numbers::pi / 2 + std::numbers::pi * (p + kX[g]) / panels;  // r = a cos t, z = c sin t
       const double dr = -a * std::sin(t), dz = c * std::cos(t), speed = std::hypot(dr, dz);
-      wall.push_back({a * std::cos(t), c * std::sin(t), dr / speed, dz / speed, kW[g] * speed * kPi / panels});
+      wall.push_back({a * std::cos(t), c * std::sin(t), dr / speed, dz / speed, kW[g] * speed * std::numbers::pi / panels});
     }
   return wall;
 }

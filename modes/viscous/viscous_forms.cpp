@@ -148,7 +148,7 @@ int add_free_surface(const TaylorHoodSpace& space, double centroid_z, int first,
   if (!this_rank) return count;
   const double b = mesh.free_radius, b2 = b * b;
   const geometry::ReferenceEdge edge = geometry::reference_edge(mesh.order, 2 * mesh.order + 2);
-  for (const SurfacePoint& q : free_surface_points(mesh, edge)) {
+  for (const FreeSurfacePoint& q : free_surface_points(mesh, edge)) {
     for (int a = 0; a < nn; ++a) {
       const int ea = eta[q.nodes[a]];
       if (ea < 0) continue;

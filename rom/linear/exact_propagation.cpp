@@ -16,8 +16,10 @@ namespace rc::rom {
 namespace {
 using cd = std::complex<double>;
 
-double condition_of(const auto& V) {
-  Eigen::BDCSVD<std::decay_t<decltype(V)>> svd(V);  // singular values only
+// The 2-norm condition number of the eigenvectors, real or complex: both through the one complex SVD that
+// common/eigen_dense.hpp compiles once (a real BDCSVD of its own cost this file about 60 s of compile time).
+double condition_of(const Eigen::MatrixXcd& V) {
+  const Eigen::BDCSVD<Eigen::MatrixXcd> svd(V);  // singular values only
   const auto& sv = svd.singularValues();
   return sv(0) / sv(sv.size() - 1);
 }
@@ -65,7 +67,7 @@ ModalForm modal_form(const FirstOrderSystem& f, bool undamped, double real_toler
       mf.W = S.asDiagonal() * es.pseudoEigenvectors();  // real eigenvectors when all eigenvalues are real
       mf.W.colwise().normalize();  // unit columns again after the unbalancing (keeps cond(W) honest)
       mf.sigma = es.eigenvalues().real();
-      mf.condition = condition_of(mf.W);
+      mf.condition = condition_of(mf.W.cast<cd>());
       mf.usable = std::isfinite(mf.condition) && mf.condition < kMaxEigvecCondition;
       mf.undamped_real = true;
       if (mf.usable) return mf;
