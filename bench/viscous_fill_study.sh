@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# One tank of the spacecraft of data/scenes/spacecraft_nutation.toml (800 kg, A = 400, C = 520 kg m^2, 60 rpm; the
+# tank's scale 0.4 m, its centre 0.3 m above the centre of mass) with any built-in shape, fill and Ekman number, the
+# way a user runs it: the default response table, chain-rom spectrum, chain-rom confirm with its defaults (the mesh
+# study), and a reference: confirm on P4 then P5 with a quarter of the table's interior size. Appends one CSV row per
+# run to OUT/viscous_fill_study.csv (shape, fill, Ek, each decay rate with its bar, the times) and prints them:
+# docs/trust.md's viscous rows come from it.
+#   bash bench/viscous_fill_study.sh "sphere --radius 1" 0.6 9.05192e-7 [BUILD_DIR] [OUT]
+#   (the 60 %-full sphere: about 8 minutes idle on 2 cores, 11 GB at most; smaller liquids need finer references)
+set -euo pipefail
+ROOT=$(cd "$(dirname "$0")/.." && pwd)
+SHAPE=${1:?usage: viscous_fill_study.sh SHAPE_ARGS FILL EKMAN [BUILD_DIR] [OUT]}
+FILL=${2:?fill}
+EK=${3:?Ekman number}
+BUILD=${4:-$ROOT/build}
+OUT=${5:-$ROOT/bench/results}
+MODES=$BUILD/modes/cavity-modes
+ROM=$BUILD/rom/chain-rom
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+mkdir -p "$OUT"
+cd "$work"
+now() { date +%s.%N; }
+since() { python3 -c "print(round($(now) - $1, 1))"; }
+fill_args=()
+[ "$FILL" = 1 ] || fill_args=(--fill "$FILL")
+read -r -a shape <<< "$SHAPE"
+nu=$(python3 -c "print($EK * 6.2832 * 0.16)")
+sed -e "s#\"../../out/tables/sphere_fill0.6_hydrazine.h5\"#\"tank.h5\"#" -e "s#^viscosity = .*#viscosity = $nu#" \
+  "$ROOT/data/scenes/spacecraft_nutation.toml" > scene.toml
+t=$(now)
+"$MODES" response "${shape[@]}" "${fill_args[@]}" --ekman "$EK" --sigma -2.5:2:181 -o tank.h5 > table.txt 2>&1
+table_s=$(since "$t")
+h=$("$MODES" info tank.h5 | sed -n '1s/.*h = \([0-9.e-]*\),.*/\1/p')
+spectrum=$("$ROM" spectrum scene.toml | sed -n 's/^stable: .*the slowest at \([0-9.e-]*\) 1\/s.*/\1/p')
+# The body root's decay, its bar and whether converged, from confirm --json.
+decay() {
+  python3 -c 'import json, sys
+try:
+    r = [x for x in json.load(open(sys.argv[1]))["roots"] if x["owner"].startswith("body")][0]
+    print("%.8g,%.3g,%s" % (-r["growth"], r["growth_error"], "converged" if r["mesh_converged"] else "NOT CONVERGED"))
+except Exception as e:
+    print("nan,nan,failed")' "$1"
+}
+t=$(now)
+"$ROM" confirm scene.toml --json --cavity-modes "$MODES" > confirm.txt 2> confirm.log || true
+confirm_s=$(since "$t")
+t=$(now)
+fine=$(python3 -c "print($h / 4)")
+"$ROM" confirm scene.toml --json --order 4 --mesh-size "$fine" --refine-by order --cavity-modes "$MODES" > reference.txt \
+  2> reference.log || true
+reference_s=$(since "$t")
+csv=$OUT/viscous_fill_study.csv
+[ -f "$csv" ] || echo "date,shape,fill,ekman,table_h,table_s,spectrum_decay,confirm_decay,confirm_bar,confirm_flag,confirm_s,reference_h,reference_decay,reference_bar,reference_flag,reference_s" > "$csv"
+row="$(date +%F),$SHAPE,$FILL,$EK,$h,$table_s,$spectrum,$(decay confirm.txt),$confirm_s,$fine,$(decay reference.txt),$reference_s"
+echo "$row" >> "$csv"
+echo "$row"
