@@ -7,6 +7,7 @@
 #include <hdf5.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -490,7 +491,13 @@ void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp, b
          << "Krein signature (" << sp.krein.left << " and " << sp.krein.right << " rad/s), the only ones that can "
          << "meet and leave the real axis\n";
   } else {
-    os << verdict_with_dissipation(m, sp) << "\n";
+    std::string verdict = verdict_with_dissipation(m, sp);
+    // A viscous tank's rates are its table mesh's: say so on the line a user reads (docs/rom.md, "Mesh error of
+    // confirmed roots").
+    if (m.viscous)
+      verdict.insert(std::min(verdict.find('\n'), verdict.size()),
+                     "; mesh error NOT MEASURED (the tables' mesh only: chain-rom confirm measures it)");
+    os << verdict << "\n";
   }
   print_axial(os, m, sp.axial);
   os << std::setprecision(static_cast<int>(precision));
