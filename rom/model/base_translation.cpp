@@ -127,8 +127,17 @@ Eigen::Matrix<std::complex<Real>, Eigen::Dynamic, Eigen::Dynamic> reduce_first_o
     Q(2 * n + 1, 2 * n + l) = C(Real(r.real()), Real(r.imag()));
   }
   // P: the extended rows of s u, u̇ and w (not those of s X and Ẋ).
+  // B_ext Q column by column: Q is a selection of B_ext's columns plus the one dense row of Ẋ, so the product is those
+  // columns and a rank-one term, O(D²) where the dense product was O(D³) (a fifth of `spectrum`'s time on a table of
+  // 774 rows).
+  CMat BQ(D + 2, D);
+  for (int j = 0; j < n; ++j) {
+    BQ.col(j) = B_ext.col(j);
+    BQ.col(n + j) = B_ext.col(n + 1 + j);
+  }
+  for (int l = 0; l < nm; ++l) BQ.col(2 * n + l) = B_ext.col(2 * n + 2 + l);
+  BQ.noalias() += B_ext.col(2 * n + 1) * Q.row(2 * n + 1);
   CMat B = CMat::Zero(D, D);
-  const CMat BQ = B_ext * Q;
   B.topRows(n) = BQ.topRows(n);
   B.middleRows(n, n) = BQ.middleRows(n + 1, n);
   B.bottomRows(nm) = BQ.bottomRows(nm);

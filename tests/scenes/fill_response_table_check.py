@@ -7,7 +7,8 @@ end to end on Stewartson's top (data/scenes/stewartson_top.toml) with a coarse v
    liquid's centroid, R(c) = R_ff + 2c R_fg + c^2 R_gg, equal to forced solves (cavity-modes response --fill -o
    FILE.csv) at complex frequencies in and beyond the window, for c = 0, the top's own joint and c = -1.3; each table
    read without its t (as a filled tank's) misses R about the joint.
-2. --exact-at: at a given complex frequency the Krylov table's R(c) is the forced solves' to rounding, every c.
+2. --exact-at: at a given complex frequency the Krylov table's R about the centroid is the forced solves' to rounding,
+   R(c) at the other points to the table's error.
 3. chain-rom with the Krylov and the fit table: its roots against chain-rom confirm's (22) with the liquid's own R,
    R_fg, R_gg; confirm --refine-tables then makes the Krylov table's roots the confirmed ones.
 
@@ -94,12 +95,18 @@ for method, extra, tolerance in (("krylov", ["--max-fit-error", "1e-7", "--exact
 # 2. Exact where asked.
 if "krylov" in tables:
     e_ff, e_fg, e_gg = forced([exact])
-    gap = max(abs(table_R(tables["krylov"], [exact], c)[0] - (e_ff + 2 * c * e_fg + c * c * e_gg)[0]) /
-              abs((e_ff + 2 * c * e_fg + c * c * e_gg)[0]) for c in offsets)
-    print(f"--exact-at {exact}: the Krylov table's R(c) against forced solves {gap:.1e} (every c: both inputs' "
-          f"solutions are in its basis)")
-    if not gap < 1e-9:
+    gaps = [abs(table_R(tables["krylov"], [exact], c)[0] - (e_ff + 2 * c * e_fg + c * c * e_gg)[0]) /
+            abs((e_ff + 2 * c * e_fg + c * c * e_gg)[0]) for c in offsets]
+    print(f"--exact-at {exact}: the Krylov table's R(c) against forced solves, c = {offsets}: "
+          + ", ".join(f"{g:.1e}" for g in gaps))
+    # R about the centroid (c = 0) is exact to rounding: measured 1.4e-12, where the same table made without --exact-at
+    # is 1.9e-9 off there (2026-11-29). About other points R(c) also needs the offset input's solution, which the basis
+    # holds to 1e-9 on this mesh (3.7e-11 on the mesh before the contact-line fix): the table's own error elsewhere
+    # (1e-7) bounds it.
+    if not gaps[0] < 1e-10:
         fail("the Krylov table is not exact at its --exact-at frequency")
+    if not max(gaps) < 1e-7:
+        fail("the Krylov table's R(c) at its --exact-at frequency is off by more than its error elsewhere")
 
 # 3. The chain: the table's roots against confirm's (Krylov and rational fit), then the Krylov table refined.
 for method, allowed in (("krylov", 1e-6), ("fit", 1e-5)):

@@ -56,38 +56,53 @@ L5 = rho * L**5
 
 free_chain = re.search(r'^kind = "free"', text, re.M) is not None
 
-def F(sigma, tk, free_surface=True):
+def F(sigma, tk, free_surface=True, derivative=False):
+    """(22) at sigma, the size of its largest term, and with `derivative` its derivative in sigma."""
     c = d / L
     t = tk["t"] if free_surface else 0 * tk["t"]
     a_O = tk["a"] + c * t
-    weight = (sigma + spin) * L5 * 2 / tk["N2"] / (sigma + spin - tk["lam"] * spin)
+    pole = sigma + spin - tk["lam"] * spin
+    weight = (sigma + spin) * L5 * 2 / tk["N2"] / pole
+    dweight = -tk["lam"] * spin * L5 * 2 / tk["N2"] / pole**2  # d weight / d sigma
     K = L5 * (tk["K2"] + 2 * c * tk["K1"] + c * c * tk["K0"]) if free_surface else 0.0
     m_f = rho * L**3 * tk["volume"]
     A1 = A + L5 * tk["A_f"] + m_f * d * d + K
     a1 = mass * com + m_f * d
     terms = [A1, (C + L5 * tk["C_f"]) * spin / sigma] + ([] if free_chain else [a1 * g / sigma**2])
+    dterms = -(C + L5 * tk["C_f"]) * spin / sigma**2 + (0 if free_chain else -2 * a1 * g / sigma**3)
     fluid = weight * a_O**2
-    F_uu = sum(terms) - fluid.sum()
+    F_uu, dF_uu = sum(terms) - fluid.sum(), dterms - (dweight * a_O**2).sum()
     if not free_chain:
-        return F_uu, max(abs(x) for x in terms + list(abs(fluid)))
+        value, scale, slope = F_uu, max(abs(x) for x in terms + list(abs(fluid))), dF_uu
+        return (value, scale, slope) if derivative else (value, scale)
     # A free body: its translation X kept and eliminated (docs/free-chain.md, "Partially filled tanks"): the Schur
     # complement F_uu - F_uX²/F_XX, the tank's row (a + c t, t/L) and K over (u, X).
     k_uX = L5 / L * (tk["K1"] + c * tk["K0"]) if free_surface else 0.0
     k_XX = L5 / L**2 * tk["K0"] if free_surface else 0.0
     F_uX = a1 + k_uX - (weight * a_O * t / L).sum()
     F_XX = mass + m_f + k_XX - (weight * (t / L) ** 2).sum()
-    return F_uu - F_uX**2 / F_XX, max(abs(x) for x in terms + [abs(F_uX) ** 2 / abs(F_XX)] + list(abs(fluid)))
+    dF_uX, dF_XX = -(dweight * a_O * t / L).sum(), -(dweight * (t / L) ** 2).sum()
+    value = F_uu - F_uX**2 / F_XX
+    scale = max(abs(x) for x in terms + [abs(F_uX) ** 2 / abs(F_XX)] + list(abs(fluid)))
+    slope = dF_uu - (2 * F_uX * dF_uX * F_XX - F_uX**2 * dF_XX) / F_XX**2
+    return (value, scale, slope) if derivative else (value, scale)
 
 def worst_residual(roots, tk):
-    """|F|/max|term| at the roots off sigma = 0 (see below), and how many."""
+    """Per root off sigma = 0 (see below) the smaller of |F|/max|term| and the backward error |F/F'|/|sigma|, the
+    Newton step that would move it, relative: a root within E_l of a very light mode's pole (E ~ 1e-13, a mode that
+    barely couples) sits closer to it than a double resolves, so |F| is O(1) there however exact the root, while the
+    step that would move it stays at rounding. The worst over the roots, and how many."""
     checked = [r for r in roots if abs(r) > 1e-9 * spin]
-    return max(abs(F(r, tk)[0]) / F(r, tk)[1] for r in checked), len(checked)
+    def error(r):
+        value, scale, slope = F(r, tk, derivative=True)
+        return min(abs(value) / scale, abs(value / slope) / abs(r))
+    return max(error(r) for r in checked), len(checked)
 
 # sigma = 0 is no root of F (its terms C w/sigma, a g/sigma^2 diverge there): a mode at lambda = 1 (the partially
 # filled sphere's rigid tilt, steady in space) puts one there, which chain-rom too leaves unchecked.
 worst, checked = worst_residual(roots, ideal)
 print(f"(22) written out here, at {checked} of chain-rom's {len(roots)} roots (not at sigma = 0): worst "
-      f"|F|/max|term| = {worst:.2e}")
+      f"|F|/max|term| or Newton step |F/F'|/|sigma| = {worst:.2e}")
 # A root within E_l of a light mode's pole is as ill-conditioned as chain-rom's own det residual says (the projectile's
 # payload: 1.1e-9 at its light, fast-decaying mode): the check allows ten times that, and 1e-9 at least.
 tolerance = max(1e-9, 10 * spectrum["det_residual"])
