@@ -476,13 +476,11 @@ void print_axial(std::ostream& os, const ChainModel& m, const AxialSpectrum& a) 
   os << "\n";
 }
 
-void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp, bool all) {
-  os << (m.free_chain ? "free" : "fixed") << " chain, " << m.n << " bodies, " << m.n_modes()
-     << " fluid modes\n";
-  for (int k = 0; k < m.n; ++k) print_body_line(os, m, sp, k);
-  // The verdict first, what a user reads; then the roots it rests on and the checks.
-  const auto precision = os.precision();
-  os << std::setprecision(6);
+namespace {
+
+// The verdict lines of `spectrum`: stable or not with the margin and the distance to the threshold, or with
+// dissipation the growth rates, a viscous chain's with the word that their mesh error is not measured.
+void print_verdict(std::ostream& os, const ChainModel& m, const Spectrum& sp) {
   if (!m.dissipative()) {
     os << "stable: " << (sp.stable ? "yes" : "no") << " (|Im sigma| <= " << sp.tolerance << " counts as real)\n";
     os << "margin (largest |Im sigma|): " << sp.margin << " rad/s\n";
@@ -490,15 +488,27 @@ void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp, b
       os << "distance to the threshold: " << sp.krein.gap << " rad/s between the closest real roots of opposite "
          << "Krein signature (" << sp.krein.left << " and " << sp.krein.right << " rad/s), the only ones that can "
          << "meet and leave the real axis\n";
-  } else {
-    std::string verdict = verdict_with_dissipation(m, sp);
-    // A viscous tank's rates are its table mesh's: say so on the line a user reads (docs/rom.md, "Mesh error of
-    // confirmed roots").
-    if (m.viscous)
-      verdict.insert(std::min(verdict.find('\n'), verdict.size()),
-                     "; mesh error NOT MEASURED (the tables' mesh only: chain-rom confirm measures it)");
-    os << verdict << "\n";
+    return;
   }
+  std::string verdict = verdict_with_dissipation(m, sp);
+  // A viscous tank's rates are its table mesh's: say so on the line a user reads (docs/rom.md, "Mesh error of
+  // confirmed roots").
+  if (m.viscous)
+    verdict.insert(std::min(verdict.find('\n'), verdict.size()),
+                   "; mesh error NOT MEASURED (the tables' mesh only: chain-rom confirm measures it)");
+  os << verdict << "\n";
+}
+
+}  // namespace
+
+void print_spectrum(std::ostream& os, const ChainModel& m, const Spectrum& sp, bool all) {
+  os << (m.free_chain ? "free" : "fixed") << " chain, " << m.n << " bodies, " << m.n_modes()
+     << " fluid modes\n";
+  for (int k = 0; k < m.n; ++k) print_body_line(os, m, sp, k);
+  // The verdict first, what a user reads; then the roots it rests on and the checks.
+  const auto precision = os.precision();
+  os << std::setprecision(6);
+  print_verdict(os, m, sp);
   print_axial(os, m, sp.axial);
   os << std::setprecision(static_cast<int>(precision));
   print_roots(os, m, sp, all);

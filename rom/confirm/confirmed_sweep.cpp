@@ -123,13 +123,26 @@ void take_study(ConfirmedSweepPoint& p, const std::vector<std::vector<cd>>& leve
   judge(p);
 }
 
-// The mesh of level `level` of the study (level 0: the study's base, the tables' unless --mesh-size/--order).
-ServedMesh level_mesh(const MeshStudy& study, int level) {
-  ServedMesh mesh = study.base;
-  if (level == 0) return mesh;
-  if (study.by_order) mesh.order_raise = level;
-  else mesh.level = level;
-  return mesh;
+// What the sweep does, its log's first line.
+std::string sweep_heading(const SweepAxis& axis, bool moves, const MeshStudy& study) {
+  return "chain-rom sweep: each point's roots by (22) with the fluid's own response (forced solves; docs/rom.md, " +
+         (moves ? "\"Spin sweeps with viscous tanks\"): " + axis.key.text + " moves the Ekman numbers, so each point "
+                  "is served at its own, on one mesh per tank with its wall layers made for the sweep's smallest Ek"
+                : std::string("\"Confirmed roots\"): the tanks served once for every point")) +
+         (study.refine > 0 ? "; then on " + std::to_string(study.refine) + " finer mesh level" +
+                                 (study.refine == 1 ? "" : "s") + " for each growth rate's mesh error"
+                           : std::string("; mesh error NOT MEASURED (--refine 0)"));
+}
+
+// The scene at the sweep's value `v`. Throws SweepError where a viscous tank does not spin (Ek undefined).
+Scene scene_at(const Scene& base, const SweepAxis& axis, double v) {
+  Scene s = base;
+  set_param(s, axis.key, v);
+  for (std::size_t b = 0; b < s.bodies.size(); ++b)
+    if (viscous_cavity(s.bodies[b]) && s.bodies[b].spin == 0)
+      throw SweepError(axis.key.text + " = " + std::to_string(v) + ": body " + std::to_string(b + 1) +
+                       " does not spin there, and its viscous tank has no Ekman number");
+  return s;
 }
 
 // A sweep whose points share served tanks (a key that leaves the Ekman numbers alone): the study level by level for
@@ -148,8 +161,7 @@ void study_shared_levels(const Scene& base, const SweepAxis& axis, std::vector<C
                                         level_mesh(study, level));
       for (std::size_t i = 0; i < points.size(); ++i) {
         if (!points[i].ok) continue;
-        Scene s = base;
-        set_param(s, axis.key, points[i].value);
+        const Scene s = scene_at(base, axis, points[i].value);
         const int before = tanks.solves();
         std::ostringstream quiet;  // the roots' lines: the points' own lines below say what came of them
         levels[i].push_back(iterate_roots(build_model(at_table_ekman(s, tables), &tables), tanks.responses,
@@ -241,14 +253,7 @@ std::vector<ConfirmedSweepPoint> run_confirmed_sweep(const Scene& base, const Sw
   const std::vector<double> mesh_ekman = moves ? sweep_mesh_ekman(base, axis) : std::vector<double>{};
   MeshStudy point_study = study;  // each point's own study (a key that moves Ek): its levels made for the sweep's Ek
   point_study.mesh_ekman = mesh_ekman;
-  log << "chain-rom sweep: each point's roots by (22) with the fluid's own response (forced solves; docs/rom.md, "
-      << (moves ? "\"Spin sweeps with viscous tanks\"): " + axis.key.text + " moves the Ekman numbers, so each point "
-                  "is served at its own, on one mesh per tank with its wall layers made for the sweep's smallest Ek"
-                : std::string("\"Confirmed roots\"): the tanks served once for every point"))
-      << (study.refine > 0 ? "; then on " + std::to_string(study.refine) + " finer mesh level" +
-                                 (study.refine == 1 ? "" : "s") + " for each growth rate's mesh error"
-                           : std::string("; mesh error NOT MEASURED (--refine 0)"))
-      << std::endl;
+  log << sweep_heading(axis, moves, study) << std::endl;
   // A key that leaves the Ekman numbers alone: one served process per tank for the whole sweep.
   const ScratchFolder scratch;
   std::optional<TankResponses> shared;
@@ -256,12 +261,7 @@ std::vector<ConfirmedSweepPoint> run_confirmed_sweep(const Scene& base, const Sw
     shared = serve_tanks(base, build_model(base, &tables), binary, scratch.path, log, {}, &tables, level_mesh(study, 0));
   for (int i = 0; i < axis.steps; ++i) {
     const double v = axis.value(i);
-    Scene s = base;
-    set_param(s, axis.key, v);
-    for (std::size_t b = 0; b < s.bodies.size(); ++b)
-      if (viscous_cavity(s.bodies[b]) && s.bodies[b].spin == 0)
-        throw SweepError(axis.key.text + " = " + std::to_string(v) + ": body " + std::to_string(b + 1) +
-                         " does not spin there, and its viscous tank has no Ekman number");
+    const Scene s = scene_at(base, axis, v);
     ConfirmedSweepPoint p;
     try {
       const ChainModel m = build_model(at_table_ekman(s, tables), &tables);  // once a point

@@ -31,11 +31,8 @@ std::vector<cd> confirm_level(const Scene& scene, const ChainModel& m, const std
                               const MeshStudy& study, const std::string& binary,
                               const std::filesystem::path& scratch, const ConfirmSettings& settings,
                               std::ostream& log, MeshStudyResult& r) {
-  ServedMesh mesh = study.base;
-  if (study.by_order) mesh.order_raise = level;
-  else mesh.level = level;
   log << level_title(level, study.by_order) << std::endl;
-  TankResponses tanks = serve_tanks(scene, m, binary, scratch, log, study.mesh_ekman, nullptr, mesh);
+  TankResponses tanks = serve_tanks(scene, m, binary, scratch, log, study.mesh_ekman, nullptr, level_mesh(study, level));
   r.unknowns.push_back(tanks.served.empty() ? 0 : tanks.served.front()->unknowns());
   std::vector<cd> out = iterate_roots(m, tanks.responses, before, settings, log);
   r.symmetry_defect.push_back(symmetry_defect(m, tanks.responses, out));
@@ -44,6 +41,14 @@ std::vector<cd> confirm_level(const Scene& scene, const ChainModel& m, const std
 }
 
 }  // namespace
+
+ServedMesh level_mesh(const MeshStudy& study, int level) {
+  ServedMesh mesh = study.base;
+  if (level == 0) return mesh;
+  if (study.by_order) mesh.order_raise = level;
+  else mesh.level = level;
+  return mesh;
+}
 
 std::string level_title(int level, bool by_order) {
   std::ostringstream os;

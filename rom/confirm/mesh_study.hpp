@@ -49,6 +49,10 @@ struct MeshStudyResult {
 double symmetry_defect(const ChainModel& m, const std::vector<TankResponse>& tanks,
                        const std::vector<std::complex<double>>& roots);
 
+// The served mesh of level `level` of the study (0: its base, the tables' unless --mesh-size/--order): every size halved
+// `level` times, or the order raised by `level` (MeshStudy::by_order).
+ServedMesh level_mesh(const MeshStudy& study, int level);
+
 // "mesh level 1 (every size of level 0 halved 1 time):", the heading of a level's lines in the log.
 std::string level_title(int level, bool by_order);
 
