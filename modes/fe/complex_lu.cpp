@@ -48,12 +48,14 @@ void read_options(ZMUMPS_STRUC_C& id, const std::string& prefix) {
 
 }  // namespace
 
-ComplexLu::ComplexLu(MPI_Comm comm, std::string prefix)
+ComplexLu::ComplexLu(MPI_Comm comm, std::string prefix, bool complex_symmetric)
     : mumps_(std::make_unique<Mumps>()), prefix_(std::move(prefix)), comm_(comm) {
   ZMUMPS_STRUC_C& id = mumps_->id;
   id.comm_fortran = static_cast<int>(MPI_Comm_c2f(comm));
   id.par = 1;  // rank 0 works too
-  id.sym = 0;  // LU: the viscous S is not complex symmetric (measured: SYM = 2 on its lower triangle found a wrong mode)
+  // LU unless told the matrix is complex symmetric: the eigensolvers' shifted pencils are not (measured: SYM = 2 on
+  // their lower triangle found a wrong mode).
+  id.sym = complex_symmetric ? 2 : 0;
   run(-1, "initialisation");
   icntl(id, 1) = 0;  // errors are reported through INFOG, not printed (0, not −1: with parallel analysis
                      // MUMPS 5.5 still writes to the unit and a negative one aborts the run)
@@ -97,6 +99,7 @@ void ComplexLu::extract(Mat block) {
   std::vector<int> rows, cols;
   std::vector<std::complex<double>> values;
   std::vector<std::pair<PetscInt, std::complex<double>>> line;
+  const bool lower_only = mumps_->id.sym == 2;
   for (PetscInt r = lo; r < hi; r += 2) {
     line.clear();
     for (int part : {0, 1}) {
@@ -110,6 +113,7 @@ void ComplexLu::extract(Mat block) {
     }
     std::sort(line.begin(), line.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     for (std::size_t k = 0; k < line.size(); ++k) {
+      if (lower_only && line[k].first > r / 2) continue;  // LDLᵀ reads the lower triangle only
       if (k > 0 && line[k].first == line[k - 1].first) { values.back() += line[k].second; continue; }
       rows.push_back(static_cast<int>(r / 2 + 1));
       cols.push_back(static_cast<int>(line[k].first + 1));

@@ -35,10 +35,10 @@ class KrylovBasis {
 
   int size() const { return m_; }
 
-  // Orthonormalises the columns of W (local rows of block vectors, themselves 𝓜-orthonormal) against the basis —
-  // two passes of block classical Gram–Schmidt in 𝓜's inner product — and appends what is new (directions whose
-  // remaining norm is above 1e-7 of the columns' unit norm). Returns how many vectors were appended.
-  int add(Eigen::MatrixXcd W);
+  // Orthonormalises the columns of W (local rows of block vectors, themselves 𝓜-orthonormal; MW = 𝓜W) against the
+  // basis — two passes of block classical Gram–Schmidt in 𝓜's inner product — and appends what is new (directions
+  // whose remaining norm is above 1e-7 of the columns' unit norm). Returns how many vectors were appended.
+  int add(Eigen::MatrixXcd W, Eigen::MatrixXcd MW);
 
   // 𝓜 x and x̄ᵀ𝓜y-type products for the point's own Arnoldi process (krylov_reduction's expand).
   Eigen::VectorXcd apply(Mat op, const Eigen::VectorXcd& x);
@@ -70,9 +70,9 @@ class KrylovBasis {
   void sum(Eigen::MatrixXcd& v) const {
     MPI_Allreduce(MPI_IN_PLACE, v.data(), 2 * static_cast<int>(v.size()), MPI_DOUBLE, MPI_SUM, comm_);
   }
-  void orthogonalise(Eigen::MatrixXcd& W);
+  void orthogonalise(Eigen::MatrixXcd& W, Eigen::MatrixXcd& MW);
   void reserve(int n);
-  void append(const Eigen::MatrixXcd& W);
+  void append(const Eigen::MatrixXcd& W, const Eigen::MatrixXcd& MW);
 
   const ViscousForms& forms_;
   MPI_Comm comm_;
@@ -104,39 +104,44 @@ void KrylovBasis::reserve(int n) {
   fh_.conservativeResize(cap, F_.cols());
 }
 
-void KrylovBasis::orthogonalise(Eigen::MatrixXcd& W) {
-  for (int pass = 0; pass < 2 && m_ > 0; ++pass) {
+// The first pass takes the caller's 𝓜W; the second, which mends the first's rounding, and the result need 𝓜 applied
+// afresh (𝓜W after the passes returns in MW): each application is a sparse product per column, which on a P6 mesh
+// costs as much as that column's share of the products with the whole basis.
+void KrylovBasis::orthogonalise(Eigen::MatrixXcd& W, Eigen::MatrixXcd& MW) {
+  if (m_ == 0) return;
+  for (int pass = 0; pass < 2; ++pass) {
+    if (pass > 0) MW = apply(forms_.M, W);
     Eigen::MatrixXcd H;
-    blas_product(X_.leftCols(m_), true, apply(forms_.M, W), H);
+    blas_product(X_.leftCols(m_), true, MW, H);
     sum(H);
     blas_subtract_product(X_.leftCols(m_), H, W);
   }
+  MW = apply(forms_.M, W);
 }
 
-int KrylovBasis::add(Eigen::MatrixXcd W) {
-  orthogonalise(W);
+int KrylovBasis::add(Eigen::MatrixXcd W, Eigen::MatrixXcd MW) {
+  orthogonalise(W, MW);
   // What is left, made orthonormal through its Gram matrix's eigen-decomposition (small directions dropped).
-  Eigen::MatrixXcd G = W.adjoint() * apply(forms_.M, W);
+  Eigen::MatrixXcd G = W.adjoint() * MW;
   sum(G);
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXcd> es(0.5 * (G + G.adjoint()));
   Eigen::Index first = 0;
   while (first < G.rows() && !(es.eigenvalues()[first] > 1e-14)) ++first;
   const Eigen::Index r = G.rows() - first;
   if (r == 0) return 0;
-  Eigen::MatrixXcd Q = W * es.eigenvectors().rightCols(r) *
-                       es.eigenvalues().tail(r).cwiseSqrt().cwiseInverse().asDiagonal();
-  append(Q);
+  const Eigen::MatrixXcd T = es.eigenvectors().rightCols(r) * es.eigenvalues().tail(r).cwiseSqrt().cwiseInverse().asDiagonal();
+  append(W * T, MW * T);
   return static_cast<int>(r);
 }
 
 // The new columns' entries of every small matrix in one product with [X W]ᴴ and one reduction: XᴴAW; XᵀAW̄ (the new
 // rows of XᴴAX, since wᴴAx = xᵀAw̄ for complex symmetric A); Xᴴ𝓜W; XᵀAW and Xᵀ𝓜W (Xᵀv = conj(Xᴴv̄)); and WᴴF.
-void KrylovBasis::append(const Eigen::MatrixXcd& W) {
+void KrylovBasis::append(const Eigen::MatrixXcd& W, const Eigen::MatrixXcd& MW) {
   const Eigen::Index k = W.cols(), old = m_, n = old + k;
   reserve(static_cast<int>(n));
   X_.middleCols(old, k) = W;
   const auto Xn = X_.leftCols(n);
-  const Eigen::MatrixXcd AW = apply(forms_.A, W), MW = apply(forms_.M, W);
+  const Eigen::MatrixXcd AW = apply(forms_.A, W);
   const Eigen::MatrixXcd AWbar = apply(forms_.A, Eigen::MatrixXcd(W.conjugate()));
   Eigen::MatrixXcd rhs(W.rows(), 5 * k);
   rhs << AW, AWbar.conjugate(), MW, AW.conjugate(), MW.conjugate();
@@ -236,7 +241,7 @@ class Greedy {
         ++k;
       }
     }
-    basis_.add(W.leftCols(k));
+    basis_.add(W.leftCols(k), MW.leftCols(k));
     return R;
   }
 
@@ -301,18 +306,23 @@ class Greedy {
 
  private:
   // q against the columns of W (𝓜W given), twice, then to unit 𝓜-norm, with 𝓜q into mq; false when nothing is left
-  // of it.
+  // of it. 𝓜q follows q through the subtractions (𝓜 is linear) and is applied afresh only where most of q cancelled,
+  // and with it the rounding's share of what is left.
   bool normalise_against(Eigen::VectorXcd& q, const Eigen::Ref<const Eigen::MatrixXcd>& W,
                          const Eigen::Ref<const Eigen::MatrixXcd>& MW, Eigen::VectorXcd& mq) {
-    const Eigen::VectorXcd mq0 = basis_.apply(forms_.M, q);
-    const double before = std::sqrt(std::max(basis_.mdot(q, mq0).real(), 0.0));
+    mq = basis_.apply(forms_.M, q);
+    const double before = std::sqrt(std::max(basis_.mdot(q, mq).real(), 0.0));
     for (int pass = 0; pass < 2 && W.cols() > 0; ++pass) {
       Eigen::VectorXcd h = MW.adjoint() * q;  // W̄ᵀ𝓜q = (𝓜W)ᴴq, 𝓜 real symmetric
       MPI_Allreduce(MPI_IN_PLACE, h.data(), 2 * static_cast<int>(h.size()), MPI_DOUBLE, MPI_SUM, comm_);
       q -= W * h;
+      mq -= MW * h;
     }
-    mq = basis_.apply(forms_.M, q);
-    const double norm = std::sqrt(std::max(basis_.mdot(q, mq).real(), 0.0));
+    double norm = std::sqrt(std::max(basis_.mdot(q, mq).real(), 0.0));
+    if (norm < 1e-3 * before) {
+      mq = basis_.apply(forms_.M, q);
+      norm = std::sqrt(std::max(basis_.mdot(q, mq).real(), 0.0));
+    }
     if (!(norm > 1e-10 * before)) return false;
     q /= norm;
     mq /= norm;

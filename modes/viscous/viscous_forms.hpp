@@ -49,6 +49,8 @@ struct ViscousForms {
                            // joint (a_O = a + c t, docs/physics.md §2): g(v) = −∫∫ v− r dr dz − b² ∫ η̃ dz
   PVec real_slots;         // 1 on the real slots, 0 on the imaginary ones
   PVec mass_diagonal;      // diagonal of M̂ (for scaling checks)
+  bool complex_symmetric = false;  // Aᵀ = A and 𝓜ᵀ = 𝓜 as complex matrices (the meridian forms above): σ𝓜 − A is then
+                                   // factored as LDLᵀ (complex_lu.hpp), not LU
 };
 
 // xᵀy (no conjugate) of two complex vectors in the block form above (pairs (Re, Im), each pair on one rank), summed

@@ -2,6 +2,7 @@
 // the surface displacement as unknowns and the stress-free surface, against the ideal free-surface closed form
 // (Stewartson's partially filled cylinder) at Ek = 0, and its approach to the boundary-layer limit with the walls'
 // Ekman layers only. Every comparison prints its error.
+#include "complex_lu.hpp"
 #include "fe_space.hpp"
 #include "free_surface.hpp"
 #include "taylor_hood_space.hpp"
@@ -229,6 +230,40 @@ TEST(ViscousFreeSurface, ForcedResponseResiduesAreTheModesCouplings) {
     EXPECT_LT(eff, 1e-7);
     EXPECT_LT(egg, 1e-7);
     EXPECT_LT(efg, 1e-7);
+  }
+}
+
+// The meridian pencil is complex symmetric (viscous_forms.hpp), so σ𝓜 − A is factored as LDLᵀ from its lower triangle
+// (MUMPS SYM = 2, what every forced solve and response table uses): on the partially filled cylinder, whose free
+// surface adds the η̃ rows and the stress form, the solutions for both inputs agree with the LU's of the whole matrix.
+// Were A or 𝓜 not symmetric, LDLᵀ would solve the lower triangle's symmetric completion, another matrix.
+TEST(ViscousFreeSurface, SymmetricFactorsSolveAsTheLu) {
+  const ViscousForms forms = partially_filled_forms(1e-3, 0.125);
+  ASSERT_TRUE(forms.complex_symmetric);
+  const cd sigma(0.7, 0.05);
+  PMat S;
+  petsc_check(MatDuplicate(forms.A, MAT_COPY_VALUES, S.out()), "MatDuplicate");
+  petsc_check(MatScale(S, -1.0), "MatScale");
+  petsc_check(MatAXPY(S, sigma.real(), forms.M, SUBSET_NONZERO_PATTERN), "MatAXPY");
+  petsc_check(MatAXPY(S, sigma.imag(), forms.iM, SUBSET_NONZERO_PATTERN), "MatAXPY");
+  ComplexLu lu(PETSC_COMM_SELF, "test_lu_"), ldlt(PETSC_COMM_SELF, "test_ldlt_", true);
+  lu.factor(S);
+  ldlt.factor(S);
+  EXPECT_LT(ldlt.infog(29), lu.infog(29)) << "LDLᵀ keeps one triangle of the factors";  // INFOG(29): the factors' entries
+  PVec x, y, d;
+  for (Vec input : {forms.coupling.get(), forms.offset_coupling.get()}) {
+    petsc_check(VecDuplicate(input, x.out()), "VecDuplicate");
+    petsc_check(VecDuplicate(input, y.out()), "VecDuplicate");
+    petsc_check(VecDuplicate(input, d.out()), "VecDuplicate");
+    lu.solve(input, x);
+    ldlt.solve(input, y);
+    petsc_check(VecWAXPY(d, -1.0, x, y), "VecWAXPY");
+    PetscReal nd = 0, nx = 0;
+    petsc_check(VecNorm(d, NORM_INFINITY, &nd), "VecNorm");
+    petsc_check(VecNorm(x, NORM_INFINITY, &nx), "VecNorm");
+    std::printf("%d complex unknowns, sigma %.2f%+.2fi: LDLT against LU %.1e of max|x|\n", forms.complex_size,
+                sigma.real(), sigma.imag(), nd / nx);
+    EXPECT_LT(nd / nx, 1e-9);
   }
 }
 
