@@ -55,16 +55,27 @@ std::vector<std::pair<fs::path, std::set<int>>> viscous_tables(const Scene& scen
   return out;
 }
 
+std::string exact_number(double x) {
+  std::ostringstream os;
+  os << std::setprecision(17) << x;
+  return os.str();
+}
+
 // The arguments that remake a 3-D response table exact at `exact_at` (none: no --exact-at) into `output`, at another
 // Ekman number when `ekman` > 0: its recorded command line with -o, any earlier --exact-at and, then, --ekman
-// replaced; a `volume` file from the text the table stores when the recorded path is gone.
+// replaced; a `volume` file from the text the table stores when the recorded path is gone. `coarsen` > 1 makes
+// every element size that many times the table's: its interior and wall sizes (the table records both) and a
+// recorded --near-wall-size; the wall layers' total thickness is physics (the Ekman layers') and stays, the first
+// layer then at most that thick.
 std::vector<std::string> remake_arguments(const rc::ModeTable& t, const std::vector<cd>& exact_at,
-                                          const fs::path& output, const fs::path& scratch, double ekman = 0) {
+                                          const fs::path& output, const fs::path& scratch, double ekman = 0,
+                                          double coarsen = 1) {
   const std::vector<std::string> w = shell_words(t.command_line);
   if (w.size() < 2 || (w[1] != "ellipsoid" && w[1] != "volume"))
     throw std::runtime_error("its recorded command line is not 'cavity-modes ellipsoid|volume ...': " + t.command_line);
   std::vector<std::string> args{w[1]};
   bool have_file = w[1] != "volume";
+  double wall_layer = 0, near_wall = 0;
   for (std::size_t i = 2; i < w.size(); ++i) {
     const std::string& word = w[i];
     if (word.size() < 2 || word[0] != '-') {
@@ -80,16 +91,23 @@ std::vector<std::string> remake_arguments(const rc::ModeTable& t, const std::vec
     }
     const auto eq = word.find('=');
     const std::string name = word.substr(0, eq);
-    if (name == "-o" || name == "--output" || name == "--exact-at" || (ekman > 0 && name == "--ekman")) {
+    const bool valued = eq == std::string::npos && i + 1 < w.size();
+    const std::string value = eq != std::string::npos ? word.substr(eq + 1) : valued ? w[i + 1] : "";
+    if (name == "--wall-layer") wall_layer = std::stod(value);
+    if (coarsen != 1 && name == "--near-wall-size") near_wall = std::stod(value);
+    const bool resized = coarsen != 1 && (name == "--mesh-size" || name == "--wall-size" || name == "--near-wall-size");
+    if (name == "-o" || name == "--output" || name == "--exact-at" || (ekman > 0 && name == "--ekman") || resized) {
       if (eq == std::string::npos) ++i;  // its value is the next word
       continue;
     }
     args.push_back(word);
   }
-  if (ekman > 0) {
-    std::ostringstream ek;
-    ek << std::setprecision(17) << ekman;
-    args.insert(args.end(), {"--ekman", ek.str()});
+  if (ekman > 0) args.insert(args.end(), {"--ekman", exact_number(ekman)});
+  if (coarsen != 1) {
+    double wall = coarsen * t.mesh_h_wall;
+    if (wall_layer > 0) wall = std::min(wall, wall_layer);
+    args.insert(args.end(), {"--mesh-size", exact_number(coarsen * t.mesh_h), "--wall-size", exact_number(wall)});
+    if (near_wall > 0) args.insert(args.end(), {"--near-wall-size", exact_number(coarsen * near_wall)});
   }
   if (!exact_at.empty()) args.insert(args.end(), {"--exact-at", complex_list(exact_at)});
   args.insert(args.end(), {"-o", output.string()});
@@ -153,6 +171,16 @@ void remake_at_ekman(const fs::path& table, double ekman, const fs::path& output
   std::vector<std::string> args{binary};
   for (auto& a : remake_arguments(rc::read_mode_table(table), {}, refining_name(output), scratch, ekman))
     args.push_back(std::move(a));
+  run_and_replace(args, output, refining_name(output), scratch, run);
+}
+
+void remake_coarser(const fs::path& table, double coarsen, const fs::path& output, const std::string& binary,
+                    const fs::path& scratch, const ProgramRunner& run) {
+  const rc::ModeTable t = rc::read_mode_table(table);
+  if (!(t.mesh_h > 0 && t.mesh_h_wall > 0))
+    throw std::runtime_error(table.string() + ": the table records no interior and wall element sizes to coarsen");
+  std::vector<std::string> args{binary};
+  for (auto& a : remake_arguments(t, {}, refining_name(output), scratch, 0, coarsen)) args.push_back(std::move(a));
   run_and_replace(args, output, refining_name(output), scratch, run);
 }
 

@@ -35,6 +35,12 @@ struct GeneralConfirmation {
 // line (checked before any work).
 void check_general_refinable(const Scene& scene);
 
+// Makes the 3-D response table `table` again from its recorded command line on a mesh `coarsen` times as coarse (its
+// interior, wall and near-wall element sizes; any --exact-at dropped) into `output`, through output.refining.h5.
+// Throws std::runtime_error naming it when cavity-modes fails or the table records no element sizes.
+void remake_coarser(const std::filesystem::path& table, double coarsen, const std::filesystem::path& output,
+                    const std::string& binary, const std::filesystem::path& scratch, const ProgramRunner& run);
+
 // True when some tank of the scene has a viscous table.
 bool has_viscous_tables(const Scene& scene);
 

@@ -17,7 +17,7 @@ double MeshErrorEstimate::relative() const {
 }
 
 MeshErrorEstimate mesh_error(const std::vector<std::complex<double>>& levels, double tolerance, double floor,
-                             bool halving) {
+                             bool halving, double ratio) {
   if (levels.size() < 2) throw std::invalid_argument("mesh_error needs the root on two levels at least");
   MeshErrorEstimate e;
   const std::size_t L = levels.size() - 1;
@@ -26,12 +26,12 @@ MeshErrorEstimate mesh_error(const std::vector<std::complex<double>>& levels, do
   e.growth = g(L);
   e.extrapolated = e.growth;
   const double d = g(L) - g(L - 1);
-  e.error = std::abs(d);
+  e.error = halving ? std::abs(d) / (ratio - 1) : std::abs(d);
   if (L >= 2) {
     const double before = g(L - 1) - g(L - 2);
-    const double p = std::log2(std::abs(before) / std::abs(d));
+    const double p = std::log(std::abs(before) / std::abs(d)) / std::log(ratio);
     if (halving && std::isfinite(p) && p >= kLeastOrder) {
-      const double gain = std::exp2(p) - 1;
+      const double gain = std::pow(ratio, p) - 1;
       e.order = p;
       e.asymptotic = true;
       e.error = kSafetyFactor * std::abs(d) / gain;

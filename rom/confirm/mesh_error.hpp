@@ -34,8 +34,10 @@ struct MeshErrorEstimate {
 // `tolerance` is relative to |growth|; `floor` (1/s) an absolute allowance for rates at rounding level.
 // `halving` false (levels that raise the order instead): no order is taken, the error is max(|d_L|, |d_{L-1}|) — the
 // finest difference alone where two levels (p-refinement converges faster than any power of h once resolved).
+// `ratio`: each level's element size over the next one's (2 for halving); the formulas above with 2 replaced by it,
+// so that two levels give |d_L| / (ratio − 1), the error at first order in h (1.5: 2 |d_L|).
 MeshErrorEstimate mesh_error(const std::vector<std::complex<double>>& levels, double tolerance, double floor,
-                             bool halving = true);
+                             bool halving = true, double ratio = 2.0);
 
 // "decay 2.970e-4 ± 3.1e-6 1/s (1.0 %)": the rate with its error, as the verdict prints it.
 std::string rate_with_error(const MeshErrorEstimate& e);

@@ -30,6 +30,28 @@ TEST(MeshError, TwoLevelsBoundTheFinestErrorAtFirstOrderOrMore) {
   }
 }
 
+// The 3-D mesh check's levels (general_mesh_check.hpp): a mesh 1.5 times as coarse, then the table's. Two levels at
+// ratio 1.5 give |d| / 0.5: the finest level's true error at first order exactly, more at any higher order; three
+// levels at that ratio measure the order and extrapolate to the limit as halving does.
+TEST(MeshError, LevelsAtRatioOneAndAHalf) {
+  const auto levels = [](double p, int n) {
+    std::vector<cd> out;
+    for (int l = 0; l < n; ++l) out.push_back({0.5, -(-3e-4 + 1e-4 * std::pow(1.5, -p * l))});
+    return out;
+  };
+  for (double p : {1.0, 2.0, 4.0}) {
+    const auto e = mesh_error(levels(p, 2), 0.02, 0, true, 1.5);
+    const double truth = std::abs(e.growth - -3e-4);
+    EXPECT_GE(e.error, truth * (1 - 1e-12)) << "order " << p;
+    if (p == 1.0) {
+      EXPECT_NEAR(e.error, truth, 1e-12 * truth);
+    }
+    const auto e3 = mesh_error(levels(p, 3), 0.02, 0, true, 1.5);
+    EXPECT_NEAR(e3.order, p, 1e-8);
+    EXPECT_NEAR(e3.extrapolated, -3e-4, 1e-15);
+  }
+}
+
 TEST(MeshError, ThreeLevelsGiveTheOrderAndRichardsonsLimit) {
   for (double p : {1.0, 2.0, 3.0}) {
     const auto e = mesh_error(power_law(-3e-4, 1e-4, p, 3), 0.02, 0);
