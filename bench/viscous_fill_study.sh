@@ -32,7 +32,8 @@ t=$(now)
 "$MODES" response "${shape[@]}" "${fill_args[@]}" --ekman "$EK" --sigma -2.5:2:181 -o tank.h5 > table.txt 2>&1
 table_s=$(since "$t")
 h=$("$MODES" info tank.h5 | sed -n '1s/.*h = \([0-9.e-]*\),.*/\1/p')
-spectrum=$("$ROM" spectrum scene.toml | sed -n 's/^stable: .*the slowest at \([0-9.e-]*\) 1\/s.*/\1/p')
+# The body's root (the nutation), not the verdict's slowest: a fluid root can decay more slowly than it.
+spectrum=$("$ROM" spectrum scene.toml | awk '/ body 1 .*decays/ {sub("i$", "", $2); print $2; exit}')
 # The body root's decay, its bar and whether converged, from confirm --json.
 decay() {
   python3 -c 'import json, sys

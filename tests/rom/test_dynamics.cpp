@@ -64,11 +64,11 @@ TEST(Batyr, TiltRootsDecayRespectTheoremSixAndProperty3) {
       worst81 = std::max({worst81, bd.re_min - lam.real(), std::abs(lam) - bd.abs_max});
     }
   }
-  std::printf("  smallest decay rate %.4e 1/s; %d oscillatory tilt roots (Theorem 6 bound for the tilts: %d);"
-              " (81) worst violation %.2e (Re bound %.3e, |lambda| bound %.3e)\n",
-              min_decay, oscillatory, 4 * 3 / 2, worst81, bd.re_min, bd.abs_max);
+  // Theorem 6's bound on the oscillatory roots is the tilts' count here (6): it holds for any spectrum of this chain,
+  // so it is not asserted.
+  std::printf("  smallest decay rate %.4e 1/s; %d oscillatory tilt roots; (81) worst violation %.2e (Re bound %.3e, "
+              "|lambda| bound %.3e)\n", min_decay, oscillatory, worst81, bd.re_min, bd.abs_max);
   EXPECT_GT(min_decay, sp.tolerance);
-  EXPECT_LE(oscillatory, 6);
   EXPECT_GT(oscillatory, 0);      // light friction: the pendulums do oscillate
   EXPECT_LE(worst81, 1e-9 * bd.abs_max);
   EXPECT_TRUE(sp.stable);
@@ -223,8 +223,11 @@ TEST(Energy, StaticCorrectionRestoresZhukovskyInertiaAtZeroSpin) {
 // Batyr's Property 7 on his three pendulums with fluid at w = 0: without friction the tilts' spectrum is purely
 // imaginary in his λ (real in our σ) and, with the fluid as Zhukovsky's inertia, σ = ±√μ_k with μ_k the eigenvalues of
 // M_eff⁻¹K (Batyr (87), C11⁻¹ᐟ²B1C11⁻¹ᐟ² restricted to the tilts); the axial rotations add σ = 0 six times with three
-// Jordan chains of length two (axial_rotation.hpp). Property 11 (the root vectors form a basis): the tilt roots are
-// simple, so the companion matrix is diagonalisable there.
+// Jordan chains of length two (axial_rotation.hpp; counted against Batyr's by hand in AxialRotation.ZeroRootsAndRatesAreBatyrs,
+// not here: axial_spectrum's counts for this chain follow from its structure). Property 11 (the root vectors form a
+// basis): the tilt roots are simple, so the companion matrix is diagonalisable there. The roots are checked against
+// (87) on the model's own M_eff and K: the first-order form and its eigen-solve, not the model's coefficients (which
+// Batyr.ZhukovskyEquivalenceAtZeroSpin checks against an independent rigid chain).
 TEST(Batyr, PropertySevenWithoutFriction) {
   const ChainModel m = model_of(scene_text(batyr_bodies(true), {{0, 0}, {0, 0}}, 9.81, false, 0));
   const Spectrum sp = compute_spectrum(m);
@@ -242,12 +245,9 @@ TEST(Batyr, PropertySevenWithoutFriction) {
       if (t != s) gap = std::min(gap, std::abs(t - s));
   }
   std::printf("  tilt roots: largest |Im sigma| %.1e; against (87) +-sqrt(eig(M_eff^-1 K)) %.1e rad/s; closest pair "
-              "%.3g rad/s apart (simple roots); axial: sigma = 0 x %d with %d Jordan chains\n", imag, worst, gap,
-              sp.axial.zeros, sp.axial.zeros - sp.axial.zero_eigenvectors);
+              "%.3g rad/s apart (simple roots)\n", imag, worst, gap);
   EXPECT_LT(imag, sp.tolerance);
   EXPECT_LT(worst, 1e-9 * std::sqrt(ge.eigenvalues().maxCoeff()));
   EXPECT_GT(gap, 1e-3);
   EXPECT_TRUE(sp.stable);
-  EXPECT_EQ(sp.axial.zeros, 6);
-  EXPECT_EQ(sp.axial.zeros - sp.axial.zero_eigenvectors, 3);
 }

