@@ -227,7 +227,9 @@ bool build_shape(const ShapeSpec& shape, double size, double radial_size, const 
                    shape.dims.count("inner_radius") ? dim(shape, "inner_radius") : 0.0, free);
   } else if (shape.kind == "cone") {
     if (free > 0 && layers && layers->wall_size > 0)
-      throw std::runtime_error("cone: wall layers with a free surface are not built yet");
+      throw std::runtime_error("cone: a viscous partially filled cone is not built yet (its wall layers with a free "
+                               "surface); possible: the cone partially filled with ideal fluid (no --ekman), the cone "
+                               "full with --ekman, or a viscous partially filled sphere, spheroid or cylinder");
     if (layers && layers->wall_size > 0 && layers->wall_layer > layers->wall_size) {
       build_layered_cone(dim(shape, "radius"), dim(shape, "height"), size, *layers);
       return true;
