@@ -53,8 +53,9 @@ ComplexLu::ComplexLu(MPI_Comm comm, std::string prefix, bool complex_symmetric)
   ZMUMPS_STRUC_C& id = mumps_->id;
   id.comm_fortran = static_cast<int>(MPI_Comm_c2f(comm));
   id.par = 1;  // rank 0 works too
-  // LU unless told the matrix is complex symmetric: the eigensolvers' shifted pencils are not (measured: SYM = 2 on
-  // their lower triangle found a wrong mode).
+  // LU unless told the matrix is complex symmetric. The eigensolvers keep LU: SYM = 2 on their shifted operator's
+  // lower triangle once found a wrong mode (the cause not found); the response solves are checked against LU
+  // (test ViscousFreeSurface.SymmetricFactorsSolveAsTheLu).
   id.sym = complex_symmetric ? 2 : 0;
   run(-1, "initialisation");
   icntl(id, 1) = 0;  // errors are reported through INFOG, not printed (0, not −1: with parallel analysis

@@ -129,7 +129,8 @@ int KrylovBasis::add(Eigen::MatrixXcd W, Eigen::MatrixXcd MW) {
   while (first < G.rows() && !(es.eigenvalues()[first] > 1e-14)) ++first;
   const Eigen::Index r = G.rows() - first;
   if (r == 0) return 0;
-  const Eigen::MatrixXcd T = es.eigenvectors().rightCols(r) * es.eigenvalues().tail(r).cwiseSqrt().cwiseInverse().asDiagonal();
+  const Eigen::MatrixXcd T =
+      es.eigenvectors().rightCols(r) * es.eigenvalues().tail(r).cwiseSqrt().cwiseInverse().asDiagonal();
   append(W * T, MW * T);
   return static_cast<int>(r);
 }

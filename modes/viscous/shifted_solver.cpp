@@ -16,7 +16,8 @@ std::string describe(std::complex<double> sigma) {
 }  // namespace
 
 // MUMPS's settings and the -response_ options: complex_lu.hpp.
-ShiftedSolver::ShiftedSolver(const ViscousForms& forms) : forms_(forms), lu_(comm_of(forms.A), "response_", forms.complex_symmetric) {
+ShiftedSolver::ShiftedSolver(const ViscousForms& forms)
+    : forms_(forms), lu_(comm_of(forms.A), "response_", forms.complex_symmetric) {
   // −A on A's pattern, which holds M̂'s and the i𝓜 block's (viscous_forms.cpp).
   petsc_check(MatDuplicate(forms.A, MAT_COPY_VALUES, base_.out()), "MatDuplicate");
   petsc_check(MatScale(base_, -1.0), "MatScale");

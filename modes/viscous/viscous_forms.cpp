@@ -222,7 +222,7 @@ ViscousForms assemble_viscous_forms(const TaylorHoodSpace& space, double centroi
   forms.real_slots = block_vector(forms.A, std::vector<double>(n, 1.0));
   petsc_check(MatCreateVecs(forms.M, forms.mass_diagonal.out(), nullptr), "MatCreateVecs");
   petsc_check(MatGetDiagonal(forms.M, forms.mass_diagonal), "MatGetDiagonal");
-  forms.complex_symmetric = true;  // the pencil of the header's comment (test ComplexLu.SymmetricFactorsSolveAsTheLu)
+  forms.complex_symmetric = true;  // the pencil of the header's comment (test ViscousFreeSurface.SymmetricFactorsSolveAsTheLu)
   return forms;
 }
 

@@ -69,12 +69,12 @@ std::string complex_text(std::complex<double> z) {
 std::string mesh_verdict(const GeneralConfirmation& c, const MeshCheckOutcome& m, double tolerance) {
   if (!m.check) return "; mesh error NOT MEASURED (" + m.not_measured + ")";
   const GeneralMeshCheck& check = *m.check;
+  if (check.errors.empty()) return "; mesh error: no root to check";
   std::size_t worst = 0;
   for (std::size_t j = 1; j < check.errors.size(); ++j)
     if (!(check.errors[j].relative() <= check.errors[worst].relative())) worst = j;
   std::ostringstream os;
   os << std::setprecision(2);
-  if (check.errors.empty()) return "; mesh error: no root to check";
   const std::string root = "the root " + complex_text(c.confirmed[worst]);
   if (check.all_converged()) {
     os << "; mesh error: every growth rate within " << 100 * tolerance << " % (largest: " << root << ", "

@@ -8,9 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <iomanip>
 #include <numbers>
-#include <sstream>
 #include <set>
 #include <stdexcept>
 
@@ -55,12 +53,6 @@ std::vector<std::pair<fs::path, std::set<int>>> viscous_tables(const Scene& scen
   return out;
 }
 
-std::string exact_number(double x) {
-  std::ostringstream os;
-  os << std::setprecision(17) << x;
-  return os.str();
-}
-
 // The arguments that remake a 3-D response table exact at `exact_at` (none: no --exact-at) into `output`, at another
 // Ekman number when `ekman` > 0: its recorded command line with -o, any earlier --exact-at and, then, --ekman
 // replaced; a `volume` file from the text the table stores when the recorded path is gone. `coarsen` > 1 makes
@@ -102,12 +94,12 @@ std::vector<std::string> remake_arguments(const rc::ModeTable& t, const std::vec
     }
     args.push_back(word);
   }
-  if (ekman > 0) args.insert(args.end(), {"--ekman", exact_number(ekman)});
+  if (ekman > 0) args.insert(args.end(), {"--ekman", number_text(ekman)});
   if (coarsen != 1) {
     double wall = coarsen * t.mesh_h_wall;
     if (wall_layer > 0) wall = std::min(wall, wall_layer);
-    args.insert(args.end(), {"--mesh-size", exact_number(coarsen * t.mesh_h), "--wall-size", exact_number(wall)});
-    if (near_wall > 0) args.insert(args.end(), {"--near-wall-size", exact_number(coarsen * near_wall)});
+    args.insert(args.end(), {"--mesh-size", number_text(coarsen * t.mesh_h), "--wall-size", number_text(wall)});
+    if (near_wall > 0) args.insert(args.end(), {"--near-wall-size", number_text(coarsen * near_wall)});
   }
   if (!exact_at.empty()) args.insert(args.end(), {"--exact-at", complex_list(exact_at)});
   args.insert(args.end(), {"-o", output.string()});

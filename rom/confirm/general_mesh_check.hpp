@@ -7,7 +7,7 @@
 // change; where the rate converges at order p in the element size, the table mesh's own error is |Δ| / (coarsen^p − 1).
 // The bar is that at first order, |Δ| / (coarsen − 1) = 2|Δ| (mesh_error.hpp, two levels at ratio 1.5): an
 // over-estimate once the layers are resolved (P2 and above converge faster), and what covers the under-resolved
-// tables users start from (measured: a P2 table's nutation decay 0.02102 ± 0.0032 where finer tables converge to 0.0231;
+// tables users start from (measured: a P2 table's nutation decay 0.02102 ± 0.0031 where finer tables converge to 0.0231;
 // docs/rom.md, "Mesh error of confirmed roots"). A rate whose bar exceeds the tolerance is NOT CONVERGED.
 #pragma once
 

@@ -52,6 +52,12 @@ fs::path section_file(const rc::ModeTable& t, const std::string& recorded, const
   return file;
 }
 
+std::string number_text(double v) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.17g", v);
+  return text;
+}
+
 std::string complex_list(const std::vector<std::complex<double>>& z) {
   std::string out;
   char item[96];

@@ -24,6 +24,9 @@ bool is_shape(const std::string& word);
 std::filesystem::path section_file(const rc::ModeTable& table, const std::string& recorded,
                                    const std::filesystem::path& scratch);
 
+// A number as cavity-modes reads it back, to full precision ("%.17g").
+std::string number_text(double v);
+
 // --sigma's list syntax (cavity-modes parse_sigma_spec): "re+imi" items separated by commas, full precision; what
 // --exact-at takes.
 std::string complex_list(const std::vector<std::complex<double>>& z);

@@ -40,12 +40,6 @@ bool is_kept(const std::string& name) {
 }
 
 // A number as the command line takes it, to full precision.
-std::string number_text(double v) {
-  char text[40];
-  std::snprintf(text, sizeof text, "%.17g", v);
-  return text;
-}
-
 }  // namespace
 
 std::vector<std::string> serve_arguments(const rc::ModeTable& t, const fs::path& scratch, double ekman,
