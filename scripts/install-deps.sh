@@ -10,7 +10,7 @@ if [ "${1:-}" = "--help" ] || [ "${1:-}" = "-h" ]; then
 fi
 
 PACKAGES=(
-  build-essential cmake pkg-config
+  build-essential cmake pkg-config ninja-build
   libpetsc-real-dev libslepc-real-dev   # PETSc/SLEPc, real scalars (the problem is real symmetric)
   libgmsh-dev                           # gmsh C++ API for meshing meridian sections
   libopenblas0-serial                   # optimised BLAS/LAPACK for MUMPS (Debian's alternatives pick it over the

@@ -1,5 +1,6 @@
 #include "rational_fit.hpp"
 
+#include "complex_svd.hpp"
 #include "eigen_dense.hpp"
 
 #include <algorithm>
@@ -41,14 +42,13 @@ Barycentric aaa(const VecC& Z, const VecC& F, double tolerance, int max_degree) 
         cauchy(r, c) = 1.0 / (Z[rest[r]] - Z[picked[c]]);
         loewner(r, c) = (F[rest[r]] - F[picked[c]]) * cauchy(r, c);
       }
-    Eigen::BDCSVD<MatC> svd(loewner, Eigen::ComputeThinV);
     b.support.resize(n);
     b.values.resize(n);
     for (Eigen::Index c = 0; c < n; ++c) {
       b.support[c] = Z[picked[c]];
       b.values[c] = F[picked[c]];
     }
-    b.weights = svd.matrixV().col(n - 1);
+    b.weights = smallest_right_singular_vector(loewner, "the AAA fit's Loewner matrix");
     R = F;
     const VecC num = cauchy * b.weights.cwiseProduct(b.values), den = cauchy * b.weights;
     for (Eigen::Index r = 0; r < cauchy.rows(); ++r) R[rest[r]] = num[r] / den[r];

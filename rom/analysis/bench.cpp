@@ -15,7 +15,7 @@
 #include "work_precision.hpp"
 
 #include "eigen_dense.hpp"
-#include <unsupported/Eigen/MatrixFunctions>
+#include "matrix_exponential.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -65,7 +65,8 @@ void add_exact_row(const WorkSetup& w, const BenchOptions& opt, BenchResult& out
       if (mf.undamped_real && !mf.real) snap_to_imaginary_axis(mf);
       y = modal_state_at(mf, w.p.y0, w.p.T);
     } else {
-      y = (w.f.B * cd(w.p.T)).exp() * w.p.y0;  // defective spectrum: the exponential itself
+      // defective spectrum: the exponential itself
+      y = rc::matrix_exponential(Eigen::MatrixXcd(w.f.B * cd(w.p.T))) * w.p.y0;
     }
   }, opt.min_seconds);
   BenchRow rx;

@@ -4,8 +4,8 @@
 #include "magnus.hpp"
 #include "periodic_system.hpp"
 #include "spectrum.hpp"
+#include "matrix_exponential.hpp"
 
-#include <unsupported/Eigen/MatrixFunctions>
 
 #include <algorithm>
 #include <cmath>
@@ -27,7 +27,7 @@ Eigen::MatrixXd magnus_step(const GeneralChain& g, double s, double t, double h,
   const Eigen::MatrixXd A2 = h * periodic_matrix(g, t + kMagnusNodes[1] * h, s);
   const Eigen::MatrixXd A3 = h * periodic_matrix(g, t + kMagnusNodes[2] * h, s);
   if (mean) *mean += (5 * A1 + 8 * A2 + 5 * A3) / 18;  // Gauss's rule: ∫B over the step
-  return magnus_exponent(A1, A2, A3).exp();
+  return rc::matrix_exponential(magnus_exponent(A1, A2, A3));
 }
 
 Eigen::MatrixXd monodromy(const GeneralChain& g, double s, int steps, Eigen::MatrixXd& mean) {

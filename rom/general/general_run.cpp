@@ -4,8 +4,8 @@
 #include "floquet.hpp"
 #include "periodic_system.hpp"
 #include "general_system.hpp"
+#include "matrix_exponential.hpp"
 
-#include <unsupported/Eigen/MatrixFunctions>
 
 #include <chrono>
 #include <cmath>
@@ -115,7 +115,7 @@ class OutputSteps {
     }
     Eigen::MatrixXd B = sys.B;
     const Eigen::VectorXd S = balance_in_place(B);  // B = S B' S⁻¹: exp(B h) = S exp(B' h) S⁻¹
-    constant_ = S.asDiagonal() * (B * h).exp() * S.cwiseInverse().asDiagonal();
+    constant_ = S.asDiagonal() * rc::matrix_exponential(Eigen::MatrixXd(B * h)) * S.cwiseInverse().asDiagonal();
   }
   // y at the next output time t.
   const Eigen::VectorXd& next(double t) {

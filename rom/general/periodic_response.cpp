@@ -3,8 +3,8 @@
 #include "floquet.hpp"
 #include "magnus.hpp"
 #include "periodic_system.hpp"
+#include "matrix_exponential.hpp"
 
-#include <unsupported/Eigen/MatrixFunctions>
 
 #include <algorithm>
 #include <cmath>
@@ -62,7 +62,7 @@ Eigen::MatrixXcd augmented_step(GaussSamples& samples, int j, double Omega) {
     A[i].topLeftCorner(dim, dim).diagonal().array() -= cd(0, Omega * samples.h());
     A[i].topRightCorner(dim, 1) = hb;
   }
-  return magnus_exponent(A[0], A[1], A[2]).exp();
+  return rc::matrix_exponential(magnus_exponent(A[0], A[1], A[2]));
 }
 
 // Singular values of I − e^{−iΩT}Φ below this fraction of the largest count as zero; a least-squares residual above

@@ -1,6 +1,7 @@
 #include "exact_propagation.hpp"
 
 #include "balancing.hpp"
+#include "complex_svd.hpp"
 #include "real_matrix_product.hpp"
 
 #include "eigen_dense.hpp"
@@ -16,11 +17,10 @@ namespace rc::rom {
 namespace {
 using cd = std::complex<double>;
 
-// The 2-norm condition number of the eigenvectors, real or complex: both through the one complex SVD that
-// common/eigen_dense.hpp compiles once (a real BDCSVD of its own cost this file about 60 s of compile time).
+// The 2-norm condition number of the eigenvectors, real or complex: both through LAPACK's complex SVD
+// (common/complex_svd.hpp; an Eigen SVD of its own cost this file about 60 s of compile time).
 double condition_of(const Eigen::MatrixXcd& V) {
-  const Eigen::BDCSVD<Eigen::MatrixXcd> svd(V);  // singular values only
-  const auto& sv = svd.singularValues();
+  const Eigen::VectorXd sv = singular_values(V, "the eigenvector matrix");
   return sv(0) / sv(sv.size() - 1);
 }
 

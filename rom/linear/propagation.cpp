@@ -6,8 +6,8 @@
 #include "forced_solution.hpp"
 #include "spectrum.hpp"
 
-#include <unsupported/Eigen/MatrixFunctions>
 #include "eigen_dense.hpp"
+#include "matrix_exponential.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -281,7 +281,7 @@ void run_exact(const ChainModel& m, const FirstOrderSystem& f, const Eigen::Vect
     hist.method_used = snap ? "exact (eigen-decomposition, real roots)" : "exact (eigen-decomposition)";
     return;
   }
-  const Eigen::MatrixXcd Phi = (f.B * cd(h)).exp();
+  const Eigen::MatrixXcd Phi = rc::matrix_exponential(Eigen::MatrixXcd(f.B * cd(h)));
   Eigen::VectorXcd y = y0;
   rec.store(0, y);
   for (long j = 1; j <= steps; ++j) {

@@ -1,6 +1,7 @@
 #include "characteristic.hpp"
 
 #include "base_translation.hpp"
+#include "complex_svd.hpp"
 
 #include "eigen_dense.hpp"
 #include <cmath>
@@ -69,8 +70,8 @@ double characteristic_residual(const ChainModel& m, cd sigma, double scale) {
     if (std::abs(sigma + m.bodies[md.body].omega - md.lambda_c()) <= tiny)
       return std::numeric_limits<double>::quiet_NaN();
   Terms t = evaluate(m, sigma);
-  Eigen::BDCSVD<Eigen::MatrixXcd> svd(t.Phi);  // values only; Jacobi is O(n^3) with a large constant: 12 s at n = 100
-  return svd.singularValues().minCoeff() / t.norm_sum;
+  // Values only, by divide and conquer (LAPACK's zgesdd; Jacobi is O(n^3) with a large constant: 12 s at n = 100).
+  return singular_values(t.Phi, "the characteristic matrix").minCoeff() / t.norm_sum;
 }
 
 }  // namespace rc::rom

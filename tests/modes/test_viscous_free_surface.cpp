@@ -17,6 +17,7 @@
 #include "viscous_table.hpp"
 #include "meridian_mesh.hpp"
 
+#include <numbers>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -31,7 +32,7 @@ using cd = std::complex<double>;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kPi = std::numbers::pi;
 const cd I(0, 1);
 
 // The damped mode nearest `target` of the cylinder (radius 1, height 2) filled to 0.9 at Ekman number ek, on the
