@@ -13,7 +13,7 @@ and prints the observed convergence orders (slope of log error against log h for
 
     /usr/bin/python3 bench/cavity_modes_bench.py [BINARY] [--quick] [--repeat N]
 
-Needs Debian's python3-numpy, python3-scipy and python3-matplotlib (scripts/install-deps.sh).
+Needs Debian's python3-numpy and python3-matplotlib (scripts/install-deps.sh) and python3-scipy (apt-get install python3-scipy).
 """
 import argparse
 import csv
@@ -33,7 +33,11 @@ import functools
 
 import numpy as np
 from numpy.polynomial.legendre import leggauss as _leggauss
-from scipy.special import jv
+try:
+    from scipy.special import jv
+except ImportError:
+    sys.exit("cavity_modes_bench.py: needs Debian's python3-scipy: apt-get install python3-scipy "
+             "(bench only, so scripts/install-deps.sh leaves it out)")
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)

@@ -15,7 +15,7 @@ bench/cavity_modes_bench.py's own functions (imported, not copied). Writes
     /usr/bin/python3 bench/separable_cylinder_bench.py [BINARY] [--repeat N] [--quick] [--no-check-set]
     /usr/bin/python3 bench/separable_cylinder_bench.py --replot bench/results/separable_cylinder_<date>.csv
 
-Needs Debian's python3-numpy, python3-scipy and python3-matplotlib (scripts/install-deps.sh).
+Needs Debian's python3-numpy and python3-matplotlib (scripts/install-deps.sh) and python3-scipy (apt-get install python3-scipy).
 """
 import argparse
 import csv

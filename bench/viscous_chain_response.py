@@ -11,9 +11,13 @@ response (Greenspan's Ek^1/2 theory with the Ekman layer driven at the nutation 
 R is analytic near the real axis (the poles lambda_l have Im > 0), so it is sampled on a short real segment
 around the ideal nutation frequency and continued as a polynomial to the complex root (|Im s| ~ 1e-2).
 Writes bench/results/viscous_chain_response_<date>.csv and prints a markdown table."""
-import argparse, json, os, subprocess, tempfile
+import argparse, json, os, subprocess, sys, tempfile
 import numpy as np
-from scipy.integrate import quad
+try:
+    from scipy.integrate import quad
+except ImportError:
+    sys.exit("viscous_chain_response.py: needs Debian's python3-scipy: apt-get install python3-scipy "
+             "(bench only, so scripts/install-deps.sh leaves it out)")
 
 from results_csv import write_results
 

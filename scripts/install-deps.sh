@@ -24,7 +24,8 @@ PACKAGES=(
   libcli11-dev libtomlplusplus-dev libfmt-dev nlohmann-json3-dev
   libgtest-dev
   python3-h5py python3-matplotlib python3-numpy   # plotting scripts (Debian's /usr/bin/python3)
-  python3-scipy                         # bench/cavity_modes_bench.py: Bessel functions for the exact cylinder modes
+  # bench only, not installed here: python3-scipy (bench/cavity_modes_bench.py's Bessel functions,
+  # bench/viscous_chain_response.py's quadrature; left out to keep the first run short)
   # optional, not installed here (~0.5 GB): paraview python3-paraview -- tests/modes/fields_test.sh then also
   # opens the --fields XDMF companion with ParaView's own readers
 )
