@@ -4,8 +4,8 @@
 #include "magnus.hpp"
 #include "periodic_system.hpp"
 #include "spectrum.hpp"
-#include "matrix_exponential.hpp"
 
+#include "matrix_exponential.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -4,8 +4,8 @@
 #include "floquet.hpp"
 #include "periodic_system.hpp"
 #include "general_system.hpp"
-#include "matrix_exponential.hpp"
 
+#include "matrix_exponential.hpp"
 
 #include <chrono>
 #include <cmath>

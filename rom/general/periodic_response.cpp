@@ -3,8 +3,8 @@
 #include "floquet.hpp"
 #include "magnus.hpp"
 #include "periodic_system.hpp"
-#include "matrix_exponential.hpp"
 
+#include "matrix_exponential.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -17,7 +17,6 @@
 #include "viscous_table.hpp"
 #include "meridian_mesh.hpp"
 
-#include <numbers>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -25,6 +24,7 @@
 #include <cmath>
 #include <complex>
 #include <cstdio>
+#include <numbers>
 
 using namespace rc;
 using namespace rc::modes;
