@@ -9,16 +9,15 @@
 #include "partial_fill_cylinder.hpp"
 #include "partial_fill_table.hpp"
 #include "offset_rows.hpp"
-#include "passivity_scan.hpp"
 #include "ideal_response.hpp"
 #include "petsc_handles.hpp"
 #include "progress.hpp"
-#include "rational_fit.hpp"
 #include "response_samples.hpp"
 #include "table_assembly.hpp"
 #include "separable_table.hpp"
 #include "viscous_response.hpp"
 #include "viscous_table.hpp"
+#include "window_fit.hpp"
 
 #include <fmt/format.h>
 
@@ -261,58 +260,6 @@ CavityResponse compute_cavity_response(const ResponseRequest& req) {
   return req.separable ? separable_response(req) : mesh_response(req);
 }
 
-namespace {
-
-constexpr int kMaxRefinements = 6;
-constexpr int kMaxPassivityRounds = 8;  // rounds that add samples where the fit dips below Im R = 0 (or errs after that)
-constexpr std::size_t kMaxSamplesFactor = 4;
-
-struct WindowFit {
-  RationalFit fit;
-  double error = 0;                 // max |fit − R| over the held-out samples / max |R| on the window
-  std::vector<std::size_t> erring;  // window samples (held out) where the fit errs by more than the allowed error
-};
-
-// AAA on the even window samples and the tail; judged on the odd window samples.
-WindowFit fit_window(const std::vector<double>& s, const std::vector<std::complex<double>>& R,
-                     const std::vector<double>& tail, const std::vector<std::complex<double>>& tail_R,
-                     double max_error) {
-  std::vector<double> z;
-  std::vector<std::complex<double>> f;
-  for (std::size_t k = 0; k < s.size(); k += 2) {
-    z.push_back(s[k]);
-    f.push_back(R[k]);
-  }
-  z.insert(z.end(), tail.begin(), tail.end());
-  f.insert(f.end(), tail_R.begin(), tail_R.end());
-  WindowFit w{fit_response(z, f, 1e-10), 0.0, {}};
-  double scale = 0;
-  for (const auto& r : R) scale = std::max(scale, std::abs(r));
-  for (std::size_t k = 1; k < s.size(); k += 2) {
-    const double e = std::abs(w.fit(s[k]) - R[k]) / scale;
-    w.error = std::max(w.error, e);
-    if (!(e <= max_error)) w.erring.push_back(k);
-  }
-  return w;
-}
-
-// Adds samples (s, R) to the sorted window, keeping it sorted.
-void merge_samples(std::vector<double>& s, std::vector<std::complex<double>>& R, const std::vector<double>& more_s,
-                   const std::vector<std::complex<double>>& more_R) {
-  std::vector<std::pair<double, std::complex<double>>> all;
-  for (std::size_t k = 0; k < s.size(); ++k) all.emplace_back(s[k], R[k]);
-  for (std::size_t k = 0; k < more_s.size(); ++k) all.emplace_back(more_s[k], more_R[k]);
-  std::sort(all.begin(), all.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  s.clear();
-  R.clear();
-  for (const auto& [x, r] : all) {
-    s.push_back(x);
-    R.push_back(r);
-  }
-}
-
-}  // namespace
-
 void check_response_window(const ResponseRequest& req, const std::string& what) {
   if (!(req.ekman > 0)) throw std::runtime_error(what + " (-o FILE.h5) needs --ekman");
   const std::size_t n = req.sigmas.size();
@@ -320,16 +267,6 @@ void check_response_window(const ResponseRequest& req, const std::string& what) 
   for (std::size_t k = 0; k < n; ++k)
     if (req.sigmas[k].imag() != 0 || (k > 0 && !(req.sigmas[k].real() > req.sigmas[k - 1].real())))
       throw std::runtime_error(what + " needs increasing real frequencies (--sigma FROM:TO:N, no --sigma-imag)");
-}
-
-std::vector<double> response_tail(double lo, double hi) {
-  const double reach = std::max({std::abs(lo), std::abs(hi), 1.0});
-  std::vector<double> tail;
-  for (double t = 1.5 * reach; t <= 1000 * reach; t *= 1.5) {
-    if (t > hi) tail.push_back(t);
-    if (-t < lo) tail.push_back(-t);
-  }
-  return tail;
 }
 
 namespace {
@@ -407,186 +344,33 @@ std::string fit_failure(double lo, double hi, double err, double max_error, int 
 
 namespace {
 
-// The fit of R on the window and its samples, refined where it errs or dips below Im R = 0 (docs/viscous.md, "Response
-// fit"). Fitted on every other window sample and the tail, judged on the rest: the error is that of the fit between
-// its data. Where it is too large, samples are added halfway to the neighbours of each point that erred, and the fit
-// is made again (at most kMaxRefinements times, up to kMaxSamplesFactor times the samples given): R is resolved where
-// it varies fast (the peaks of weakly damped modes) without sampling the whole window that finely.
-class WindowRefinement {
- public:
-  WindowRefinement(const ResponseRequest& req, const ViscousForms& forms, ResponseSamples& kept, bool split,
-                   const CavityResponse& R, const std::vector<double>& tail, double max_error, Progress& lines)
-      : req_(req), forms_(forms), kept_(kept), split_(split), tail_(tail), max_error_(max_error),
-        cap_(std::max<std::size_t>(kMaxSamplesFactor * req.sigmas.size(), 400)), lines_(lines) {
-    const auto n = static_cast<long>(req.sigmas.size());
-    window_R = {R.R.begin(), R.R.begin() + n};
-    tail_R_ = {R.R.begin() + n, R.R.end()};
-    for (const auto& sigma : req.sigmas) window_s.push_back(sigma.real());
-    w = fit_window(window_s, window_R, tail_, tail_R_, max_error_);
-  }
-
-  void refine_by_error() {
-    while (!(w.error <= max_error_) && refinements < kMaxRefinements && window_s.size() < cap_ && !w.erring.empty())
-      refine(around_erring(), "error");
-  }
-
-  // R itself is passive (Im R >= 0, common/passivity_scan.hpp); where the fit dips below 0 between samples it misses
-  // a narrow feature of R that the held-out samples did not catch: R is solved there and halfway to its neighbours,
-  // the fit made again (and refined by its error again if the new samples raise it), a few rounds at most. A fit
-  // that is passive after the error's refinement is left as it is; if the rounds end with the error above the
-  // allowed one, the last fit within it is taken back (its dip is then reported by the caller).
-  void refine_for_passivity() {
-    if (!(w.error <= max_error_)) return;
-    State passing{window_s, window_R, w};
-    const double lo = req_.sigmas.front().real(), hi = req_.sigmas.back().real();
-    for (int round = 0; round < kMaxPassivityRounds && window_s.size() < cap_; ++round) {
-      if (w.error <= max_error_) {
-        passing = State{window_s, window_R, w};
-        const PassivityScan scan = scan_passivity(w.fit.poles, w.fit.residues, lo, hi);
-        if (scan.passive()) break;
-        refine(around(scan.at), "passivity");
-      } else {
-        if (w.erring.empty()) break;
-        refine(around_erring(), "error");
-      }
-    }
-    if (!(w.error <= max_error_)) {
-      window_s = std::move(passing.s);
-      window_R = std::move(passing.R);
-      w = std::move(passing.w);
-    }
-  }
-
-  std::vector<double> window_s;
-  std::vector<std::complex<double>> window_R;
-  WindowFit w;
-  int refinements = 0;
-
- private:
-  struct State {
-    std::vector<double> s;
-    std::vector<std::complex<double>> R;
-    WindowFit w;
-  };
-
-  // Solves R at `added` (sorted, unique, cut to the cap), merges the samples and fits again.
-  void refine(std::vector<double> added, const char* why) {
-    std::sort(added.begin(), added.end());
-    added.erase(std::unique(added.begin(), added.end()), added.end());
-    if (window_s.size() + added.size() > cap_) added.resize(cap_ - window_s.size());
-    ResponseRequest more = req_;
-    more.sigmas.assign(added.begin(), added.end());
-    // The run's one clock: the time left is this round's, and the number of rounds is not known in advance.
-    const CavityResponse extra =
-        viscous_cavity_response(more, forms_, lines_, fmt::format("response fit: refinement {} ({})", refinements + 1, why),
-                                " in this round (more rounds may follow)", &kept_, split_);
-    merge_samples(window_s, window_R, added, extra.R);
-    ++refinements;
-    w = fit_window(window_s, window_R, tail_, tail_R_, max_error_);
-    lines_.note(fmt::format("response fit: refinement {} ({}): {} samples on the window, error between them {:.2g}",
-                            refinements, why, window_s.size(), w.error));
-  }
-  void halfway_around(std::size_t k, std::vector<double>& added) const {
-    if (k > 0) added.push_back(0.5 * (window_s[k - 1] + window_s[k]));
-    if (k + 1 < window_s.size()) added.push_back(0.5 * (window_s[k] + window_s[k + 1]));
-  }
-  std::vector<double> around_erring() const {
-    std::vector<double> added;
-    for (const std::size_t k : w.erring) halfway_around(k, added);
-    return added;
-  }
-  // s itself (unless a sample) and halfway to its neighbouring samples.
-  std::vector<double> around(double s) const {
-    std::vector<double> added;
-    const auto k = static_cast<std::size_t>(std::lower_bound(window_s.begin(), window_s.end(), s) - window_s.begin());
-    if (k == window_s.size() || window_s[k] != s) added.push_back(s);
-    if (k > 0) added.push_back(0.5 * (window_s[k - 1] + s));
-    if (k < window_s.size()) added.push_back(0.5 * (s + window_s[k]));
-    return added;
-  }
-
-  const ResponseRequest& req_;
-  const ViscousForms& forms_;
-  ResponseSamples& kept_;
-  const bool split_;
-  const std::vector<double>& tail_;
-  std::vector<std::complex<double>> tail_R_;
-  const double max_error_;
-  const std::size_t cap_;
-  Progress& lines_;
-};
-
-// The fit's poles and residues as the table's pseudo-modes (a + i a_imag = sqrt(residue/2), N2 = 1); returns the sum
-// of the residues.
-std::complex<double> add_pseudo_modes(ModeTable& t, const RationalFit& fit, double err) {
-  std::complex<double> sum = 0;
-  for (std::size_t j = 0; j < fit.poles.size(); ++j) {
-    const auto p = fit.poles[j], r = fit.residues[j];
-    const std::complex<double> a = std::sqrt(r / 2.0);
-    t.lambda.push_back(p.real());
-    t.kappa.push_back(2 / p.real());
-    t.decay.push_back(p.imag());
-    t.E.push_back(r.real());
-    t.E_imag.push_back(r.imag());
-    t.a.push_back(a.real());
-    t.a_imag.push_back(a.imag());
-    t.N2.push_back(1.0);
-    t.residual.push_back(std::max(err, std::numeric_limits<double>::epsilon()));  // the fit's error stands for it
-    sum += r;
-  }
-  return sum;
-}
-
-// The fluid is passive, Im R >= 0 on the real axis (common/passivity_scan.hpp); the fit only to its accuracy, and
-// between samples it can dip where R has a narrow feature. Reported (a warning and the returned phrase), not enforced.
-std::string passivity_phrase(const RationalFit& fit, double lo, double hi) {
-  const PassivityScan passivity = scan_passivity(fit.poles, fit.residues, lo, hi);
-  const std::string passive =
-      passivity.passive()
-          ? fmt::format("passive on the window (min Im R = {:.2g} max|R|)", passivity.min_im)
-          : fmt::format("NOT passive on the window: Im R = {:.2g} max|R| at s = {:.6g}", passivity.min_im, passivity.at);
-  if (!passivity.passive() && is_root_rank())
-    std::cerr << "cavity-modes: warning: the fit is " << passive
-              << " (R itself has Im R >= 0): more samples there (--sigma) or a smaller --max-fit-error\n";
-  return passive;
-}
-
-}  // namespace
-
-namespace {
-
-// One rational fit of R on the request's window (at its offset with a free surface), refined where it errs or is not
-// passive; throws (fit_failure) when the error stays above max_error.
-struct WindowedFit {
-  RationalFit fit;
-  double error = 0;
-  int refinements = 0;
-  std::size_t samples = 0;      // on the window, after the refinements
-  std::complex<double> tail_R;  // R at the tail's last frequency (s R(s) there is the residues' sum)
-  CavityResponse first;         // the first samples' response (method, unknowns)
-};
-
-WindowedFit fit_on_window(const ResponseRequest& req, const ViscousForms& forms, ResponseSamples& kept, bool split,
-                          const std::vector<double>& tail, double max_error, Progress& lines) {
-  ResponseRequest all = req;
-  for (const double t : tail) all.sigmas.emplace_back(t, 0.0);
+// One rational fit of R on the request's window (at its offset with a free surface) by the finite elements' forced
+// solves, refined where it errs or is not passive (viscous/window_fit.hpp); throws (fit_failure) when the error stays
+// above max_error. `first` receives the first samples' response (its method line and unknowns).
+WindowedFit fe_window_fit(const ResponseRequest& req, const ViscousForms& forms, ResponseSamples& kept, bool split,
+                          const std::vector<double>& tail, double max_error, Progress& lines, CavityResponse& first) {
   const auto solve_start = std::chrono::steady_clock::now();
-  WindowedFit out;
-  out.first = viscous_cavity_response(all, forms, lines, "response fit: first samples",
-                                      " for the first samples (refinements may follow)", &kept, split);
-  WindowRefinement refinement(req, forms, kept, split, out.first, tail, max_error, lines);
-  refinement.refine_by_error();
-  refinement.refine_for_passivity();
-  const double lo = req.sigmas.front().real(), hi = req.sigmas.back().real();
-  out.samples = refinement.window_s.size();
-  if (!(refinement.w.error <= max_error))
-    throw std::runtime_error(fit_failure(lo, hi, refinement.w.error, max_error, refinement.refinements,
-                                         out.samples + tail.size(), out.samples, kept, solve_start));
-  out.fit = refinement.w.fit;
-  out.error = refinement.w.error;
-  out.refinements = refinement.refinements;
-  out.tail_R = out.first.R.back();
-  return out;
+  std::size_t solved = 0;
+  const ResponseSampler sample = [&](const std::vector<double>& s, const std::string& round) {
+    ResponseRequest at = req;
+    at.sigmas.assign(s.begin(), s.end());
+    const bool first_round = round == "first samples";
+    // The run's one clock: the time left is this round's, and the number of rounds is not known in advance.
+    CavityResponse r = viscous_cavity_response(at, forms, lines, "response fit: " + round,
+                                               first_round ? " for the first samples (refinements may follow)"
+                                                           : " in this round (more rounds may follow)",
+                                               &kept, split);
+    solved += s.size();
+    if (first_round) first = r;
+    return r.R;
+  };
+  std::vector<double> window;
+  for (const auto& sigma : req.sigmas) window.push_back(sigma.real());
+  const WindowedFit w = fit_on_window(sample, window, tail, max_error, [&](const std::string& l) { lines.note(l); });
+  if (!(w.error <= max_error))
+    throw std::runtime_error(fit_failure(window.front(), window.back(), w.error, max_error, w.refinements, solved,
+                                         w.samples, kept, solve_start));
+  return w;
 }
 
 // The offsets (table units) at which a partially filled tank's response is fitted: R(c) is quadratic in c, so three
@@ -617,10 +401,13 @@ ModeTable partially_filled_fit_table(const ResponseRequest& req, double max_erro
                                                    split ? PETSC_COMM_SELF : PETSC_COMM_WORLD);
   ResponseSamples none;
   std::array<WindowedFit, 3> fits;
+  CavityResponse first;
   for (std::size_t i = 0; i < fits.size(); ++i) {
     ResponseRequest at = req;
     at.offset = kFitOffsets[i];
-    fits[i] = fit_on_window(at, forms, none, split, tail, max_error, lines);
+    CavityResponse first_at;
+    fits[i] = fe_window_fit(at, forms, none, split, tail, max_error, lines, first_at);
+    if (i == 1) first = first_at;
   }
   const double lo = req.sigmas.front().real(), hi = req.sigmas.back().real();
   double err = 0;
@@ -632,7 +419,7 @@ ModeTable partially_filled_fit_table(const ResponseRequest& req, double max_erro
                         fits[i].fit.dropped_poles, fits[i].samples, fits[i].refinements, fits[i].error,
                         passivity_phrase(fits[i].fit, lo, hi));
   }
-  ModeTable t = response_table_start(req, fits[1].first.unknowns);
+  ModeTable t = response_table_start(req, first.unknowns);
   t.fit_error = err;
   const std::complex<double> sum = add_offset_pseudo_modes(t, fits, err);
   t.coverage = t.sum_rule > 0 ? sum.real() / t.sum_rule : 1.0;
@@ -643,7 +430,7 @@ ModeTable partially_filled_fit_table(const ResponseRequest& req, double max_erro
   t.solver = fmt::format("AAA rational fits of R(c) on [{:g}, {:g}] and {} beyond it up to |s| = {:.3g} at c = -1, 0, "
                          "1 ({}); sum of residues about the centroid {:.9g}{:+.9g}i, A_f + K2 - J_zh = {:.9g}; R by {}",
                          lo, hi, tail.size(), std::abs(tail.back()), each, sum.real(), sum.imag(), t.sum_rule,
-                         fits[1].first.method);
+                         first.method);
   t.tolerance = 1e-10;
   t.sort_by_energy();
   t.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -671,11 +458,12 @@ ModeTable response_fit_table(const ResponseRequest& req, double max_error) {
       assemble_cavity_forms(req.shape, req.mesh, req.ekman, split ? PETSC_COMM_SELF : PETSC_COMM_WORLD);
   // Every forced solve is kept as it is made: a fit that misses its tolerance, or a stopped run, loses none of them.
   ResponseSamples kept = kept_samples(req, forms);
-  const WindowedFit w = fit_on_window(req, forms, kept, split, tail, max_error, lines);
+  CavityResponse first;
+  const WindowedFit w = fe_window_fit(req, forms, kept, split, tail, max_error, lines, first);
   const RationalFit& fit = w.fit;
   const double err = w.error;
 
-  ModeTable t = response_table_start(req, w.first.unknowns);
+  ModeTable t = response_table_start(req, first.unknowns);
   t.fit_error = err;
   const std::complex<double> sum = add_pseudo_modes(t, fit, err);
   t.coverage = t.sum_rule > 0 ? sum.real() / t.sum_rule : 1.0;
@@ -687,7 +475,7 @@ ModeTable response_fit_table(const ResponseRequest& req, double max_error) {
                          fit.aaa_degree, fit.poles.size(), fit.dropped_poles, w.samples, lo, hi, n,
                          w.refinements, tail.size(), std::abs(tail.back()), err,
                          passivity_phrase(fit, lo, hi), sum.real(), sum.imag(), tail.back(),
-                         (tail.back() * w.tail_R).real(), t.sum_rule, w.first.method);
+                         (tail.back() * w.tail_R).real(), t.sum_rule, first.method);
   if (kept.read() > 0) t.solver += fmt::format(" ({} forced solves were at hand from an earlier run's kept samples)",
                                                kept.read());
   t.tolerance = 1e-10;

@@ -8,6 +8,7 @@
 
 #include "meridian_mesh.hpp"
 #include "mode_table.hpp"
+#include "window_fit.hpp"
 
 #include <complex>
 #include <filesystem>
@@ -56,10 +57,6 @@ ModeTable response_fit_table(const ResponseRequest& request, double max_error);
 // A response table's window (req.sigmas): --ekman given, N >= 9 increasing real frequencies; else one line starting
 // with `what` ("a response-fit table").
 void check_response_window(const ResponseRequest& request, const std::string& what);
-
-// Samples beyond the window [lo, hi] on both sides, geometric (ratio 1.5) up to 1000 × max(|lo|, |hi|, 1): R's decay
-// as (its weight)/s, which a response table must follow there too.
-std::vector<double> response_tail(double lo, double hi);
 
 // A response table before its rows: the ideal problem's frozen-fluid integrals and J_zh (the shape's default mesh),
 // the viscous mesh's description, `unknowns`, and the window as fit_lo, fit_hi.

@@ -47,9 +47,7 @@ Triplets owned_rows(const Triplets& all, MPI_Comm comm, int size) {
 
 }  // namespace
 
-std::vector<ViscousMode> shell_modes_near(const ShellSettings& settings, std::complex<double> target, int pairs,
-                                          MPI_Comm comm) {
-  const ShellPencil pencil = assemble_shell_pencil(settings);
+ViscousForms shell_forms(const ShellPencil& pencil, MPI_Comm comm) {
   ViscousForms forms;
   const int n = pencil.size;
   forms.complex_size = n;
@@ -60,6 +58,12 @@ std::vector<ViscousMode> shell_modes_near(const ShellSettings& settings, std::co
   forms.iM = block_imaginary_mass(comm, n, mass);
   forms.coupling = block_vector(forms.A, std::vector<double>(n, 0.0));
   forms.real_slots = block_vector(forms.A, std::vector<double>(n, 1.0));
+  return forms;
+}
+
+std::vector<ViscousMode> shell_modes_near(const ShellSettings& settings, std::complex<double> target, int pairs,
+                                          MPI_Comm comm) {
+  const ViscousForms forms = shell_forms(assemble_shell_pencil(settings), comm);
   ViscousSolveSettings solve;
   solve.pairs = pairs;
   // MUMPS's defaults (pivoting threshold 0.01, no refinement) hold the shell's and the sphere's decay to Kore's at

@@ -20,6 +20,10 @@ struct Truncation {
 };
 Truncation default_truncation(double ekman, double inner_radius, int m, double factor = 1.0);
 
+// The pencil as the viscous solver's block-form matrices (viscous_forms.hpp), each rank holding its own rows; the
+// coupling vector is zero (shell_response.hpp sets the tilt's).
+ViscousForms shell_forms(const ShellPencil& pencil, MPI_Comm comm);
+
 // The damped modes closest to `target` (λ of e^{iλt}; the spin-over mode is near 1), sorted by distance, each with
 // its normwise backward error as `residual`. Throws std::runtime_error when the solver fails or finds none.
 std::vector<ViscousMode> shell_modes_near(const ShellSettings& settings, std::complex<double> target, int pairs,

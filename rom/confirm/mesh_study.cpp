@@ -54,7 +54,7 @@ std::string level_title(int level, bool by_order) {
   std::ostringstream os;
   if (by_order) os << "mesh level " << level << " (the order of level 0 raised by " << level << "):";
   else os << "mesh level " << level << " (every size of level 0 halved " << level << (level == 1 ? " time" : " times")
-          << "):";
+          << "; a spectral table's truncation raised 1.5 times as often):";
   return os.str();
 }
 

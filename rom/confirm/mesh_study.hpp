@@ -53,7 +53,8 @@ double symmetry_defect(const ChainModel& m, const std::vector<TankResponse>& tan
 // `level` times, or the order raised by `level` (MeshStudy::by_order).
 ServedMesh level_mesh(const MeshStudy& study, int level);
 
-// "mesh level 1 (every size of level 0 halved 1 time):", the heading of a level's lines in the log.
+// "mesh level 1 (every size of level 0 halved 1 time; a spectral table's truncation raised 1.5 times as often):",
+// the heading of a level's lines in the log.
 std::string level_title(int level, bool by_order);
 
 // Each root of `before` (NaN: skipped) iterated on (22) with `tanks`' R from its value there, one line per root to

@@ -96,12 +96,33 @@ void add_study_mesh(std::vector<std::string>& args, const rc::ModeTable& t, cons
   if (mesh.level > 0) args.insert(args.end(), {"--mesh-level", std::to_string(mesh.level)});
 }
 
+// A spectral table's (`cavity-modes shell ... --sigma ... -o FILE.h5`, docs/spherical.md): the shell's radius and
+// truncation options; a study's level raises the truncation 1.5 times a level (`shell --mesh-level`), and there is
+// no mesh size or element order to replace.
+std::vector<std::string> spectral_serve_arguments(const std::vector<std::string>& w, const rc::ModeTable& t,
+                                                  double ekman, double mesh_ekman, const ServedMesh& mesh) {
+  if (mesh.mesh_size > 0 || mesh.order > 0 || mesh.order_raise > 0)
+    throw std::runtime_error("a spectral table (cavity-modes shell) has no mesh size or element order: its study "
+                             "raises the truncation (--refine N, by size)");
+  std::vector<std::string> args{"shell"};
+  for (std::size_t i = 2; i + 1 < w.size(); ++i)
+    for (const char* k : {"--inner-radius", "--resolution", "--radial", "--lmax", "--mesh-ekman"})
+      if (w[i] == k && !(w[i] == std::string("--mesh-ekman") && mesh_ekman > 0)) args.insert(args.end(), {w[i], w[i + 1]});
+  args.insert(args.end(), {"--ekman", number_text(ekman > 0 ? ekman : t.ekman)});
+  if (mesh_ekman > 0) args.insert(args.end(), {"--mesh-ekman", number_text(mesh_ekman)});
+  if (mesh.level > 0) args.insert(args.end(), {"--mesh-level", std::to_string(mesh.level)});
+  args.push_back("--serve");
+  return args;
+}
+
 }  // namespace
 
 std::vector<std::string> serve_arguments(const rc::ModeTable& t, const fs::path& scratch, double ekman,
                                          double mesh_ekman, const ServedMesh& mesh) {
   if (!t.viscous()) throw std::runtime_error("it is an ideal-fluid table (its roots need no confirmation)");
   if (t.command_line.empty()) throw std::runtime_error("it records no command line (made before provenance)");
+  if (const std::vector<std::string> w = shell_words(t.command_line); w.size() > 1 && w[1] == "shell")
+    return spectral_serve_arguments(w, t, ekman, mesh_ekman, mesh);
   bool near_wall = false;
   std::vector<std::string> args = recorded_arguments(t, scratch, mesh_ekman, mesh, near_wall);
   args.insert(args.end(), {"--ekman", number_text(ekman > 0 ? ekman : t.ekman)});

@@ -25,6 +25,42 @@ no_csv "truncation beyond memory" "beyond 60 % of this machine" "$BIN" shell --e
 no_csv "missing output folder" "does not exist" "$BIN" shell --ekman 1e-3 -o nowhere/out.csv
 no_csv "response of a shell" "shell: damped modes only" "$BIN" response shell --ekman 1e-3 -o out.csv
 no_csv "solver failure" "did not converge" "$BIN" shell --ekman 1e-3 -o out.csv -viscous_eps_max_it 1 -viscous_eps_tol 1e-30
+no_h5() {  # name, then expect_error's arguments: also no out.h5 left behind
+  local name=$1
+  expect_error "$@"
+  if [ -e out.h5 ] || ls out.h5.tmp* > /dev/null 2>&1; then bad "$name: left out.h5 behind"; rm -f out.h5*; fi
+}
+no_h5 "response of another m" "the tilt forces only the m = 1" "$BIN" shell --ekman 1e-3 --m 2 --sigma 0.5 -o out.h5
+no_h5 "too short a window" "at least 9 frequencies" "$BIN" shell --ekman 1e-3 --sigma 0:1:5 -o out.h5
+no_h5 "complex window" "needs real frequencies" "$BIN" shell --ekman 1e-3 --sigma 0:1:11 --sigma-imag 0.1 -o out.h5
+no_h5 "malformed frequency" "sigma" "$BIN" shell --ekman 1e-3 --sigma 0.5+xi -o out.h5
+no_h5 "mesh level out of range" "--mesh-level must be in 0..4" "$BIN" shell --ekman 1e-3 --mesh-level 9 --sigma 0.5 -o out.h5
+no_h5 "unreachable fit" "errs by" "$BIN" shell --ekman 1e-3 --sigma -1:2:9 --max-fit-error 1e-16 -o out.h5
+
+# R(sigma) printed, with its change against 0.8 times the truncation; the served session answers the same numbers.
+if "$BIN" shell --ekman 1e-3 --sigma 0.5,1.02+0.01i > R.txt 2>&1 && grep -q "R(sigma) by spectral forced solves" R.txt &&
+   ! grep -q "NOT CONVERGED" R.txt; then
+  ok "R(sigma) printed ($(sed -n 3p R.txt | tr -s ' '))"
+else
+  bad "R(sigma): $(cat R.txt)"
+fi
+if printf '0.5\nnot-a-number\n1.02+0.01i\n' | "$BIN" shell --ekman 1e-3 --serve > served.txt 2> served.err &&
+   grep -q "^ready: viscous fluid, Ekman number 0.001, spectral forced solves in the sphere" served.txt &&
+   [ "$(grep -c '^error: ' served.txt)" = 1 ] && [ "$(grep -c '^[-0-9]' served.txt)" = 2 ] &&
+   python3 - R.txt served.txt <<'PY'
+import sys
+printed = [l.split() for l in open(sys.argv[1]) if l.startswith("  ") and not l.startswith("  sigma")]
+served = [l.split() for l in open(sys.argv[2]) if l[:1] in "-0123456789"]
+for p, s in zip(printed, served):
+    re, im = float(p[2]), float(p[3].rstrip("i"))
+    sre, sim = float(s[0]), float(s[1])
+    assert abs(re - sre) + abs(im - sim) <= 1e-12 * (abs(sre) + abs(sim)), (p, s)
+PY
+then
+  ok "served R is the printed R, and a bad line gets one error line"
+else
+  bad "served: $(cat served.txt served.err)"
+fi
 
 # Kore's own test case (its tests/spinover/reference.eig): the shell r_i = 0.35 at Ek = 1e-3.
 check_kore() {  # csv, what

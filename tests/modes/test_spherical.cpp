@@ -3,7 +3,10 @@
 // finite elements.
 #include "cavity_table.hpp"
 #include "shell_modes.hpp"
+#include "shell_response.hpp"
+#include "shell_table.hpp"
 #include "ultraspherical.hpp"
+#include "viscous_response.hpp"
 #include "viscous_table.hpp"
 
 #include <gtest/gtest.h>
@@ -14,6 +17,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <numbers>
 #include <random>
 #include <sstream>
 #include <string>
@@ -205,4 +209,96 @@ TEST(SphericalShell, SettingsThatDescribeNoProblemAreRefused) {
     change(bad);
     EXPECT_THROW(assemble_shell_pencil(bad), std::invalid_argument);
   }
+}
+
+namespace {
+
+// The finite elements' R(σ) (the meridian Taylor–Hood forced solves, docs/viscous.md §6) of a cavity at order 6 on
+// its default viscous mesh.
+std::vector<cd> finite_element_response(const rc::geometry::ShapeSpec& shape, double ek, const std::vector<cd>& sigma) {
+  rc::geometry::MeshOptions m;
+  m.order = 6;
+  return cavity_response(shape, viscous_mesh_defaults(shape, ek, m), ek, sigma);
+}
+
+double largest_relative_gap(const std::vector<cd>& a, const std::vector<cd>& b) {
+  double worst = 0;
+  for (std::size_t k = 0; k < a.size(); ++k) worst = std::max(worst, std::abs(a[k] - b[k]) / std::abs(b[k]));
+  return worst;
+}
+
+}  // namespace
+
+// The spectral forced response of the full sphere against the finite elements' at Ek = 1e-3: two discretisations
+// sharing no code but MUMPS, at frequencies on both sides, near the spin-over pole and off the real axis.
+TEST(SphericalShell, SphereResponseIsTheFiniteElementsResponse) {
+  const std::vector<cd> sigma{0.5, cd(1.02, 0.01), cd(-0.7, 0.3), 1.5, -2.5, cd(0.2, -0.05)};
+  ShellResponse spectral(settings(0, 1e-3), PETSC_COMM_WORLD);
+  std::vector<cd> R;
+  for (const cd s : sigma) R.push_back(spectral(s));
+  const std::vector<cd> fe = finite_element_response({"sphere", {{"radius", 1.0}}, {}}, 1e-3, sigma);
+  for (std::size_t k = 0; k < sigma.size(); ++k)
+    std::printf("sigma %+.2f%+.2fi: spectral %.12f%+.12fi, finite elements %.1e apart\n", sigma[k].real(),
+                sigma[k].imag(), R[k].real(), R[k].imag(), std::abs(R[k] - fe[k]) / std::abs(R[k]));
+  EXPECT_LE(largest_relative_gap(fe, R), 1e-6);
+}
+
+// The spherical shell of Kore's test case (r_i = 0.35) against the finite elements on its section file.
+TEST(SphericalShell, ShellResponseIsTheFiniteElementsResponse) {
+  const std::vector<cd> sigma{0.5, cd(1.02, 0.01), -1.2, cd(0.3, 0.2)};
+  ShellResponse spectral(settings(0.35, 1e-3), PETSC_COMM_WORLD);
+  std::vector<cd> R;
+  for (const cd s : sigma) R.push_back(spectral(s));
+  const rc::geometry::ShapeSpec shell{"section", {}, std::string(RC_SECTIONS_DIR) + "/shell.geo"};
+  const std::vector<cd> fe = finite_element_response(shell, 1e-3, sigma);
+  for (std::size_t k = 0; k < sigma.size(); ++k)
+    std::printf("sigma %+.2f%+.2fi: spectral %.12f%+.12fi, finite elements %.1e apart\n", sigma[k].real(),
+                sigma[k].imag(), R[k].real(), R[k].imag(), std::abs(R[k] - fe[k]) / std::abs(R[k]));
+  EXPECT_LE(largest_relative_gap(fe, R), 1e-6);
+}
+
+// Strong viscosity (Kononov 1999 after (18), from Chernousko 1968): the sphere's R(0) = i (8π/525)/Ek + O(Ek⁻²)
+// (docs/viscous.md, "Strong viscosity"), a closed form: the relative gap must fall as 1/Ek.
+TEST(SphericalShell, SphereResponseAtStrongViscosityIsTheStokesLimit) {
+  const double P1 = 8 * std::numbers::pi / 525;
+  std::vector<double> gap;
+  for (const double ek : {1e2, 1e3}) {
+    ShellResponse R(settings(0, ek), PETSC_COMM_WORLD);
+    const cd scaled = R(0.0) * ek / cd(0, 1);
+    gap.push_back(std::abs(scaled - P1) / P1);
+    std::printf("Ek %.0e: R(0) Ek / i = %.12f%+.3ei against 8 pi/525 = %.12f: %.2e\n", ek, scaled.real(), scaled.imag(),
+                P1, gap.back());
+  }
+  EXPECT_LE(gap[1], 2e-3);
+  EXPECT_LE(gap[1], 0.2 * gap[0]);  // O(1/Ek): ten times smaller per decade, within a margin
+}
+
+// A response table by the spectral solves: its pseudo-modes' R against spectral forced solves at frequencies it was
+// not fitted on (within its error), its residues' sum against A_f (the sum rule, to the fit's reach), and the
+// heaviest pole against the spin-over mode of the eigensolver on the same pencil.
+TEST(SphericalShell, ResponseTableIsTheSpectralResponse) {
+  ShellTableRequest req{settings(0, 1e-3), settings(0, 1e-3, true, 0.8), {}, 1e-7};
+  for (int k = 0; k <= 40; ++k) req.window.push_back(-1.5 + 3.5 * k / 40);
+  const ShellTable made = shell_response_table(req, [](const std::string&) {});
+  const ModeTable& t = made.table;
+  ShellResponse R(req.fine, PETSC_COMM_WORLD);
+  double worst = 0, scale = 0;
+  for (const double s : {-1.33, -0.41, 0.123, 0.97, 1.05, 1.77}) {
+    cd fit = 0;
+    for (std::size_t j = 0; j < t.lambda.size(); ++j) fit += cd(t.E[j], t.E_imag[j]) / (s - cd(t.lambda[j], t.decay[j]));
+    const cd exact = R(s);
+    worst = std::max(worst, std::abs(fit - exact));
+    scale = std::max(scale, std::abs(exact));
+  }
+  const auto heaviest = std::max_element(t.E.begin(), t.E.end()) - t.E.begin();
+  const ViscousMode mode = nearest(req.fine, cd(1.0, 2.6 * std::sqrt(1e-3)));
+  std::printf("%zu pseudo-modes, fit error %.1e, truncation change %.1e; R from the rows against forced solves %.1e of "
+              "max|R|; heaviest pole %.10f%+.10fi, the eigensolver's %.1e off\n", t.lambda.size(), t.fit_error,
+              made.truncation_change, worst / scale, t.lambda[heaviest], t.decay[heaviest],
+              std::abs(cd(t.lambda[heaviest], t.decay[heaviest]) - mode.lambda));
+  EXPECT_LE(worst / scale, 10 * t.fit_error);
+  EXPECT_LE(made.truncation_change, 1e-8);
+  EXPECT_LE(std::abs(cd(t.lambda[heaviest], t.decay[heaviest]) - mode.lambda), 1e-6);
+  EXPECT_EQ(t.shape, "sphere");
+  EXPECT_NEAR(t.A_f, 8 * std::numbers::pi / 15, 1e-15);
 }
