@@ -2,7 +2,7 @@
 // forced solves of shell_response.hpp, fitted on a window as the finite elements' response-fit tables are
 // (viscous/window_fit.hpp), checked against the same solves at a coarser truncation, and written as a viscous table
 // (format version 2, pseudo-modes) that chain-rom reads like any response-fit table (docs/spherical.md, "Response
-// tables for chain-rom").
+// tables for chain-rom"). Under mpirun the frequencies are shared out between the ranks.
 #pragma once
 
 #include "mode_table.hpp"
@@ -23,7 +23,7 @@ struct ShellTableRequest {
 
 struct ShellTable {
   ModeTable table;
-  double truncation_change = 0;  // max over the window samples of |R_fine − R_check| / max |R_fine|
+  double truncation_change = 0;  // max of |R_fine − R_check| / max |R_fine| over every 4th window sample
 };
 
 // The frozen fluid's integrals in closed form (ρ = 1, outer radius 1): volume (4π/3)(1 − r_i³), A_f = C_f =

@@ -75,7 +75,8 @@ Eigen::VectorXcd verdict_roots(const ChainModel& m) {
     const int n = f.n;
     A.topRows(n) *= cd(0, -1);
     A.leftCols(n) *= cd(0, 1);
-    Eigen::EigenSolver<Eigen::MatrixXd> es(A.real(), false);
+    const Eigen::MatrixXd real_part = A.real();  // a plain matrix: compute() for it is compiled once (eigen_dense.hpp)
+    Eigen::EigenSolver<Eigen::MatrixXd> es(real_part, false);
     if (es.info() != Eigen::Success) throw std::runtime_error("eigen-solver did not converge");
     return es.eigenvalues();
   }

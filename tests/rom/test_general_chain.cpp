@@ -38,7 +38,10 @@ Roots general_roots(const std::string& text) {
 
 // σ = −i eig(M⁻¹A) of M ẋ = A x.
 Roots roots_of_pencil(const Eigen::MatrixXd& M, const Eigen::MatrixXd& A) {
-  const Eigen::EigenSolver<Eigen::MatrixXd> es(M.lu().solve(A), false);
+  // A plain matrix, not the solve's expression: EigenSolver's compute() for a MatrixXd is compiled once in
+  // common/ (eigen_dense.hpp); for an expression type this file would compile the whole algorithm again.
+  const Eigen::MatrixXd B = M.partialPivLu().solve(A);
+  const Eigen::EigenSolver<Eigen::MatrixXd> es(B, false);
   Roots r;
   for (Eigen::Index i = 0; i < es.eigenvalues().size(); ++i)
     r.emplace_back(es.eigenvalues()[i].imag(), -es.eigenvalues()[i].real());
