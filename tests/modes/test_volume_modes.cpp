@@ -80,11 +80,13 @@ void check_ellipsoid(const modes::VolumeTableResult& r, const modes::EllipsoidMo
 }  // namespace
 
 TEST(VolumeModes, TriaxialSpinOverIsTheClosedForm) {
-  // P6 tetrahedra, 0.15 on the wall (the isoparametric wall is the only error: the mode's pressure is quadratic).
+  // P5 tetrahedra, 0.15 on the wall (the isoparametric wall is the only error: the mode's pressure is quadratic).
+  // Measured 2026-12-02: P5 (18 210 unknowns, 24.7 s) λ 1.9e-7, H 4.2e-6, sum-rule tensor 3.0e-7, geostrophic 4.1e-7;
+  // P6 (30 505, 42.3 s) 3.1e-8, 1.5e-7, 3.9e-8, 3.9e-8 — the suite takes P5 (docs/benchmarks.md, "Test time").
   const auto exact = modes::ellipsoid_modes(1.0, 0.8, 0.6, 0.0);
   // The closed form's own check: λ² = 4a²b²/((a² + c²)(b² + c²)) upright (docs/volume.md §3).
   EXPECT_NEAR(exact.lambda, 2 * 0.8 / std::sqrt((1 + 0.36) * (0.64 + 0.36)), 1e-15);
-  check_ellipsoid(ellipsoid_table(1.0, 0.8, 0.6, 0.0, 6, 0.5, 0.15), exact, 5e-7, 1e-7, 1e-7);
+  check_ellipsoid(ellipsoid_table(1.0, 0.8, 0.6, 0.0, 5, 0.5, 0.15), exact, 1e-5, 1e-6, 1e-6);
 }
 
 TEST(VolumeModes, TiltedEllipsoidIsTheClosedForm) {

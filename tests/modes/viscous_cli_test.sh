@@ -217,17 +217,17 @@ if in_part runs; then
 # (its order follows heap addresses), and the sums round differently (up to 4e-13 seen; docs/viscous.md,
 # "Reproducible tables").
 same=(cylinder --radius 1 --height 2 --method mesh --ekman 1e-3 --modes 2 --order 4 --mesh-size 0.25)
-for pair in 1 2 3; do
+for pair in 1 2; do  # (three pairs until 2026-12-02: two give the same check, side by side and one after another)
   env -u OMP_NUM_THREADS "$BIN" "${same[@]}" -o same1.h5 > same1.txt 2>&1 &
   env -u OMP_NUM_THREADS "$BIN" "${same[@]}" -o same$((pair + 1)).h5 > same2.txt 2>&1
   wait
 done
 if /usr/bin/python3 -c '
 import h5py, numpy as np
-f = [h5py.File("same%d.h5" % i)["modes"] for i in (1, 2, 3, 4)]
+f = [h5py.File("same%d.h5" % i)["modes"] for i in (1, 2, 3)]
 names = ["lambda", "decay", "E", "E_imag", "dlambda", "dE"]
 d = [max(float(np.max(np.abs(f[0][n][:] - x[n][:]))) for n in names) for x in f[1:]]
-print("four runs, two at a time: largest difference from the first %s" % d)
+print("four runs, two at a time: largest difference of three of them from the last %s" % d)
 assert max(d) <= 1e-10
 '; then ok "the same command: the same table to the eigensolver's tolerance"; else bad "identical runs differ: $(tail -2 same2.txt)"; fi
 
