@@ -67,7 +67,8 @@ void check_memory(const ShellSettings& s) {
 ShellCommand::ShellCommand(CLI::App& app) {
   app_ = app.add_subcommand("shell", "the viscous fluid in a full sphere or a spherical shell (no-slip walls), by "
                                      "Chebyshev x spherical-harmonic expansion: its damped modes near --target, printed "
-                                     "and with -o written as a CSV (docs/spherical.md)");
+                                     "and with -o written as a CSV; with --sigma its response R(sigma) to the tilt, "
+                                     "or with -o FILE.h5 a response table for chain-rom (docs/spherical.md)");
   app_->add_option("--ekman", ekman_, "Ekman number nu/(Omega R^2) > 0, R the outer radius")->required();
   app_->add_option("--inner-radius", inner_radius_, "inner radius over the outer, in [0, 1) (default 0: the full sphere)");
   app_->add_option("--target", target_, "frequency near which modes are wanted, in the rotating frame (default 1.0: "
