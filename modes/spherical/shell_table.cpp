@@ -35,8 +35,8 @@ std::vector<std::complex<double>> sample(ShellResponse& R, const std::vector<dou
   return out;
 }
 
-// The truncation check's frequencies: every 4th of the window given and its last (a quarter of the solves: R varies
-// on the window's scale, and the change falls spectrally, so the largest is where the fine and the coarse differ).
+// The truncation check's frequencies: every 4th of the window given and its last, a quarter of the solves (measured at
+// Ek = 1e-6 on -2.5:2:181: the largest change 8.3e-9 of max|R| on all 181 samples and on these 46).
 std::vector<double> check_frequencies(const std::vector<double>& w) {
   std::vector<double> out;
   for (std::size_t k = 0; k < w.size(); k += 4) out.push_back(w[k]);
