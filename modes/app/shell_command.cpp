@@ -137,14 +137,13 @@ int ShellCommand::run(const std::string& command_line) const {
     return 0;
   }
   if (!sigma_.empty()) return run_response(command_line);
-  const auto truncation = [&](double factor) { return settings_at(factor); };
-  const ShellSettings fine = truncation(1.0);
+  const ShellSettings fine = settings_at(1.0);
   check_memory(fine);
   // A guess of the decay (the Ekman layer's Ek^1/2 scaling) puts the shift beside the mode rather than on the real axis.
   const std::complex<double> target(target_, 2.6 * std::sqrt(ekman_));
   const Solved main = solve(fine, target, modes_);
   Solved coarse;
-  if (convergence_check_) coarse = solve(truncation(0.8), target, modes_);
+  if (convergence_check_) coarse = solve(settings_at(0.8), target, modes_);
   if (!is_root_rank()) return 0;
   std::cout << fmt::format("{}: Ek = {:g}, m = {}, {} flow, {} Chebyshev coefficients per scalar, lmax = {}: {} "
                            "unknowns, {:.2f} s{}\n",
@@ -183,6 +182,13 @@ namespace {
 
 bool is_h5(const std::string& path) { return std::filesystem::path(path).extension() == ".h5"; }
 
+// The tilt forces the m = 1 flow that is antisymmetric about the equator only (shell_response.hpp).
+void check_tilt_flow(int m, const std::string& symmetry, const char* option) {
+  if (m != 1 || symmetry != "antisymmetric")
+    throw std::runtime_error(std::string(option) + ": the tilt forces only the m = 1 antisymmetric flow (leave out --m "
+                             "and --symmetry)");
+}
+
 void write_response_csv(const std::string& path, const std::string& command_line, const ShellSettings& s,
                         const std::vector<std::complex<double>>& sigma, const std::vector<std::complex<double>>& R,
                         const std::vector<double>& change) {
@@ -201,8 +207,7 @@ void write_response_csv(const std::string& path, const std::string& command_line
 // serve_response): a line it cannot answer gets "error: <one line>" and the session goes on. Serial only.
 void ShellCommand::serve(std::istream& in, std::ostream& out) const {
   if (world_ranks() > 1) throw std::runtime_error("--serve runs serially (one process per tank), not under mpirun");
-  if (m_ != 1 || symmetry_ != "antisymmetric")
-    throw std::runtime_error("--serve: the tilt forces only the m = 1 antisymmetric flow (leave out --m and --symmetry)");
+  check_tilt_flow(m_, symmetry_, "--serve");
   const ShellSettings s = settings_at(1.0);
   check_memory(s);
   spherical::ShellResponse R(s, PETSC_COMM_WORLD);
@@ -226,8 +231,7 @@ void ShellCommand::serve(std::istream& in, std::ostream& out) const {
 
 // --sigma: R at the given frequencies (each with its change against 0.8 times the truncation), or a response table.
 int ShellCommand::run_response(const std::string& command_line) const {
-  if (m_ != 1 || symmetry_ != "antisymmetric")
-    throw std::runtime_error("--sigma: the tilt forces only the m = 1 antisymmetric flow (leave out --m and --symmetry)");
+  check_tilt_flow(m_, symmetry_, "--sigma");
   if (!(max_fit_error_ > 0)) throw std::runtime_error("--max-fit-error must be positive");
   const std::vector<std::complex<double>> sigma = parse_sigma_spec(sigma_, sigma_imag_);
   const ShellSettings fine = settings_at(1.0), check = settings_at(0.8);

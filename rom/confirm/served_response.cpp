@@ -97,20 +97,28 @@ void add_study_mesh(std::vector<std::string>& args, const rc::ModeTable& t, cons
 }
 
 // A spectral table's (`cavity-modes shell ... --sigma ... -o FILE.h5`, docs/spherical.md): the shell's radius and
-// truncation options; a study's level raises the truncation 1.5 times a level (`shell --mesh-level`), and there is
-// no mesh size or element order to replace.
+// truncation options as recorded (`--name value` or `--name=value`), so that the served solves are the table's own
+// discretisation; a study's level raises the truncation 1.5 times a level on top of the table's own --mesh-level, and
+// there is no mesh size or element order to replace.
 std::vector<std::string> spectral_serve_arguments(const std::vector<std::string>& w, const rc::ModeTable& t,
                                                   double ekman, double mesh_ekman, const ServedMesh& mesh) {
   if (mesh.mesh_size > 0 || mesh.order > 0 || mesh.order_raise > 0)
     throw std::runtime_error("a spectral table (cavity-modes shell) has no mesh size or element order: its study "
                              "raises the truncation (--refine N, by size)");
   std::vector<std::string> args{"shell"};
-  for (std::size_t i = 2; i + 1 < w.size(); ++i)
-    for (const char* k : {"--inner-radius", "--resolution", "--radial", "--lmax", "--mesh-ekman"})
-      if (w[i] == k && !(w[i] == std::string("--mesh-ekman") && mesh_ekman > 0)) args.insert(args.end(), {w[i], w[i + 1]});
+  int level = mesh.level;
+  for (std::size_t i = 2; i < w.size(); ++i) {
+    std::string name = w[i], value;
+    if (const auto eq = name.find('='); eq != std::string::npos) value = name.substr(eq + 1), name = name.substr(0, eq);
+    else if (i + 1 < w.size()) value = w[i + 1];
+    if (name == "--mesh-level") level += std::stoi(value);
+    const bool kept = name == "--inner-radius" || name == "--resolution" || name == "--radial" || name == "--lmax" ||
+                      (name == "--mesh-ekman" && !(mesh_ekman > 0));
+    if (kept) args.insert(args.end(), {name, value});
+  }
   args.insert(args.end(), {"--ekman", number_text(ekman > 0 ? ekman : t.ekman)});
   if (mesh_ekman > 0) args.insert(args.end(), {"--mesh-ekman", number_text(mesh_ekman)});
-  if (mesh.level > 0) args.insert(args.end(), {"--mesh-level", std::to_string(mesh.level)});
+  if (level > 0) args.insert(args.end(), {"--mesh-level", std::to_string(level)});
   args.push_back("--serve");
   return args;
 }

@@ -10,7 +10,8 @@ completely full and a liquid 1 100 times as viscous as hydrazine (Ek = 1e-3, so 
 2. `chain-rom spectrum --json` with each: the body roots (nutation) of the two agree to 3e-6 relative in frequency and
    decay rate (the spectral table is the reference; its own truncation change is printed);
 3. `chain-rom confirm` on the spectral table (the served spectral solves, `shell --serve`; its study raises the
-   truncation 1.5 times): the confirmed nutation equals the table's root to 1e-6, and the study says converged."""
+   truncation 1.5 times): the confirmed nutation equals the table's root to 1e-6, and the study says converged;
+4. a table made at `--mesh-level 1` is served at its own truncation (level 1, its unknowns), its study at level 2."""
 import json, os, subprocess, sys
 
 modes, rom, out = sys.argv[1:4]
@@ -66,4 +67,16 @@ print("confirm: nutation %.10g%+.6ei (the table's root %.1e apart), decay %.6g +
     c.real, c.imag, gap, -root["growth"], root["growth_error"], root["mesh_converged"]))
 assert gap <= 1e-6, "the confirmed root is %.1e off the spectral table's" % gap
 assert root["mesh_converged"], "the spectral truncation study says not converged"
+
+p = run([modes, "shell", "--ekman", repr(ek), "--mesh-level", "1"] + window + ["--max-fit-error", "1e-7", "-o",
+        "level1.h5"])
+if p.returncode != 0:
+    sys.exit("cavity-modes shell --mesh-level 1 exited %d: %s" % (p.returncode, p.stderr[-400:]))
+p = run([rom, "confirm", scene("level1.h5"), "--cavity-modes", modes])
+log = p.stdout + p.stderr
+served = [l.strip() for l in log.splitlines() if l.strip().startswith("body 1:")]
+print("\n".join(served))
+assert p.returncode == 0, log[-400:]
+assert "NOT the table's mesh" not in log, log
+assert served and served[0].endswith("--mesh-level 1 --serve") and served[-1].endswith("--mesh-level 2 --serve"), served
 print("spectral_sphere_check: ok")
