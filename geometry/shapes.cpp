@@ -170,6 +170,73 @@ void build_layered_cone(double R, double H, double h, const MeshOptions& o) {
   add_groups({slant_strip, lid_strip, interior}, {slant, lid}, {axis_apex, axis_interior, axis_lid});
 }
 
+// Along a wall strip near a contact line: cells from h/8 at the free surface growing by kContactGrowth, over the
+// length they take to reach about h (the other shapes' contact-line field: size/8 at the contact points, the interior
+// size 2 h away; geometry/meridian_mesh.cpp). The count of cells over `length`.
+constexpr double kContactGrowth = 1.3;
+int contact_cells(double length, double h) {
+  return std::max(2, static_cast<int>(std::ceil(std::log1p(length / (h / 8) * (kContactGrowth - 1)) /
+                                                std::log(kContactGrowth) - 1e-9)));
+}
+
+// The partially filled cone (the liquid at r >= free): the same triangle as build_layered_cone's, scaled by
+// 1 - free/R, with its corner at the lower contact point c0 = (free, free H/R) instead of the apex and its side
+// r = free the free surface instead of the axis, so the strips end on the free surface at both contact lines (the
+// BoundaryLayer field's PointsList does so for the other shapes: docs/viscous.md, "Contact lines and the wall
+// layers"). The flow is singular at the contact lines, so each strip is split a length l from its contact line, the
+// part next to it graded along the wall from h/8 (contact_cells):
+//
+//   (free,H) l1 ------ lid ------ rim        strips: slant near c0 (c0, s1, s1', inner apex), slant (s1, rim, inner
+//   |   C    |          D         |                  corner, s1'), lid near (free,H) C, lid D; interior unstructured
+//   inner centre, l1', inner corner (H - t)
+//   inner apex, s1' on the inner slant (distance t from the slant); s1 on the slant at l from c0
+//   c0
+void build_layered_partial_cone(double R, double H, double h, const MeshOptions& o, double free) {
+  const double r0 = free, z0 = free * H / R, Rl = R - r0, Hl = H - z0;  // the liquid triangle's legs
+  const double L = std::hypot(Rl, Hl), t = o.wall_layer;
+  const double r_inner = (Rl * (Hl - t) - t * L) / Hl, z_a = t * L / Rl;
+  const double l = std::min({2 * h, L / 3, r_inner / 3});
+  if (!(r_inner > 2 * t && z_a < Hl - 2 * t && l > 1.5 * z_a * Hl / L))
+    throw std::runtime_error("cone: wall layers " + number(t) + " thick do not fit in the liquid of the cone (radius " +
+                             number(R) + ", height " + number(H) + ", free surface radius " + number(free) +
+                             "); use a smaller --mesh-size (the layers are at most half an interior element thick)");
+  const double er = Rl / L, ez = Hl / L;  // the slant's direction; its inward normal (−ez, er)
+  const auto point = [&](double r, double z) { return geo::addPoint(r, z, 0, h); };
+  const int c0 = point(r0, z0), rim = point(R, H), centre = point(r0, H), inner_centre = point(r0, H - t),
+            inner_corner = point(r0 + r_inner, H - t), inner_apex = point(r0, z0 + z_a),
+            s1 = point(r0 + l * er, z0 + l * ez), s1_in = point(r0 + l * er - t * ez, z0 + l * ez + t * er),
+            l1 = point(r0 + l, H), l1_in = point(r0 + l, H - t);
+  const auto line = [](int a, int b) { return geo::addLine(a, b); };
+  // Walls, the free surface's pieces and the cross lines; every cross line from the wall inwards.
+  const int slant_near = line(c0, s1), slant_far = line(s1, rim), lid_far = line(rim, l1), lid_near = line(centre, l1);
+  const int free_slant = line(c0, inner_apex), free_lid = line(centre, inner_centre),
+            free_interior = line(inner_centre, inner_apex);
+  const int cross_s = line(s1, s1_in), diagonal = line(rim, inner_corner), cross_l = line(l1, l1_in);
+  const int inner_slant_near = line(inner_apex, s1_in), inner_slant_far = line(inner_corner, s1_in),
+            inner_lid_near = line(inner_centre, l1_in), inner_lid_far = line(l1_in, inner_corner);
+  const int strip_a = surface({slant_near, cross_s, -inner_slant_near, -free_slant});
+  const int strip_b = surface({slant_far, diagonal, inner_slant_far, -cross_s});
+  const int strip_c = surface({-lid_near, free_lid, inner_lid_near, -cross_l});
+  const int strip_d = surface({lid_far, cross_l, inner_lid_far, -diagonal});
+  const int interior = surface({inner_slant_near, -inner_slant_far, -inner_lid_far, -inner_lid_near, free_interior});
+  const double ratio = 1 + o.wall_growth;
+  const int across = layer_nodes(t, o.wall_size, ratio);
+  for (int c : {free_slant, free_lid, cross_s, diagonal, cross_l})
+    geo::mesh::setTransfiniteCurve(c, across, "Progression", ratio);
+  const int near = 1 + contact_cells(l, h);  // from the free surface outwards, on the wall and the inner line alike
+  for (int c : {slant_near, inner_slant_near, lid_near, inner_lid_near})
+    geo::mesh::setTransfiniteCurve(c, near, "Progression", kContactGrowth);
+  const auto uniform = [&](double length) { return 1 + std::max(2, static_cast<int>(std::ceil(length / h - 1e-9))); };
+  for (int c : {slant_far, inner_slant_far}) geo::mesh::setTransfiniteCurve(c, uniform(L - l));
+  for (int c : {lid_far, inner_lid_far}) geo::mesh::setTransfiniteCurve(c, uniform(Rl - l));
+  geo::mesh::setTransfiniteSurface(strip_a, "Alternate", {c0, s1, s1_in, inner_apex});
+  geo::mesh::setTransfiniteSurface(strip_b, "Alternate", {s1, rim, inner_corner, s1_in});
+  geo::mesh::setTransfiniteSurface(strip_c, "Alternate", {l1, centre, inner_centre, l1_in});
+  geo::mesh::setTransfiniteSurface(strip_d, "Alternate", {rim, l1, l1_in, inner_corner});
+  add_groups({strip_a, strip_b, strip_c, strip_d, interior}, {slant_near, slant_far, lid_far, lid_near}, {},
+             {free_slant, free_interior, free_lid});
+}
+
 }  // namespace
 
 void validate_shape(const ShapeSpec& shape) {
@@ -226,12 +293,9 @@ bool build_shape(const ShapeSpec& shape, double size, double radial_size, const 
     build_cylinder(dim(shape, "radius"), dim(shape, "height"), size, radial_size,
                    shape.dims.count("inner_radius") ? dim(shape, "inner_radius") : 0.0, free);
   } else if (shape.kind == "cone") {
-    if (free > 0 && layers && layers->wall_size > 0)
-      throw std::runtime_error("cone: a viscous partially filled cone is not built yet (its wall layers with a free "
-                               "surface); possible: the cone partially filled with ideal fluid (no --ekman), the cone "
-                               "full with --ekman, or a viscous partially filled sphere, spheroid or cylinder");
     if (layers && layers->wall_size > 0 && layers->wall_layer > layers->wall_size) {
-      build_layered_cone(dim(shape, "radius"), dim(shape, "height"), size, *layers);
+      if (free > 0) build_layered_partial_cone(dim(shape, "radius"), dim(shape, "height"), size, *layers, free);
+      else build_layered_cone(dim(shape, "radius"), dim(shape, "height"), size, *layers);
       return true;
     }
     build_cone(dim(shape, "radius"), dim(shape, "height"), size, free);

@@ -140,7 +140,6 @@ expect_error "--serve with --sigma" "give neither --sigma nor -o" "$BIN" respons
 expect_error "response without -o" "-o,--output is required" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5
 expect_error "--stokes-series with --fill" "a completely filled cavity only" "$BIN" response sphere --radius 1 --ekman 10 --fill 0.5 --stokes-series
 expect_error "--stokes-series without --ekman" "needs --ekman" "$BIN" response sphere --radius 1 --stokes-series
-expect_error "a viscous partially filled cone" "possible: the cone partially filled with ideal fluid" "$BIN" response cone --radius 1 --height 1.5 --fill 0.8 --ekman 1e-6 --sigma 0.5 -o out.csv
 expect_error "--stokes-series with -o" "give neither --serve, --sigma nor -o" "$BIN" response sphere --radius 1 --ekman 10 --stokes-series -o out.csv
 # --stokes-series prints the strong-viscosity coefficients: r0 is the sphere's Stokes flow, i 8 pi/525.
 if "$BIN" response sphere --radius 1 --ekman 10 "${small_response[@]}" --stokes-series > series.txt 2> series.err &&
