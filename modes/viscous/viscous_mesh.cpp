@@ -1,15 +1,30 @@
 #include "viscous_mesh.hpp"
 
+#include "isolated_mesh.hpp"
+
 #include <algorithm>
 #include <stdexcept>
 
 namespace rc::modes {
+namespace {
+
+// A user's section meshes its layers in a child process, where a crash or a hang of gmsh's BoundaryLayer field
+// becomes an error that the next attempt answers (geometry/isolated_mesh.hpp); the built-in shapes, measured over
+// their whole range, in-process. A layered 2-D mesh takes seconds; a hang is given three minutes.
+constexpr double kLayeredMeshSeconds = 180;
+
+geometry::MeridianMesh layered_mesh(const geometry::ShapeSpec& shape, const geometry::MeshOptions& mesh) {
+  if (shape.kind == "section") return geometry::mesh_meridian_isolated(shape, mesh, kLayeredMeshSeconds);
+  return geometry::mesh_meridian(shape, mesh);
+}
+
+}  // namespace
 
 geometry::MeridianMesh viscous_mesh(const geometry::ShapeSpec& shape, geometry::MeshOptions& mesh) {
   geometry::MeshOptions tried = mesh;
   for (int attempt = 0; attempt < 7 && tried.wall_layer > tried.wall_size && tried.size > 0; ++attempt) {
     try {
-      geometry::MeridianMesh layered = geometry::mesh_meridian(shape, tried);
+      geometry::MeridianMesh layered = layered_mesh(shape, tried);
       mesh = tried;
       return layered;
     } catch (const std::runtime_error&) {
