@@ -99,19 +99,18 @@ std::vector<double> contact_points() {
   return points;
 }
 
-// The points where a wall curve meets the axis obliquely (a cone's apex: its tangent there more than 1e-6 off the
-// radial direction). gmsh 4.8's BoundaryLayer field does not mesh such a point reliably: carried on through it, it
+// Whether a wall curve meets the axis obliquely (a cone's apex: its tangent there more than 1e-6 off the radial
+// direction). gmsh 4.8's BoundaryLayer field does not mesh such a point reliably: carried on through it, it
 // crashed (a segmentation fault in its Delaunay, DocRecord, on data/sections/cone.geo at Ek = 1e-3, 2026-12-02) or
-// inverted elements; ended there (PointsList), it meshed in two runs of three and hung in the third. So a section
+// inverted elements; ended there (PointsList), two runs of three fell back to the grading and the third hung in gmsh. So a section
 // with such a point gets the isotropic grading (grade_towards_wall). A wall meeting the axis at a right angle (a
 // sphere's poles) keeps its layers through the axis; the built-in cone builds its layers into its CAD model.
-std::vector<double> oblique_axis_points() {
+bool wall_meets_axis_obliquely() {
   const int axis = find_physical_tag(1, "axis"), wall = find_physical_tag(1, "wall");
-  if (axis < 0 || wall < 0) return {};
+  if (axis < 0 || wall < 0) return false;
   gmsh::vectorpair axis_curves, axis_ends;
   for (int c : group_entities(1, axis)) axis_curves.push_back({1, c});
   gmsh::model::getBoundary(axis_curves, axis_ends, true, false, false);
-  std::vector<double> points;
   for (int c : group_entities(1, wall)) {
     gmsh::vectorpair ends;
     gmsh::model::getBoundary({{1, c}}, ends, false, false, false);
@@ -124,10 +123,10 @@ std::vector<double> oblique_axis_points() {
       std::vector<double> d;
       gmsh::model::getDerivative(1, c, {e == 0 ? lo[0] : hi[0]}, d);
       const double norm = std::hypot(d[0], d[1]);
-      if (norm > 0 && std::abs(d[1]) > 1e-6 * norm) points.push_back(tag);
+      if (norm > 0 && std::abs(d[1]) > 1e-6 * norm) return true;
     }
   }
-  return points;
+  return false;
 }
 
 // Anisotropic layers along the wall (gmsh BoundaryLayer field), or isotropic elements of size wall_size at the
@@ -198,7 +197,7 @@ void grade_towards_wall(const MeshOptions& options, double size, const std::stri
   namespace field = gmsh::model::mesh::field;
   const int contact = contact_line_field(size);
   if (options.wall_layer > 0) {
-    if (!oblique_axis_points().empty())  // viscous_mesh falls back to the grading
+    if (wall_meets_axis_obliquely())  // viscous_mesh falls back to the grading
       throw std::runtime_error(where + ": gmsh's wall layers do not pass a point where the wall meets the axis "
                                "obliquely (an apex); the isotropic grading meshes it");
     const int layers = field::add("BoundaryLayer");

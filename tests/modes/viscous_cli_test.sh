@@ -39,8 +39,8 @@ if "$BIN" sphere --radius 1 --ekman 1e-3 --modes 1 --no-convergence-check --fiel
 else
   bad "viscous --fields: $(tail -2 vfields.txt)"
 fi
-# A section on which gmsh's wall layers crashed the program (a segmentation fault in gmsh's Delaunay: five runs of
-# five before 2026-12-02): its layers are meshed in a child process (geometry/isolated_mesh.hpp), the crash becomes
+# A section on which gmsh's wall layers crashed the program (a segmentation fault in gmsh's Delaunay in each of the
+# four runs tried before 2026-12-02): its layers are meshed in a child process (geometry/isolated_mesh.hpp), the crash becomes
 # the next attempt, and the response is made.
 if "$BIN" response section "$here/../../data/sections/cone.geo" --fill 0.8 --ekman 1e-3 --mesh-size 0.1 \
      --sigma 0.5+0.1i -o crashed.csv > crashed.txt 2>&1 && [ "$(grep -vc '^#\|^sigma' crashed.csv)" = 1 ]; then
