@@ -25,6 +25,11 @@ struct VolumeShapeSpec {
   std::map<std::string, double> dims;  // ellipsoid: a, b, c
   std::filesystem::path file;          // volume only
   double tilt = 0.0;                   // radians, about x
+  // A partially filled tank (ellipsoid only): the liquid fills this fraction of the cavity, pressed outwards by a
+  // rapid spin about an axis parallel to z through (spin_axis[0], spin_axis[1]) — the craft's axis, which need not
+  // cross the tank. Its free surface is the cylinder about that axis (geometry/partial_volume.hpp).
+  double fill = 1.0;
+  std::array<double, 2> spin_axis{};
 };
 
 struct VolumeMesh {
@@ -33,6 +38,10 @@ struct VolumeMesh {
   std::vector<std::array<double, 3>> nodes;  // (x, y, z) of every node, 0-based
   std::vector<int> tetrahedra;               // nodes_per_element node indices per tetrahedron, gmsh local order
   double size = 0.0;                         // element size requested
+  // A partially filled tank's free surface: the cylinder of this radius about the spin axis through spin_axis
+  // (parallel to z); 0 when the cavity is full.
+  double free_surface_radius = 0.0;
+  std::array<double, 2> spin_axis{};
   std::size_t num_tetrahedra() const { return tetrahedra.size() / nodes_per_element; }
 };
 

@@ -5,13 +5,14 @@
 
 namespace rc::modes {
 
-VolumeSpace::VolumeSpace(geometry::VolumeMesh mesh, int quadrature_degree)
+VolumeSpace::VolumeSpace(geometry::VolumeMesh mesh, int quadrature_degree, bool pin_first_node)
     : mesh_(std::move(mesh)),
       ref_(geometry::reference_tetrahedron(mesh_.order, quadrature_degree > 0 ? quadrature_degree : 2 * mesh_.order + 1)) {
   if (mesh_.nodes.size() < 2) throw std::runtime_error("3-D mesh with fewer than two nodes");
-  ndof_ = static_cast<int>(mesh_.nodes.size()) - 1;
+  const int pinned = pin_first_node ? 1 : 0;
+  ndof_ = static_cast<int>(mesh_.nodes.size()) - pinned;
   dofs_.reserve(mesh_.tetrahedra.size());
-  for (int node : mesh_.tetrahedra) dofs_.push_back(node - 1);  // node 0 is pinned: dof -1
+  for (int node : mesh_.tetrahedra) dofs_.push_back(node - pinned);  // a pinned node 0: dof -1
 }
 
 void VolumeSpace::quadrature(std::size_t e, VolumeQuadrature& out) const {

@@ -20,7 +20,9 @@ struct VolumeQuadrature {
 class VolumeSpace {
  public:
   // quadrature_degree = 0 picks 2·order + 1 (curved boundary elements; measured enough: docs/volume.md §1).
-  explicit VolumeSpace(geometry::VolumeMesh mesh, int quadrature_degree = 0);
+  // pin_first_node = false keeps every node a dof: a free surface fixes the pressure's constant itself (docs/volume.md
+  // §8), where a pinned node on that surface would be wrong.
+  explicit VolumeSpace(geometry::VolumeMesh mesh, int quadrature_degree = 0, bool pin_first_node = true);
 
   int ndof() const { return ndof_; }
   int order() const { return mesh_.order; }

@@ -1,0 +1,153 @@
+#include "free_surface_survey.hpp"
+
+#include "block_lanczos.hpp"
+#include "lanczos.hpp"
+#include "progress.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rc::modes {
+namespace {
+
+using Complex6 = Eigen::Matrix<std::complex<double>, 6, 1>;
+
+constexpr int kEmptyWindow = 48;  // basis vectors after which a shift's window without heavy weight ends the run
+
+// The start block: U_x, U_y, U_z, T_x, T_y, T_z and each times i (the real form of a complex space).
+Eigen::MatrixXd start_block(const FreeSurfaceDynamics& A) {
+  Eigen::MatrixXd B(A.size(), 12);
+  for (int k = 0; k < 3; ++k) {
+    B.col(k) = A.rotation_field(k);
+    B.col(3 + k) = A.translation_field(k);
+  }
+  for (int j = 0; j < 6; ++j) B.col(6 + j) = A.times_i(B.col(j));
+  return B;
+}
+
+// ⟨f_j, z⟩ (complex, f_j real) = ⟨f_j, z⟩_real + i ⟨i f_j, z⟩_real.
+Complex6 coupling(const BlockGaussNode& n) {
+  Complex6 c;
+  for (int j = 0; j < 6; ++j) c(j) = {n.weight(j), n.weight(6 + j)};
+  return c;
+}
+
+// Ritz values within the merge width are one cluster; each complex mode is two real Ritz vectors, so H = ½ Σ c cᴴ.
+std::vector<FreeSurfaceMode> clusters(std::vector<BlockGaussNode> rule, double width) {
+  std::sort(rule.begin(), rule.end(), [](const auto& a, const auto& b) { return a.lambda < b.lambda; });
+  std::vector<FreeSurfaceMode> out;
+  std::vector<double> sum_l, sum_l2, sum_w;
+  for (const auto& n : rule) {
+    const Complex6 c = coupling(n);
+    const Hermitian6 H = 0.5 * c * c.adjoint();
+    const double w = H.trace().real();
+    if (out.empty() || !within_width(n.lambda, out.back().lambda, width)) {
+      out.push_back({});
+      out.back().lambda = n.lambda;
+      sum_l.push_back(0); sum_l2.push_back(0); sum_w.push_back(0);
+    }
+    FreeSurfaceMode& m = out.back();
+    m.H += H;
+    m.residual = std::max(m.residual, n.residual);
+    ++m.members;
+    sum_w.back() += w; sum_l.back() += w * n.lambda; sum_l2.back() += w * n.lambda * n.lambda;
+    if (sum_w.back() > 0) m.lambda = sum_l.back() / sum_w.back();
+  }
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    out[i].members = (out[i].members + 1) / 2;
+    if (sum_w[i] > 0) out[i].spread = std::sqrt(std::max(0.0, sum_l2[i] / sum_w[i] - out[i].lambda * out[i].lambda));
+  }
+  return out;
+}
+
+// The rule's clusters of Lanczos on `apply` from `start`, λ = map(θ) and the bound on λ's distance to an eigenvalue
+// from the Ritz residual r: r itself for A; r/θ² for (A − σ)⁻¹ (an eigenvalue 1/(λ − σ) lies within r of θ). Checked
+// every two blocks: `done` ends the run early (at most `columns` basis vectors).
+template <class Map, class Bound, class Done>
+std::vector<FreeSurfaceMode> run_rule(const FreeSurfaceDynamics& A, const Eigen::MatrixXd& start,
+                                      const BlockLanczos::Apply& apply, int columns, Map map, Bound bound, double width,
+                                      Done done) {
+  BlockLanczos lanczos(A.weights(), start, columns);
+  std::vector<FreeSurfaceMode> out;
+  for (int block = 1;; ++block) {
+    const bool more = lanczos.step(apply);
+    progress_tick();
+    if (more && block % 2 != 0) continue;
+    auto rule = lanczos.rule();
+    for (auto& n : rule) {
+      n.residual = bound(n.lambda, n.residual);
+      n.lambda = map(n.lambda);
+    }
+    out = clusters(std::move(rule), width);
+    if (!more || done(out, lanczos.columns())) return out;
+  }
+}
+
+bool known(const std::vector<FreeSurfaceMode>& modes, double lambda, double width) {
+  return std::any_of(modes.begin(), modes.end(), [&](const auto& m) { return within_width(lambda, m.lambda, width); });
+}
+
+}  // namespace
+
+FreeSurfaceSurvey survey_free_surface_modes(const FreeSurfaceDynamics& A, const FreeSurfaceSurveySettings& s) {
+  const Eigen::MatrixXd B = start_block(A);
+  FreeSurfaceSurvey out;
+  for (int j = 0; j < 6; ++j)
+    for (int k = 0; k < 6; ++k)
+      out.gram(j, k) = {A.inner(B.col(j), B.col(k)), A.inner(B.col(j), B.col(6 + k))};
+  const double heavy = s.floor * out.gram.trace().real();
+  const auto is_heavy = [&](const FreeSurfaceMode& m) { return m.lambda > s.lambda_floor && m.H.trace().real() >= heavy; };
+  const auto settled = [&](const FreeSurfaceMode& m) { return m.residual <= s.residual_tolerance * lambda_scale(m.lambda); };
+  out.rule = run_rule(A, B, [&](const Eigen::VectorXd& in, Eigen::VectorXd& o) { A.apply(in, o); }, s.plain_columns,
+                      [](double t) { return t; }, [](double, double r) { return r; }, s.merge_width,
+                      [](const auto&, int) { return false; });
+  out.columns = s.plain_columns;
+  std::vector<FreeSurfaceMode> pending;
+  for (const auto& m : out.rule) {
+    out.total += m.H;
+    if (!is_heavy(m)) continue;
+    (settled(m) ? out.modes : pending).push_back(m);
+  }
+  std::sort(pending.begin(), pending.end(), [](const auto& a, const auto& b) { return a.H.trace().real() > b.H.trace().real(); });
+  for (const auto& node : pending) {
+    if (known(out.modes, node.lambda, s.window) && out.shifts > 0) continue;  // a shift's window held it
+    if (out.shifts >= s.max_shifts) {
+      out.unsettled.push_back(node);
+      continue;
+    }
+    const double sigma = node.lambda * (1 + 1e-3);  // just off: a node may sit on its eigenvalue
+    const FreeSurfaceShiftedInverse inverse(A, sigma);
+    ++out.shifts;
+    const auto in_window = [&](const FreeSurfaceMode& m) {
+      return is_heavy(m) && std::abs(m.lambda - sigma) <= s.window * lambda_scale(sigma);
+    };
+    // Done when the window's heavy weight has all settled, or when it holds none after kEmptyWindow columns (the plain
+    // node was a Gauss average over light eigenvalues, not a mode).
+    const auto done = [&](const std::vector<FreeSurfaceMode>& rule, int columns) {
+      bool any = false;
+      for (const auto& m : rule)
+        if (in_window(m)) {
+          if (!settled(m)) return false;
+          any = true;
+        }
+      return any || columns >= kEmptyWindow;
+    };
+    const auto near = run_rule(A, B, [&](const Eigen::VectorXd& in, Eigen::VectorXd& o) { inverse.apply(in, o); },
+                               s.shift_columns, [sigma](double t) { return sigma + 1 / t; },
+                               [](double t, double r) { return r / (t * t); }, s.merge_width, done);
+    for (const auto& m : near) {
+      if (!in_window(m)) continue;
+      if (!settled(m)) {
+        if (!known(out.unsettled, m.lambda, s.merge_width)) out.unsettled.push_back(m);
+      } else if (!known(out.modes, m.lambda, s.merge_width)) {
+        out.modes.push_back(m);
+      }
+    }
+  }
+  // A node still unsettled near a mode found later is that mode's.
+  std::erase_if(out.unsettled, [&](const auto& m) { return known(out.modes, m.lambda, s.window); });
+  std::sort(out.modes.begin(), out.modes.end(), [](const auto& a, const auto& b) { return a.transverse() > b.transverse(); });
+  return out;
+}
+
+}  // namespace rc::modes
