@@ -154,7 +154,10 @@ int fluid_group(const std::string& where) {
 void grade_towards_wall(const MeshOptions& options, double size, const std::string& where) {
   if (options.wall_size <= 0 || options.wall_size >= size) return;
   if (model_extent() / options.wall_size > kMaxCellsPerExtent)
-    throw std::runtime_error(where + ": wall mesh size " + number(options.wall_size) + " is too small");
+    throw std::runtime_error(where + ": wall mesh size " + number(options.wall_size) + " is too small for isotropic "
+                             "grading (at least the model's extent / " + number(kMaxCellsPerExtent) + " = " +
+                             number(model_extent() / kMaxCellsPerExtent) + "); thinner walls take anisotropic layers "
+                             "(--wall-layer with --wall-size, docs/volume.md §7)");
   gmsh::vectorpair surfaces;
   gmsh::model::getEntities(surfaces, 2);
   std::vector<double> tags;

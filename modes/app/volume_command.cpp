@@ -1,5 +1,7 @@
 #include "volume_command.hpp"
 
+#include "free_surface_run.hpp"
+
 #include "atomic_file.hpp"
 #include "mode_table_report.hpp"
 #include "petsc_handles.hpp"
@@ -118,6 +120,12 @@ VolumeCommands::VolumeCommands(CLI::App& app) {
   ellipsoid_->add_option("--c", c_, "semi-axis along z")->required();
   ellipsoid_->add_option("--tilt", tilt_degrees_, "angle (degrees) of the ellipsoid's c axis against the spin axis, "
                                                   "turned about x");
+  ellipsoid_->add_option("--fill", fill_, "partially filled: the liquid's volume fraction in (0, 1] (default 1); its free "
+                                         "surface is the cylinder about the craft's spin axis (docs/volume.md §8)");
+  ellipsoid_->add_option("--axis-distance", axis_distance_, "with --fill: the distance from the tank's centre to the "
+                                                            "craft's spin axis (parallel to z; default 0, on the axis)");
+  ellipsoid_->add_option("--axis-direction", axis_direction_degrees_, "with --fill: the direction (degrees from x, in "
+                                                                      "the x-y plane) from the spin axis to the tank");
   add_common_options(ellipsoid_, common_);
   volume_ = app.add_subcommand("volume", "3-D: the user's cavity (.geo/.msh with a 3-D physical group \"fluid\", or "
                                          "CAD .step/.stp/.brep): its 3-D mode table (docs/volume.md)");
@@ -133,6 +141,14 @@ VolumeTableRequest VolumeCommands::resolve() const {
   VolumeTableRequest r;
   if (ellipsoid_->parsed()) {
     r.shape = {"ellipsoid", {{"a", a_}, {"b", b_}, {"c", c_}}, {}, tilt_degrees_ * std::numbers::pi / 180};
+    const double phi = axis_direction_degrees_ * std::numbers::pi / 180;
+    r.shape.fill = fill_;
+    r.shape.spin_axis = {-axis_distance_ * std::cos(phi), -axis_distance_ * std::sin(phi)};
+    if (!(axis_distance_ >= 0) || !std::isfinite(axis_distance_) || !std::isfinite(phi))
+      throw std::runtime_error("--axis-distance must be >= 0 and finite, --axis-direction finite");
+    if (fill_ == 1 && (axis_distance_ != 0 || phi != 0))
+      throw std::runtime_error("--axis-distance/--axis-direction place a partially filled tank's free surface (with "
+                               "--fill < 1); a full tank's table is placed by the scene's offset");
   } else {
     r.shape = {"volume", {}, file_, tilt_degrees_ * std::numbers::pi / 180};
   }
@@ -150,6 +166,18 @@ VolumeTableRequest VolumeCommands::resolve() const {
   r.survey.max_columns = o.columns;
   r.fields = o.fields;
   if (o.fields) check_companion_name(o.output);
+  if (r.shape.fill < 1) {
+    if (o.ekman != 0)
+      throw std::runtime_error("--ekman with --fill in 3-D is not built yet: the ideal liquid's modes are (drop --ekman), "
+                               "or an axisymmetric tank on the spin axis takes both (cavity-modes sphere|spheroid ... "
+                               "--fill F --ekman Ek)");
+    if (!o.output.empty() || o.fields)
+      throw std::runtime_error("a partially filled 3-D tank's modes are printed; its table for chain-rom is not written "
+                               "yet (drop -o/--fields; on the spin axis: cavity-modes sphere|spheroid ... --fill F -o T.h5)");
+    if (o.wall_size > 0 || o.wall_layer > 0)
+      throw std::runtime_error("--wall-size/--wall-layer are not taken with --fill in 3-D");
+    return r;
+  }
   if (o.ekman == 0 && o.output.empty()) throw std::runtime_error("-o/--output is required (the table to write)");
   if (o.sigma.empty() && o.sigma_imag != 0) throw std::runtime_error("--sigma-imag needs --sigma");
   if (o.ekman != 0) {
@@ -196,6 +224,7 @@ void VolumeCommands::set_provenance(ModeTable& table, const std::string& command
 
 int VolumeCommands::run(const std::string& command_line) const {
   const VolumeTableRequest request = resolve();
+  if (request.shape.fill < 1) return run_partial_fill(request);
   if (common_.ekman > 0 && !common_.sigma.empty() && std::filesystem::path(common_.output).extension() == ".h5")
     return run_response_table(request, command_line);
   if (common_.ekman > 0 && !common_.sigma.empty()) return run_response(request);
@@ -206,6 +235,56 @@ int VolumeCommands::run(const std::string& command_line) const {
   set_provenance(result.table, command_line);
   write_mode_table(result.table, common_.output, result.fields ? &*result.fields : nullptr);
   print_report(result);
+  return 0;
+}
+
+namespace {
+
+void print_partial_fill(const FreeSurfaceRunResult& r, const geometry::VolumeShapeSpec& shape) {
+  const FreeSurfaceSurvey& v = r.survey;
+  fmt::print("partially filled tank: fill {:.6g}, spin axis through ({:.6g}, {:.6g}), free surface b = {:.10g} "
+             "(area {:.6g})\n", shape.fill, shape.spin_axis[0], shape.spin_axis[1], r.surface_radius, r.surface_area);
+  fmt::print("liquid: volume {:.10g}, centroid ({:.6g}, {:.6g}, {:.6g}); {} tetrahedra, {} pressure dofs ({} on the "
+             "surface)\n", r.liquid.volume, r.liquid.centroid[0], r.liquid.centroid[1], r.liquid.centroid[2], r.elements,
+             r.pressure_dofs, r.surface_dofs);
+  fmt::print("sum rule (rotations about the centroid, I_f - J_D + K): xx {:.10g}, yy {:.10g}, zz {:.10g}; the Gauss "
+             "rule's weights sum to it to {:.1e}\n", v.gram(0, 0).real(), v.gram(1, 1).real(), v.gram(2, 2).real(),
+             (v.total - v.gram).norm() / v.gram.norm());
+  fmt::print("{:>14} {:>12} {:>12} {:>12} {:>12} {:>12} {:>9}\n", "lambda", "E (xx+yy)", "H_zz", "T_xx", "T_yy",
+             "T_zz", "bound");
+  for (const auto& m : v.modes)
+    fmt::print("{:14.9f} {:12.6g} {:12.6g} {:12.6g} {:12.6g} {:12.6g} {:9.1e}\n", m.lambda, m.transverse(),
+               m.H(2, 2).real(), m.H(3, 3).real(), m.H(4, 4).real(), m.H(5, 5).real(), m.residual);
+  for (const auto& m : v.unsettled)
+    fmt::print("NOT CONVERGED: weight {:.3g} near lambda {:.6g} (bound {:.1e}) did not settle in {} shifts\n",
+               m.H.trace().real(), m.lambda, m.residual, v.shifts);
+  fmt::print("rows: {} modes (lambda > 0; each is also a mode at -lambda), {} shifts\n", v.modes.size(), v.shifts);
+  // The plain rule's measure in bands (both signs of λ folded): where the rows do not hold the weight, a dense
+  // cluster does (a generic cavity's inertial spectrum is not discrete, docs/volume.md §8).
+  const std::vector<double> edges = {0, 0.05, 0.5, 1, 1.5, 2, 3, 1e300};
+  std::vector<double> E(edges.size() - 1, 0), T(edges.size() - 1, 0);
+  for (const auto& m : v.rule)
+    for (std::size_t i = 0; i + 1 < edges.size(); ++i)
+      if (std::abs(m.lambda) >= edges[i] && std::abs(m.lambda) < edges[i + 1]) {
+        E[i] += 0.5 * m.transverse();
+        T[i] += 0.5 * (m.H(3, 3) + m.H(4, 4) + m.H(5, 5)).real();
+      }
+  fmt::print("bands |lambda| (E = H_xx + H_yy, T = the translations' trace; sums over lambda > 0):");
+  for (std::size_t i = 0; i + 1 < edges.size(); ++i)
+    fmt::print(" [{:g}, {}): E {:.4g} T {:.4g};", edges[i], i + 2 < edges.size() ? fmt::format("{:g}", edges[i + 1]) : "inf",
+               E[i], T[i]);
+  fmt::print("\n");
+}
+
+}  // namespace
+
+int VolumeCommands::run_partial_fill(const VolumeTableRequest& request) const {
+  int ranks = 1;
+  MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
+  if (ranks > 1) throw std::runtime_error("a partially filled 3-D tank is solved on one rank (run it without mpirun)");
+  const FreeSurfaceRunResult r = run_free_surface_modes(request.shape, request.mesh, {},
+                                                        [](const std::string& line) { std::cerr << line << "\n"; });
+  print_partial_fill(r, request.shape);
   return 0;
 }
 

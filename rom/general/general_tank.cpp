@@ -36,9 +36,15 @@ Eigen::Matrix3cd row_coupling(const rc::ModeTable& t, std::size_t l, const RowCo
 // What the general chain takes of a tank so far: a modal tank, filled; a viscous one at its table's Ekman number, and
 // a 3-D viscous one spinning the table's way (spin −ω mirrors the flow, and a 3-D cavity's mirror image is another
 // cavity; an axisymmetric one's is itself: docs/rom.md, "Viscous tanks").
+// Every refusal of a tank here ends with what the chain does take instead.
+const char* const kTanksTaken =
+    "; it takes, on or off a body's axis, a full tank's ideal or damped-mode table (axisymmetric or 3-D: cavity-modes "
+    "SHAPE|ellipsoid|volume [--ekman Ek] -o T.h5) or a 3-D response table (cavity-modes ellipsoid|volume --ekman Ek "
+    "--sigma A:B:N -o T.h5), and a partially filled axisymmetric tank on the axis of a fixed chain's first body "
+    "(docs/rom.md, \"Bodies and tanks without axial symmetry\")";
+
 void require_modal(const Scene& scene, const std::string& w, const CavitySpec& cav, const rc::ModeTable& t, double spin) {
-  const std::string later = " is not in the chain without axial symmetry yet (docs/rom.md, \"Bodies and tanks "
-                            "without axial symmetry\")";
+  const std::string later = std::string(" is not in the chain without axial symmetry yet") + kTanksTaken;
   check_viscosity(scene, w, cav, t, spin);
   if (t.viscous() && t.volume_cavity.present() && spin < 0)
     fail(scene, w + ".table", "a 3-D viscous table holds the modes for a positive spin, and spin -w mirrors the "
@@ -57,10 +63,11 @@ void require_modal(const Scene& scene, const std::string& w, const CavitySpec& c
 // whose joint moves its modes couple to the earlier bodies' tilts too: docs/rom.md, "Partially filled tanks"; off the
 // axis its free surface would face the spin axis sideways, which no axisymmetric table describes).
 void require_fixed_joint(const Scene& scene, int k, const CavitySpec& cav, const std::string& w) {
-  const std::string later = " (docs/rom.md, \"Bodies and tanks without axial symmetry\")";
+  const std::string later = kTanksTaken;
   if (cav.offset && ((*cav.offset)[0] != 0 || (*cav.offset)[1] != 0))
-    fail(scene, w + ".offset", "a partially filled tank off its body's axis is not modelled (its free surface faces the "
-                               "spin axis sideways)" + later);
+    fail(scene, w + ".offset", "a partially filled tank off its body's axis is not in the chain yet (its free surface "
+                               "faces the spin axis sideways: cavity-modes ellipsoid --fill F --axis-distance D prints "
+                               "its ideal modes, docs/volume.md §8)" + later);
   if (k > 0 || scene.free_chain)
     fail(scene, w + ".table", "a partially filled tank in the chain without axial symmetry sits on the first body of a "
                               "fixed chain so far (a moving joint couples its modes to the earlier bodies)" + later);
