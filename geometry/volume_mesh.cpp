@@ -78,16 +78,26 @@ void check_options(const MeshOptions& options) {
 }
 
 // The spheroid x² + y² over a², z² over c² ≤ 1 as the revolution of its half-ellipse about z (a sphere: addSphere).
+// gmsh's ellipse takes its major radius first, so an oblate one (a > c) is drawn with its axis along y and revolved
+// about it, a prolate one with its axis along x; either is then turned so that its axis is z.
 int revolved_spheroid(double a, double c) {
   if (a == c) return occ::addSphere(0, 0, 0, a);
-  const int arc = occ::addEllipse(0, 0, 0, a, c, -1, -M_PI / 2, M_PI / 2);  // in the x-y plane, y the future z
-  const int axis = occ::addLine(occ::addPoint(0, c, 0), occ::addPoint(0, -c, 0));
+  const bool oblate = a > c;
+  const int arc = oblate ? occ::addEllipse(0, 0, 0, a, c, -1, -M_PI / 2, M_PI / 2)  // x >= 0, the axis y
+                         : occ::addEllipse(0, 0, 0, c, a, -1, 0, M_PI);           // y >= 0, the axis x
+  const int axis = oblate ? occ::addLine(occ::addPoint(0, c, 0), occ::addPoint(0, -c, 0))
+                          : occ::addLine(occ::addPoint(-c, 0, 0), occ::addPoint(c, 0, 0));
   const int face = occ::addPlaneSurface({occ::addCurveLoop({arc, axis})});
-  occ::rotate({{2, face}}, 0, 0, 0, 1, 0, 0, M_PI / 2);
   gmsh::vectorpair out;
-  occ::revolve({{2, face}}, 0, 0, 0, 0, 0, 1, 2 * M_PI, out);
+  occ::revolve({{2, face}}, 0, 0, 0, oblate ? 0 : 1, oblate ? 1 : 0, 0, 2 * M_PI, out);
   for (const auto& [dim, tag] : out)
-    if (dim == 3) return tag;
+    if (dim == 3) {
+      if (oblate)
+        occ::rotate({{3, tag}}, 0, 0, 0, 1, 0, 0, M_PI / 2);   // y → z
+      else
+        occ::rotate({{3, tag}}, 0, 0, 0, 0, 1, 0, -M_PI / 2);  // x → z
+      return tag;
+    }
   throw std::runtime_error("the spheroid's revolution made no volume");
 }
 

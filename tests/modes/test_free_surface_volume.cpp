@@ -43,7 +43,8 @@ double relative(double a, double b) { return std::abs(a - b) / std::abs(b); }
 
 }  // namespace
 
-// The sphere's liquid beyond the cylinder ρ = b about its own axis fills (1 − b²)^{3/2} of it.
+// The sphere's liquid beyond the cylinder ρ = b about its own axis fills (1 − b²)^{3/2} of it, a spheroid's (scaled along
+// its axis) the same.
 TEST(OffAxisFill, SphereSurfaceRadiusIsTheClosedForm) {
   const double fill = 0.6;
   const auto m = tank(1, 1, fill, {0, 0}, 3, 0.4);
@@ -51,6 +52,12 @@ TEST(OffAxisFill, SphereSurfaceRadiusIsTheClosedForm) {
   std::printf("fill %.1f on the axis: b = %.12f, closed form %.12f (%.1e)\n", fill, m.free_surface_radius, b,
               std::abs(m.free_surface_radius - b));
   EXPECT_NEAR(m.free_surface_radius, b, 1e-9);
+  // A spheroid's liquid beyond the coaxial cylinder fills the same fraction whatever c: oblate and prolate revolved alike.
+  for (const double c : {0.8, 1.5}) {
+    const double bc = tank(1, c, fill, {0, 0}, 2, 0.5).free_surface_radius;
+    std::printf("spheroid c = %.1f: b = %.12f (%.1e)\n", c, bc, std::abs(bc - b));
+    EXPECT_NEAR(bc, b, 1e-9);
+  }
   // Off the axis (the axis 2 from the centre, outside the tank): the meshed liquid's volume is the fill's.
   const auto off = tank(1, 1, fill, {-2, 0}, 4, 0.3);
   const double volume = integrate_volume(VolumeSpace(off, 0, false)).volume, want = fill * 4 * std::numbers::pi / 3;
