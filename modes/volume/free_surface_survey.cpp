@@ -1,5 +1,6 @@
 #include "free_surface_survey.hpp"
 
+#include "block_clusters.hpp"
 #include "block_lanczos.hpp"
 #include "lanczos.hpp"
 #include "progress.hpp"
@@ -9,8 +10,6 @@
 
 namespace rc::modes {
 namespace {
-
-using Complex6 = Eigen::Matrix<std::complex<double>, 6, 1>;
 
 constexpr int kEmptyWindow = 48;  // basis vectors after which a shift's window without heavy weight ends the run
 
@@ -25,39 +24,8 @@ Eigen::MatrixXd start_block(const FreeSurfaceDynamics& A) {
   return B;
 }
 
-// ⟨f_j, z⟩ (complex, f_j real) = ⟨f_j, z⟩_real + i ⟨i f_j, z⟩_real.
-Complex6 coupling(const BlockGaussNode& n) {
-  Complex6 c;
-  for (int j = 0; j < 6; ++j) c(j) = {n.weight(j), n.weight(6 + j)};
-  return c;
-}
-
-// Ritz values within the merge width are one cluster; each complex mode is two real Ritz vectors, so H = ½ Σ c cᴴ.
-std::vector<FreeSurfaceMode> clusters(std::vector<BlockGaussNode> rule, double width) {
-  std::sort(rule.begin(), rule.end(), [](const auto& a, const auto& b) { return a.lambda < b.lambda; });
-  std::vector<FreeSurfaceMode> out;
-  std::vector<double> sum_l, sum_l2, sum_w;
-  for (const auto& n : rule) {
-    const Complex6 c = coupling(n);
-    const Hermitian6 H = 0.5 * c * c.adjoint();
-    const double w = H.trace().real();
-    if (out.empty() || !within_width(n.lambda, out.back().lambda, width)) {
-      out.push_back({});
-      out.back().lambda = n.lambda;
-      sum_l.push_back(0); sum_l2.push_back(0); sum_w.push_back(0);
-    }
-    FreeSurfaceMode& m = out.back();
-    m.H += H;
-    m.residual = std::max(m.residual, n.residual);
-    ++m.members;
-    sum_w.back() += w; sum_l.back() += w * n.lambda; sum_l2.back() += w * n.lambda * n.lambda;
-    if (sum_w.back() > 0) m.lambda = sum_l.back() / sum_w.back();
-  }
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    out[i].members = (out[i].members + 1) / 2;
-    if (sum_w[i] > 0) out[i].spread = std::sqrt(std::max(0.0, sum_l2[i] / sum_w[i] - out[i].lambda * out[i].lambda));
-  }
-  return out;
+std::vector<FreeSurfaceMode> free_surface_clusters(std::vector<BlockGaussNode> rule, double width) {
+  return block_clusters<FreeSurfaceMode, 6>(std::move(rule), width);
 }
 
 // The rule's clusters of Lanczos on `apply` from `start`, λ = map(θ) and the bound on λ's distance to an eigenvalue
@@ -78,7 +46,7 @@ std::vector<FreeSurfaceMode> run_rule(const FreeSurfaceDynamics& A, const Eigen:
       n.residual = bound(n.lambda, n.residual);
       n.lambda = map(n.lambda);
     }
-    out = clusters(std::move(rule), width);
+    out = free_surface_clusters(std::move(rule), width);
     if (!more || done(out, lanczos.columns())) return out;
   }
 }

@@ -1,5 +1,6 @@
 #include "volume_survey.hpp"
 
+#include "block_clusters.hpp"
 #include "lanczos.hpp"
 #include "progress.hpp"
 
@@ -13,43 +14,9 @@
 namespace rc::modes {
 namespace {
 
-using Complex3 = Eigen::Vector3cd;
-
-// The complex coupling of a real-form Ritz vector from its weights against (w_x, w_y, w_z, i w_x, i w_y, i w_z):
-// ⟨(w, 0), z⟩ = Re c and ⟨(0, w), z⟩ = Im c.
-Complex3 coupling(const BlockGaussNode& n) {
-  Complex3 c;
-  for (int k = 0; k < 3; ++k) c(k) = {n.weight(k), n.weight(3 + k)};
-  return c;
-}
-
-// Clusters of a rule sorted by λ: Ritz values within the merge width. Each complex mode is two real Ritz vectors z
-// and iz with couplings c and ic, so a cluster's H = ½ Σ c cᴴ.
+// Clusters of a rule sorted by λ (block_clusters.hpp).
 std::vector<VolumeMode> clusters(std::vector<BlockGaussNode> rule, double width) {
-  std::sort(rule.begin(), rule.end(), [](const auto& a, const auto& b) { return a.lambda < b.lambda; });
-  std::vector<VolumeMode> out;
-  std::vector<double> sum_l, sum_l2, sum_w;
-  for (const auto& n : rule) {
-    const Complex3 c = coupling(n);
-    const Hermitian3 H = 0.5 * c * c.adjoint();
-    const double w = H.trace().real();
-    if (out.empty() || !within_width(n.lambda, out.back().lambda, width)) {
-      out.push_back({});
-      out.back().lambda = n.lambda;
-      sum_l.push_back(0); sum_l2.push_back(0); sum_w.push_back(0);
-    }
-    VolumeMode& m = out.back();
-    m.H += H;
-    m.residual = std::max(m.residual, n.residual);
-    ++m.members;
-    sum_w.back() += w; sum_l.back() += w * n.lambda; sum_l2.back() += w * n.lambda * n.lambda;
-    if (sum_w.back() > 0) m.lambda = sum_l.back() / sum_w.back();
-  }
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    out[i].members = (out[i].members + 1) / 2;  // real Ritz values come in pairs
-    if (sum_w[i] > 0) out[i].spread = std::sqrt(std::max(0.0, sum_l2[i] / sum_w[i] - out[i].lambda * out[i].lambda));
-  }
-  return out;
+  return block_clusters<VolumeMode, 3>(std::move(rule), width);
 }
 
 double relative_change(const Hermitian3& a, const Hermitian3& b) {
