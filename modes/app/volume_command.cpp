@@ -137,21 +137,37 @@ VolumeCommands::VolumeCommands(CLI::App& app) {
 
 bool VolumeCommands::parsed() const { return ellipsoid_->parsed() || volume_->parsed(); }
 
+geometry::VolumeShapeSpec VolumeCommands::resolve_shape() const {
+  if (!ellipsoid_->parsed()) return {"volume", {}, file_, tilt_degrees_ * std::numbers::pi / 180};
+  geometry::VolumeShapeSpec shape{"ellipsoid", {{"a", a_}, {"b", b_}, {"c", c_}}, {}, tilt_degrees_ * std::numbers::pi / 180};
+  const double phi = axis_direction_degrees_ * std::numbers::pi / 180;
+  if (!(axis_distance_ >= 0) || !std::isfinite(axis_distance_) || !std::isfinite(phi))
+    throw std::runtime_error("--axis-distance must be >= 0 and finite, --axis-direction finite");
+  if (fill_ == 1 && (axis_distance_ != 0 || phi != 0))
+    throw std::runtime_error("--axis-distance/--axis-direction place a partially filled tank's free surface (with "
+                             "--fill < 1); a full tank's table is placed by the scene's offset");
+  shape.fill = fill_;
+  shape.spin_axis = {-axis_distance_ * std::cos(phi), -axis_distance_ * std::sin(phi)};
+  return shape;
+}
+
+// A 3-D partial fill's modes are printed, ideal, on isotropic meshes (docs/volume.md §8): what else is asked is refused.
+void VolumeCommands::check_partial_fill_options() const {
+  const Common& o = common_;
+  if (o.ekman != 0)
+    throw std::runtime_error("--ekman with --fill in 3-D is not built yet: the ideal liquid's modes are (drop --ekman), "
+                             "or an axisymmetric tank on the spin axis takes both (cavity-modes sphere|spheroid ... "
+                             "--fill F --ekman Ek)");
+  if (!o.output.empty() || o.fields)
+    throw std::runtime_error("a partially filled 3-D tank's modes are printed; its table for chain-rom is not written "
+                             "yet (drop -o/--fields; on the spin axis: cavity-modes sphere|spheroid ... --fill F -o T.h5)");
+  if (o.wall_size > 0 || o.wall_layer > 0)
+    throw std::runtime_error("--wall-size/--wall-layer are not taken with --fill in 3-D");
+}
+
 VolumeTableRequest VolumeCommands::resolve() const {
   VolumeTableRequest r;
-  if (ellipsoid_->parsed()) {
-    r.shape = {"ellipsoid", {{"a", a_}, {"b", b_}, {"c", c_}}, {}, tilt_degrees_ * std::numbers::pi / 180};
-    const double phi = axis_direction_degrees_ * std::numbers::pi / 180;
-    r.shape.fill = fill_;
-    r.shape.spin_axis = {-axis_distance_ * std::cos(phi), -axis_distance_ * std::sin(phi)};
-    if (!(axis_distance_ >= 0) || !std::isfinite(axis_distance_) || !std::isfinite(phi))
-      throw std::runtime_error("--axis-distance must be >= 0 and finite, --axis-direction finite");
-    if (fill_ == 1 && (axis_distance_ != 0 || phi != 0))
-      throw std::runtime_error("--axis-distance/--axis-direction place a partially filled tank's free surface (with "
-                               "--fill < 1); a full tank's table is placed by the scene's offset");
-  } else {
-    r.shape = {"volume", {}, file_, tilt_degrees_ * std::numbers::pi / 180};
-  }
+  r.shape = resolve_shape();
   geometry::check_volume_shape(r.shape);
   const Common& o = common_;
   if (!(o.floor > 0 && o.floor < 1)) throw std::runtime_error("--floor must be in (0, 1)");
@@ -167,15 +183,7 @@ VolumeTableRequest VolumeCommands::resolve() const {
   r.fields = o.fields;
   if (o.fields) check_companion_name(o.output);
   if (r.shape.fill < 1) {
-    if (o.ekman != 0)
-      throw std::runtime_error("--ekman with --fill in 3-D is not built yet: the ideal liquid's modes are (drop --ekman), "
-                               "or an axisymmetric tank on the spin axis takes both (cavity-modes sphere|spheroid ... "
-                               "--fill F --ekman Ek)");
-    if (!o.output.empty() || o.fields)
-      throw std::runtime_error("a partially filled 3-D tank's modes are printed; its table for chain-rom is not written "
-                               "yet (drop -o/--fields; on the spin axis: cavity-modes sphere|spheroid ... --fill F -o T.h5)");
-    if (o.wall_size > 0 || o.wall_layer > 0)
-      throw std::runtime_error("--wall-size/--wall-layer are not taken with --fill in 3-D");
+    check_partial_fill_options();
     return r;
   }
   if (o.ekman == 0 && o.output.empty()) throw std::runtime_error("-o/--output is required (the table to write)");

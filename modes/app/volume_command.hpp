@@ -29,6 +29,8 @@ class VolumeCommands {
 
  private:
   VolumeTableRequest resolve() const;
+  geometry::VolumeShapeSpec resolve_shape() const;
+  void check_partial_fill_options() const;
   int run_viscous(const VolumeTableRequest& ideal, const std::string& command_line) const;
   int run_response(const VolumeTableRequest& ideal) const;
   int run_response_table(const VolumeTableRequest& ideal, const std::string& command_line) const;

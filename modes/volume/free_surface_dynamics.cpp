@@ -42,12 +42,8 @@ FreeSurfaceDynamics::FreeSurfaceDynamics(const VolumeSpace& space, const VolumeF
 
 FreeSurfaceShiftedInverse::FreeSurfaceShiftedInverse(const FreeSurfaceDynamics& A, double sigma) : A_(A), sigma_(sigma) {
   const double b = A.surface_.radius();
-  petsc_check(MatDuplicate(A.real_.M, MAT_COPY_VALUES, Q_.out()), "MatDuplicate");
-  petsc_check(MatScale(Q_, sigma * sigma), "MatScale");
-  petsc_check(MatAXPY(Q_, -4.0, A.real_.Kz, SUBSET_NONZERO_PATTERN), "MatAXPY");
-  petsc_check(MatAXPY(Q_, 2 * sigma, A.real_.Gc, DIFFERENT_NONZERO_PATTERN), "MatAXPY");
+  Q_ = shifted_real_pencil(A.real_, sigma);  // plus the surface's −σ²(σ² − 4) S/b
   petsc_check(MatAXPY(Q_, -sigma * sigma * (sigma * sigma - 4) / b, A.surface_block_, DIFFERENT_NONZERO_PATTERN), "MatAXPY");
-  petsc_check(MatSetOption(Q_, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
   solver_ = std::make_unique<StiffnessSolver>(Q_, "fs_shift_", "the free surface's shifted pencil");
 }
 
@@ -109,7 +105,7 @@ std::array<Eigen::VectorXd, 2> FreeSurfaceDynamics::displacement(const Eigen::Ve
 
 void FreeSurfaceDynamics::apply(const Eigen::VectorXd& in, Eigen::VectorXd& out) const {
   const Eigen::Index nv = velocity_.size(), ns = static_cast<Eigen::Index>(surface_.dofs().size());
-  const Eigen::VectorXd V = in.head(nv);
+  const Eigen::VectorXd V = in.head(nv);  // once: coriolis and divergence take whole vectors
   const auto eta = displacement(in);
   const double b = surface_.radius();
   Eigen::VectorXd SV;

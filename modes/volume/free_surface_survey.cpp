@@ -112,8 +112,8 @@ FreeSurfaceSurvey survey_free_surface_modes(const FreeSurfaceDynamics& A, const 
       }
     }
   }
-  // A node still unsettled near a mode found later is that mode's.
-  std::erase_if(out.unsettled, [&](const auto& m) { return known(out.modes, m.lambda, s.window); });
+  // A node still unsettled that a later shift settled is that mode; unsettled weight merely near a mode stays named.
+  std::erase_if(out.unsettled, [&](const auto& m) { return known(out.modes, m.lambda, s.merge_width); });
   std::sort(out.modes.begin(), out.modes.end(), [](const auto& a, const auto& b) { return a.transverse() > b.transverse(); });
   return out;
 }

@@ -139,4 +139,14 @@ PoincareForms real_form_pencil(const VolumeForms& forms) {
   return P;
 }
 
+PMat shifted_real_pencil(const PoincareForms& real, double sigma) {
+  PMat Q;
+  petsc_check(MatDuplicate(real.M, MAT_COPY_VALUES, Q.out()), "MatDuplicate");
+  petsc_check(MatScale(Q, sigma * sigma), "MatScale");
+  petsc_check(MatAXPY(Q, -4.0, real.Kz, SUBSET_NONZERO_PATTERN), "MatAXPY");
+  petsc_check(MatAXPY(Q, 2 * sigma, real.Gc, DIFFERENT_NONZERO_PATTERN), "MatAXPY");
+  petsc_check(MatSetOption(Q, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
+  return Q;
+}
+
 }  // namespace rc::modes

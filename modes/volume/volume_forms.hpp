@@ -45,4 +45,7 @@ VolumeForms assemble_volume_forms(const VolumeSpace& space, MPI_Comm comm = PETS
 // functionals): QuadraticEigenSolver solves it (every eigenvalue twice).
 PoincareForms real_form_pencil(const VolumeForms& forms);
 
+// Q(σ) = σ² M + 2σ (iG) − 4 Kz in that real form (symmetric, indefinite): the shift-and-invert surveys' matrix.
+PMat shifted_real_pencil(const PoincareForms& real, double sigma);
+
 }  // namespace rc::modes

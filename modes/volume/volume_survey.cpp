@@ -90,16 +90,6 @@ RuleRun run_rule(const VolumeVelocity& V, const Eigen::MatrixXd& start, const Bl
   return run;
 }
 
-// Q(σ) = σ² M + 2σ (iG) − 4 Kz in its real form.
-PMat shifted_pencil(const PoincareForms& real, double sigma) {
-  PMat Q;
-  petsc_check(MatDuplicate(real.M, MAT_COPY_VALUES, Q.out()), "MatDuplicate");
-  petsc_check(MatScale(Q, sigma * sigma), "MatScale");
-  petsc_check(MatAXPY(Q, -4.0, real.Kz, SUBSET_NONZERO_PATTERN), "MatAXPY");
-  petsc_check(MatAXPY(Q, 2 * sigma, real.Gc, DIFFERENT_NONZERO_PATTERN), "MatAXPY");
-  petsc_check(MatSetOption(Q, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
-  return Q;
-}
 
 // The heavy clusters of `watch` within the smallest window about σ that holds any: s.window · max(|σ|, 0.1), widened
 // ×4 up to kWidenings times (a plain Gauss node stands for weight spread over eigenvalues near it, not at it).
@@ -119,7 +109,7 @@ std::vector<VolumeMode> nearest_heavy(const std::vector<VolumeMode>& watch, doub
 // or not) in `watch`.
 RuleRun shift_invert_run(const VolumeVelocity& V, const PoincareForms& real, const Eigen::MatrixXd& start,
                          double sigma, double heavy, const VolumeSurveySettings& s) {
-  const PMat Q = shifted_pencil(real, sigma);
+  const PMat Q = shifted_real_pencil(real, sigma);
   const StiffnessSolver factor(Q, "shift_", fmt::format("the 3-D Q(sigma) at sigma = {:.9g}", sigma));
   const double c = sigma * (sigma * sigma - 4);
   std::vector<double> g, p;
