@@ -236,6 +236,61 @@ ModeTable::FreeSurface read_free_surface(hid_t root) {
   return f;
 }
 
+// /volume_free_surface: a partially filled 3-D tank's surface, axis and five-direction couplings.
+constexpr std::pair<const char*, std::vector<double> ModeTable::VolumeFreeSurface::*> kVolumeSurfaceSets[] = {
+    {"axis", &ModeTable::VolumeFreeSurface::axis},
+    {"coupling_re", &ModeTable::VolumeFreeSurface::coupling_re},
+    {"coupling_im", &ModeTable::VolumeFreeSurface::coupling_im},
+    {"gram_re", &ModeTable::VolumeFreeSurface::gram_re},
+    {"gram_im", &ModeTable::VolumeFreeSurface::gram_im},
+    {"geostrophic_re", &ModeTable::VolumeFreeSurface::geostrophic_re},
+    {"geostrophic_im", &ModeTable::VolumeFreeSurface::geostrophic_im},
+    {"surface_gram", &ModeTable::VolumeFreeSurface::surface_gram}};
+
+void write_volume_free_surface(hid_t root, const ModeTable::VolumeFreeSurface& f) {
+  Hid g(H5Gcreate2(root, "volume_free_surface", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+  put_double(g.get(), "fill", f.fill);
+  put_double(g.get(), "radius", f.radius);
+  for (const auto& [name, member] : kVolumeSurfaceSets) put_vector(g.get(), name, f.*member, H5T_NATIVE_DOUBLE);
+}
+
+ModeTable::VolumeFreeSurface read_volume_free_surface(hid_t root) {
+  Hid g(H5Gopen2(root, "volume_free_surface", H5P_DEFAULT), H5Gclose);
+  if (!g.ok()) throw std::runtime_error("cannot open /volume_free_surface");
+  ModeTable::VolumeFreeSurface f;
+  f.fill = get_double(g.get(), "fill");
+  f.radius = get_double(g.get(), "radius");
+  if (!(f.radius > 0)) throw std::runtime_error("/volume_free_surface: radius must be positive");
+  for (const auto& [name, member] : kVolumeSurfaceSets) f.*member = get_vector<double>(g.get(), name, H5T_NATIVE_DOUBLE, true);
+  return f;
+}
+
+void validate_volume_free_surface(const ModeTable& t) {
+  const auto& f = t.volume_free_surface;
+  if (!f.present()) {
+    if (!f.coupling_re.empty()) throw std::runtime_error("/volume_free_surface/coupling_re in a table without it");
+    return;
+  }
+  if (!t.volume_cavity.present() || t.free_surface.present())
+    throw std::runtime_error("/volume_free_surface needs /volume and no axisymmetric /free_surface");
+  if (!(f.fill > 0 && f.fill < 1) || !std::isfinite(f.radius)) throw std::runtime_error("/volume_free_surface: fill outside (0, 1)");
+  const std::size_t n = t.E.size();
+  if (f.axis.size() != 2 || f.coupling_re.size() != 25 * n || f.coupling_im.size() != 25 * n || f.gram_re.size() != 25 ||
+      f.gram_im.size() != 25 || f.geostrophic_re.size() != 25 || f.geostrophic_im.size() != 25 || f.surface_gram.size() != 25)
+    throw std::runtime_error("/volume_free_surface: a set does not hold 2, 25 or 25 per mode entries");
+  for (const auto& [name, member] : kVolumeSurfaceSets)
+    for (double x : f.*member)
+      if (!std::isfinite(x)) throw std::runtime_error(std::string("/volume_free_surface/") + name + " holds a non-finite value");
+  // Each row's rotation block is /volume's coupling.
+  for (std::size_t m = 0; m < n; ++m)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) {
+        const double a = f.coupling_re[25 * m + 5 * j + k], b = t.volume_cavity.coupling_re[9 * m + 3 * j + k];
+        if (std::abs(a - b) > 1e-12 * (1 + std::abs(t.E[m])))
+          throw std::runtime_error("/volume_free_surface: row " + std::to_string(m + 1) + "'s rotation block is not /volume's coupling");
+      }
+}
+
 // /volume: a 3-D cavity's tensors and per-mode coupling tensors.
 void write_volume(hid_t root, const ModeTable::Volume& v) {
   Hid g(H5Gcreate2(root, "volume", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
@@ -391,6 +446,7 @@ void write_optional_groups(hid_t root, const ModeTable& t) {
     }
   }
   if (t.free_surface.present()) write_free_surface(root, t.free_surface);
+  if (t.volume_free_surface.present()) write_volume_free_surface(root, t.volume_free_surface);
   if (t.volume_cavity.present()) write_volume(root, t.volume_cavity);
   if (!t.geometry_source.empty() || !t.command_line.empty()) {
     Hid prov(H5Gcreate2(root, "provenance", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
@@ -487,6 +543,7 @@ void read_optional_groups(hid_t root, ModeTable& t) {
       t.galerkin.dissipation_mismatch = get_double(gal.get(), "dissipation_mismatch");
   }
   if (H5Lexists(root, "free_surface", H5P_DEFAULT) > 0) t.free_surface = read_free_surface(root);
+  if (H5Lexists(root, "volume_free_surface", H5P_DEFAULT) > 0) t.volume_free_surface = read_volume_free_surface(root);
   if (H5Lexists(root, "volume", H5P_DEFAULT) > 0) t.volume_cavity = read_volume(root);
   if (H5Lexists(root, "provenance", H5P_DEFAULT) > 0) {
     Hid prov(H5Gopen2(root, "provenance", H5P_DEFAULT), H5Gclose);
@@ -547,6 +604,7 @@ void ModeTable::validate() const {
     throw std::runtime_error("/bands datasets differ in length");
   validate_galerkin(*this);
   validate_volume(*this);
+  validate_volume_free_surface(*this);
   for (double x : {volume, A_f, C_f, J_zh, sum_rule, coverage})
     if (!std::isfinite(x)) throw std::runtime_error("a root attribute holds a non-finite value");
   for (const auto* column : {&kappa, &lambda, &E, &a, &N2, &decay, &E_imag, &a_imag})
@@ -566,9 +624,11 @@ void ModeTable::check_identities() const {
   if (some && (dlambda.empty() || dE.empty() || converged.empty()))
     fail("/modes/dlambda, dE and converged come together (the convergence check), one of them is missing");
   if (!(volume > 0)) fail("volume > 0");
-  const double K2 = free_surface.present() ? free_surface.K2 : 0.0;
+  // A 3-D partial fill's: the transverse half-trace of the surface parts' Gram matrix, K about P0.
+  const auto& vs = volume_free_surface.surface_gram;
+  const double K2 = free_surface.present() ? free_surface.K2 : volume_free_surface.present() ? 0.5 * (vs[0] + vs[6]) : 0.0;
   if (std::abs(sum_rule - (A_f + K2 - J_zh)) > 1e-9 * std::max({std::abs(A_f), std::abs(J_zh), 1e-300}))
-    fail(formatted(free_surface.present() ? "sum_rule = A_f + K2 - J_zh (%.12g against %.12g)"
+    fail(formatted(partially_filled() ? "sum_rule = A_f + K2 - J_zh (%.12g against %.12g)"
                                           : "sum_rule = A_f - J_zh (%.12g against %.12g)", sum_rule, A_f + K2 - J_zh));
   const double tiny = 1e-12 * std::max(std::abs(sum_rule), 1e-300);
   for (std::size_t i = 0; i < E.size(); ++i) {
@@ -578,7 +638,7 @@ void ModeTable::check_identities() const {
     if (lambda[i] == 0 && !spin_up) fail(formatted("lambda != 0 (row %zu)", i + 1));
     if (!spin_up && std::abs(kappa[i] * lambda[i] - 2) > 1e-9) fail(formatted("kappa = 2/lambda (row %zu: kappa %.9g, lambda %.9g)", i + 1, kappa[i], lambda[i]));
     if (!(N2[i] > 0)) fail(formatted("N2 > 0 (row %zu: %.9g)", i + 1, N2[i]));
-    if (!viscous() && !free_surface.present() && std::abs(lambda[i]) > 2 * (1 + 1e-9))
+    if (!viscous() && !partially_filled() && std::abs(lambda[i]) > 2 * (1 + 1e-9))
       fail(formatted("|lambda| <= 2 for an ideal fluid (row %zu: %.9g)", i + 1, lambda[i]));
     if (!viscous() && a[i] < 0) fail(formatted("a >= 0, the normalisation a = sqrt(E N2/2) (row %zu: %.9g)", i + 1, a[i]));
     const std::complex<double> a_c(a[i], viscous() ? a_imag[i] : 0.0), E_c(E[i], viscous() ? E_imag[i] : 0.0);
@@ -623,12 +683,16 @@ void ModeTable::sort_by_energy() {
   permute(galerkin.coupling_re); permute(galerkin.coupling_im);
   permute(free_surface.t);
   permute(free_surface.t_imag);
-  for (auto* m : {&volume_cavity.coupling_re, &volume_cavity.coupling_im}) {
-    if (m->size() != 9 * idx.size()) continue;
-    const auto old = *m;
+  const auto permute_blocks = [&](std::vector<double>& v, std::size_t w) {
+    if (v.size() != w * idx.size()) return;
+    const auto old = v;
     for (std::size_t k = 0; k < idx.size(); ++k)
-      std::copy(old.begin() + 9 * idx[k], old.begin() + 9 * idx[k] + 9, m->begin() + 9 * k);
-  }
+      std::copy(old.begin() + w * idx[k], old.begin() + w * idx[k] + w, v.begin() + w * k);
+  };
+  permute_blocks(volume_cavity.coupling_re, 9);
+  permute_blocks(volume_cavity.coupling_im, 9);
+  permute_blocks(volume_free_surface.coupling_re, 25);
+  permute_blocks(volume_free_surface.coupling_im, 25);
   const std::size_t n = idx.size();
   for (auto* m : {&galerkin.gram_re, &galerkin.gram_im, &galerkin.viscous_re, &galerkin.viscous_im}) {
     if (m->size() != n * n) continue;

@@ -123,6 +123,26 @@ struct ModeTable {
     bool present() const { return !inertia.empty(); }
   } volume_cavity;
 
+  // --- /volume_free_surface (a partially filled 3-D tank, on or off the craft's spin axis, optional; docs/volume.md §8):
+  // the liquid fills the part of the cavity beyond the cylinder of `radius` b about the spin axis, a line parallel to z
+  // through `axis` (x, y in the table's coordinates). /volume then holds the frozen liquid's inertia about its centroid
+  // and, about P0 (the axis's point at the centroid's height), each row's 3 × 3 rotation coupling (E = H_xx + H_yy),
+  // sum_rule (I_f − J_D + K), zhukovsky (J_D, the surface at zero potential) and geostrophic. Here the five directions
+  // (U_x, U_y, U_z, T̂_x, T̂_y): the rotations about P0 and the offsets along the axis, so that the rotation about the
+  // point O = P0 − c ẑ is U_k + c T̂_k — each row's 5 × 5 H (25 complex entries, row-major), their Gram matrix
+  // (Σ H over every mode of both signs), the λ = 0 part of it, and surface_gram = b ∫ η_i η_j dS of the directions' free
+  // surface parts (the re-centring inertia K(O) = B surface_gram Bᵀ, B = [I₃ | c(e_x, e_y)]).
+  struct VolumeFreeSurface {
+    double fill = 1;
+    double radius = 0;           // b > 0 marks it
+    std::vector<double> axis;    // 2
+    std::vector<double> coupling_re, coupling_im;  // 25 per mode
+    std::vector<double> gram_re, gram_im, geostrophic_re, geostrophic_im, surface_gram;  // 25 each
+    bool present() const { return radius > 0; }
+  } volume_free_surface;
+  // A partially filled tank's table (either kind): its rows may lie beyond |λ| = 2 (surface waves).
+  bool partially_filled() const { return free_surface.present() || volume_free_surface.present(); }
+
   // The sum over every mode of E about O (= E for a filled tank, whatever c): A_f(O) + K(O) − J_zh(O).
   double sum_rule_about(double c) const;
 

@@ -1,6 +1,7 @@
 #include "volume_command.hpp"
 
 #include "free_surface_run.hpp"
+#include "free_surface_table.hpp"
 
 #include "atomic_file.hpp"
 #include "mode_table_report.hpp"
@@ -147,7 +148,7 @@ geometry::VolumeShapeSpec VolumeCommands::resolve_shape() const {
     throw std::runtime_error("--axis-distance/--axis-direction place a partially filled tank's free surface (with "
                              "--fill < 1); a full tank's table is placed by the scene's offset");
   shape.fill = fill_;
-  shape.spin_axis = {-axis_distance_ * std::cos(phi), -axis_distance_ * std::sin(phi)};
+  shape.spin_axis = {0.0 - axis_distance_ * std::cos(phi), 0.0 - axis_distance_ * std::sin(phi)};  // no −0 printed
   return shape;
 }
 
@@ -158,9 +159,11 @@ void VolumeCommands::check_partial_fill_options() const {
     throw std::runtime_error("--ekman with --fill in 3-D is not built yet: the ideal liquid's modes are (drop --ekman), "
                              "or an axisymmetric tank on the spin axis takes both (cavity-modes sphere|spheroid ... "
                              "--fill F --ekman Ek)");
-  if (!o.output.empty() || o.fields)
-    throw std::runtime_error("a partially filled 3-D tank's modes are printed; its table for chain-rom is not written "
-                             "yet (drop -o/--fields; on the spin axis: cavity-modes sphere|spheroid ... --fill F -o T.h5)");
+  if (o.fields)
+    throw std::runtime_error("--fields is not written for a partially filled 3-D tank yet: its modes are printed and, "
+                             "with -o T.h5, tabled (docs/volume.md §8)");
+  if (!o.output.empty() && std::filesystem::path(o.output).extension() != ".h5")
+    throw std::runtime_error("-o for a partially filled 3-D tank writes a mode table: a .h5 file");
   if (o.wall_size > 0 || o.wall_layer > 0)
     throw std::runtime_error("--wall-size/--wall-layer are not taken with --fill in 3-D");
 }
@@ -232,7 +235,7 @@ void VolumeCommands::set_provenance(ModeTable& table, const std::string& command
 
 int VolumeCommands::run(const std::string& command_line) const {
   const VolumeTableRequest request = resolve();
-  if (request.shape.fill < 1) return run_partial_fill(request);
+  if (request.shape.fill < 1) return run_partial_fill(request, command_line);
   if (common_.ekman > 0 && !common_.sigma.empty() && std::filesystem::path(common_.output).extension() == ".h5")
     return run_response_table(request, command_line);
   if (common_.ekman > 0 && !common_.sigma.empty()) return run_response(request);
@@ -255,14 +258,14 @@ void print_partial_fill(const FreeSurfaceRunResult& r, const geometry::VolumeSha
   fmt::print("liquid: volume {:.10g}, centroid ({:.6g}, {:.6g}, {:.6g}); {} tetrahedra, {} pressure dofs ({} on the "
              "surface)\n", r.liquid.volume, r.liquid.centroid[0], r.liquid.centroid[1], r.liquid.centroid[2], r.elements,
              r.pressure_dofs, r.surface_dofs);
-  fmt::print("sum rule (rotations about the centroid, I_f - J_D + K): xx {:.10g}, yy {:.10g}, zz {:.10g}; the Gauss "
+  fmt::print("sum rule (rotations about the spin axis's point at the centroid's height, I_f - J_D + K): xx {:.10g}, yy {:.10g}, zz {:.10g}; the Gauss "
              "rule's weights sum to it to {:.1e}\n", v.gram(0, 0).real(), v.gram(1, 1).real(), v.gram(2, 2).real(),
              (v.total - v.gram).norm() / v.gram.norm());
-  fmt::print("{:>14} {:>12} {:>12} {:>12} {:>12} {:>12} {:>9}\n", "lambda", "E (xx+yy)", "H_zz", "T_xx", "T_yy",
-             "T_zz", "bound");
+  fmt::print("{:>14} {:>12} {:>12} {:>12} {:>12} {:>12} {:>9}\n", "lambda", "E (xx+yy)", "H_zz", "Tx_xx", "Ty_yy",
+             "Ux.Tx", "bound");
   for (const auto& m : v.modes)
     fmt::print("{:14.9f} {:12.6g} {:12.6g} {:12.6g} {:12.6g} {:12.6g} {:9.1e}\n", m.lambda, m.transverse(),
-               m.H(2, 2).real(), m.H(3, 3).real(), m.H(4, 4).real(), m.H(5, 5).real(), m.residual);
+               m.H(2, 2).real(), m.H(3, 3).real(), m.H(4, 4).real(), m.H(0, 3).real(), m.residual);
   for (const auto& m : v.unsettled)
     fmt::print("NOT CONVERGED: weight {:.3g} near lambda {:.6g} (bound {:.1e}) did not settle in {} shifts\n",
                m.H.trace().real(), m.lambda, m.residual, v.shifts);
@@ -275,9 +278,9 @@ void print_partial_fill(const FreeSurfaceRunResult& r, const geometry::VolumeSha
     for (std::size_t i = 0; i + 1 < edges.size(); ++i)
       if (std::abs(m.lambda) >= edges[i] && std::abs(m.lambda) < edges[i + 1]) {
         E[i] += 0.5 * m.transverse();
-        T[i] += 0.5 * (m.H(3, 3) + m.H(4, 4) + m.H(5, 5)).real();
+        T[i] += 0.5 * (m.H(3, 3) + m.H(4, 4)).real();
       }
-  fmt::print("bands |lambda| (E = H_xx + H_yy, T = the translations' trace; sums over lambda > 0):");
+  fmt::print("bands |lambda| (E = H_xx + H_yy, T = the axial offsets' trace; sums over lambda > 0):");
   for (std::size_t i = 0; i + 1 < edges.size(); ++i)
     fmt::print(" [{:g}, {}): E {:.4g} T {:.4g};", edges[i], i + 2 < edges.size() ? fmt::format("{:g}", edges[i + 1]) : "inf",
                E[i], T[i]);
@@ -286,13 +289,18 @@ void print_partial_fill(const FreeSurfaceRunResult& r, const geometry::VolumeSha
 
 }  // namespace
 
-int VolumeCommands::run_partial_fill(const VolumeTableRequest& request) const {
+int VolumeCommands::run_partial_fill(const VolumeTableRequest& request, const std::string& command_line) const {
   int ranks = 1;
   MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
   if (ranks > 1) throw std::runtime_error("a partially filled 3-D tank is solved on one rank (run it without mpirun)");
   const FreeSurfaceRunResult r = run_free_surface_modes(request.shape, request.mesh, {},
                                                         [](const std::string& line) { std::cerr << line << "\n"; });
   print_partial_fill(r, request.shape);
+  if (common_.output.empty()) return 0;
+  ModeTable t = free_surface_table(r, request.shape, FreeSurfaceSurveySettings{}.lambda_floor);
+  set_provenance(t, command_line);
+  write_mode_table(t, common_.output);
+  fmt::print("wrote {} ({} rows; chain-rom takes it on a fixed body's joint: docs/volume.md §8)\n", common_.output, t.size());
   return 0;
 }
 

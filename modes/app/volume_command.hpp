@@ -34,7 +34,7 @@ class VolumeCommands {
   int run_viscous(const VolumeTableRequest& ideal, const std::string& command_line) const;
   int run_response(const VolumeTableRequest& ideal) const;
   int run_response_table(const VolumeTableRequest& ideal, const std::string& command_line) const;
-  int run_partial_fill(const VolumeTableRequest& request) const;
+  int run_partial_fill(const VolumeTableRequest& request, const std::string& command_line) const;
   void set_provenance(ModeTable& table, const std::string& command_line) const;
   CLI::App *ellipsoid_ = nullptr, *volume_ = nullptr;
   double a_ = 0, b_ = 0, c_ = 0, tilt_degrees_ = 0;

@@ -3,7 +3,7 @@
 // max(|λ|, 0.1) of each other are one cluster (one exact mode split among discrete copies). Each complex mode is two
 // real Ritz vectors z and iz with couplings c and ic, so a cluster's weight is H = ½ Σ c cᴴ, its λ the trace-weighted
 // mean, its spread the trace-weighted deviation. Shared by the 3-D survey (N = 3 rotations) and the free-surface one
-// (N = 6: rotations and translations).
+// (N = 5: rotations and the offsets along the spin axis).
 #pragma once
 
 #include "block_lanczos.hpp"

@@ -17,8 +17,14 @@ std::string tensor_line(const char* name, const std::vector<double>& T) {
 // A 3-D table's tensors and each mode's coupling to the three axes (|c_k|² = H_kk).
 std::string volume_text(const ModeTable& t) {
   const auto& v = t.volume_cavity;
-  std::string s = fmt::format("3-D cavity (docs/volume.md): centroid ({:.9g}, {:.9g}, {:.9g}), tilt {:g} rad; tensors "
-                              "about the centroid, spin axis z:\n", v.centroid[0], v.centroid[1], v.centroid[2], v.tilt);
+  std::string s = fmt::format("3-D cavity (docs/volume.md): centroid ({:.9g}, {:.9g}, {:.9g}), tilt {:g} rad; ",
+                              v.centroid[0], v.centroid[1], v.centroid[2], v.tilt);
+  const auto& f = t.volume_free_surface;
+  s += f.present() ? fmt::format("partially filled to {:g}, its free surface the cylinder b = {:.10g} about the spin axis "
+                                 "through ({:.9g}, {:.9g}) (docs/volume.md §8); the inertia about the centroid, the "
+                                 "other tensors and the couplings about the axis's point at the centroid's height:\n",
+                                 f.fill, f.radius, f.axis[0], f.axis[1])
+                   : std::string("tensors about the centroid, spin axis z:\n");
   s += tensor_line("inertia", v.inertia) + tensor_line("zhukovsky", v.zhukovsky) + tensor_line("sum_rule", v.sum_rule) +
        tensor_line("geostrophic", v.geostrophic_re);
   s += "  coupling of each mode below to rotation about x, y, z (H_xx, H_yy, H_zz; E = H_xx + H_yy):\n";

@@ -3,6 +3,8 @@
 #include "free_surface_forms.hpp"  // to_eigen
 #include "triplet_matrix.hpp"
 
+#include <Eigen/Geometry>  // cross
+
 #include <stdexcept>
 
 namespace rc::modes {
@@ -157,24 +159,47 @@ Eigen::VectorXd FreeSurfaceDynamics::surface_potential(const std::function<doubl
   return xi_from_eta(surface_mass_->solve(load) / surface_.radius());
 }
 
+std::array<double, 3> FreeSurfaceDynamics::axis_point() const {
+  return {surface_.spin_axis()[0], surface_.spin_axis()[1], liquid_.centroid[2]};
+}
+
+// e_k × (x − P0) = e_k × (x − C) + e_k × (C − P0): the velocity space's rotation about C plus a uniform field.
+Eigen::VectorXd FreeSurfaceDynamics::rotation_velocity(int k) const {
+  Eigen::VectorXd v = velocity_.rotation_field(k);
+  const auto P0 = axis_point();
+  const Eigen::Vector3d d(liquid_.centroid[0] - P0[0], liquid_.centroid[1] - P0[1], 0.0);
+  const Eigen::Vector3d u = Eigen::Vector3d::Unit(k).cross(d);
+  for (int j = 0; j < 3; ++j)
+    if (u(j) != 0) v += u(j) * velocity_.uniform_field(j);
+  return v;
+}
+
 Eigen::VectorXd FreeSurfaceDynamics::rotation_field(int k) const {
   const Eigen::Index nv = velocity_.size(), ns = static_cast<Eigen::Index>(surface_.dofs().size());
   Eigen::VectorXd w = Eigen::VectorXd::Zero(size());
-  w.head(nv) = solenoidal_part(velocity_.rotation_field(k));
-  const auto& c = liquid_.centroid;
-  // χ_k = −(ẑ × r)·(e_k × r): x z, y z, −(x² + y²) about C.
+  w.head(nv) = solenoidal_part(rotation_velocity(k));
+  const auto P0 = axis_point();
+  // χ_k = −(ẑ × r)·(e_k × r), r = x − P0: x z, y z, −(x² + y²) (the last constant on the surface ρ = b).
   w.segment(nv, ns) = surface_potential([&](const std::array<double, 3>& x) {
-    const double rx = x[0] - c[0], ry = x[1] - c[1], rz = x[2] - c[2];
+    const double rx = x[0] - P0[0], ry = x[1] - P0[1], rz = x[2] - P0[2];
     return k == 0 ? rx * rz : k == 1 ? ry * rz : -(rx * rx + ry * ry);
   });
   return w;
 }
 
-Eigen::VectorXd FreeSurfaceDynamics::translation_field(int j) const {
+// T̂_k = (P_D(e_k × ẑ), (r_k − r̄_k)/b): U about O = P0 − c ẑ is U_k + c T̂_k (k = x, y), since e_k × r_O = e_k × r +
+// c e_k × ẑ and χ_O,k = χ_k + c r_k (docs/physics.md §2, "Partially filled tanks: coupling to the body", item 8).
+Eigen::VectorXd FreeSurfaceDynamics::offset_field(int k) const {
   const Eigen::Index nv = velocity_.size(), ns = static_cast<Eigen::Index>(surface_.dofs().size());
   Eigen::VectorXd w = Eigen::VectorXd::Zero(size());
-  w.segment(nv, ns) = surface_potential([&](const std::array<double, 3>& x) { return x[j] - liquid_.centroid[j]; });
+  w.head(nv) = solenoidal_part(k == 0 ? Eigen::VectorXd(-velocity_.uniform_field(1)) : velocity_.uniform_field(0));
+  const auto P0 = axis_point();
+  w.segment(nv, ns) = surface_potential([&](const std::array<double, 3>& x) { return x[k] - P0[k]; });
   return w;
+}
+
+Eigen::VectorXd FreeSurfaceDynamics::direction(int j) const {
+  return j < 3 ? rotation_field(j) : offset_field(j - 3);
 }
 
 Eigen::VectorXd FreeSurfaceDynamics::times_i(const Eigen::VectorXd& w) const {

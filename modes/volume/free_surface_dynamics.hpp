@@ -9,10 +9,12 @@
 // docs/physics.md §2, "Partially filled cylinder", without the Fourier reduction). η is held as ξ = Lᵀ P η,
 // P M_s Pᵀ = L Lᵀ, so that the energy is a diagonal weight (b on ξ) as the block Lanczos process needs.
 //
-// The forcing directions, about the liquid's centroid C (r from C):
+// The forcing directions (docs/volume.md §8), about P0, the point of the craft's spin axis at the liquid's centroid's
+// height (r from P0):
 //   rotation about e_k:  U_k = (P_D(e_k × r), (χ_k − χ̄_k)/b),  χ_k = −(ẑ × r)·(e_k × r)   (the perturbed centrifugal
-//                        potential of a tilt, docs/physics.md §2 "coupling to the body", item 1, about C);
-//   translation e_j:     T_j = (0, (r_j − r̄_j)/b)   (C's acceleration a: a uniform field, felt only at the surface);
+//                        potential of a tilt, docs/physics.md §2 "coupling to the body", item 1);
+//   offset along the axis: T̂_k = (P_D(e_k × ẑ), (r_k − r̄_k)/b), k = x, y, so that the rotation about the point
+//                        O = P0 − c ẑ of the axis is U_k + c T̂_k (item 8: a body's joint anywhere on its axis);
 // P_D the projection on fields discretely solenoidal inside with the surface's potential zero, χ̄ the surface mean (a
 // constant surface pressure moves nothing: η has zero mean, the liquid being incompressible).
 #pragma once
@@ -62,9 +64,13 @@ class FreeSurfaceDynamics {
 
   // out = A in.
   void apply(const Eigen::VectorXd& in, Eigen::VectorXd& out) const;
-  // U_k (k = 0, 1, 2: x, y, z) and T_j, real.
+  // P0: the spin axis's point at the centroid's height.
+  std::array<double, 3> axis_point() const;
+  // U_k (k = 0, 1, 2: x, y, z) and T̂_k (k = 0, 1), real; direction(j): U_0, U_1, U_2, T̂_0, T̂_1.
+  static constexpr int kDirections = 5;
   Eigen::VectorXd rotation_field(int k) const;
-  Eigen::VectorXd translation_field(int j) const;
+  Eigen::VectorXd offset_field(int k) const;
+  Eigen::VectorXd direction(int j) const;
   // The same state times i.
   Eigen::VectorXd times_i(const Eigen::VectorXd& w) const;
   // ⟨u, w⟩ (the real part of the complex energy product).
@@ -84,6 +90,7 @@ class FreeSurfaceDynamics {
   // ξ for η = (χ − χ̄)/b, χ given at the surface's points.
   Eigen::VectorXd surface_potential(const std::function<double(const std::array<double, 3>&)>& chi) const;
   Eigen::VectorXd solenoidal_part(Eigen::VectorXd v) const;
+  Eigen::VectorXd rotation_velocity(int k) const;  // e_k × (x − P0) at the quadrature points
 
   PoincareForms real_;     // the pencil's real form (M, Kz, Gc of twice the size)
   PMat surface_block_;     // [M_s 0; 0 M_s] on the surface dofs of the real form, zero elsewhere

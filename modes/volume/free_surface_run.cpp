@@ -18,6 +18,9 @@ FreeSurfaceRunResult run_free_surface_modes(const geometry::VolumeShapeSpec& sha
   r.surface_dofs = static_cast<int>(A.surface().dofs().size());
   r.elements = space.num_elements();
   r.liquid = A.liquid();
+  r.axis_point = A.axis_point();
+  r.order = space.order();
+  r.mesh_size = space.mesh().size;
   say(fmt::format("free surface: b = {:.10g}, {} tetrahedra of order {}, {} pressure dofs ({} on the surface)",
                   r.surface_radius, r.elements, space.order(), r.pressure_dofs, r.surface_dofs));
   r.survey = survey_free_surface_modes(A, settings);

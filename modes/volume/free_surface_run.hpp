@@ -14,9 +14,11 @@ namespace rc::modes {
 struct FreeSurfaceRunResult {
   double surface_radius = 0;    // b
   double surface_area = 0;
-  int pressure_dofs = 0, surface_dofs = 0;
+  int pressure_dofs = 0, surface_dofs = 0, order = 0;
+  double mesh_size = 0;
   std::size_t elements = 0;
   VolumeIntegrals liquid;       // volume, centroid, inertia about the centroid
+  std::array<double, 3> axis_point{};  // P0: the spin axis's point at the centroid's height (the couplings' origin)
   FreeSurfaceSurvey survey;
 };
 

@@ -13,19 +13,18 @@ namespace {
 
 constexpr int kEmptyWindow = 48;  // basis vectors after which a shift's window without heavy weight ends the run
 
-// The start block: U_x, U_y, U_z, T_x, T_y, T_z and each times i (the real form of a complex space).
+constexpr int kN = FreeSurfaceDynamics::kDirections;
+
+// The start block: U_x, U_y, U_z, T̂_x, T̂_y and each times i (the real form of a complex space).
 Eigen::MatrixXd start_block(const FreeSurfaceDynamics& A) {
-  Eigen::MatrixXd B(A.size(), 12);
-  for (int k = 0; k < 3; ++k) {
-    B.col(k) = A.rotation_field(k);
-    B.col(3 + k) = A.translation_field(k);
-  }
-  for (int j = 0; j < 6; ++j) B.col(6 + j) = A.times_i(B.col(j));
+  Eigen::MatrixXd B(A.size(), 2 * kN);
+  for (int j = 0; j < kN; ++j) B.col(j) = A.direction(j);
+  for (int j = 0; j < kN; ++j) B.col(kN + j) = A.times_i(B.col(j));
   return B;
 }
 
 std::vector<FreeSurfaceMode> free_surface_clusters(std::vector<BlockGaussNode> rule, double width) {
-  return block_clusters<FreeSurfaceMode, 6>(std::move(rule), width);
+  return block_clusters<FreeSurfaceMode, kN>(std::move(rule), width);
 }
 
 // The rule's clusters of Lanczos on `apply` from `start`, λ = map(θ) and the bound on λ's distance to an eigenvalue
@@ -60,9 +59,13 @@ bool known(const std::vector<FreeSurfaceMode>& modes, double lambda, double widt
 FreeSurfaceSurvey survey_free_surface_modes(const FreeSurfaceDynamics& A, const FreeSurfaceSurveySettings& s) {
   const Eigen::MatrixXd B = start_block(A);
   FreeSurfaceSurvey out;
-  for (int j = 0; j < 6; ++j)
-    for (int k = 0; k < 6; ++k)
-      out.gram(j, k) = {A.inner(B.col(j), B.col(k)), A.inner(B.col(j), B.col(6 + k))};
+  const Eigen::Index nv = A.velocity_size();
+  for (int j = 0; j < kN; ++j)
+    for (int k = 0; k < kN; ++k) {
+      out.gram(j, k) = {A.inner(B.col(j), B.col(k)), A.inner(B.col(j), B.col(kN + k))};
+      const auto n = B.rows() - nv;  // the surface part: the directions' η are real
+      out.surface_gram(j, k) = B.col(j).tail(n).dot(A.weights().tail(n).cwiseProduct(B.col(k).tail(n)));
+    }
   const double heavy = s.floor * out.gram.trace().real();
   const auto is_heavy = [&](const FreeSurfaceMode& m) { return m.lambda > s.lambda_floor && m.H.trace().real() >= heavy; };
   const auto settled = [&](const FreeSurfaceMode& m) { return m.residual <= s.residual_tolerance * lambda_scale(m.lambda); };
@@ -78,7 +81,8 @@ FreeSurfaceSurvey survey_free_surface_modes(const FreeSurfaceDynamics& A, const 
   }
   std::sort(pending.begin(), pending.end(), [](const auto& a, const auto& b) { return a.H.trace().real() > b.H.trace().real(); });
   for (const auto& node : pending) {
-    if (known(out.modes, node.lambda, s.window) && out.shifts > 0) continue;  // a shift's window held it
+    // A shift's window held it: its weight is there, settled or named unsettled (so that no weight is counted twice).
+    if ((known(out.modes, node.lambda, s.window) || known(out.unsettled, node.lambda, s.window)) && out.shifts > 0) continue;
     if (out.shifts >= s.max_shifts) {
       out.unsettled.push_back(node);
       continue;

@@ -1,9 +1,10 @@
 // The modes of a partially filled 3-D tank that couple to the body (docs/volume.md §8): a block Lanczos Gauss rule of
-// the six forcing directions' matrix-valued spectral measure under the free-surface operator (free_surface_dynamics.hpp)
-// — rotation about x, y, z and translation along x, y, z, all about the liquid's centroid. A mode W_l (‖W_l‖ = 1) has
-// the coupling c_l = (⟨U_k, W_l⟩, ⟨T_j, W_l⟩) and the Hermitian weight H_l = c_l c_lᴴ; over every mode of both signs
-// of λ, Σ H_l = Gram(U, T) (the sum rule: for the rotations I_f − J_D + K, the frozen liquid's inertia less
-// Zhukovsky's with the surface at zero potential plus the surface's re-centring inertia, docs/physics.md §2).
+// the five forcing directions' matrix-valued spectral measure under the free-surface operator (free_surface_dynamics.hpp)
+// — rotation about x, y, z about the spin axis's point P0 at the centroid's height, and the two offsets T̂_x, T̂_y that
+// move that point along the axis. A mode W_l (‖W_l‖ = 1) has the coupling c_l = ⟨direction_j, W_l⟩ and the Hermitian
+// weight H_l = c_l c_lᴴ; over every mode of both signs of λ, Σ H_l = Gram(U, T̂) (the sum rule: for the rotations
+// I_f − J_D + K, the frozen liquid's inertia less Zhukovsky's with the surface at zero potential plus the surface's
+// re-centring inertia, docs/physics.md §2).
 #pragma once
 
 #include "free_surface_dynamics.hpp"
@@ -15,11 +16,11 @@
 
 namespace rc::modes {
 
-using Hermitian6 = Eigen::Matrix<std::complex<double>, 6, 6>;
+using Hermitian5 = Eigen::Matrix<std::complex<double>, 5, 5>;
 
 struct FreeSurfaceMode {
   double lambda = 0;
-  Hermitian6 H = Hermitian6::Zero();  // Σ c cᴴ over the cluster's Ritz values
+  Hermitian5 H = Hermitian5::Zero();  // Σ c cᴴ over the cluster's Ritz values
   double spread = 0;                  // weight-weighted spread of λ in the cluster
   int members = 0;
   double residual = 0;                // bound on the distance from λ to the discrete eigenvalue (largest member's)
@@ -42,8 +43,9 @@ struct FreeSurfaceSurvey {
   std::vector<FreeSurfaceMode> modes;      // λ > 0, heavy and settled, by transverse weight descending
   std::vector<FreeSurfaceMode> unsettled;  // λ > 0, heavy, residual above the tolerance
   std::vector<FreeSurfaceMode> rule;       // every cluster of the plain rule, both signs of λ
-  Hermitian6 gram = Hermitian6::Zero();    // of the six directions
-  Hermitian6 total = Hermitian6::Zero();   // Σ H over the plain rule (= gram: the Gauss rule's exactness)
+  Hermitian5 gram = Hermitian5::Zero();    // of the five directions
+  Eigen::Matrix<double, 5, 5> surface_gram = Eigen::Matrix<double, 5, 5>::Zero();  // their η parts': b ∫ η_i η_j dS (K)
+  Hermitian5 total = Hermitian5::Zero();   // Σ H over the plain rule (= gram: the Gauss rule's exactness)
   int columns = 0;                         // of the plain rule
   int shifts = 0;
 };

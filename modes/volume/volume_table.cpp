@@ -35,15 +35,7 @@ std::vector<double> flat(const Eigen::Matrix3d& t) {
 
 void add_rows(ModeTable& t, const VolumeSurvey& survey) {
   for (const auto& m : survey.modes) {
-    const double E = (m.H(0, 0) + m.H(1, 1)).real();
-    t.lambda.push_back(m.lambda);
-    t.kappa.push_back(2 / m.lambda);
-    t.E.push_back(E);
-    t.a.push_back(std::sqrt(E / 2));
-    t.N2.push_back(1.0);
-    t.residual.push_back(m.residual);
-    t.spread.push_back(m.spread);
-    t.members.push_back(m.members);
+    push_ideal_volume_row(t, m.lambda, (m.H(0, 0) + m.H(1, 1)).real(), m.residual, m.spread, m.members);
     const Hermitian3 H = 0.5 * (m.H + m.H.adjoint());  // Hermitian to rounding; exactly so in the file
     for (int j = 0; j < 3; ++j)
       for (int k = 0; k < 3; ++k) {
@@ -128,6 +120,17 @@ double set_volume_tensors(ModeTable& t, const VolumeIntegrals& fluid, const Tens
 }
 
 }  // namespace
+
+void push_ideal_volume_row(ModeTable& t, double lambda, double E, double residual, double spread, int members) {
+  t.lambda.push_back(lambda);
+  t.kappa.push_back(2 / lambda);
+  t.E.push_back(E);
+  t.a.push_back(std::sqrt(E / 2));
+  t.N2.push_back(1.0);
+  t.residual.push_back(residual);
+  t.spread.push_back(spread);
+  t.members.push_back(members);
+}
 
 VolumeTableResult make_volume_table(const VolumeTableRequest& request,
                                     const std::function<void(const std::string&)>& progress) {

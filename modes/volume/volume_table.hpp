@@ -32,6 +32,10 @@ struct VolumeTableResult {
 inline constexpr int kVolumeDefaultOrder = 4;
 
 // `progress` receives a line per phase and at least every 5 s while working (fe/progress.hpp); none by default.
+// One ideal 3-D row of /modes: λ, κ = 2/λ, E = H_xx + H_yy, a = √(E/2), N2 = 1, with its bound, spread and members (its
+// coupling tensors are the caller's).
+void push_ideal_volume_row(ModeTable& t, double lambda, double E, double residual, double spread, int members);
+
 VolumeTableResult make_volume_table(const VolumeTableRequest& request,
                                     const std::function<void(const std::string&)>& progress = {});
 

@@ -34,6 +34,12 @@ Eigen::VectorXd VolumeVelocity::rotation_field(int k) const {
   return v;
 }
 
+Eigen::VectorXd VolumeVelocity::uniform_field(int j) const {
+  Eigen::VectorXd v = Eigen::VectorXd::Zero(size());
+  for (std::size_t q = 0; q < omega_.size(); ++q) v(6 * static_cast<Eigen::Index>(q) + j) = 1;
+  return v;
+}
+
 Eigen::VectorXd VolumeVelocity::times_i(const Eigen::VectorXd& v) {
   Eigen::VectorXd out(v.size());
   for (Eigen::Index q = 0; q < v.size(); q += 6) {

@@ -32,6 +32,8 @@ class VolumeVelocity {
   const Eigen::VectorXd& weights() const { return weights_; }
   // e_k × (x − centroid), real (k = 0, 1, 2: x, y, z).
   Eigen::VectorXd rotation_field(int k) const;
+  // The uniform field e_j (real).
+  Eigen::VectorXd uniform_field(int j) const;
   // The same field times i.
   static Eigen::VectorXd times_i(const Eigen::VectorXd& v);
 

@@ -42,17 +42,22 @@ void print_general_spectrum(std::ostream& os, const GeneralChain& g, const Gener
   if (g.periodic()) print_floquet(os, g, sp);
   for (const auto& [k, share] : g.coverage)
     if (share < 1 - 1e-9) os << "body " << k + 1 << ": a tank's kept modes cover " << share << " of its sum rule\n";
-  // The verdict as (26)'s (docs/rom.md, "Spectrum", "Verdict with dissipation").
+  // The verdict as (26)'s (docs/rom.md, "Spectrum", "Verdict with dissipation"), its line saying when a tank's rows
+  // did not settle.
+  const std::string unsettled = g.not_converged.empty() ? "" : "; NOT CONVERGED: a partially filled 3-D tank's rows (below)";
   if (!g.dissipative) {
-    os << "stable: " << (v.stable ? "yes" : "no") << " (|Im sigma| <= " << v.tolerance << " counts as real)\n";
+    os << "stable: " << (v.stable ? "yes" : "no") << " (|Im sigma| <= " << v.tolerance << " counts as real)" << unsettled << "\n";
     os << "margin (largest |Im sigma|): " << v.margin << " rad/s\n";
   } else if (v.stable) {
     os << "stable: yes -- no root grows by more than rounding (" << v.noise << " 1/s; friction or viscous fluid), the slowest "
-       << "decays at " << -v.growth << " 1/s (" << v.at_zero << " roots at sigma = 0)\n";
+       << "decays at " << -v.growth << " 1/s (" << v.at_zero << " roots at sigma = 0)" << unsettled << "\n";
   } else {
     os << "stable: no -- " << v.growing << (v.growing == 1 ? " root grows" : " roots grow") << ", the fastest at "
-       << v.growth << " 1/s (e-folding " << 1 / v.growth << " s)\n";
+       << v.growth << " 1/s (e-folding " << 1 / v.growth << " s)" << unsettled << "\n";
   }
+  for (const std::string& note : g.not_converged)
+    os << "NOT CONVERGED: " << note << ": the roots near those rows' frequencies, and any their weight moves, are not "
+          "reliable (docs/volume.md §8)\n";
   const double grows = g.dissipative ? v.noise : v.tolerance;
   const auto outside = [&](std::complex<double> r) { return g.response_window > 0 && std::abs(r.real()) > g.response_window; };
   const auto beyond = std::count_if(sp.roots.begin(), sp.roots.end(), outside);
@@ -85,6 +90,7 @@ std::string general_spectrum_json(const GeneralChain& g, const GeneralSpectrum& 
   j["fluid_modes"] = g.n_modes();
   j["coverage"] = nlohmann::ordered_json::array();  // [body (1-based), share] per tank
   for (const auto& [k, share] : g.coverage) j["coverage"].push_back({k + 1, share});
+  j["not_converged"] = g.not_converged;
   if (g.response_window > 0) {  // the roots beyond a response table's window, as the text marks them "outside"
     j["window"] = g.response_window;
     j["outside"] = nlohmann::ordered_json::array();

@@ -21,8 +21,33 @@ Eigen::Matrix3d tensor(const std::vector<double>& v) { return Eigen::Map<const R
 // A row's coupling tensor H about the body's joint: the 3-D table's, or an axisymmetric m = 1 row's
 // E/2 (1, i, 0)(1, −i, 0)ᵀ — with a viscous row's complex E + i·E_imag (the rank-one product of its right and left
 // couplings, docs/volume.md §7), and a partially filled tank's E = 2(a + c t)²/N² about the joint (row_coupling.hpp).
+// A 3-D partial fill's five directions (U_x, U_y, U_z, T̂_x, T̂_y) about P0, the spin axis's point at the centroid's
+// height, taken to the joint O = P0 − c ẑ: U_O,k = U_k + c T̂_k (docs/volume.md §8, "The table").
+using Directions5 = Eigen::Matrix<std::complex<double>, 5, 5>;
+Eigen::Matrix<double, 3, 5> fill_about_joint(double c) {
+  Eigen::Matrix<double, 3, 5> B = Eigen::Matrix<double, 3, 5>::Zero();
+  B.leftCols<3>().setIdentity();
+  B(0, 3) = B(1, 4) = c;
+  return B;
+}
+
+Directions5 fill_block(const std::vector<double>& re, const std::vector<double>& im, std::size_t l) {
+  Directions5 H;
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 5; ++j)
+      H(i, j) = {re[25 * l + 5 * i + j], im.empty() ? 0.0 : im[25 * l + 5 * i + j]};
+  return H;
+}
+
+Eigen::Matrix3cd fill_tensor_about_joint(const Directions5& H, double c) {
+  const Eigen::Matrix<double, 3, 5> B = fill_about_joint(c);
+  return B.cast<std::complex<double>>() * H * B.transpose().cast<std::complex<double>>();
+}
+
 Eigen::Matrix3cd row_coupling(const rc::ModeTable& t, std::size_t l, const RowCoupling& about) {
   Eigen::Matrix3cd H = Eigen::Matrix3cd::Zero();
+  if (t.volume_free_surface.present())
+    return fill_tensor_about_joint(fill_block(t.volume_free_surface.coupling_re, t.volume_free_surface.coupling_im, l), about.c);
   if (!t.volume_cavity.present()) {
     const std::complex<double> E = about.E_c(l), I(0, 1);
     return E / 2.0 * Eigen::Vector3cd(1, I, 0) * Eigen::RowVector3cd(1, -I, 0);
@@ -40,8 +65,9 @@ Eigen::Matrix3cd row_coupling(const rc::ModeTable& t, std::size_t l, const RowCo
 const char* const kTanksTaken =
     "; it takes, on or off a body's axis, a full tank's ideal or damped-mode table (axisymmetric or 3-D: cavity-modes "
     "SHAPE|ellipsoid|volume [--ekman Ek] -o T.h5) or a 3-D response table (cavity-modes ellipsoid|volume --ekman Ek "
-    "--sigma A:B:N -o T.h5), and a partially filled axisymmetric tank on the axis of a fixed chain's first body "
-    "(docs/rom.md, \"Bodies and tanks without axial symmetry\")";
+    "--sigma A:B:N -o T.h5), and on a fixed chain's first body a partially filled tank, ideal, on its axis "
+    "(axisymmetric or 3-D) or off it (3-D: cavity-modes ellipsoid --fill F --axis-distance D -o T.h5) (docs/rom.md, "
+    "\"Bodies and tanks without axial symmetry\")";
 
 void require_modal(const Scene& scene, const std::string& w, const CavitySpec& cav, const rc::ModeTable& t, double spin) {
   const std::string later = std::string(" is not in the chain without axial symmetry yet") + kTanksTaken;
@@ -62,12 +88,12 @@ void require_modal(const Scene& scene, const std::string& w, const CavitySpec& c
 // A partially filled tank so far: on the axis of the first body of a fixed chain, whose joint stays put (on a body
 // whose joint moves its modes couple to the earlier bodies' tilts too: docs/rom.md, "Partially filled tanks"; off the
 // axis its free surface would face the spin axis sideways, which no axisymmetric table describes).
-void require_fixed_joint(const Scene& scene, int k, const CavitySpec& cav, const std::string& w) {
+void require_fixed_joint(const Scene& scene, int k, const CavitySpec& cav, const std::string& w, bool three_d) {
   const std::string later = kTanksTaken;
-  if (cav.offset && ((*cav.offset)[0] != 0 || (*cav.offset)[1] != 0))
-    fail(scene, w + ".offset", "a partially filled tank off its body's axis is not in the chain yet (its free surface "
-                               "faces the spin axis sideways: cavity-modes ellipsoid --fill F --axis-distance D prints "
-                               "its ideal modes, docs/volume.md §8)" + later);
+  if (!three_d && cav.offset && ((*cav.offset)[0] != 0 || (*cav.offset)[1] != 0))
+    fail(scene, w + ".offset", "an axisymmetric table of a partially filled tank holds it on the spin axis; off the "
+                               "axis its free surface faces the spin axis sideways: make its 3-D table with cavity-modes "
+                               "ellipsoid --fill F --axis-distance D -o T.h5 (docs/volume.md §8)" + later);
   if (k > 0 || scene.free_chain)
     fail(scene, w + ".table", "a partially filled tank in the chain without axial symmetry sits on the first body of a "
                               "fixed chain so far (a moving joint couples its modes to the earlier bodies)" + later);
@@ -91,14 +117,24 @@ void require_axial_field(const Scene& scene) {
 std::vector<int> kept_rows(const Scene& scene, const std::string& w, const CavitySpec& cav, const rc::ModeTable& t,
                            const RowCoupling& about, double& covered) {
   // About the joint: a partially filled tank's rows weigh E = 2(a + c t)²/N² there, its sum rule A_f + K − J_zh.
-  const bool surface = t.free_surface.present();
-  const double total = surface ? about.sum_rule() : t.sum_rule, tiny = 1e-14 * std::max(std::abs(total), 1e-300);
-  const auto E = [&](int l) { return surface ? about.E(static_cast<std::size_t>(l)) : t.E[l]; };
+  const bool surface = t.free_surface.present(), fill3 = t.volume_free_surface.present();
+  const auto& vf = t.volume_free_surface;
+  const double total = surface ? about.sum_rule()
+                       : fill3 ? 0.5 * fill_tensor_about_joint(fill_block(vf.gram_re, vf.gram_im, 0), about.c)
+                                           .topLeftCorner<2, 2>().trace().real()
+                               : t.sum_rule;
+  const double tiny = 1e-14 * std::max(std::abs(total), 1e-300);
+  const auto E = [&](int l) {
+    if (fill3) return row_coupling(t, static_cast<std::size_t>(l), about).topLeftCorner<2, 2>().trace().real();
+    return surface ? about.E(static_cast<std::size_t>(l)) : t.E[l];
+  };
   std::vector<int> idx;
   for (std::size_t l = 0; l < t.size(); ++l)
     if (row_coupling(t, l, about).norm() > tiny) idx.push_back(static_cast<int>(l));  // a viscous H's trace may vanish
   std::stable_sort(idx.begin(), idx.end(), [&](int i, int j) { return E(i) > E(j); });
-  const double geostrophic = t.volume_cavity.present() ? tensor(t.volume_cavity.geostrophic_re).topLeftCorner<2, 2>().trace() / 2 : 0.0;
+  const double geostrophic =
+      fill3 ? fill_tensor_about_joint(fill_block(vf.geostrophic_re, vf.geostrophic_im, 0), about.c).topLeftCorner<2, 2>().trace().real() / 2
+      : t.volume_cavity.present() ? tensor(t.volume_cavity.geostrophic_re).topLeftCorner<2, 2>().trace() / 2 : 0.0;
   std::size_t keep = idx.size();
   if (cav.modes) {
     if (static_cast<std::size_t>(*cav.modes) > idx.size())
@@ -188,6 +224,28 @@ double add_band_modes(const Scene& scene, const std::string& w, int k, const rc:
   return covered / t.sum_rule;
 }
 
+// A 3-D partial fill's table holds its spin axis (the surface is a cylinder about it): the body's axis must be that
+// axis, so the tank's horizontal place follows from the table (offset = L (C − axis) for `center`, or −L·axis with
+// `origin`: the tank's own centre D·L from the axis, as made with --axis-distance D).
+void require_on_the_spin_axis(const Scene& scene, const CavitySpec& cav, const std::string& w, const rc::ModeTable& t,
+                              const Eigen::Vector3d& offset, double L) {
+  const auto& vf = t.volume_free_surface;
+  const auto& C = t.volume_cavity.centroid;
+  const Eigen::Vector2d want = cav.origin ? Eigen::Vector2d(-L * vf.axis[0], -L * vf.axis[1])
+                                          : Eigen::Vector2d(L * (C[0] - vf.axis[0]), L * (C[1] - vf.axis[1]));
+  // To 1e-4 of the tank's scale: a meshed liquid's centroid is off its exact place by the mesh's error (3e-7 on P3).
+  if ((offset.head<2>() - want).norm() > 1e-4 * L * std::max(1.0, want.norm() / L)) {
+    std::ostringstream os;
+    os.precision(10);
+    os << "the table's free surface is a cylinder about the spin axis it was made for, so this tank sits at offset = ["
+       << want.x() << ", " << want.y() << "] (the " << (cav.origin ? "table's origin" : "liquid's centroid")
+       << " from the body's axis; the scene has [" << offset.x() << ", " << offset.y()
+       << "]): give that offset, or make the table for this place (cavity-modes ellipsoid --fill F --axis-distance D "
+          "--axis-direction DEG)";
+    fail(scene, w + ".offset", os.str());
+  }
+}
+
 }  // namespace
 
 GeneralTank general_tank(const Scene& scene, int k, const CavitySpec& cav, const std::string& w,
@@ -209,8 +267,20 @@ GeneralTank general_tank(const Scene& scene, int k, const CavitySpec& cav, const
   const Eigen::Vector3d& d = tank.centroid;
   tank.inertia = unit * inertia + tank.mass * (d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose());
   const RowCoupling about{t, d.z() / L};
+  if (t.volume_free_surface.present()) {
+    require_fixed_joint(scene, k, cav, w, true);
+    require_axial_field(scene);
+    require_on_the_spin_axis(scene, cav, w, t, offset, L);
+    // The surface re-centres on the tilted spin axis: K(O_k) = B S Bᵀ more inertia (docs/volume.md §8).
+    const auto& vf = t.volume_free_surface;
+    Eigen::Matrix<double, 5, 5> S;
+    for (int i = 0; i < 5; ++i)
+      for (int j = 0; j < 5; ++j) S(i, j) = vf.surface_gram[5 * i + j];
+    const Eigen::Matrix<double, 3, 5> B = fill_about_joint(about.c);
+    tank.inertia += unit * B * S * B.transpose();
+  }
   if (t.free_surface.present()) {
-    require_fixed_joint(scene, k, cav, w);
+    require_fixed_joint(scene, k, cav, w, false);
     require_axial_field(scene);
     // The surface re-centres on the tilted spin axis: K(O_k) more transverse inertia (docs/physics.md §2).
     const double K = unit * t.free_surface.K(about.c);
@@ -218,12 +288,22 @@ GeneralTank general_tank(const Scene& scene, int k, const CavitySpec& cav, const
     tank.inertia(1, 1) += K;
   }
   tank.geostrophic = unit * geostrophic;
+  if (t.volume_free_surface.present()) {  // the λ = 0 weight about the joint
+    const auto& vf = t.volume_free_surface;
+    const Eigen::Matrix3d G = fill_tensor_about_joint(fill_block(vf.geostrophic_re, vf.geostrophic_im, 0), about.c).real();
+    tank.geostrophic = unit * 0.5 * (G + G.transpose());
+  }
   if (t.response_fit()) tank.window = t.fit_hi * std::abs(spin);
   if (cav.bands) {
     tank.coverage = add_band_modes(scene, w, k, t, unit, tank);
   } else {
     double covered = 0;
     for (const int l : kept_rows(scene, w, cav, t, about, covered)) {
+      const double bound = t.residual[l] / std::max(std::abs(t.lambda[l]), 0.1);
+      if (t.volume_free_surface.present() && bound > t.tolerance * (1 + 1e-9)) {  // the survey's own test (docs/volume.md §8)
+        ++tank.unsettled_rows;
+        tank.worst_bound = std::max(tank.worst_bound, bound);
+      }
       if (t.viscous())
         add_damped_row_mode(scene, w, k, l, row_coupling(t, l, about), spin, t.lambda[l], t.decay[l], unit, tank);
       else

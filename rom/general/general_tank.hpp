@@ -42,6 +42,10 @@ struct GeneralTank {
   std::vector<GeneralMode> modes;
   double window = 0;        // a 3-D response table's: |σ| (rad/s, turning frame) up to which it is the fluid's R; 0: none
   double coverage = 0;      // the kept rows' E (and the λ = 0 weight's transverse half) over the table's sum rule
+  // A partially filled 3-D tank's kept rows whose λ did not settle (their bound above the survey's tolerance: a dense
+  // cluster's weight, docs/volume.md §8), and the largest such bound relative to max(|λ|, 0.1).
+  int unsettled_rows = 0;
+  double worst_bound = 0;
 };
 
 // Body k's tank `cav` (scene key `where`) from its table. Rows kept as for an axisymmetric tank (every coupling one,
@@ -51,8 +55,9 @@ struct GeneralTank {
 // the axial C_f (ideal fluid does not spin up). Placement: the centroid at (offset, center), or with `origin` the
 // table's origin at (offset, origin). A viscous table (axisymmetric or 3-D) needs the scene's viscosity at its Ekman
 // number (check_viscosity); its rows are single damped modes whose H = c c_leftᵀ is of rank one. Throws SceneError
-// naming the key for the static correction, a Galerkin reduction, a companion table, a partially filled tank (not in
-// the general chain yet), a 3-D viscous table on a body spinning the other way (its mirror image is another cavity) or
+// naming the key for the static correction, a Galerkin reduction, a companion table, a partially filled tank elsewhere
+// than on a fixed chain's first body (a 3-D partial fill's table taken there on the spin axis it was made for: its five
+// directions about the joint, docs/volume.md §8; an axisymmetric one on the body's axis), a 3-D viscous table on a body spinning the other way (its mirror image is another cavity) or
 // a viscous row whose coupling tensor is not of rank one.
 GeneralTank general_tank(const Scene& scene, int k, const CavitySpec& cav, const std::string& where,
                          const rc::ModeTable& t);

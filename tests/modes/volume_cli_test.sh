@@ -149,15 +149,18 @@ expect_error "volume of another kind" "expected a .geo" "$BIN" volume help.txt -
 echo 'SetFactory("OpenCASCADE"); Box(1) = {0, 0, 0, 1, 1, 1};' > nogroup.geo
 expect_error "volume without a fluid group" "no 3D physical group named 'fluid'" "$BIN" volume nogroup.geo -o out.h5
 # A partially filled tank off the spin axis (docs/volume.md §8): its modes printed, the free surface and the sum rule's
-# Gauss-rule check in the report; what is not built yet refused in one line that says what is.
-if "$BIN" ellipsoid --a 1 --b 1 --c 1 --fill 0.5 --axis-distance 2 --order 2 --mesh-size 0.5 > pf.txt 2>&1 &&
-   grep -q "free surface b = 2.06194" pf.txt && grep -Eq "weights sum to it to [0-9.]+e-1[0-9]" pf.txt && grep -q "^bands" pf.txt; then
+# Gauss-rule check in the report, its table written and read back; what is not built yet refused in one line that says
+# what is.
+if "$BIN" ellipsoid --a 1 --b 1 --c 1 --fill 0.5 --axis-distance 2 --order 2 --mesh-size 0.5 -o pf.h5 > pf.txt 2>&1 &&
+   grep -q "free surface b = 2.06194" pf.txt && grep -Eq "weights sum to it to [0-9.]+e-1[0-9]" pf.txt && grep -q "^bands" pf.txt &&
+   "$BIN" info pf.h5 > pfinfo.txt 2>&1 && grep -q "3-D (no axial symmetry)" pfinfo.txt; then
   ok "ellipsoid --fill 0.5 --axis-distance 2"
 else
   bad "ellipsoid --fill 0.5 --axis-distance 2: $(tail -3 pf.txt)"
 fi
 expect_error "a fill above 1" "must lie in (0, 1]" "$BIN" ellipsoid --a 1 --b 1 --c 1 --fill 1.5
-expect_error "a 3-D fill with -o" "its table for chain-rom is not written yet" "$BIN" ellipsoid --a 1 --b 1 --c 1 --fill 0.5 -o out.h5
+expect_error "a 3-D fill with --fields" "--fields is not written for a partially filled 3-D tank" "$BIN" ellipsoid --a 1 --b 1 --c 1 --fill 0.5 --fields -o out.h5
+expect_error "a 3-D fill's table as CSV" "writes a mode table: a .h5 file" "$BIN" ellipsoid --a 1 --b 1 --c 1 --fill 0.5 -o out.csv
 expect_error "a 3-D fill with --ekman" "--ekman with --fill in 3-D is not built yet" "$BIN" ellipsoid --a 1 --b 1 --c 1 --fill 0.5 --ekman 1e-3
 expect_error "an axis distance without a fill" "with --fill < 1" "$BIN" ellipsoid --a 1 --b 1 --c 1 --axis-distance 2 -o out.h5
 # --tilt on a user's file turns the whole mesh about x: the box's sum rule tensor is the upright box's turned (it comes

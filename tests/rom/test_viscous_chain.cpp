@@ -287,7 +287,7 @@ TEST(ViscousChain, GeneralChainTakesAPartiallyFilledTank) {
   };
   std::string off_axis = spin_table(dir + "/sphere_fill0.4.h5", 14.0, 0);
   off_axis.insert(off_axis.find("center = 0.3\n"), "offset = [0.1, 0.0]\n");
-  EXPECT_NE(refusal(off_axis).find("body[1].cavity.offset: a partially filled tank off its body's axis"),
+  EXPECT_NE(refusal(off_axis).find("body[1].cavity.offset: an axisymmetric table of a partially filled tank holds it on the spin axis"),
             std::string::npos) << refusal(off_axis);
   std::string upper = spin_table(dir + "/sphere_fill0.4.h5", 14.0, 0);
   const std::size_t from = upper.find("[body.cavity]"), to = upper.find("[[body]]", from);
