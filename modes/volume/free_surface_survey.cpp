@@ -74,6 +74,7 @@ FreeSurfaceSurvey survey_free_surface_modes(const FreeSurfaceDynamics& A, const 
                       [](const auto&, int) { return false; });
   out.columns = s.plain_columns;
   std::vector<FreeSurfaceMode> pending;
+  std::vector<double> shifted;  // the shifts' σ, in order
   for (const auto& m : out.rule) {
     out.total += m.H;
     if (!is_heavy(m)) continue;
@@ -107,6 +108,33 @@ FreeSurfaceSurvey survey_free_surface_modes(const FreeSurfaceDynamics& A, const 
     const auto near = run_rule(A, B, [&](const Eigen::VectorXd& in, Eigen::VectorXd& o) { inverse.apply(in, o); },
                                s.shift_columns, [sigma](double t) { return sigma + 1 / t; },
                                [](double t, double r) { return r / (t * t); }, s.merge_width, done);
+    // The window's light clusters: a dense band of discrete modes none of which is heavy alone. Their weight is the
+    // measure's in the window (the shifted rule resolves it there), tabled as one unsettled row at its mean λ, so that
+    // it is not lost when no single mode carries it; a part an earlier shift's window held is left to that one.
+    const auto earlier = [&](double lambda) {
+      return std::any_of(shifted.begin(), shifted.end(),
+                         [&](double x) { return std::abs(lambda - x) <= s.window * lambda_scale(x); });
+    };
+    FreeSurfaceMode band;
+    double first = 0, second = 0;
+    for (const auto& m : near)
+      if (!is_heavy(m) && m.lambda > s.lambda_floor && std::abs(m.lambda - sigma) <= s.window * lambda_scale(sigma) &&
+          !earlier(m.lambda)) {
+        const double w = m.H.trace().real();
+        band.H += m.H;
+        band.members += m.members;
+        band.residual = std::max(band.residual, m.residual);
+        first += w * m.lambda;
+        second += w * m.lambda * m.lambda;
+      }
+    const double w = band.H.trace().real();
+    if (w >= heavy) {
+      band.lambda = first / w;
+      band.spread = std::sqrt(std::max(0.0, second / w - band.lambda * band.lambda));
+      band.residual = std::max({band.residual, band.spread, 2 * s.residual_tolerance * lambda_scale(band.lambda)});
+      out.unsettled.push_back(band);
+    }
+    shifted.push_back(sigma);
     for (const auto& m : near) {
       if (!in_window(m)) continue;
       if (!settled(m)) {
