@@ -56,3 +56,7 @@ csv=$OUT/viscous_fill_study.csv
 row="$(date +%F),$SHAPE,$FILL,$EK,$h,$table_s,$spectrum,$(decay confirm.txt),$confirm_s,$fine,$(decay reference.txt),$reference_s"
 echo "$row" >> "$csv"
 echo "$row"
+# A failed confirm says why (the work folder goes with the script).
+for f in confirm reference; do
+  grep -q '"roots"' $f.txt 2> /dev/null || { echo "$f failed:" >&2; tail -3 $f.log >&2; }
+done
