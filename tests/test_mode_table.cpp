@@ -249,3 +249,57 @@ TEST(ModeTable, VolumeTensorsRoundTripAndAreChecked) {
   EXPECT_THROW(rc::write_mode_table(bad, p), std::runtime_error);
   EXPECT_FALSE(fs::exists(p));
 }
+
+TEST(ModeTable, VolumeFreeSurfaceRoundTripsAndIsChecked) {
+  // A partially filled 3-D tank's table (/volume_free_surface, docs/volume.md §8): each row's 5 × 5 coupling sorts with
+  // its row (sorted by E: the unsorted second row comes first), its rotation block must be /volume's coupling, and the
+  // sum rule's identity takes K from the surface parts' Gram matrix.
+  auto t = sample();
+  t.converged.clear(); t.dlambda.clear(); t.dE.clear();
+  t.bands = {};
+  auto& v = t.volume_cavity;
+  v.centroid = {0.5, 0, 0};
+  v.inertia = {2.5, 0, 0, 0, 2.5, 0, 0, 0, 3.1};
+  v.geostrophic_re = v.geostrophic_im = std::vector<double>(9, 0.0);
+  auto& f = t.volume_free_surface;
+  f.fill = 0.5; f.radius = 1.5; f.axis = {-1.0, 0.0};
+  f.gram_re = f.gram_im = f.geostrophic_re = f.geostrophic_im = f.surface_gram = std::vector<double>(25, 0.0);
+  f.surface_gram[0] = f.surface_gram[6] = 0.4;  // K_xx = K_yy = 0.4: J_zh = A_f + K − sum_rule
+  t.J_zh = t.A_f + 0.4 - t.sum_rule;
+  std::vector<double> zhukovsky(9, 0.0), sum_rule(9, 0.0);
+  v.zhukovsky = zhukovsky; v.sum_rule = sum_rule;
+  for (std::size_t m = 0; m < t.E.size(); ++m) {
+    const double h = t.E[m] / 2, tx = 0.1 * (m + 1);
+    std::vector<double> re(25, 0.0), im(25, 0.0);
+    re[0] = re[6] = h; im[1] = -h; im[5] = h;  // the rotation block as the filled sample's
+    re[3] = re[15] = tx;                        // an offset coupling U_x·T_x, row-specific
+    f.coupling_re.insert(f.coupling_re.end(), re.begin(), re.end());
+    f.coupling_im.insert(f.coupling_im.end(), im.begin(), im.end());
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) {
+        v.coupling_re.push_back(re[5 * j + k]);
+        v.coupling_im.push_back(im[5 * j + k]);
+      }
+  }
+  t.sort_by_energy();
+  fs::path p = fs::temp_directory_path() / "rc_mode_table_volume_fill.h5";
+  rc::write_mode_table(t, p);
+  const auto r = rc::read_mode_table(p);
+  ASSERT_TRUE(r.volume_free_surface.present());
+  EXPECT_TRUE(r.partially_filled());
+  EXPECT_DOUBLE_EQ(r.volume_free_surface.radius, 1.5);
+  EXPECT_DOUBLE_EQ(r.volume_free_surface.axis[0], -1.0);
+  EXPECT_DOUBLE_EQ(r.volume_free_surface.coupling_re[3], 0.2);  // the heavier second row's, first after sorting
+  EXPECT_DOUBLE_EQ(r.volume_free_surface.coupling_re[25 + 3], 0.1);
+  fs::remove(p);
+  auto bad = t;
+  bad.volume_free_surface.coupling_re[6] *= 2;  // the rotation block no longer /volume's coupling
+  EXPECT_THROW(rc::write_mode_table(bad, p), std::runtime_error);
+  bad = t;
+  bad.volume_free_surface.surface_gram[0] = 0.9;  // K changes: sum_rule = A_f + K − J_zh fails
+  EXPECT_THROW(rc::write_mode_table(bad, p), std::runtime_error);
+  bad = t;
+  bad.volume_free_surface.gram_re.pop_back();
+  EXPECT_THROW(rc::write_mode_table(bad, p), std::runtime_error);
+  EXPECT_FALSE(fs::exists(p));
+}
