@@ -58,5 +58,7 @@ echo "$row" >> "$csv"
 echo "$row"
 # A failed confirm says why (the work folder goes with the script).
 for f in confirm reference; do
-  grep -q '"roots"' $f.txt 2> /dev/null || { echo "$f failed:" >&2; tail -3 $f.log >&2; }
+  case "$(decay $f.txt)" in
+    *failed) echo "$f gave no body root with a bar: $(head -c 600 $f.txt) $(tail -3 $f.log)" >&2 ;;
+  esac
 done

@@ -647,7 +647,10 @@ int run(int argc, char** argv) {
   auto args = rc::modes::split_arguments(argc, argv);
   // `cavity-modes response SHAPE ...`: the shape's command line, answered with R(sigma) instead of a table.
   const bool response = args.ours.size() > 1 && args.ours[1] == "response";
-  if (response) args.ours.erase(args.ours.begin() + 1);
+  if (response) {
+    args.ours.erase(args.ours.begin() + 1);
+    args.ours[0] += " response";  // the program's name in --help's usage line: "cavity-modes response sphere"
+  }
   CLI::App app{"cavity-modes: inertial-mode tables (kappa, lambda, E, a, N2, J_zh, coverage) of a rotating "
                "fluid in an axisymmetric cavity: ideal, or viscous with --ekman (damped modes). "
                "'cavity-modes response SHAPE ... [--ekman Ek] --sigma FROM:TO:N [--sigma-imag y] -o R.csv' computes the "

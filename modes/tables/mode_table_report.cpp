@@ -109,9 +109,12 @@ std::string convergence_note(const ModeTable& t) {
       t.viscous() ? "the damped modes marked yes and, for any shape, the response R(sigma) of `cavity-modes response` "
                     "(it converges where single modes do not); `--refine N` makes the table again on finer meshes "
                     "until its rows converge (docs/viscous.md, \"Refinement rounds\")"
-                  : fmt::format("J_zh, A_f, A_f - J_zh and the band weights (/bands, {} bands of width {:g}; check "
-                                "them with `cavity-modes compare` against a finer table), and any cluster marked yes",
-                                t.bands.size(), t.bands.size() > 0 ? t.bands.hi[0] - t.bands.lo[0] : 0.0);
+                  : t.bands.size() > 0
+                        ? fmt::format("J_zh, A_f, A_f - J_zh and the band weights (/bands, {} bands of width {:g}; "
+                                      "check them with `cavity-modes compare` against a finer table), and any cluster "
+                                      "marked yes", t.bands.size(), t.bands.hi[0] - t.bands.lo[0])
+                        // a table without /bands (a partial fill's meridian table): no band weights to point to
+                        : std::string("J_zh, A_f, A_f - J_zh (the sum rule), and any cluster marked yes");
   return fmt::format("note: {} of {} clusters did not converge (lambda or E moved more than {:g} against {}): do not "
                      "rely on them one by one. What converges under refinement here: {}. See docs/trust.md.",
                      failed, t.size(), t.convergence_tolerance, t.convergence_reference, trusted);

@@ -18,7 +18,7 @@ Verdict verdict_from_roots(const ChainModel& m, const Eigen::VectorXcd& sigma) {
   return verdict_of_roots(sigma, m.dissipative());
 }
 
-Verdict verdict_of_roots(const Eigen::VectorXcd& sigma, bool dissipative) {
+Verdict verdict_of_roots(const Eigen::VectorXcd& sigma, bool dissipative, double neutral) {
   Verdict v;
   double radius = 0;
   for (Eigen::Index j = 0; j < sigma.size(); ++j) radius = std::max(radius, std::abs(sigma[j]));
@@ -54,7 +54,8 @@ Verdict verdict_of_roots(const Eigen::VectorXcd& sigma, bool dissipative) {
   v.noise = kGrowthNoise * std::max(spectral_radius, 1e-300);
   v.growth = -std::numeric_limits<double>::infinity();
   for (Eigen::Index j = 0; j < sigma.size(); ++j) {
-    if (std::abs(sigma[j]) <= v.tolerance) { ++v.at_zero; continue; }
+    const bool at_neutral = neutral > 0 && std::min(std::abs(sigma[j] - neutral), std::abs(sigma[j] + neutral)) <= v.tolerance;
+    if (std::abs(sigma[j]) <= v.tolerance || at_neutral) { ++v.at_zero; continue; }
     v.growth = std::max(v.growth, -sigma[j].imag());
     if (-sigma[j].imag() > v.noise) ++v.growing;
   }

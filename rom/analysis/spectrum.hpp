@@ -97,7 +97,9 @@ Verdict compute_verdict(const ChainModel& m);
 Eigen::VectorXcd verdict_roots(const ChainModel& m);
 Verdict verdict_from_roots(const ChainModel& m, const Eigen::VectorXcd& sigma);
 // The same for any chain's roots: `dissipative` as ChainModel::dissipative() (the chain without axial symmetry's too).
-Verdict verdict_of_roots(const Eigen::VectorXcd& sigma, bool dissipative);
+// `neutral` > 0: roots at σ = ±neutral within the tolerance are neutral too, left out as those at σ = 0 are (the
+// chain without axial symmetry's frame turns at the spin, where a free chain's rigid turn in space sits).
+Verdict verdict_of_roots(const Eigen::VectorXcd& sigma, bool dissipative, double neutral = 0);
 // The size of the oscillating roots the verdict's tolerance is relative to (tolerance = kRealTolerance * radius).
 inline double verdict_radius(const Verdict& v) { return v.radius; }
 

@@ -50,7 +50,7 @@ void print_general_spectrum(std::ostream& os, const GeneralChain& g, const Gener
     os << "margin (largest |Im sigma|): " << v.margin << " rad/s\n";
   } else if (v.stable) {
     os << "stable: yes -- no root grows by more than rounding (" << v.noise << " 1/s; friction or viscous fluid), the slowest "
-       << "decays at " << -v.growth << " 1/s (" << v.at_zero << " roots at sigma = 0)" << unsettled << "\n";
+       << "decays at " << -v.growth << " 1/s (" << v.at_zero << " neutral roots at sigma = 0 or -+ the spin left out)" << unsettled << "\n";
   } else {
     os << "stable: no -- " << v.growing << (v.growing == 1 ? " root grows" : " roots grow") << ", the fastest at "
        << v.growth << " 1/s (e-folding " << 1 / v.growth << " s)" << unsettled << "\n";

@@ -444,7 +444,8 @@ static void print_body_line(std::ostream& os, const ChainModel& m, const Spectru
   if (b.unconverged > 0)
     os << ", " << b.unconverged << " kept clusters not converged (their roots marked *: docs/cones.md)";
   if (b.fit_hi > b.fit_lo) {
-    os << ", modes of a response fit on s in [" << b.fit_lo << ", " << b.fit_hi << "] (error " << b.fit_error << ")";
+    os << ", the pseudo-modes of " << b.response_kind << " on s in [" << b.fit_lo << ", " << b.fit_hi << "] (error "
+       << b.fit_error << ")";
     const FitPassivity& p = sp.passivity[k];
     if (p.passive())
       os << ", passive on it (Im R >= " << p.scan.min_im << " max|R|)";

@@ -127,7 +127,7 @@ GeneralSpectrum general_spectrum(const GeneralChain& g) {
   std::sort(sp.roots.begin(), sp.roots.end(), [](auto a, auto b) {
     return a.real() != b.real() ? a.real() < b.real() : a.imag() < b.imag();
   });
-  sp.verdict = verdict_of_roots(sigma, g.dissipative);
+  sp.verdict = verdict_of_roots(sigma, g.dissipative, std::abs(g.spin));
   return sp;
 }
 

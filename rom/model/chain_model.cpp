@@ -209,6 +209,10 @@ void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
   b.fit_lo = t.fit_lo;
   b.fit_hi = t.fit_hi;
   b.fit_error = t.fit_error;
+  // Which reduction made the rows (the table's solver text, modes/app/galerkin_response_table.cpp, cavity_response.cpp).
+  b.response_kind = t.solver.find("rational Krylov") != std::string::npos ? "a Krylov response table"
+                    : t.solver.find("Galerkin") != std::string::npos   ? "a Galerkin response table"
+                                                                       : "a response fit";
   b.coverage = b.sum_rule > 0 ? b.E_kept / b.sum_rule : 1.0;
   // The residues of all modes sum to the real A_f - J_zh (the response's 1/sigma term involves only the
   // real mass and divergence matrices; an argument, not measured: a table holds too few modes to sum), so the

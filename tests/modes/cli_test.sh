@@ -38,7 +38,7 @@ else
   bad "sphere --help: $(grep -- '--radial-size\|--method\|--sigma\|ENUM\|[a-z]->[0-9]' sphere_help.txt | head -2)"
 fi
 "$BIN" response cylinder --help > response_help.txt 2>&1
-if grep -q -- "--sigma" response_help.txt && grep -q -- "--method" response_help.txt && ! grep -q -- "^  --modes\|^  --fields" response_help.txt; then
+if grep -q "^Usage: .*cavity-modes response cylinder" response_help.txt && grep -q -- "--sigma" response_help.txt && grep -q -- "--method" response_help.txt && ! grep -q -- "^  --modes\|^  --fields" response_help.txt; then
   ok "response cylinder --help lists the response's options"
 else
   bad "response cylinder --help"

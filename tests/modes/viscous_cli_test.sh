@@ -394,7 +394,7 @@ scene "viscosity = 3.2e-3"   # back to the linear scene
 if "$BIN" response sphere --radius 1 --ekman 1e-2 "${small_response[@]}" --sigma -1.5:2:36 --fit -o fit.h5 > fit.txt 2>&1 &&
    "$BIN" info fit.h5 --json > fit.json && sed -i 's/visc.h5/fit.h5/' scene.toml &&
    "$ROM" spectrum scene.toml --json > fitspec.json && "$ROM" spectrum scene.toml > fitspec.txt &&
-   grep -q "modes of a response fit" fitspec.txt && python3 - "$BIN" <<'PY'
+   grep -q "pseudo-modes of a response fit" fitspec.txt && python3 - "$BIN" <<'PY'
 import json, subprocess, sys
 j, v, sp = json.load(open("fit.json")), json.load(open("visc.json")), json.load(open("fitspec.json"))
 assert j["fit_lo"] == -1.5 and j["fit_hi"] == 2 and j["fit_error"] < 1e-6, j
