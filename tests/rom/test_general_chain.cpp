@@ -691,3 +691,41 @@ TEST(GeneralChain, RefusesWhatItDoesNotModel) {
 
 }  // namespace
 }  // namespace rc::rom::test
+
+namespace rc::rom::test {
+
+TEST(GeneralChain, FreeChainsRigidTurnIsLeftOutOfTheVerdict) {
+  // A free chain's rigid turn in space is neutral; in the turning frame it sits at σ = ±spin. With friction the verdict
+  // must leave it out, as (26)'s leaves out σ = 0. On the free three-body chain (unstable at every spin tried, as
+  // Kelvin–Tait–Chetaev says with friction) the two roots at ±spin are counted neutral and the growth is the largest of
+  // the other roots' −Im σ, computed here from the roots; and on a stable set of roots the verdict's slowest decay is
+  // the physical one, not the neutral roots' rounding.
+  const double spin = 30;
+  const GeneralChain g = build_general_chain(parse_scene_text(axisymmetric_chain(true, spin), test_dir(), "test-scene"));
+  ASSERT_TRUE(g.dissipative);
+  const GeneralSpectrum sp = general_spectrum(g);
+  int neutral = 0;
+  double slowest = -1e300;
+  for (const auto r : sp.roots) {
+    if (std::min(std::abs(r - spin), std::abs(r + spin)) <= sp.verdict.tolerance || std::abs(r) <= sp.verdict.tolerance) {
+      ++neutral;
+      continue;
+    }
+    slowest = std::max(slowest, -r.imag());
+  }
+  std::printf("  free chain at %g rad/s: %d neutral roots left out, growth %.6g 1/s (verdict %.6g)\n", spin, neutral,
+              slowest, sp.verdict.growth);
+  EXPECT_GE(neutral, 2);
+  EXPECT_EQ(sp.verdict.at_zero, neutral);
+  EXPECT_DOUBLE_EQ(sp.verdict.growth, slowest);
+  Eigen::VectorXcd stable(4);
+  stable << std::complex<double>(-spin, 3e-16), std::complex<double>(spin, -2e-16), std::complex<double>(-1.5, 5e-3),
+      std::complex<double>(1.5, 5e-3);
+  const Verdict v = verdict_of_roots(stable, true, spin);
+  EXPECT_TRUE(v.stable);
+  EXPECT_EQ(v.at_zero, 2);
+  EXPECT_DOUBLE_EQ(v.growth, -5e-3);
+  EXPECT_GT(verdict_of_roots(stable, true).growth, -1e-15);  // without the spin given: the rounding of ±spin
+}
+
+}  // namespace rc::rom::test
