@@ -344,6 +344,17 @@ bool listed_by_default(const ChainModel& m, const Spectrum& sp, const Root& r) {
                          : std::abs(r.sigma.imag()) > sp.tolerance;
 }
 
+// The body a root's owner names ("body 2", "fluid 2.3": body 2), 0-based; −1 for none.
+int owner_body(const std::string& owner) {
+  const auto space = owner.find(' ');
+  if (space == std::string::npos) return -1;
+  try {
+    return std::stoi(owner.substr(space + 1)) - 1;
+  } catch (const std::exception&) {
+    return -1;
+  }
+}
+
 void print_root(std::ostream& os, const ChainModel& m, const Spectrum& sp, const Root& r) {
   os << std::setprecision(12) << "  " << std::setw(20) << r.sigma.real() << "  " << std::setw(20) << r.sigma.imag()
      << "i  " << std::setw(10) << r.owner << (r.unconverged_owner ? "*" : " ") << (r.companion_moved ? "~" : " ")
@@ -355,6 +366,10 @@ void print_root(std::ostream& os, const ChainModel& m, const Spectrum& sp, const
   if (m.dissipative() && std::abs(r.sigma) > sp.tolerance && std::abs(rate) > sp.noise)
     os << std::setprecision(3) << (rate > 0 ? "  grows " : "  decays ") << std::abs(rate) << " 1/s (e-folding "
        << 1 / std::abs(rate) << " s)";
+  // The same motion seen in its owner's body frame, which turns at that body's spin: σ + ω_k (docs/rom.md, "Spectrum").
+  const int k = owner_body(r.owner);
+  if (k >= 0 && k < static_cast<int>(m.bodies.size()) && std::abs(r.sigma) > sp.tolerance)
+    os << std::setprecision(9) << "  body frame " << r.sigma.real() + m.bodies[k].omega;
   os << "\n";
 }
 
@@ -376,7 +391,8 @@ void print_outside_fit(std::ostream& os, const ChainModel& m, const Spectrum& sp
 }
 
 void print_roots(std::ostream& os, const ChainModel& m, const Spectrum& sp, bool all) {
-  os << "roots sigma (rad/s, solutions e^{i sigma t})" << (all ? "" : ": the bodies', those that grow and those a check marks") << ":\n";
+  os << "roots sigma (rad/s in space, solutions e^{i sigma t}; 'body frame': sigma + the owner's spin, the same motion "
+        "seen from its body)" << (all ? "" : ": the bodies', those that grow and those a check marks") << ":\n";
   int left = 0;
   double slowest = std::numeric_limits<double>::infinity();  // the slowest decay among the roots left out
   for (const Root& r : sp.roots) {
