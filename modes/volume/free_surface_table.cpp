@@ -7,7 +7,7 @@
 namespace rc::modes {
 namespace {
 
-void append(const Hermitian5& H, std::vector<double>& re, std::vector<double>& im) {
+void append_block(const Hermitian5& H, std::vector<double>& re, std::vector<double>& im) {
   for (int j = 0; j < 5; ++j)
     for (int k = 0; k < 5; ++k) {
       re.push_back(H(j, k).real());
@@ -23,7 +23,7 @@ void append_rotations(const Hermitian5& H, std::vector<double>& re, std::vector<
     }
 }
 
-std::vector<double> flat(const Tensor3& t) {
+std::vector<double> flat_rows(const Tensor3& t) {
   std::vector<double> v;
   for (const auto& row : t) v.insert(v.end(), row.begin(), row.end());
   return v;
@@ -64,7 +64,7 @@ ModeTable free_surface_table(const FreeSurfaceRunResult& r, const geometry::Volu
   auto& v = t.volume_cavity;
   v.centroid.assign(r.liquid.centroid.begin(), r.liquid.centroid.end());
   v.tilt = shape.tilt;
-  v.inertia = flat(I);
+  v.inertia = flat_rows(I);
   Hermitian5 geo = Hermitian5::Zero();
   for (const auto& n : s.rule)
     if (std::abs(n.lambda) <= lambda_floor) geo += n.H;
@@ -80,8 +80,8 @@ ModeTable free_surface_table(const FreeSurfaceRunResult& r, const geometry::Volu
   f.fill = shape.fill;
   f.radius = r.surface_radius;
   f.axis = {shape.spin_axis[0], shape.spin_axis[1]};
-  append(Hermitian5(0.5 * (s.gram + s.gram.adjoint())), f.gram_re, f.gram_im);
-  append(geo, f.geostrophic_re, f.geostrophic_im);
+  append_block(Hermitian5(0.5 * (s.gram + s.gram.adjoint())), f.gram_re, f.gram_im);
+  append_block(geo, f.geostrophic_re, f.geostrophic_im);
   for (int j = 0; j < 5; ++j)
     for (int k = 0; k < 5; ++k) f.surface_gram.push_back(0.5 * (s.surface_gram(j, k) + s.surface_gram(k, j)));
   double kept = 0;
@@ -92,7 +92,7 @@ ModeTable free_surface_table(const FreeSurfaceRunResult& r, const geometry::Volu
     const double E = (H(0, 0) + H(1, 1)).real();
     push_ideal_volume_row(t, md.lambda, E, md.residual, md.spread, md.members);
     append_rotations(H, v.coupling_re, v.coupling_im);
-    append(H, f.coupling_re, f.coupling_im);
+    append_block(H, f.coupling_re, f.coupling_im);
     kept += E;
   }
   t.coverage = t.sum_rule > 0 ? kept / t.sum_rule : 0;
