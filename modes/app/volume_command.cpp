@@ -293,11 +293,12 @@ int VolumeCommands::run_partial_fill(const VolumeTableRequest& request, const st
   int ranks = 1;
   MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
   if (ranks > 1) throw std::runtime_error("a partially filled 3-D tank is solved on one rank (run it without mpirun)");
-  const FreeSurfaceRunResult r = run_free_surface_modes(request.shape, request.mesh, {},
+  const FreeSurfaceSurveySettings settings;
+  const FreeSurfaceRunResult r = run_free_surface_modes(request.shape, request.mesh, settings,
                                                         [](const std::string& line) { std::cerr << line << "\n"; });
   print_partial_fill(r, request.shape);
   if (common_.output.empty()) return 0;
-  ModeTable t = free_surface_table(r, request.shape, FreeSurfaceSurveySettings{}.lambda_floor);
+  ModeTable t = free_surface_table(r, request.shape, settings);
   set_provenance(t, command_line);
   write_mode_table(t, common_.output);
   fmt::print("wrote {} ({} rows; chain-rom takes it on a fixed body's joint: docs/volume.md §8)\n", common_.output, t.size());

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace rc::modes {
 namespace {
@@ -52,6 +53,35 @@ std::vector<FreeSurfaceMode> run_rule(const FreeSurfaceDynamics& A, const Eigen:
 
 bool known(const std::vector<FreeSurfaceMode>& modes, double lambda, double width) {
   return std::any_of(modes.begin(), modes.end(), [&](const auto& m) { return within_width(lambda, m.lambda, width); });
+}
+
+// A shift's window's light clusters: a dense band of discrete modes none of which is heavy alone. Their weight is the
+// measure's in the window (the shifted rule resolves it there), tabled as one unsettled row at its mean λ, so that it
+// is not lost when no single mode carries it; a part an earlier shift's window held is left to that one. None when
+// the band's weight is below `heavy`.
+template <class Heavy>
+std::optional<FreeSurfaceMode> light_band(const std::vector<FreeSurfaceMode>& near, double sigma,
+                                          const std::vector<double>& shifted, const FreeSurfaceSurveySettings& s,
+                                          Heavy is_heavy, double heavy) {
+  const auto in = [&](double lambda, double x) { return std::abs(lambda - x) <= s.window * lambda_scale(x); };
+  FreeSurfaceMode band;
+  double first = 0, second = 0;
+  for (const auto& m : near) {
+    if (is_heavy(m) || m.lambda <= s.lambda_floor || !in(m.lambda, sigma)) continue;
+    if (std::any_of(shifted.begin(), shifted.end(), [&](double x) { return in(m.lambda, x); })) continue;
+    const double w = m.H.trace().real();
+    band.H += m.H;
+    band.members += m.members;
+    band.residual = std::max(band.residual, m.residual);
+    first += w * m.lambda;
+    second += w * m.lambda * m.lambda;
+  }
+  const double w = band.H.trace().real();
+  if (!(w >= heavy)) return std::nullopt;
+  band.lambda = first / w;
+  band.spread = std::sqrt(std::max(0.0, second / w - band.lambda * band.lambda));
+  band.residual = std::max({band.residual, band.spread, 2 * s.residual_tolerance * lambda_scale(band.lambda)});
+  return band;
 }
 
 }  // namespace
@@ -108,32 +138,7 @@ FreeSurfaceSurvey survey_free_surface_modes(const FreeSurfaceDynamics& A, const 
     const auto near = run_rule(A, B, [&](const Eigen::VectorXd& in, Eigen::VectorXd& o) { inverse.apply(in, o); },
                                s.shift_columns, [sigma](double t) { return sigma + 1 / t; },
                                [](double t, double r) { return r / (t * t); }, s.merge_width, done);
-    // The window's light clusters: a dense band of discrete modes none of which is heavy alone. Their weight is the
-    // measure's in the window (the shifted rule resolves it there), tabled as one unsettled row at its mean λ, so that
-    // it is not lost when no single mode carries it; a part an earlier shift's window held is left to that one.
-    const auto earlier = [&](double lambda) {
-      return std::any_of(shifted.begin(), shifted.end(),
-                         [&](double x) { return std::abs(lambda - x) <= s.window * lambda_scale(x); });
-    };
-    FreeSurfaceMode band;
-    double first = 0, second = 0;
-    for (const auto& m : near)
-      if (!is_heavy(m) && m.lambda > s.lambda_floor && std::abs(m.lambda - sigma) <= s.window * lambda_scale(sigma) &&
-          !earlier(m.lambda)) {
-        const double w = m.H.trace().real();
-        band.H += m.H;
-        band.members += m.members;
-        band.residual = std::max(band.residual, m.residual);
-        first += w * m.lambda;
-        second += w * m.lambda * m.lambda;
-      }
-    const double w = band.H.trace().real();
-    if (w >= heavy) {
-      band.lambda = first / w;
-      band.spread = std::sqrt(std::max(0.0, second / w - band.lambda * band.lambda));
-      band.residual = std::max({band.residual, band.spread, 2 * s.residual_tolerance * lambda_scale(band.lambda)});
-      out.unsettled.push_back(band);
-    }
+    if (auto band = light_band(near, sigma, shifted, s, is_heavy, heavy)) out.unsettled.push_back(*band);
     shifted.push_back(sigma);
     for (const auto& m : near) {
       if (!in_window(m)) continue;

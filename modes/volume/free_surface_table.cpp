@@ -7,17 +7,10 @@
 namespace rc::modes {
 namespace {
 
-void append_block(const Hermitian5& H, std::vector<double>& re, std::vector<double>& im) {
-  for (int j = 0; j < 5; ++j)
-    for (int k = 0; k < 5; ++k) {
-      re.push_back(H(j, k).real());
-      im.push_back(H(j, k).imag());
-    }
-}
-
-void append_rotations(const Hermitian5& H, std::vector<double>& re, std::vector<double>& im) {
-  for (int j = 0; j < 3; ++j)
-    for (int k = 0; k < 3; ++k) {
+// H's leading n × n block, row-major, into (re, im).
+void append_block(const Hermitian5& H, int n, std::vector<double>& re, std::vector<double>& im) {
+  for (int j = 0; j < n; ++j)
+    for (int k = 0; k < n; ++k) {
       re.push_back(H(j, k).real());
       im.push_back(H(j, k).imag());
     }
@@ -32,7 +25,7 @@ std::vector<double> flat_rows(const Tensor3& t) {
 }  // namespace
 
 ModeTable free_surface_table(const FreeSurfaceRunResult& r, const geometry::VolumeShapeSpec& shape,
-                             double lambda_floor) {
+                             const FreeSurfaceSurveySettings& settings) {
   const FreeSurfaceSurvey& s = r.survey;
   ModeTable t;
   t.shape = shape.kind;
@@ -58,7 +51,7 @@ ModeTable free_surface_table(const FreeSurfaceRunResult& r, const geometry::Volu
   t.J_zh = t.A_f + 0.5 * (K(0, 0) + K(1, 1)) - t.sum_rule;  // the identity sum_rule = A_f + K − J_zh (docs/volume.md §8)
   t.solver = "block Lanczos Gauss rule of the free-surface operator's coupling measure, five directions, plain then "
              "shift-and-invert (docs/volume.md §8)";
-  t.tolerance = 1e-6;
+  t.tolerance = settings.residual_tolerance;  // a row above it did not settle (chain-rom says so: general_tank.cpp)
   t.normalisation = "3-D partial fill: H = c c^H over (U_x, U_y, U_z, T_x, T_y) about the spin axis's point at the "
                     "centroid's height, |W| = 1 (docs/volume.md §8); a = sqrt(E/2), N2 = 1";
   auto& v = t.volume_cavity;
@@ -67,7 +60,7 @@ ModeTable free_surface_table(const FreeSurfaceRunResult& r, const geometry::Volu
   v.inertia = flat_rows(I);
   Hermitian5 geo = Hermitian5::Zero();
   for (const auto& n : s.rule)
-    if (std::abs(n.lambda) <= lambda_floor) geo += n.H;
+    if (std::abs(n.lambda) <= settings.lambda_floor) geo += n.H;
   geo = 0.5 * (geo + geo.adjoint()).eval();
   for (int j = 0; j < 3; ++j)
     for (int k = 0; k < 3; ++k) {
@@ -80,8 +73,8 @@ ModeTable free_surface_table(const FreeSurfaceRunResult& r, const geometry::Volu
   f.fill = shape.fill;
   f.radius = r.surface_radius;
   f.axis = {shape.spin_axis[0], shape.spin_axis[1]};
-  append_block(Hermitian5(0.5 * (s.gram + s.gram.adjoint())), f.gram_re, f.gram_im);
-  append_block(geo, f.geostrophic_re, f.geostrophic_im);
+  append_block(Hermitian5(0.5 * (s.gram + s.gram.adjoint())), 5, f.gram_re, f.gram_im);
+  append_block(geo, 5, f.geostrophic_re, f.geostrophic_im);
   for (int j = 0; j < 5; ++j)
     for (int k = 0; k < 5; ++k) f.surface_gram.push_back(0.5 * (s.surface_gram(j, k) + s.surface_gram(k, j)));
   double kept = 0;
@@ -91,8 +84,8 @@ ModeTable free_surface_table(const FreeSurfaceRunResult& r, const geometry::Volu
     const Hermitian5 H = 0.5 * (md.H + md.H.adjoint());
     const double E = (H(0, 0) + H(1, 1)).real();
     push_ideal_volume_row(t, md.lambda, E, md.residual, md.spread, md.members);
-    append_rotations(H, v.coupling_re, v.coupling_im);
-    append_block(H, f.coupling_re, f.coupling_im);
+    append_block(H, 3, v.coupling_re, v.coupling_im);
+    append_block(H, 5, f.coupling_re, f.coupling_im);
     kept += E;
   }
   t.coverage = t.sum_rule > 0 ? kept / t.sum_rule : 0;

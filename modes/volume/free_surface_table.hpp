@@ -10,6 +10,6 @@ namespace rc::modes {
 
 // The settled rows only (the survey's `modes`; its unsettled weight is reported by the command, not tabled).
 ModeTable free_surface_table(const FreeSurfaceRunResult& r, const geometry::VolumeShapeSpec& shape,
-                             double lambda_floor);
+                             const FreeSurfaceSurveySettings& settings);
 
 }  // namespace rc::modes

@@ -18,9 +18,6 @@ using RowMajor3d = Eigen::Matrix<double, 3, 3, Eigen::RowMajor>;
 
 Eigen::Matrix3d tensor(const std::vector<double>& v) { return Eigen::Map<const RowMajor3d>(v.data()); }
 
-// A row's coupling tensor H about the body's joint: the 3-D table's, or an axisymmetric m = 1 row's
-// E/2 (1, i, 0)(1, −i, 0)ᵀ — with a viscous row's complex E + i·E_imag (the rank-one product of its right and left
-// couplings, docs/volume.md §7), and a partially filled tank's E = 2(a + c t)²/N² about the joint (row_coupling.hpp).
 // A 3-D partial fill's five directions (U_x, U_y, U_z, T̂_x, T̂_y) about P0, the spin axis's point at the centroid's
 // height, taken to the joint O = P0 − c ẑ: U_O,k = U_k + c T̂_k (docs/volume.md §8, "The table").
 using Directions5 = Eigen::Matrix<std::complex<double>, 5, 5>;
@@ -44,6 +41,10 @@ Eigen::Matrix3cd fill_tensor_about_joint(const Directions5& H, double c) {
   return B.cast<std::complex<double>>() * H * B.transpose().cast<std::complex<double>>();
 }
 
+// A row's coupling tensor H about the body's joint: the 3-D table's, or an axisymmetric m = 1 row's
+// E/2 (1, i, 0)(1, −i, 0)ᵀ — with a viscous row's complex E + i·E_imag (the rank-one product of its right and left
+// couplings, docs/volume.md §7), and a partially filled tank's E = 2(a + c t)²/N² about the joint (row_coupling.hpp);
+// a 3-D partial fill's B H Bᵀ (fill_tensor_about_joint).
 Eigen::Matrix3cd row_coupling(const rc::ModeTable& t, std::size_t l, const RowCoupling& about) {
   Eigen::Matrix3cd H = Eigen::Matrix3cd::Zero();
   if (t.volume_free_surface.present())
@@ -224,6 +225,15 @@ double add_band_modes(const Scene& scene, const std::string& w, int k, const rc:
   return covered / t.sum_rule;
 }
 
+// A 3-D partial fill about its joint (docs/volume.md §8): the surface re-centres on the tilted spin axis, K(O) = B S Bᵀ
+// more inertia (S the directions' surface Gram matrix), and the λ = 0 weight is B G Bᵀ.
+void add_fill_about_joint(const rc::ModeTable& t, double c, double unit, GeneralTank& tank) {
+  const auto& vf = t.volume_free_surface;
+  tank.inertia += unit * fill_tensor_about_joint(fill_block(vf.surface_gram, {}, 0), c).real();
+  const Eigen::Matrix3d G = fill_tensor_about_joint(fill_block(vf.geostrophic_re, vf.geostrophic_im, 0), c).real();
+  tank.geostrophic = unit * 0.5 * (G + G.transpose());
+}
+
 // A 3-D partial fill's table holds its spin axis (the surface is a cylinder about it): the body's axis must be that
 // axis, so the tank's horizontal place follows from the table (offset = L (C − axis) for `center`, or −L·axis with
 // `origin`: the tank's own centre D·L from the axis, as made with --axis-distance D).
@@ -271,13 +281,7 @@ GeneralTank general_tank(const Scene& scene, int k, const CavitySpec& cav, const
     require_fixed_joint(scene, k, cav, w, true);
     require_axial_field(scene);
     require_on_the_spin_axis(scene, cav, w, t, offset, L);
-    // The surface re-centres on the tilted spin axis: K(O_k) = B S Bᵀ more inertia (docs/volume.md §8).
-    const auto& vf = t.volume_free_surface;
-    Eigen::Matrix<double, 5, 5> S;
-    for (int i = 0; i < 5; ++i)
-      for (int j = 0; j < 5; ++j) S(i, j) = vf.surface_gram[5 * i + j];
-    const Eigen::Matrix<double, 3, 5> B = fill_about_joint(about.c);
-    tank.inertia += unit * B * S * B.transpose();
+    tank.cut_liquid = true;
   }
   if (t.free_surface.present()) {
     require_fixed_joint(scene, k, cav, w, false);
@@ -288,11 +292,7 @@ GeneralTank general_tank(const Scene& scene, int k, const CavitySpec& cav, const
     tank.inertia(1, 1) += K;
   }
   tank.geostrophic = unit * geostrophic;
-  if (t.volume_free_surface.present()) {  // the λ = 0 weight about the joint
-    const auto& vf = t.volume_free_surface;
-    const Eigen::Matrix3d G = fill_tensor_about_joint(fill_block(vf.geostrophic_re, vf.geostrophic_im, 0), about.c).real();
-    tank.geostrophic = unit * 0.5 * (G + G.transpose());
-  }
+  if (t.volume_free_surface.present()) add_fill_about_joint(t, about.c, unit, tank);
   if (t.response_fit()) tank.window = t.fit_hi * std::abs(spin);
   if (cav.bands) {
     tank.coverage = add_band_modes(scene, w, k, t, unit, tank);

@@ -46,6 +46,7 @@ struct GeneralTank {
   // cluster's weight, docs/volume.md §8), and the largest such bound relative to max(|λ|, 0.1).
   int unsettled_rows = 0;
   double worst_bound = 0;
+  bool cut_liquid = false;  // a 3-D partial fill: its liquid cut from the tank and meshed (its centroid has that error)
 };
 
 // Body k's tank `cav` (scene key `where`) from its table. Rows kept as for an axisymmetric tank (every coupling one,
