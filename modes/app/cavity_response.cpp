@@ -15,6 +15,7 @@
 #include "response_samples.hpp"
 #include "table_assembly.hpp"
 #include "separable_table.hpp"
+#include "viscous_mesh.hpp"
 #include "viscous_response.hpp"
 #include "viscous_table.hpp"
 #include "window_fit.hpp"

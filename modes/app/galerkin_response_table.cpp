@@ -1,10 +1,11 @@
 #include "galerkin_response_table.hpp"
 
+#include "free_surface.hpp"
 #include "galerkin_projection.hpp"
 #include "galerkin_response.hpp"
 #include "krylov_response.hpp"
+#include "machine_memory.hpp"
 #include "offset_rows.hpp"
-#include "free_surface.hpp"
 #include "passivity_scan.hpp"
 #include "petsc_handles.hpp"
 #include "progress.hpp"
@@ -17,7 +18,6 @@
 #include <iostream>
 #include <limits>
 #include <stdexcept>
-#include <unistd.h>
 
 namespace rc::modes {
 namespace {
@@ -83,7 +83,7 @@ void check_basis_memory(const ViscousForms& forms, std::size_t samples) {
   int ranks = 1;
   MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
   const double bytes = 2.0 * forms.complex_size * sizeof(double) * static_cast<double>(samples) / ranks;
-  const double memory = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
+  const double memory = machine_memory_bytes();
   if (memory > 0 && bytes > 0.5 * memory)
     throw std::runtime_error(fmt::format("a Galerkin response table keeps its {} forced solutions until it projects "
                                          "them: {:.1f} GB per rank, more than half of this machine's {:.1f} GB; give "

@@ -2,6 +2,7 @@
 
 #include "atomic_file.hpp"
 #include "cavity_response.hpp"
+#include "machine_memory.hpp"
 #include "petsc_handles.hpp"
 #include "progress.hpp"
 #include "shell_modes.hpp"
@@ -9,7 +10,6 @@
 #include "shell_table.hpp"
 
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
@@ -55,7 +55,7 @@ double change_against(const ViscousMode& mode, const std::vector<ViscousMode>& c
 void check_memory(const ShellSettings& s) {
   const double unknowns = double(s.lmax - std::max(s.m, 1) + 1) * s.radial;
   const double need = unknowns * (s.inner_radius > 0 ? 3e4 : 1.5e4);
-  const double have = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
+  const double have = machine_memory_bytes();
   if (have > 0 && need > 0.6 * have)
     throw std::runtime_error(fmt::format("{:.0f} unknowns need about {:.1f} GB, beyond 60 % of this machine's {:.1f} GB: "
                                          "a smaller --resolution (or a larger Ekman number)", unknowns, need / 1e9,

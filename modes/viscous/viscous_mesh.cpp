@@ -2,6 +2,8 @@
 
 #include "isolated_mesh.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -34,6 +36,11 @@ geometry::MeridianMesh viscous_mesh(const geometry::ShapeSpec& shape, geometry::
   }
   mesh.wall_layer = 0;
   return geometry::mesh_meridian(shape, mesh);
+}
+
+std::string mesh_text(const geometry::MeshOptions& m) {
+  const std::string near = m.near_wall_size > 0 ? fmt::format(", near-wall {:.3g}", m.near_wall_size) : "";
+  return fmt::format("order {}, h = {:.3g}, wall {:.3g}{}", m.order, m.size, m.wall_size, near);
 }
 
 }  // namespace rc::modes

@@ -1,9 +1,11 @@
 #include "viscous_response.hpp"
 
 #include "mesh_broadcast.hpp"
+#include "petsc_handles.hpp"
 #include "shifted_solver.hpp"
 #include "poincare_forms.hpp"
 #include "taylor_hood_space.hpp"
+#include "viscous_memory.hpp"
 #include "viscous_mesh.hpp"
 
 #include <numbers>
@@ -88,6 +90,8 @@ ViscousForms assemble_cavity_forms(const geometry::ShapeSpec& shape, const geome
   geometry::MeshOptions made = mesh;
   const TaylorHoodSpace space(mesh_on_root([&] { return viscous_mesh(shape, made); }, PETSC_COMM_WORLD));
   if (used) *used = made;
+  // Refused here rather than killed by the system in the factorisation: every rank holds a copy on PETSC_COMM_SELF.
+  refuse_viscous_beyond_memory(2L * space.size(), comm == PETSC_COMM_SELF ? world_ranks() : 1, mesh_text(made));
   const double centroid_z = integrate_fluid(space.geometry()).centroid_z;
   return assemble_viscous_forms(space, centroid_z, ekman, comm);
 }

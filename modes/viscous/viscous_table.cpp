@@ -8,7 +8,9 @@
 #include "poincare_forms.hpp"
 #include "taylor_hood_space.hpp"
 #include "viscous_fields.hpp"
+#include "viscous_memory.hpp"
 #include "viscous_mesh.hpp"
+#include "machine_memory.hpp"
 
 #include <fmt/format.h>
 
@@ -19,7 +21,6 @@
 #include <numeric>
 #include <stdexcept>
 
-#include <unistd.h>
 
 namespace rc::modes {
 namespace {
@@ -112,22 +113,11 @@ ViscousMode continue_mode(const ViscousForms& forms, double lambda0, double E0, 
   });
 }
 
-// A refinement round's mesh too large for the machine (thrown before its assembly).
+// A mesh too large for the machine (thrown before its assembly): a refinement round is allowed 60 % of the machine's
+// memory (all ranks together), the first mesh — the one the user asked for — 90 % (viscous_memory.hpp).
 struct BeyondMemory : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
-
-// The factorisation and its forms take about 10 kB per real unknown (measured 2026-11-27 at P6: 2.26 GB at 224 034
-// unknowns, 7.2 GB at 762 704); a refinement round is allowed 60 % of the machine's memory (all ranks together), the
-// first mesh — the one the user asked for — all of it.
-constexpr double kBytesPerViscousUnknown = 1.2e4;
-double machine_bytes() {
-  return static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
-}
-long most_viscous_unknowns(double share = 0.6) {
-  const double have = machine_bytes();
-  return have > 0 ? static_cast<long>(share * have / kBytesPerViscousUnknown) : 0;
-}
 
 // Shares out the targets' rows solved on their own ranks (split: rank r solved every ranks-th target from r): the
 // scalars summed over the ranks, and with keep_block each row's block vector broadcast from its rank, so that every
@@ -287,11 +277,6 @@ geometry::MeshOptions refined_viscous_mesh(const geometry::ShapeSpec& shape, dou
   return halved_viscous_mesh(ekman, mesh);
 }
 
-std::string mesh_text(const geometry::MeshOptions& m) {
-  const std::string near = m.near_wall_size > 0 ? fmt::format(", near-wall {:.3g}", m.near_wall_size) : "";
-  return fmt::format("order {}, h = {:.3g}, wall {:.3g}{}", m.order, m.size, m.wall_size, near);
-}
-
 geometry::MeshOptions halved_viscous_mesh(double ekman, const geometry::MeshOptions& mesh) {
   geometry::MeshOptions finer = mesh;
   finer.size /= 2;
@@ -427,7 +412,7 @@ struct Rounds {
       Solved next;
       try {
         next = solve_targets(shape, finer, ideal.centroid_z, s, targets, energies, progress(label),
-                             most_viscous_unknowns());
+                             most_viscous_unknowns(0.6));
       } catch (const BeyondMemory& e) {
         lines.note(fmt::format("{} not made: its mesh ({}) has {}, more than 60 % of this machine's memory", label,
                            mesh_text(finer), e.what()));
@@ -469,11 +454,11 @@ ModeTable compute_viscous_table(const geometry::ShapeSpec& shape, const ViscousT
   Solved fine;
   try {
     fine = solve_targets(shape, mesh, ideal.centroid_z, s, targets, energies, rounds.progress("viscous"),
-                         most_viscous_unknowns(1.0));
+                         most_viscous_unknowns(0.9));
   } catch (const BeyondMemory& e) {  // refused in one line rather than killed by the system half-way
     throw std::runtime_error(fmt::format("the viscous mesh ({}) has {}, more than this machine's {:.0f} GB: use a "
                                          "larger --mesh-size or --wall-size (a sphere or spherical shell: cavity-modes "
-                                         "shell, docs/spherical.md)", mesh_text(mesh), e.what(), machine_bytes() / 1e9));
+                                         "shell, docs/spherical.md)", mesh_text(mesh), e.what(), machine_memory_bytes() / 1e9));
   }
   drop_repeats(fine, targets, energies, report);
 

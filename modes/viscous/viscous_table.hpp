@@ -46,9 +46,6 @@ geometry::MeshOptions refined_viscous_mesh(const geometry::ShapeSpec& shape, dou
 // (docs/viscous.md, "Mesh study of a response").
 geometry::MeshOptions halved_viscous_mesh(double ekman, const geometry::MeshOptions& mesh);
 
-// "order 6, h = 0.058, wall 0.00095, near-wall 0.01": a viscous mesh in one phrase.
-std::string mesh_text(const geometry::MeshOptions& mesh);
-
 // Defaults where the settings leave 0 (docs/viscous.md, "Discretisation and solver"): order 6, interior size d/8
 // (d the smallest dimension; sections: the geometry's default), first wall layer Ek^{1/2} (capped at the interior
 // size), anisotropic layers up to 10 Ek^{1/2} but at most half the interior size for spheres, spheroids and

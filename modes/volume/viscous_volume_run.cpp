@@ -1,5 +1,6 @@
 #include "viscous_volume_run.hpp"
 
+#include "machine_memory.hpp"
 #include "mesh_broadcast.hpp"
 #include "petsc_handles.hpp"
 #include "volume_forms.hpp"
@@ -9,7 +10,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include <unistd.h>
 
 #include <fmt/format.h>
 
@@ -29,7 +29,7 @@ void refuse_beyond_memory(std::size_t unknowns, bool layered) {
   MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
   const double per_unknown = ranks == 1 ? (layered ? 1.3e5 : 9e4) : 9e4 * ranks;  // all ranks on this machine
   const double need = per_unknown * static_cast<double>(unknowns);
-  const double have = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
+  const double have = machine_memory_bytes();
   if (have > 0 && need > 0.9 * have)
     throw std::runtime_error(fmt::format("the 3-D viscous mesh has {} unknowns, about {:.0f} GB for the factorisation "
                                          "on {} rank(s), more than this machine's {:.0f} GB: use a larger --mesh-size "

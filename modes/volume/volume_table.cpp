@@ -1,5 +1,6 @@
 #include "volume_table.hpp"
 
+#include "machine_memory.hpp"
 #include "mesh_broadcast.hpp"
 
 #include "convergence.hpp"
@@ -15,7 +16,6 @@
 #include <stdexcept>
 
 #include <fmt/format.h>
-#include <unistd.h>
 
 namespace rc::modes {
 namespace {
@@ -85,7 +85,7 @@ void add_volume_bands(ModeTable& t, const VolumeSurvey& survey, double lambda_fl
 void refuse_beyond_memory(std::size_t unknowns) {
   constexpr double kBytesPerUnknown = 1.3e5;
   const double need = kBytesPerUnknown * static_cast<double>(unknowns) * (1 + 0.6 * (world_ranks() - 1));
-  const double have = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
+  const double have = machine_memory_bytes();
   if (have > 0 && need > have)
     throw std::runtime_error(fmt::format("the 3-D mesh has {} unknowns, about {:.0f} GB for the survey on {} rank(s), "
                                          "more than this machine's {:.0f} GB: use a larger --mesh-size, a --wall-size or "

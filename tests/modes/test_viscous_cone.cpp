@@ -36,7 +36,9 @@ std::vector<OffsetResponse> cone_response(const geometry::ShapeSpec& shape, doub
   o.order = 0;  // the viscous default, P6/P5
   o.size = size;
   o = viscous_mesh_defaults(shape, kConeEkman, o);
-  if (walls != Walls::as_defaults) EXPECT_GT(o.wall_layer, 0) << "the default mesh should have wall layers";
+  if (walls != Walls::as_defaults) {
+    EXPECT_GT(o.wall_layer, 0) << "the default mesh should have wall layers";
+  }
   if (walls == Walls::graded) o.wall_layer = 0;
   const ViscousForms forms = assemble_cavity_forms(shape, o, kConeEkman, PETSC_COMM_SELF);
   ForcedResponse response(forms);

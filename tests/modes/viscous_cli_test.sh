@@ -31,6 +31,10 @@ expect_error "wall size without --ekman" "applies with --ekman only" "$BIN" sphe
 # (5 s), not killed by the system half-way.
 expect_error "viscous mesh beyond the machine's memory" "more than this machine's" "$BIN" section \
   "$here/../../data/sections/shell.geo" --ekman 1e-6 --target 1.0 -o out.h5
+# The same mesh as a forced response served to chain-rom confirm (its mesh study's finer levels): refused after meshing,
+# before the assembly, where the 30 %-full sphere's P5 reference was killed by the system at 24 GB (docs/trust.md).
+expect_error "served response beyond the machine's memory" "more than 90 % of this machine's" "$BIN" response section \
+  "$here/../../data/sections/shell.geo" --ekman 1e-6 --serve
 # --fields with --ekman: the damped modes' complex fields, checked against the table (check_viscous_fields.py).
 if "$BIN" sphere --radius 1 --ekman 1e-3 --modes 1 --no-convergence-check --fields \
      -o vfields.h5 > vfields.txt 2>&1 && [ -f vfields.xdmf ] && grep -q "mode0 V_imag" vfields.xdmf &&
