@@ -14,7 +14,7 @@ constexpr double kBytesPerViscousUnknown = 1.2e4;
 long most_viscous_unknowns(double share);
 
 // Throws std::runtime_error with one line (the mesh, its size, the memory it needs, what to change) when `copies`
-// factorisations of `real_unknowns` would pass 90 % of this machine's memory. `mesh` names the mesh ("order 5, h =
+// factorisations of `real_unknowns` would pass 90 % of the memory this machine has free now (available_memory_bytes). `mesh` names the mesh ("order 5, h =
 // 0.008, ..."). Called after meshing and before assembly, so that a forced response or a table is refused up front.
 void refuse_viscous_beyond_memory(long real_unknowns, long copies, const std::string& mesh);
 
