@@ -197,7 +197,7 @@ else
   bad "Krylov table at its point limit: $(tail -1 cap.err)"
 fi
 # Too few samples: the fit errs between them, samples are added where it does, and the table is made.
-if "$BIN" response sphere --radius 1 --ekman 1e-2 "${small_response[@]}" --sigma -1.5:2:11 --fit -o refit.h5 > refit.txt 2> refit.err &&
+if "$BIN" response sphere --radius 1 --ekman 1e-2 "${small_response[@]}" --sigma -1.5:2:11 --fit --max-fit-error 1e-6 -o refit.h5 > refit.txt 2> refit.err &&
    grep -q "every other of 19 real samples in \[-1.5, 2\] (11 given, 1 refinements where the fit erred)" refit.txt; then
   ok "response fit refines its samples where it errs ($(grep -o 'max error between the window.s samples [0-9.e+-]*' refit.txt))"
 else
