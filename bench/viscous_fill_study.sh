@@ -7,6 +7,9 @@
 # docs/trust.md's viscous rows come from it.
 #   bash bench/viscous_fill_study.sh "sphere --radius 1" 0.6 9.05192e-7 [BUILD_DIR] [OUT]
 #   (the 60 %-full sphere: about 8 minutes idle on 2 cores, 11 GB at most; smaller liquids need finer references)
+# REFERENCE_DIVISOR (default 4): the reference's interior size is the table's over it; 3 where the quarter's P4 mesh
+# does not fit in memory (the annular tank at 30 %: 1.9 million real unknowns, refused up front). Run it alone: a
+# level that fits beside another job's tables may not.
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 SHAPE=${1:?usage: viscous_fill_study.sh SHAPE_ARGS FILL EKMAN [BUILD_DIR] [OUT]}
@@ -47,7 +50,7 @@ t=$(now)
 "$ROM" confirm scene.toml --json --cavity-modes "$MODES" > confirm.txt 2> confirm.log || true
 confirm_s=$(since "$t")
 t=$(now)
-fine=$(python3 -c "print($h / 4)")
+fine=$(python3 -c "print($h / ${REFERENCE_DIVISOR:-4})")
 "$ROM" confirm scene.toml --json --order 4 --mesh-size "$fine" --refine-by order --cavity-modes "$MODES" > reference.txt \
   2> reference.log || true
 reference_s=$(since "$t")
