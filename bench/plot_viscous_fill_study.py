@@ -2,7 +2,7 @@
 """The viscous fill study's rows (bench/results/viscous_fill_study.csv, from bench/viscous_fill_study.sh) as one plot:
 for each tank, fill and Ekman number with a reference, the relative distance of `spectrum`'s decay (the table) and of
 `confirm`'s (with its bar) from the reference, against the 2 % the verdict uses. The latest row of each case is taken;
-rows whose reference failed are drawn against their confirm's own level where the CSV has none (left out here).
+rows whose confirm or reference gave no decay are left out.
 
     python3 bench/plot_viscous_fill_study.py [CSV] [PNG]   (default docs/figures/viscous_fill_study.png)
 """

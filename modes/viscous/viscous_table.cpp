@@ -10,7 +10,6 @@
 #include "viscous_fields.hpp"
 #include "viscous_memory.hpp"
 #include "viscous_mesh.hpp"
-#include "machine_memory.hpp"
 
 #include <fmt/format.h>
 
@@ -20,7 +19,6 @@
 #include <limits>
 #include <numeric>
 #include <stdexcept>
-
 
 namespace rc::modes {
 namespace {
@@ -113,11 +111,16 @@ ViscousMode continue_mode(const ViscousForms& forms, double lambda0, double E0, 
   });
 }
 
-// A mesh too large for the machine (thrown before its assembly): a refinement round is allowed 60 % of the machine's
-// memory (all ranks together), the first mesh — the one the user asked for — 90 % (viscous_memory.hpp).
+// A refinement round's mesh too large for the machine (thrown before its assembly): a round is allowed 60 % of the
+// machine's memory (all ranks together), and the table is then written without it, with a note.
 struct BeyondMemory : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+
+// What solve_targets does with a mesh beyond memory: the mesh the user asked for is refused in one line against the
+// memory free now (viscous_memory.hpp), a refinement round throws BeyondMemory, and a mesh coarser than one that was
+// solved is not checked.
+enum class MemoryLimit { refuse, round, unchecked };
 
 // Shares out the targets' rows solved on their own ranks (split: rank r solved every ranks-th target from r): the
 // scalars summed over the ranks, and with keep_block each row's block vector broadcast from its rank, so that every
@@ -163,17 +166,19 @@ void share_split_rows(std::vector<ViscousMode>& rows, bool blocks) {
 // One damped mode per target (continue_mode). Under mpirun with several targets and no fields the targets, not the
 // matrices, are shared out: each rank assembles the forms on its own (PETSC_COMM_SELF) and solves every ranks-th
 // target (measured: MUMPS's factorisation of one matrix does not scale on this machine's two ranks, docs/benchmarks.md
-// "Complex factorisation"). With most_unknowns > 0, a mesh of more unknowns (each rank's, times the ranks that hold a
-// copy) throws BeyondMemory before anything is assembled.
+// "Complex factorisation"). `limit` says what a mesh beyond memory (each rank's unknowns times the ranks that hold a
+// copy) meets before anything is assembled (MemoryLimit).
 Solved solve_targets(const geometry::ShapeSpec& shape, geometry::MeshOptions& mesh, double centroid_z,
                      const ViscousTableSettings& s, const std::vector<double>& targets,
                      const std::vector<double>& energies,
-                     const std::function<void(std::size_t, std::size_t)>& progress, long most_unknowns = 0) {
+                     const std::function<void(std::size_t, std::size_t)>& progress, MemoryLimit limit) {
   const int ranks = world_ranks();
   const bool split = ranks > 1 && targets.size() > 1 && !s.solve.keep_vector;
   TaylorHoodSpace space(mesh_on_root([&] { return viscous_mesh(shape, mesh); }, PETSC_COMM_WORLD));
   const long copies = split ? ranks : 1;
-  if (most_unknowns > 0 && 2L * space.size() * copies > most_unknowns)
+  if (limit == MemoryLimit::refuse) refuse_viscous_beyond_memory(2L * space.size(), copies, mesh_text(mesh));
+  const long most = most_viscous_unknowns(0.6);
+  if (limit == MemoryLimit::round && most > 0 && 2L * space.size() * copies > most)
     throw BeyondMemory(fmt::format("{} real unknowns{}, about {:.1f} GB", 2L * space.size(),
                                    split ? fmt::format(" on each of {} ranks", ranks) : std::string(),
                                    2.0 * space.size() * copies * kBytesPerViscousUnknown / 1e9));
@@ -412,7 +417,7 @@ struct Rounds {
       Solved next;
       try {
         next = solve_targets(shape, finer, ideal.centroid_z, s, targets, energies, progress(label),
-                             most_viscous_unknowns(0.6));
+                             MemoryLimit::round);
       } catch (const BeyondMemory& e) {
         lines.note(fmt::format("{} not made: its mesh ({}) has {}, more than 60 % of this machine's memory", label,
                            mesh_text(finer), e.what()));
@@ -451,15 +456,8 @@ ModeTable compute_viscous_table(const geometry::ShapeSpec& shape, const ViscousT
 
   Progress lines(report);  // at least every 5 s, with the time left (progress.hpp)
   const Rounds rounds{shape, ideal, s, lines};
-  Solved fine;
-  try {
-    fine = solve_targets(shape, mesh, ideal.centroid_z, s, targets, energies, rounds.progress("viscous"),
-                         most_viscous_unknowns(0.9));
-  } catch (const BeyondMemory& e) {  // refused in one line rather than killed by the system half-way
-    throw std::runtime_error(fmt::format("the viscous mesh ({}) has {}, more than this machine's {:.0f} GB: use a "
-                                         "larger --mesh-size or --wall-size (a sphere or spherical shell: cavity-modes "
-                                         "shell, docs/spherical.md)", mesh_text(mesh), e.what(), machine_memory_bytes() / 1e9));
-  }
+  Solved fine = solve_targets(shape, mesh, ideal.centroid_z, s, targets, energies, rounds.progress("viscous"),
+                              MemoryLimit::refuse);
   drop_repeats(fine, targets, energies, report);
 
   ModeTable t = viscous_rows(ideal, fine, s.ekman, mesh);
@@ -474,7 +472,7 @@ ModeTable compute_viscous_table(const geometry::ShapeSpec& shape, const ViscousT
     check.solve.keep_vector = false;
     check.solve.keep_block = false;
     const Solved ref = solve_targets(shape, coarse, ideal.centroid_z, check, targets, energies,
-                                     rounds.progress("convergence check"));
+                                     rounds.progress("convergence check"), MemoryLimit::unchecked);
     add_viscous_convergence(t, fine, ref,
                             fmt::format("order {} with the interior and wall sizes doubled (h = {:.3g}, wall {:.3g})",
                                         coarse.order, coarse.size, coarse.wall_size),

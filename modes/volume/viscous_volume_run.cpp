@@ -10,7 +10,6 @@
 #include <cmath>
 #include <stdexcept>
 
-
 #include <fmt/format.h>
 
 namespace rc::modes {
