@@ -93,12 +93,11 @@ void ComplexLu::run(int job, const char* phase) {
 
 // This rank's complex entries of the block matrix: equation i's row 2i holds Re S_ij at column 2j, row 2i + 1 holds
 // Im S_ij there (the odd columns repeat them). The pattern is the union of the two rows' even columns.
-void ComplexLu::extract(Mat block) {
+ComplexLu::Entries ComplexLu::read(Mat block) const {
   PetscInt lo = 0, hi = 0;
   petsc_check(MatGetOwnershipRange(block, &lo, &hi), "MatGetOwnershipRange");
   if (lo % 2 != 0 || hi % 2 != 0) throw std::logic_error("ComplexLu: a complex unknown straddles two ranks");
-  std::vector<int> rows, cols;
-  std::vector<std::complex<double>> values;
+  Entries out;
   std::vector<std::pair<PetscInt, std::complex<double>>> line;
   const bool lower_only = mumps_->id.sym == 2;
   for (PetscInt r = lo; r < hi; r += 2) {
@@ -115,24 +114,52 @@ void ComplexLu::extract(Mat block) {
     std::sort(line.begin(), line.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     for (std::size_t k = 0; k < line.size(); ++k) {
       if (lower_only && line[k].first > r / 2) continue;  // LDLᵀ reads the lower triangle only
-      if (k > 0 && line[k].first == line[k - 1].first) { values.back() += line[k].second; continue; }
-      rows.push_back(static_cast<int>(r / 2 + 1));
-      cols.push_back(static_cast<int>(line[k].first + 1));
-      values.push_back(line[k].second);
+      if (k > 0 && line[k].first == line[k - 1].first) { out.values.back() += line[k].second; continue; }
+      out.rows.push_back(static_cast<int>(r / 2 + 1));
+      out.cols.push_back(static_cast<int>(line[k].first + 1));
+      out.values.push_back(line[k].second);
     }
   }
-  if (analysed_ && (rows != rows_ || cols != cols_)) analysed_ = false;  // a new pattern: analyse again
-  rows_ = std::move(rows);
-  cols_ = std::move(cols);
-  values_ = std::move(values);
+  return out;
 }
 
 void ComplexLu::factor(Mat block) {
   PetscInt n = 0;
   petsc_check(MatGetSize(block, &n, nullptr), "MatGetSize");
-  extract(block);
+  Entries e = read(block);
+  if (analysed_ && (e.rows != rows_ || e.cols != cols_)) analysed_ = false;  // a new pattern: analyse again
+  rows_ = std::move(e.rows);
+  cols_ = std::move(e.cols);
+  values_ = std::move(e.values);
+  factor_numerically(n);
+}
+
+std::vector<std::complex<double>> ComplexLu::entries(Mat block) const {
+  if (!analysed_) throw std::logic_error("ComplexLu::entries before factor");
+  const Entries e = read(block);
+  std::vector<std::complex<double>> out(rows_.size());
+  // Both lists run row by row with sorted columns: one merge walk.
+  std::size_t at = 0;
+  for (std::size_t k = 0; k < e.rows.size(); ++k) {
+    while (at < rows_.size() && (rows_[at] < e.rows[k] || (rows_[at] == e.rows[k] && cols_[at] < e.cols[k]))) ++at;
+    if (at == rows_.size() || rows_[at] != e.rows[k] || cols_[at] != e.cols[k])
+      throw std::logic_error("ComplexLu::entries: the matrix has an entry outside the factored pattern");
+    out[at] = e.values[k];
+  }
+  return out;
+}
+
+void ComplexLu::factor(std::vector<std::complex<double>> values) {
+  if (!analysed_ || values.size() != rows_.size())
+    throw std::logic_error("ComplexLu::factor(values): no analysed pattern of this size");
+  values_ = std::move(values);
+  factor_numerically(block_size_);
+}
+
+void ComplexLu::factor_numerically(PetscInt block_size) {
+  block_size_ = block_size;
   ZMUMPS_STRUC_C& id = mumps_->id;
-  id.n = static_cast<int>(n / 2);
+  id.n = static_cast<int>(block_size / 2);
   id.nnz_loc = static_cast<MUMPS_INT8>(rows_.size());
   id.irn_loc = rows_.data();
   id.jcn_loc = cols_.data();
@@ -146,31 +173,41 @@ void ComplexLu::factor(Mat block) {
   factored_ = true;
 }
 
-void ComplexLu::solve(Vec b, Vec x, bool transposed) {
+void ComplexLu::solve(Vec b, Vec x, bool transposed) { solve(std::vector<Vec>{b}, std::vector<Vec>{x}, transposed); }
+
+// Rank 0 gathers every right-hand side into one column-major array (its (Re, Im) pairs the complex entries) that MUMPS
+// solves in place, all columns in one pass over the factors; the columns are then scattered back.
+void ComplexLu::solve(const std::vector<Vec>& b, const std::vector<Vec>& x, bool transposed) {
   if (!factored_) throw std::logic_error("ComplexLu::solve before factor");
-  if (gather_.get() == nullptr) petsc_check(VecScatterCreateToZero(b, gather_.out(), gathered_.out()), "VecScatterCreateToZero");
-  petsc_check(VecScatterBegin(gather_, b, gathered_, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
-  petsc_check(VecScatterEnd(gather_, b, gathered_, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
+  if (b.size() != x.size() || b.empty()) throw std::logic_error("ComplexLu::solve: as many solutions as right-hand sides");
+  if (gather_.get() == nullptr) petsc_check(VecScatterCreateToZero(b[0], gather_.out(), gathered_.out()), "VecScatterCreateToZero");
   PetscInt local = 0;
   petsc_check(VecGetLocalSize(gathered_, &local), "VecGetLocalSize");
-  PetscScalar* data = nullptr;
-  petsc_check(VecGetArray(gathered_, &data), "VecGetArray");
+  const std::size_t columns = b.size();
+  std::vector<PetscScalar> all(static_cast<std::size_t>(local) * columns);
+  const auto column = [&](std::size_t k) { return all.data() + k * static_cast<std::size_t>(local); };
+  for (std::size_t k = 0; k < columns; ++k) {
+    petsc_check(VecScatterBegin(gather_, b[k], gathered_, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
+    petsc_check(VecScatterEnd(gather_, b[k], gathered_, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
+    const PetscScalar* data = nullptr;
+    petsc_check(VecGetArrayRead(gathered_, &data), "VecGetArrayRead");
+    std::copy_n(data, local, column(k));
+    petsc_check(VecRestoreArrayRead(gathered_, &data), "VecRestoreArrayRead");
+  }
   ZMUMPS_STRUC_C& id = mumps_->id;
-  // Rank 0 holds the whole vector: its (Re, Im) pairs are the complex right-hand side, solved in place.
-  id.rhs = reinterpret_cast<ZMUMPS_COMPLEX*>(data);
-  id.nrhs = 1;
+  id.rhs = reinterpret_cast<ZMUMPS_COMPLEX*>(all.data());
+  id.nrhs = static_cast<int>(columns);
   id.lrhs = static_cast<int>(local / 2);
   icntl(id, 9) = transposed ? 0 : 1;  // MUMPS: 1 solves S x = b, anything else Sᵀ x = b
-  std::string error;
-  try {
-    run(3, "solve");
-  } catch (const std::runtime_error& e) {
-    error = e.what();
+  run(3, "solve");
+  for (std::size_t k = 0; k < columns; ++k) {
+    PetscScalar* data = nullptr;
+    petsc_check(VecGetArray(gathered_, &data), "VecGetArray");
+    std::copy_n(column(k), local, data);
+    petsc_check(VecRestoreArray(gathered_, &data), "VecRestoreArray");
+    petsc_check(VecScatterBegin(gather_, gathered_, x[k], INSERT_VALUES, SCATTER_REVERSE), "VecScatterBegin");
+    petsc_check(VecScatterEnd(gather_, gathered_, x[k], INSERT_VALUES, SCATTER_REVERSE), "VecScatterEnd");
   }
-  petsc_check(VecRestoreArray(gathered_, &data), "VecRestoreArray");
-  if (!error.empty()) throw std::runtime_error(error);
-  petsc_check(VecScatterBegin(gather_, gathered_, x, INSERT_VALUES, SCATTER_REVERSE), "VecScatterBegin");
-  petsc_check(VecScatterEnd(gather_, gathered_, x, INSERT_VALUES, SCATTER_REVERSE), "VecScatterEnd");
 }
 
 }  // namespace rc::modes

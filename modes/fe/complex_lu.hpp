@@ -38,23 +38,41 @@ class ComplexLu {
   // std::runtime_error naming MUMPS's cause (singular, out of memory) when it fails.
   void factor(Mat block);
 
+  // The complex entries of `block` at the pattern of the last factor(Mat), in its order (zero where `block` has none;
+  // its pattern must lie within that one's). With them a pencil's matrices are read once and each new shift combined
+  // entry by entry (shifted_solver.hpp).
+  std::vector<std::complex<double>> entries(Mat block) const;
+
+  // Factors the matrix with these entries (entries()' order) on the pattern of the last factor(Mat), reusing its
+  // ordering and analysis: no sparse matrix is copied or read.
+  void factor(std::vector<std::complex<double>> values);
+
   // x = S⁻¹ b on block vectors (x and b may not alias); with `transposed`, x = S⁻ᵀ b (the plain transpose, not the
   // conjugate: a non-symmetric pencil's left eigenvectors, viscous_eigensolver.hpp). Throws std::runtime_error when
   // MUMPS's solve fails.
   void solve(Vec b, Vec x, bool transposed = false);
+  // x[k] = S⁻¹ b[k] for every k in one MUMPS solve (one pass over the factors for all columns).
+  void solve(const std::vector<Vec>& b, const std::vector<Vec>& x, bool transposed = false);
 
   // MUMPS's INFOG(k) of the last phase (for reports: INFOG(28) the null pivots, INFOG(3) the factors' entries).
   int infog(int k) const;
 
  private:
   struct Mumps;
-  void extract(Mat block);
+  // This rank's complex entries of a block matrix, rows in order and columns sorted within each, 1-based.
+  struct Entries {
+    std::vector<int> rows, cols;
+    std::vector<std::complex<double>> values;
+  };
+  Entries read(Mat block) const;
+  void factor_numerically(PetscInt block_size);
   void run(int job, const char* phase);
   std::unique_ptr<Mumps> mumps_;
   std::string prefix_;
   MPI_Comm comm_;
   std::vector<int> rows_, cols_;  // this rank's entries, 1-based, as MUMPS analysed them
   std::vector<std::complex<double>> values_;
+  PetscInt block_size_ = 0;  // the block matrix's order (twice the complex one)
   bool analysed_ = false, factored_ = false;
   PetscHandle<VecScatter, VecScatterDestroy> gather_;  // block vector → rank 0, made at the first solve
   PVec gathered_;

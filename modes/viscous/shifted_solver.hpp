@@ -10,6 +10,7 @@
 #include "viscous_forms.hpp"
 
 #include <complex>
+#include <vector>
 
 namespace rc::modes {
 
@@ -27,11 +28,14 @@ class ShiftedSolver {
   // dual problem of a pencil that is not complex symmetric, viscous_volume_krylov.hpp). Throws std::runtime_error when
   // the solve fails.
   void solve(Vec b, Vec x, bool transposed = false);
+  // x[k] = S(σ)⁻¹ b[k] for every k in one pass over the factors (complex_lu.hpp).
+  void solve(const std::vector<Vec>& b, const std::vector<Vec>& x);
 
  private:
+  void factor_first(std::complex<double> sigma);
   const ViscousForms& forms_;
-  PMat base_, S_;  // −A on the union pattern; the current σ𝓜 − A
   ComplexLu lu_;
+  std::vector<std::complex<double>> minus_a_, m_, im_;  // −A, 𝓜 and i𝓜 on the factored pattern, after the first σ
   std::complex<double> sigma_;
   bool factored_ = false;
 };
