@@ -4,7 +4,7 @@
 
 namespace rc::modes {
 
-Eigen::MatrixXcd block_product(Mat op, const Eigen::MatrixXcd& W, bool transposed) {
+Eigen::MatrixXcd block_product(Mat op, const Eigen::MatrixXcd& W) {
   Eigen::MatrixXcd out(W.rows(), W.cols());
   if (W.cols() == 0) return out;
   MPI_Comm comm = PetscObjectComm(reinterpret_cast<PetscObject>(op));
@@ -14,10 +14,7 @@ Eigen::MatrixXcd block_product(Mat op, const Eigen::MatrixXcd& W, bool transpose
   PMat right, product;
   petsc_check(MatCreateDense(comm, local_rows, PETSC_DECIDE, PETSC_DETERMINE, columns, data, right.out()),
               "MatCreateDense");
-  if (transposed)
-    petsc_check(MatTransposeMatMult(op, right, MAT_INITIAL_MATRIX, PETSC_DEFAULT, product.out()), "MatTransposeMatMult");
-  else
-    petsc_check(MatMatMult(op, right, MAT_INITIAL_MATRIX, PETSC_DEFAULT, product.out()), "MatMatMult");
+  petsc_check(MatMatMult(op, right, MAT_INITIAL_MATRIX, PETSC_DEFAULT, product.out()), "MatMatMult");
   const PetscScalar* result = nullptr;
   PetscInt lda = 0;
   petsc_check(MatDenseGetLDA(product, &lda), "MatDenseGetLDA");

@@ -5,8 +5,8 @@
 // A block of such columns is, in memory, the real dense matrix of the block vectors side by side (Eigen's column-major
 // complex storage interleaves Re and Im exactly as the block layout does), so a sparse block matrix is applied to all
 // of them at once through PETSc's sparse × dense product: one pass over the matrix for every four columns instead of
-// one per column — the products with 𝓜 and 𝒜 were a third of a P6 Krylov point's time (docs/benchmarks.md,
-// "Krylov point").
+// one per column — the basis's products with 𝓜 and 𝒜 took 2.1 s of a P6 Krylov point's 7.5 s, 1.0 s so
+// (docs/benchmarks.md, "Krylov point").
 #pragma once
 
 #include "petsc_handles.hpp"
@@ -34,7 +34,7 @@ inline void store_pairs(const Eigen::VectorXcd& x, Vec v) {
   petsc_check(VecRestoreArray(v, &a), "VecRestoreArray");
 }
 
-// op · W (or opᵀ · W with `transposed`) for the block matrix op and the complex columns W (this rank's local rows).
-Eigen::MatrixXcd block_product(Mat op, const Eigen::MatrixXcd& W, bool transposed = false);
+// op · W for the block matrix op and the complex columns W (this rank's local rows).
+Eigen::MatrixXcd block_product(Mat op, const Eigen::MatrixXcd& W);
 
 }  // namespace rc::modes

@@ -228,8 +228,8 @@ class Greedy {
 
   // Factors at s, makes each input's Krylov vectors x(s), (S⁻¹𝓜)x(s), … by Arnoldi in 𝓜's inner product (against
   // the point's own vectors), and adds them to the basis as one block; returns R(s) by the first, forced solves. The
-  // inputs' sequences advance together, one solve for all of them per step (a free surface's two inputs: 0.6 s of a
-  // P6 point's 4.6 s saved; docs/benchmarks.md, "Krylov point").
+  // inputs' sequences advance together, one solve for all of them per step (a free surface's two inputs on a P6
+  // mesh: 0.130 s a step against 0.201 s for two solves; docs/benchmarks.md, "Krylov point").
   Eigen::MatrixXcd expand(cd s, int vectors) {
     std::vector<Eigen::VectorXcd> starts;
     const Eigen::MatrixXcd R = forced(s, &starts);

@@ -39,8 +39,8 @@ void ShiftedSolver::factor(std::complex<double> sigma) {
 
 // The first σ is assembled as a sparse matrix (−A on A's pattern, which holds M̂'s and the i𝓜 block's:
 // viscous_forms.cpp), which fixes the pattern; −A, 𝓜 and i𝓜 are then read onto it once, and every later σ is their
-// combination entry by entry (a P6 mesh's sparse copy, two MatAXPY and the reading took 0.6 s of each 2.7 s
-// factorisation; docs/benchmarks.md, "Krylov point").
+// combination entry by entry (on a P6 mesh the sparse copy and two MatAXPY took 0.25 s and the reading 0.3–0.5 s of
+// each 2.7–3.5 s factorisation; docs/benchmarks.md, "Krylov point").
 void ShiftedSolver::factor_first(std::complex<double> sigma) {
   PMat S;
   petsc_check(MatDuplicate(forms_.A, MAT_COPY_VALUES, S.out()), "MatDuplicate");
