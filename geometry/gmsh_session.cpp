@@ -2,6 +2,8 @@
 
 #include <gmsh.h>
 
+#include "gmsh_library.hpp"
+
 #include <stdexcept>
 #include <vector>
 
@@ -24,6 +26,7 @@ std::string one_line(std::string s) {
 }  // namespace
 
 GmshSession::GmshSession() : lock_(gmsh_mutex()) {
+  load_gmsh();  // cavity-modes opens libgmsh only when a command meshes (gmsh_library.hpp)
   outermost_ = depth++ == 0;
   if (!outermost_) {
     std::vector<std::string> log;

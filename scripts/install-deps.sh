@@ -13,6 +13,7 @@ PACKAGES=(
   build-essential cmake pkg-config ninja-build
   libpetsc-real-dev libslepc-real-dev   # PETSc/SLEPc, real scalars (the problem is real symmetric)
   libgmsh-dev                           # gmsh C++ API for meshing meridian sections
+  patchelf                              # cavity-modes opens libgmsh at its first mesh, not at start (modes/CMakeLists.txt)
   libopenblas0-serial                   # optimised BLAS/LAPACK for MUMPS (Debian's alternatives pick it over the
                                         # reference BLAS): viscous LU factorisations 3.5x faster. Serial: the
                                         # threaded build made the dense sum-rule eigensolve 400x less exact

@@ -9,6 +9,7 @@
 // PETSc/SLEPc options (-pep_type ..., -log_view) pass through.
 #include "cavity_table.hpp"
 #include "free_surface.hpp"
+#include "gmsh_library.hpp"
 #include "convergence.hpp"
 #include "command_line.hpp"
 #include "empty_argument.hpp"
@@ -629,6 +630,11 @@ int parse_command_line(CLI::App& app, std::vector<std::string>& words) {
   return -1;
 }
 
+// A command that computes opens gmsh here, before PETSc starts, whether or not it meshes: its libraries then sit at
+// the same place in memory for every such command (a table, and confirm's remake of it), not wherever a first mesh
+// happened to ask for them (geometry/gmsh_library.hpp).
+void open_gmsh_before_computing() { rc::geometry::load_gmsh(); }
+
 // A command that solves on its own inside one PETSc session: `ellipsoid|volume ...`, a 3-D cavity's table
 // (docs/volume.md), and `shell ...`, the sphere or spherical shell by spectral expansion (docs/spherical.md). Neither
 // has a `response` form: `refusal` says why.
@@ -636,6 +642,7 @@ template <class Command>
 int run_in_session(const Command& command, bool response, const char* refusal, std::vector<std::string>& petsc_words,
                    const std::string& command_line) {
   if (response) throw CommandLineError(refusal);
+  open_gmsh_before_computing();
   PetscArguments petsc(petsc_words);
   rc::modes::PetscSession session(&petsc.argc, &petsc.argv);
   return command.run(command_line);
@@ -703,6 +710,7 @@ int run(int argc, char** argv) {
   else check_response_fill(req, viscous, output);
   choose_method(*table_command, method, fields, req);
 
+  open_gmsh_before_computing();
   PetscArguments petsc(args.petsc);
   rc::modes::PetscSession session(&petsc.argc, &petsc.argv);
   if (response) return run_response(req, viscous, is_viscous, viscous_settings, method, output, command_line);

@@ -1,6 +1,7 @@
 // Meridian meshes: exact areas and volumes of the built-in shapes, mesh invariants the FE solver
 // relies on, user sections and one-line errors on bad input.
 #include "meridian_mesh.hpp"
+#include "gmsh_library.hpp"
 
 #include <gmsh.h>
 #include <gtest/gtest.h>
@@ -247,6 +248,7 @@ Physical Surface("fluid") = {1}; Physical Curve("wall") = {1, 2}; Physical Curve
 // A .msh is used as it is: its own order, no remeshing.
 TEST(MeridianMesh, MshSectionKeepsItsOrder) {
   const auto msh = std::filesystem::temp_directory_path() / "rc_geometry_test_capsule.msh";
+  rc::geometry::load_gmsh();  // gmsh called directly, not through a GmshSession
   gmsh::initialize(0, nullptr, false);
   gmsh::option::setNumber("General.Terminal", 0);
   gmsh::open((kSections / "capsule.geo").string());

@@ -10,6 +10,7 @@
 #include "volume_table.hpp"
 #include "volume_velocity.hpp"
 #include "volume_zhukovsky.hpp"
+#include "gmsh_library.hpp"
 
 #include <Eigen/Geometry>
 #include <gmsh.h>
@@ -105,6 +106,7 @@ TEST(VolumeModes, CadFileIsTheClosedForm) {
   const auto exact = modes::ellipsoid_modes(1.0, 0.8, 0.6, 0.0);
   for (const char* name : {"ellipsoid.brep", "ellipsoid.step"}) {
     const std::filesystem::path file = std::filesystem::temp_directory_path() / name;
+    rc::geometry::load_gmsh();  // gmsh called directly, not through a GmshSession
     gmsh::initialize(0, nullptr, false);
     gmsh::model::add("cad");
     const int tag = gmsh::model::occ::addSphere(0, 0, 0, 1);
