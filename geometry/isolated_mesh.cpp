@@ -2,9 +2,11 @@
 
 #include <poll.h>
 #include <signal.h>
+#include <sys/personality.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cstring>
 #include <stdexcept>
@@ -56,6 +58,24 @@ struct Reader {
   }
 };
 
+// The request as bytes, every field of ShapeSpec and MeshOptions in a fixed order (a field added to either must be
+// added here).
+std::string serialise(const ShapeSpec& shape, const MeshOptions& o) {
+  std::string out(1, '\0');
+  const auto put_text = [&out](const std::string& t) { put_vector(out, std::vector<char>(t.begin(), t.end())); };
+  put_text(shape.kind);
+  const std::size_t dims = shape.dims.size();
+  put(out, &dims, sizeof dims);
+  for (const auto& [name, value] : shape.dims) put_text(name), put(out, &value, sizeof value);
+  put_text(shape.file.string());  // as given: the mesher runs in this process's working directory
+  put(out, &o.order, sizeof o.order);
+  for (const double* v : {&o.size, &o.radial_size, &o.wall_size, &o.wall_growth, &o.wall_layer, &o.near_wall_size,
+                          &o.near_wall_growth, &o.band_size, &o.band_width, &o.band_growth})
+    put(out, v, sizeof *v);
+  put_vector(out, o.bands);
+  return out;
+}
+
 MeridianMesh deserialise(const std::string& in) {
   MeridianMesh m;
   Reader r{in};
@@ -71,20 +91,73 @@ MeridianMesh deserialise(const std::string& in) {
   return m;
 }
 
-[[noreturn]] void run_child(int fd, const ShapeSpec& shape, const MeshOptions& options) {
+void deserialise(const std::string& in, ShapeSpec& shape, MeshOptions& o) {
+  Reader r{in};
+  const auto get_text = [&r] {
+    std::vector<char> t;
+    r.get_vector(t);
+    return std::string(t.begin(), t.end());
+  };
+  shape.kind = get_text();
+  std::size_t dims = 0;
+  r.get(&dims, sizeof dims);
+  for (std::size_t i = 0; i < dims && i < 64; ++i) {
+    const std::string name = get_text();
+    r.get(&shape.dims[name], sizeof(double));
+  }
+  shape.file = get_text();
+  r.get(&o.order, sizeof o.order);
+  for (double* v : {&o.size, &o.radial_size, &o.wall_size, &o.wall_growth, &o.wall_layer, &o.near_wall_size,
+                    &o.near_wall_growth, &o.band_size, &o.band_width, &o.band_growth})
+    r.get(v, sizeof *v);
+  r.get_vector(o.bands);
+}
+
+void write_all(int fd, const std::string& out) {
+  for (std::size_t sent = 0; sent < out.size();) {
+    const ssize_t n = write(fd, out.data() + sent, out.size() - sent);
+    if (n <= 0) _exit(3);
+    sent += static_cast<std::size_t>(n);
+  }
+}
+
+// Meshes in this process and writes the result (a mesh, or a status byte 1 and the error's message) to `fd`.
+void mesh_and_send(int fd, const ShapeSpec& shape, const MeshOptions& options) {
   std::string out;
   try {
     out = serialise(mesh_meridian(shape, options));
   } catch (const std::exception& e) {
     out = std::string(1, '\1') + e.what();
   }
-  for (std::size_t sent = 0; sent < out.size();) {
-    const ssize_t n = write(fd, out.data() + sent, out.size() - sent);
-    if (n <= 0) _exit(3);
-    sent += static_cast<std::size_t>(n);
-  }
-  close(fd);
+  write_all(fd, out);
+}
+
+// The forked child. With the mesher program built (RC_MESHER_PATH), it becomes that program, with no environment
+// and the address-space randomisation off: gmsh's BoundaryLayer field orders its layers by heap addresses, and a
+// fresh process with a fixed environment has the same heap on every run, so the same request gives the same mesh
+// whichever process asks, serially or under mpirun (docs/viscous.md, "Reproducible tables"). Without it, the fork
+// meshes itself.
+[[noreturn]] void run_child(int request_fd, int result_fd, const ShapeSpec& shape, const MeshOptions& options) {
+#ifdef RC_MESHER_PATH
+  if (dup2(request_fd, STDIN_FILENO) < 0 || dup2(result_fd, STDOUT_FILENO) < 0) _exit(4);
+  personality(ADDR_NO_RANDOMIZE);
+  char* const argv[] = {const_cast<char*>(RC_MESHER_PATH), nullptr};
+  char* const envp[] = {nullptr};
+  execve(RC_MESHER_PATH, argv, envp);
+  // Not started: the reason as the child's error message, written without allocating (a forked child of a threaded
+  // process may not).
+  const char* parts[] = {"\1cannot run the mesher " RC_MESHER_PATH ": ", std::strerror(errno),
+                         " (build it: cmake --build build --target rc-mesher)"};
+  for (const char* part : parts)
+    if (write(result_fd, part, std::strlen(part)) < 0) break;
+  (void)shape, (void)options;
   _exit(0);
+#else
+  (void)request_fd;
+  mesh_and_send(result_fd, shape, options);
+  close(result_fd);
+  _exit(0);
+#endif
 }
 
 // Everything the child writes until it closes the pipe, or until `seconds` have passed (then false).
@@ -107,22 +180,37 @@ bool read_all(int fd, double seconds, std::string& in) {
 }  // namespace
 
 MeridianMesh mesh_meridian_isolated(const ShapeSpec& shape, const MeshOptions& options, double seconds) {
-  int fds[2];
-  if (pipe(fds) != 0) throw std::runtime_error("could not open a pipe to mesh in a child process");
+  int result[2], request[2];
+  if (pipe(result) != 0) throw std::runtime_error("could not open a pipe to mesh in a child process");
+  if (pipe(request) != 0) {
+    close(result[0]), close(result[1]);
+    throw std::runtime_error("could not open a pipe to mesh in a child process");
+  }
+  const std::string asked = serialise(shape, options);  // before the fork: the child may not allocate
   const pid_t child = fork();
   if (child < 0) {
-    close(fds[0]);
-    close(fds[1]);
+    for (int fd : {result[0], result[1], request[0], request[1]}) close(fd);
     throw std::runtime_error("could not fork a child process to mesh in");
   }
   if (child == 0) {
-    close(fds[0]);
-    run_child(fds[1], shape, options);
+    close(result[0]);
+    close(request[1]);
+    run_child(request[0], result[1], shape, options);
   }
-  close(fds[1]);
+  close(result[1]);
+  close(request[0]);
+  // A mesher that ended before reading its request must not end this process by SIGPIPE: its status says why below.
+  void (*previous)(int) = signal(SIGPIPE, SIG_IGN);
+  for (std::size_t sent = 0; sent < asked.size();) {
+    const ssize_t n = write(request[1], asked.data() + sent, asked.size() - sent);
+    if (n <= 0) break;
+    sent += static_cast<std::size_t>(n);
+  }
+  close(request[1]);
+  signal(SIGPIPE, previous);
   std::string in;
-  const bool finished = read_all(fds[0], seconds, in);
-  close(fds[0]);
+  const bool finished = read_all(result[0], seconds, in);
+  close(result[0]);
   if (!finished) kill(child, SIGKILL);
   int status = 0;
   waitpid(child, &status, 0);
@@ -136,6 +224,28 @@ MeridianMesh mesh_meridian_isolated(const ShapeSpec& shape, const MeshOptions& o
     throw std::runtime_error(where + ": gmsh's child process ended without a mesh");
   if (in[0] == '\1') throw std::runtime_error(in.substr(1));
   return deserialise(in);
+}
+
+int run_mesher(int request_fd, int result_fd) {
+  std::string in;
+  char buffer[1 << 12];
+  for (ssize_t n; (n = read(request_fd, buffer, sizeof buffer)) != 0;) {
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      return 1;
+    }
+    in.append(buffer, static_cast<std::size_t>(n));
+  }
+  ShapeSpec shape;
+  MeshOptions options;
+  try {
+    deserialise(in, shape, options);
+  } catch (const std::exception& e) {
+    write_all(result_fd, std::string(1, '\1') + "the mesher's request: " + e.what());
+    return 0;
+  }
+  mesh_and_send(result_fd, shape, options);
+  return 0;
 }
 
 }  // namespace rc::geometry

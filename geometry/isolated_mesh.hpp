@@ -9,9 +9,15 @@
 
 namespace rc::geometry {
 
-// mesh_meridian(shape, options) in a forked child (POSIX fork; the child calls no MPI and leaves by _exit), its mesh
-// sent back through a pipe. Throws std::runtime_error with mesh_meridian's own message, or saying that gmsh crashed
-// (the signal) or took longer than `seconds`.
+// mesh_meridian(shape, options) in a child process (POSIX fork, then the mesher program, rc-mesher, with no
+// environment and the address-space randomisation off; the child calls no MPI), its mesh sent back through a pipe.
+// The same request then gives the same mesh in every run, whatever the asking process's environment: gmsh's
+// BoundaryLayer field does not otherwise (docs/viscous.md, "Reproducible tables"). Throws std::runtime_error with
+// mesh_meridian's own message, or saying that gmsh crashed (the signal) or took longer than `seconds`.
 MeridianMesh mesh_meridian_isolated(const ShapeSpec& shape, const MeshOptions& options, double seconds);
+
+// The mesher program's work (geometry/mesher_main.cpp): reads one request from `request_fd` to its end, meshes it and
+// writes the mesh (or the error's message) to `result_fd`. Returns the program's exit code.
+int run_mesher(int request_fd, int result_fd);
 
 }  // namespace rc::geometry

@@ -10,14 +10,15 @@
 namespace rc::modes {
 namespace {
 
-// A user's section meshes its layers in a child process, where a crash or a hang of gmsh's BoundaryLayer field
-// becomes an error that the next attempt answers (geometry/isolated_mesh.hpp); the built-in shapes, measured over
-// their whole range, in-process. A layered 2-D mesh takes seconds; a hang is given three minutes.
+// The layers are meshed in a child process of their own (geometry/isolated_mesh.hpp): there the same request gives
+// the same mesh on every run, whatever this process's environment (in-process, gmsh's BoundaryLayer field made three
+// different meshes of one command: docs/viscous.md, "Reproducible tables"), and a crash or a hang of that field on a
+// user's section becomes an error that the next attempt answers. A layered 2-D mesh takes seconds; a hang is given
+// three minutes.
 constexpr double kLayeredMeshSeconds = 180;
 
 geometry::MeridianMesh layered_mesh(const geometry::ShapeSpec& shape, const geometry::MeshOptions& mesh) {
-  if (shape.kind == "section") return geometry::mesh_meridian_isolated(shape, mesh, kLayeredMeshSeconds);
-  return geometry::mesh_meridian(shape, mesh);
+  return geometry::mesh_meridian_isolated(shape, mesh, kLayeredMeshSeconds);
 }
 
 }  // namespace
