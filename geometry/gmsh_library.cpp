@@ -9,7 +9,6 @@
 namespace rc::geometry {
 
 void load_gmsh() {
-#ifdef RC_GMSH_SONAME
   static std::mutex m;
   static bool loaded = false;
   const std::lock_guard<std::mutex> lock(m);
@@ -22,7 +21,6 @@ void load_gmsh() {
                              (why ? why : "unknown reason") + " (install libgmsh-dev: scripts/install-deps.sh)");
   }
   loaded = true;
-#endif
 }
 
 }  // namespace rc::geometry

@@ -101,7 +101,8 @@ void deserialise(const std::string& in, ShapeSpec& shape, MeshOptions& o) {
   shape.kind = get_text();
   std::size_t dims = 0;
   r.get(&dims, sizeof dims);
-  for (std::size_t i = 0; i < dims && i < 64; ++i) {
+  if (dims > 64) throw std::runtime_error("a shape with " + std::to_string(dims) + " dimensions");
+  for (std::size_t i = 0; i < dims; ++i) {
     const std::string name = get_text();
     r.get(&shape.dims[name], sizeof(double));
   }
@@ -132,13 +133,11 @@ void mesh_and_send(int fd, const ShapeSpec& shape, const MeshOptions& options) {
   write_all(fd, out);
 }
 
-// The forked child. With the mesher program built (RC_MESHER_PATH), it becomes that program, with no environment
-// and the address-space randomisation off: gmsh's BoundaryLayer field orders its layers by heap addresses, and a
-// fresh process with a fixed environment has the same heap on every run, so the same request gives the same mesh
-// whichever process asks, serially or under mpirun (docs/viscous.md, "Reproducible tables"). Without it, the fork
-// meshes itself.
-[[noreturn]] void run_child(int request_fd, int result_fd, const ShapeSpec& shape, const MeshOptions& options) {
-#ifdef RC_MESHER_PATH
+// The forked child becomes the mesher program, with no environment and the address-space randomisation off: gmsh's
+// BoundaryLayer field orders its layers by heap addresses, and a fresh process with a fixed environment has the same
+// heap on every run, so the same request gives the same mesh whichever process asks, serially or under mpirun
+// (docs/viscous.md, "Reproducible tables").
+[[noreturn]] void run_child(int request_fd, int result_fd) {
   if (dup2(request_fd, STDIN_FILENO) < 0 || dup2(result_fd, STDOUT_FILENO) < 0) _exit(4);
   personality(ADDR_NO_RANDOMIZE);
   char* const argv[] = {const_cast<char*>(RC_MESHER_PATH), nullptr};
@@ -150,14 +149,7 @@ void mesh_and_send(int fd, const ShapeSpec& shape, const MeshOptions& options) {
                          " (build it: cmake --build build --target rc-mesher)"};
   for (const char* part : parts)
     if (write(result_fd, part, std::strlen(part)) < 0) break;
-  (void)shape, (void)options;
   _exit(0);
-#else
-  (void)request_fd;
-  mesh_and_send(result_fd, shape, options);
-  close(result_fd);
-  _exit(0);
-#endif
 }
 
 // Everything the child writes until it closes the pipe, or until `seconds` have passed (then false).
@@ -195,7 +187,7 @@ MeridianMesh mesh_meridian_isolated(const ShapeSpec& shape, const MeshOptions& o
   if (child == 0) {
     close(result[0]);
     close(request[1]);
-    run_child(request[0], result[1], shape, options);
+    run_child(request[0], result[1]);
   }
   close(result[1]);
   close(request[0]);

@@ -648,6 +648,22 @@ int run_in_session(const Command& command, bool response, const char* refusal, s
   return command.run(command_line);
 }
 
+constexpr const char* kProgramDescription =
+    "cavity-modes: inertial-mode tables (kappa, lambda, E, a, N2, J_zh, coverage) of a rotating "
+    "fluid in an axisymmetric cavity: ideal, or viscous with --ekman (damped modes). "
+    "'cavity-modes response SHAPE ... [--ekman Ek] --sigma FROM:TO:N [--sigma-imag y] -o R.csv' computes the "
+    "fluid's moment response R(sigma) instead (docs/viscous.md, section 6). PETSc/SLEPc options "
+    "(-pep_type, -log_view) pass through.";
+
+// `cavity-modes response SHAPE ...`: the shape's command line, answered with R(sigma) instead of a table. Takes the
+// word out of `words` and says whether it was there.
+bool take_response_word(std::vector<std::string>& words) {
+  if (words.size() < 2 || words[1] != "response") return false;
+  words.erase(words.begin() + 1);
+  words[0] += " response";  // the program's name in --help's usage line: "cavity-modes response sphere"
+  return true;
+}
+
 int run(int argc, char** argv) {
   const std::string command_line = rc::modes::quoted_command_line(std::vector<std::string>(argv, argv + argc));
   if (const std::string empty = rc::empty_argument_error(argc, argv); !empty.empty()) {
@@ -655,17 +671,8 @@ int run(int argc, char** argv) {
     return 2;  // a command-line error, like CLI11's
   }
   auto args = rc::modes::split_arguments(argc, argv);
-  // `cavity-modes response SHAPE ...`: the shape's command line, answered with R(sigma) instead of a table.
-  const bool response = args.ours.size() > 1 && args.ours[1] == "response";
-  if (response) {
-    args.ours.erase(args.ours.begin() + 1);
-    args.ours[0] += " response";  // the program's name in --help's usage line: "cavity-modes response sphere"
-  }
-  CLI::App app{"cavity-modes: inertial-mode tables (kappa, lambda, E, a, N2, J_zh, coverage) of a rotating "
-               "fluid in an axisymmetric cavity: ideal, or viscous with --ekman (damped modes). "
-               "'cavity-modes response SHAPE ... [--ekman Ek] --sigma FROM:TO:N [--sigma-imag y] -o R.csv' computes the "
-               "fluid's moment response R(sigma) instead (docs/viscous.md, section 6). PETSc/SLEPc options "
-               "(-pep_type, -log_view) pass through."};
+  const bool response = take_response_word(args.ours);
+  CLI::App app{kProgramDescription};
   app.require_subcommand(1);
   TableRequest req;
   req.mesh.order = 0;  // the method's default, set below

@@ -71,6 +71,7 @@ TEST(IsolatedMesh, ChildsErrorIsTheMessage) {
 // 70 434 or 69 902 unknowns with another environment (docs/viscous.md, "Reproducible tables"). The mesher program
 // runs with no environment and the address-space randomisation off, so the asking process's environment and heap
 // must not change the mesh: the same layered request, asked again after both changed, gives the same mesh to the bit.
+// (Made in-process by mesh_meridian, the two meshes of this test differ: the same counts, other nodes; measured.)
 TEST(IsolatedMesh, LayeredMeshIsTheSameWhateverTheEnvironment) {
   const ShapeSpec cylinder{"cylinder", {{"radius", 1.0}, {"height", 2.0}}, {}};
   MeshOptions o;
