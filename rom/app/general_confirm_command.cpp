@@ -1,6 +1,7 @@
-// chain-rom confirm on a chain without axial symmetry (docs/rom.md, "Confirmed roots"): its 3-D response tables remade
-// exact at its roots until the roots stop moving (general_confirmation.hpp), the mesh check — the same on tables made
-// again on a coarser mesh (general_mesh_check.hpp) — then one line per root and the verdict with the mesh error.
+// chain-rom confirm on a chain without axial symmetry (docs/rom.md, "Confirmed roots"): its response tables (3-D, or
+// axisymmetric Krylov) remade exact at its roots until the roots stop moving (general_confirmation.hpp), the mesh
+// check — the same on tables made again on a coarser 3-D mesh or a finer meridian one (general_mesh_check.hpp) — then
+// one line per root and the verdict with the mesh error.
 #include "confirm_command.hpp"
 
 #include "general_confirmation.hpp"
@@ -22,7 +23,15 @@ namespace {
 
 constexpr double kCoarsen = 1.5;  // the check's mesh: every element size 1.5 times the table's (general_mesh_check.hpp)
 
-// The check, or why there is none (--refine 0, or a coarse table that could not be made).
+// "against tables on a mesh 1.5 times as coarse" or "against tables one mesh level finer", as the check was made.
+std::string check_mesh_text(const GeneralMeshCheck& check) {
+  if (check.finer) return "on tables one mesh level finer against the tables' own";
+  std::ostringstream os;
+  os << "against tables on a mesh " << check.coarsen << " times as coarse";
+  return os.str();
+}
+
+// The check, or why there is none (--refine 0, or a check's table that could not be made).
 struct MeshCheckOutcome {
   std::optional<GeneralMeshCheck> check;
   std::string not_measured;
@@ -39,7 +48,7 @@ void print_general_json(std::ostream& out, const GeneralConfirmation& c, const M
                              {"moved", c.moved[i]}};
     if (m.check) {
       const MeshErrorEstimate& e = m.check->errors[i];
-      r["coarse"] = {m.check->coarse[i].real(), m.check->coarse[i].imag()};
+      r[m.check->finer ? "finer" : "coarse"] = {m.check->twins[i].real(), m.check->twins[i].imag()};
       r["growth"] = e.growth;
       r["growth_error"] = e.error;
       r["mesh_converged"] = e.converged;
@@ -53,7 +62,8 @@ void print_general_json(std::ostream& out, const GeneralConfirmation& c, const M
   j["rounds"] = c.rounds;
   j["refined_tables"] = c.tables;
   j["mesh_converged"] = m.check ? m.check->all_converged() : false;
-  if (m.check) j["mesh_coarsen"] = m.check->coarsen;
+  if (m.check && m.check->finer) j["mesh_finer_levels"] = 1;
+  else if (m.check) j["mesh_coarsen"] = m.check->coarsen;
   else j["mesh_not_measured"] = m.not_measured;
   j["seconds"] = seconds;
   out << j.dump() << "\n";
@@ -78,20 +88,23 @@ std::string mesh_verdict(const GeneralConfirmation& c, const MeshCheckOutcome& m
   const std::string root = "the root " + complex_text(c.confirmed[worst]);
   if (check.all_converged()) {
     os << "; mesh error: every growth rate within " << 100 * tolerance << " % (largest: " << root << ", "
-       << rate_with_error(check.errors[worst]) << ", against tables on a mesh " << check.coarsen << " times as coarse)";
+       << rate_with_error(check.errors[worst]) << ", " << check_mesh_text(check) << ")";
     return os.str();
   }
   os << "; NOT CONVERGED in the mesh: " << root << "'s " << rate_with_error(check.errors[worst]) << " against the "
      << 100 * tolerance << " % tolerance";
   if (!check.signs_settled()) os << ", and the sign of a growth rate is not settled by the mesh";
-  os << " -- finer 3-D tables: cavity-modes ellipsoid|volume --mesh-size, --wall-size, --order (docs/volume.md §7)";
+  if (check.finer) os << " -- finer tables: cavity-modes response SHAPE --mesh-size, --order, --mesh-level (docs/viscous.md)";
+  else os << " -- finer 3-D tables: cavity-modes ellipsoid|volume --mesh-size, --wall-size, --order (docs/volume.md §7)";
   return os.str();
 }
 
 void print_roots(std::ostream& out, const GeneralConfirmation& c, const MeshCheckOutcome& m, double tolerance) {
   out << "roots sigma in the frame turning with the bodies: the tables' value, confirmed (the tables made exact "
          "there), the last round's move (relative)"
-      << (m.check ? "; the growth rate with its mesh error (against the coarse tables' root)" : "") << "\n";
+      << (!m.check ? "" : m.check->finer ? "; the growth rate on the finer tables with its mesh error (against the tables' root)"
+                                          : "; the growth rate with its mesh error (against the coarse tables' root)")
+      << "\n";
   for (std::size_t i = 0; i < c.confirmed.size(); ++i) {
     out << "  " << complex_text(c.table_roots[i]) << "  ->  " << complex_text(c.confirmed[i]) << "   "
         << std::setprecision(2) << c.moved[i] << (c.moved[i] <= tolerance ? "" : "   NOT CONFIRMED");
@@ -118,7 +131,7 @@ void print_general_text(std::ostream& out, const GeneralConfirmation& c, const M
         << ", the fastest at " << v.growth << " 1/s" << mesh << "\n";
   out << c.tables << (c.tables == 1 ? " table" : " tables") << " remade in " << c.rounds << " round(s) (the files "
       << "replaced: spectrum, run and sweep now give these roots)";
-  if (m.check) out << "; the mesh check's coarse tables in " << m.check->rounds << " round(s)";
+  if (m.check) out << "; the mesh check's " << (m.check->finer ? "finer" : "coarse") << " tables in " << m.check->rounds << " round(s)";
   out << ", " << std::setprecision(3) << seconds << " s\n";
 }
 
@@ -126,10 +139,12 @@ void print_general_text(std::ostream& out, const GeneralConfirmation& c, const M
 // options do that here (docs/rom.md, "Mesh error of confirmed roots").
 void check_general_mesh_options(const Scene& scene, const MeshStudy& study) {
   if (study.base.mesh_size > 0 || study.base.order > 0 || study.by_order || study.refine > 1)
-    throw SceneError(scene.file.string() + ": a chain without axial symmetry checks its 3-D tables' mesh on one mesh "
-                     "1.5 times as coarse (--refine 1, the default, or 0 for none); --mesh-size, --order, --refine-by "
-                     "and --refine 2..3 are for axisymmetric tanks: make finer 3-D tables with cavity-modes "
-                     "ellipsoid|volume --mesh-size, --wall-size, --order (docs/volume.md §7)");
+    throw SceneError(scene.file.string() + ": a chain without axial symmetry checks its tables' mesh on one other mesh "
+                     "(3-D tables 1.5 times as coarse, axisymmetric Krylov tables one level finer: --refine 1, the "
+                     "default, or 0 for none); --mesh-size, --order, --refine-by and --refine 2..3 choose the served "
+                     "forced solves of a chain with axial symmetry: make finer tables instead (cavity-modes "
+                     "ellipsoid|volume --mesh-size, --wall-size, --order, docs/volume.md §7; cavity-modes response SHAPE "
+                     "--mesh-size, --order, --mesh-level, docs/viscous.md)");
 }
 
 }  // namespace
@@ -137,7 +152,7 @@ void check_general_mesh_options(const Scene& scene, const MeshStudy& study) {
 int confirm_general_roots(const Scene& scene, const ConfirmRequest& req, std::ostream& out) {
   const auto t0 = std::chrono::steady_clock::now();
   if (!req.refine_tables)
-    throw SceneError(scene.file.string() + ": a chain without axial symmetry is confirmed by remaking its 3-D response "
+    throw SceneError(scene.file.string() + ": a chain without axial symmetry is confirmed by remaking its response "
                      "tables exact at its roots, which replaces the table files: chain-rom confirm SCENE --refine-tables "
                      "(docs/rom.md, \"Confirmed roots\")");
   check_general_mesh_options(scene, req.mesh);
@@ -154,7 +169,7 @@ int confirm_general_roots(const Scene& scene, const ConfirmRequest& req, std::os
       m.check = check_general_mesh(scene, c.confirmed, req.all, kCoarsen, req.mesh.tolerance, c.spectrum.verdict.noise,
                                    tolerance, binary, scratch.path, req.run, log);
     } catch (const std::runtime_error& e) {
-      m.not_measured = std::string("the coarse tables could not be made: ") + e.what();
+      m.not_measured = std::string("the check's tables could not be made: ") + e.what();
     }
   }
   int unconfirmed = 0;

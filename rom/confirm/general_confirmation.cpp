@@ -4,6 +4,7 @@
 #include "driven_frequencies.hpp"
 #include "general_chain.hpp"
 #include "recorded_command.hpp"
+#include "table_refinement.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -20,6 +21,9 @@ using cd = std::complex<double>;
 bool is_response_table_3d(const rc::ModeTable& t) {
   return t.viscous() && t.response_fit() && t.volume_cavity.present();
 }
+
+// The viscous tables the chain without axial symmetry can remake: 3-D response tables and axisymmetric Krylov ones.
+bool is_remakeable(const rc::ModeTable& t) { return is_response_table_3d(t) || is_krylov_table(t); }
 
 struct TankTable {
   std::string key;  // the scene's key, body[k].cavity[j]
@@ -106,17 +110,42 @@ std::vector<std::string> remake_arguments(const rc::ModeTable& t, const std::vec
   return args;
 }
 
-// Remakes every viscous table exact at the tank frequencies s = f/ω_k of the frequencies f at which its bodies' tanks
-// are driven (driven_frequencies.hpp); the file replaced only when cavity-modes succeeded.
+// The table frequencies at which an axisymmetric tank on a body spinning at ω is driven at the turning-frame
+// frequencies f: its m = 1 response at f and at −f̄ (a body without axial symmetry mixes the two), each s = f/ω as
+// (26)'s table takes it (tank_frequencies: conjugated when ω < 0).
+std::vector<cd> axisymmetric_frequencies(double omega, const std::vector<cd>& f) {
+  std::vector<cd> sigma;
+  for (const cd& x : f) sigma.insert(sigma.end(), {x - omega, -std::conj(x) - omega});
+  return tank_frequencies(omega, sigma);
+}
+
+// The arguments that remake `t` into `output`: exact at `s` (none: as it was), at another Ekman number (`ekman` > 0),
+// and on another mesh of its family — a 3-D table `coarsen` times as coarse, an axisymmetric one `finer` levels up.
+std::vector<std::string> remake_any(const rc::ModeTable& t, const std::vector<cd>& s, const fs::path& output,
+                                    const fs::path& scratch, double ekman = 0, double coarsen = 1, int finer = 0) {
+  if (is_response_table_3d(t)) return remake_arguments(t, s, output, scratch, ekman, coarsen);
+  return remake_response_arguments(t, {s, ekman, finer}, output, scratch);
+}
+
+// Remakes every viscous table exact at the tank frequencies of the frequencies f at which its bodies' tanks are driven
+// (driven_frequencies.hpp): s = f/ω_k for a 3-D table (its rows hold λ > 0, the conjugates the rest), s = f/ω_k and
+// −f̄/ω_k for an axisymmetric one; the file replaced only when cavity-modes succeeded.
 void remake_tables(const Scene& scene, const GeneralChain& g, const std::vector<std::vector<cd>>& driven,
                    const std::string& binary, const fs::path& scratch, const ProgramRunner& run, std::ostream& log) {
   for (const auto& [file, bodies] : viscous_tables(scene)) {
+    const rc::ModeTable t = rc::read_mode_table(file);
     std::vector<cd> s;
-    for (const int k : bodies)
-      for (const cd& f : driven[static_cast<std::size_t>(k)]) s.push_back(f / g.spins[k]);
+    for (const int k : bodies) {
+      const std::vector<cd>& f = driven[static_cast<std::size_t>(k)];
+      if (!is_response_table_3d(t)) {
+        for (const cd& x : axisymmetric_frequencies(g.spins[k], f)) s.push_back(x);
+        continue;
+      }
+      for (const cd& x : f) s.push_back(x / g.spins[k]);
+    }
     const fs::path tmp = refining_name(file);
     std::vector<std::string> args{binary};
-    for (auto& a : remake_arguments(rc::read_mode_table(file), s, tmp, scratch)) args.push_back(std::move(a));
+    for (auto& a : remake_any(t, s, tmp, scratch)) args.push_back(std::move(a));
     log << "  " << file.string() << ": R made exact at " << s.size() << " frequencies" << std::endl;
     run_and_replace(args, file, tmp, scratch, run);
   }
@@ -161,18 +190,23 @@ bool has_viscous_tables(const Scene& scene) { return !viscous_tables(scene).empt
 void remake_at_ekman(const fs::path& table, double ekman, const fs::path& output, const std::string& binary,
                      const fs::path& scratch, const ProgramRunner& run) {
   std::vector<std::string> args{binary};
-  for (auto& a : remake_arguments(rc::read_mode_table(table), {}, refining_name(output), scratch, ekman))
+  for (auto& a : remake_any(rc::read_mode_table(table), {}, refining_name(output), scratch, ekman))
     args.push_back(std::move(a));
   run_and_replace(args, output, refining_name(output), scratch, run);
 }
 
-void remake_coarser(const fs::path& table, double coarsen, const fs::path& output, const std::string& binary,
-                    const fs::path& scratch, const ProgramRunner& run) {
+void remake_on_another_mesh(const fs::path& table, double coarsen, const fs::path& output, const std::string& binary,
+                             const fs::path& scratch, const ProgramRunner& run) {
   const rc::ModeTable t = rc::read_mode_table(table);
+  std::vector<std::string> args{binary};
+  if (is_krylov_table(t)) {
+    for (auto& a : remake_any(t, {}, refining_name(output), scratch, 0, 1, 1)) args.push_back(std::move(a));
+    run_and_replace(args, output, refining_name(output), scratch, run);
+    return;
+  }
   if (!(t.mesh_h > 0 && t.mesh_h_wall > 0))
     throw std::runtime_error(table.string() + ": the table records no interior and wall element sizes to coarsen");
-  std::vector<std::string> args{binary};
-  for (auto& a : remake_arguments(t, {}, refining_name(output), scratch, 0, coarsen)) args.push_back(std::move(a));
+  for (auto& a : remake_any(t, {}, refining_name(output), scratch, 0, coarsen)) args.push_back(std::move(a));
   run_and_replace(args, output, refining_name(output), scratch, run);
 }
 
@@ -180,10 +214,11 @@ void check_general_refinable(const Scene& scene) {
   for (const auto& [key, file, body] : tank_tables(scene)) {
     const rc::ModeTable t = rc::read_mode_table(file);
     if (!t.viscous()) continue;
-    if (!is_response_table_3d(t))
+    if (!is_remakeable(t))
       throw SceneError(scene.file.string() + ": " + key + ".table " + file.string() + ": a chain without axial "
-                       "symmetry is confirmed by remaking its viscous tanks' 3-D response tables (cavity-modes "
-                       "ellipsoid|volume --ekman Ek --sigma 0:TO:N -o FILE.h5), and this is not one");
+                       "symmetry is confirmed by remaking its viscous tanks' response tables (3-D: cavity-modes "
+                       "ellipsoid|volume --ekman Ek --sigma 0:TO:N -o FILE.h5; axisymmetric, Krylov: cavity-modes "
+                       "response SHAPE --ekman Ek --sigma FROM:TO:N -o FILE.h5), and this is not one");
     if (t.command_line.empty())
       throw SceneError(scene.file.string() + ": " + key + ".table " + file.string() + ": it records no command line");
   }

@@ -1,8 +1,10 @@
 // Roots of a chain without axial symmetry confirmed with the fluid's own response (chain-rom confirm SCENE
-// --refine-tables; docs/rom.md, "Confirmed roots"). Its viscous tanks are 3-D response tables (docs/volume.md §7, "The
-// response table"), whose R is the fluid's own to rounding at the frequencies they were made exact at: each round
-// remakes every such table (cavity-modes ellipsoid|volume ... --exact-at, from its recorded command line) exact at the
-// tank frequencies s = σ/ω0 of the selected roots σ (the frame turning at ω0), and solves the chain again. A root
+// --refine-tables; docs/rom.md, "Confirmed roots"). Its viscous tanks are response tables — 3-D ones (docs/volume.md §7,
+// "The response table") or axisymmetric Krylov ones (docs/viscous.md, "Krylov response table") —, whose R is the
+// fluid's own to rounding at the frequencies they were made exact at: each round remakes every such table (cavity-modes
+// ellipsoid|volume ... or cavity-modes response SHAPE ... with --exact-at, from its recorded command line) exact at the
+// tank frequencies s = σ/ω0 of the selected roots σ (the frame turning at ω0; an axisymmetric tank's m = 1 response at
+// −σ̄/ω0 too), and solves the chain again. A root
 // the remade tables leave where they were made exact satisfies the characteristic equation with the fluid's own R:
 // the rounds stop when every selected root moves by less than the tolerance (relative to max(|σ|, |ω0|)). At two
 // spins a root is a Floquet exponent and each tank is driven at the frequencies of its harmonics: the tables are made
@@ -31,20 +33,22 @@ struct GeneralConfirmation {
   GeneralSpectrum spectrum;                       // the last round's, every root
 };
 
-// Throws SceneError naming the key when a viscous tank's table is not a 3-D response table with a recorded command
-// line (checked before any work).
+// Throws SceneError naming the key when a viscous tank's table is neither a 3-D response table nor an axisymmetric
+// Krylov one, or records no command line (checked before any work).
 void check_general_refinable(const Scene& scene);
 
-// Makes the 3-D response table `table` again from its recorded command line on a mesh `coarsen` times as coarse (its
-// interior, wall and near-wall element sizes; any --exact-at dropped) into `output`, through output.refining.h5.
-// Throws std::runtime_error naming it when cavity-modes fails or the table records no element sizes.
-void remake_coarser(const std::filesystem::path& table, double coarsen, const std::filesystem::path& output,
+// Makes the viscous table `table` again from its recorded command line on another mesh of its family (any --exact-at
+// dropped) into `output`, through output.refining.h5: a 3-D response table on a mesh `coarsen` times as coarse (its
+// interior, wall and near-wall element sizes), an axisymmetric Krylov table one mesh level finer (--mesh-level, every
+// size halved). Throws std::runtime_error naming it when cavity-modes fails or a 3-D table records no element sizes.
+void remake_on_another_mesh(const std::filesystem::path& table, double coarsen, const std::filesystem::path& output,
                     const std::string& binary, const std::filesystem::path& scratch, const ProgramRunner& run);
 
 // True when some tank of the scene has a viscous table.
 bool has_viscous_tables(const Scene& scene);
 
-// Makes the 3-D response table `table` again from its recorded command line at the Ekman number `ekman` (any
+// Makes the response table `table` (3-D, or axisymmetric Krylov) again from its recorded command line at the Ekman
+// number `ekman` (any
 // --exact-at dropped) into `output`, through output.refining.h5. Throws std::runtime_error naming it when cavity-modes
 // fails.
 void remake_at_ekman(const std::filesystem::path& table, double ekman, const std::filesystem::path& output,

@@ -9,6 +9,11 @@
 // over-estimate once the layers are resolved (P2 and above converge faster), and what covers the under-resolved
 // tables users start from (measured: a P2 table's nutation decay 0.02102 ± 0.0031 where finer tables converge to 0.0231;
 // docs/rom.md, "Mesh error of confirmed roots"). A rate whose bar exceeds the tolerance is NOT CONVERGED.
+//
+// An axisymmetric Krylov table's meridian mesh halves at a quarter of the cost of a 3-D one, so its check goes up as
+// (26)'s mesh study does: the table made again one level finer (cavity-modes response --mesh-level, every size halved),
+// the roots confirmed on it, and the rate reported the finer tables' with the difference as its bar (two levels at
+// ratio 2). A scene whose viscous tanks mix the two kinds has no one direction to check in: refused.
 #pragma once
 
 #include "general_confirmation.hpp"
@@ -25,19 +30,22 @@
 namespace rc::rom {
 
 struct GeneralMeshCheck {
+  bool finer = false;   // the check's tables one level finer (axisymmetric Krylov tables), else `coarsen` as coarse
   double coarsen = 1.5;
-  std::vector<std::complex<double>> coarse;  // each confirmed root's twin on the coarse tables
-  std::vector<MeshErrorEstimate> errors;     // per confirmed root: {coarse, table mesh}
-  int rounds = 0;                            // the coarse tables' confirmation rounds
+  std::vector<std::complex<double>> twins;  // each confirmed root's twin on the check's tables
+  std::vector<MeshErrorEstimate> errors;    // per confirmed root, from the coarser of the two meshes to the finer
+  int rounds = 0;                           // the check's tables' confirmation rounds
   bool all_converged() const;
   bool signs_settled() const;
 };
 
 // The check for the roots `confirmed` (confirm_general's with the same `all`, on the scene's own tables, which are left
-// as they are): the coarse tables made in `scratch`, their roots confirmed to `root_tolerance` (relative step), each
+// as they are): the check's tables made in `scratch` (3-D ones `coarsen` times as coarse, axisymmetric ones a level
+// finer), their roots confirmed to `root_tolerance` (relative step), each
 // confirmed root paired with the nearest coarse one and its rate
 // judged against `tolerance` (relative) with `floor` (1/s, the spectrum's noise) as an absolute allowance. One line
-// per table and round to `log`. Throws std::runtime_error when a coarse table cannot be made.
+// per table and round to `log`. Throws std::runtime_error when a check's table cannot be made, or the viscous tables
+// mix 3-D and axisymmetric ones.
 GeneralMeshCheck check_general_mesh(const Scene& scene, const std::vector<std::complex<double>>& confirmed, bool all,
                                     double coarsen, double tolerance, double floor, double root_tolerance,
                                     const std::string& binary, const std::filesystem::path& scratch,

@@ -12,12 +12,12 @@ namespace fs = std::filesystem;
 namespace {
 using cd = std::complex<double>;
 
-bool is_krylov_table(const rc::ModeTable& t) {
-  return t.viscous() && t.normalisation.find("rational Krylov space") != std::string::npos;
+// The options whose value the remade table's request replaces: the output and the exact frequencies always, the Ekman
+// number when it is given anew, the mesh level when it is raised.
+bool is_replaced(const std::string& name, const ResponseRemake& remake) {
+  return name == "-o" || name == "--output" || name == "--exact-at" || (remake.ekman > 0 && name == "--ekman") ||
+         (remake.finer > 0 && name == "--mesh-level");
 }
-
-// The options whose value is replaced (the output and the exact frequencies).
-bool is_replaced(const std::string& name) { return name == "-o" || name == "--output" || name == "--exact-at"; }
 
 }  // namespace
 
@@ -33,8 +33,12 @@ std::vector<cd> tank_frequencies(double omega, const std::vector<cd>& roots) {
   return out;
 }
 
-std::vector<std::string> refine_arguments(const rc::ModeTable& t, const std::vector<cd>& exact_at,
-                                          const fs::path& output, const fs::path& scratch) {
+bool is_krylov_table(const rc::ModeTable& t) {
+  return t.viscous() && t.normalisation.find("rational Krylov space") != std::string::npos;
+}
+
+std::vector<std::string> remake_response_arguments(const rc::ModeTable& t, const ResponseRemake& remake,
+                                                   const fs::path& output, const fs::path& scratch) {
   if (!is_krylov_table(t))
     throw std::runtime_error("it is not a Krylov response table (remake it with cavity-modes response ... -o FILE.h5 "
                              "without --fit or --galerkin to refine it)");
@@ -45,6 +49,7 @@ std::vector<std::string> refine_arguments(const rc::ModeTable& t, const std::vec
   std::vector<std::string> args{"response", w[2]};
   const bool section = w[2] == "section";
   bool have_file = false;
+  int level = 0;
   for (std::size_t i = 3; i < w.size(); ++i) {
     const std::string& word = w[i];
     if (word.size() < 2 || word[0] != '-') {  // positional: the section's file
@@ -54,15 +59,25 @@ std::vector<std::string> refine_arguments(const rc::ModeTable& t, const std::vec
     }
     const auto eq = word.find('=');
     const std::string name = word.substr(0, eq);
-    if (!is_replaced(name)) {
+    if (!is_replaced(name, remake)) {
       args.push_back(word);
       continue;
     }
+    const std::string value = eq != std::string::npos ? word.substr(eq + 1) : i + 1 < w.size() ? w[i + 1] : "";
+    if (name == "--mesh-level") level = std::stoi(value);
     if (eq == std::string::npos) ++i;  // its value is the next word
   }
   if (section && !have_file) throw std::runtime_error("its recorded command line names no section file");
-  args.insert(args.end(), {"--exact-at", complex_list(exact_at), "-o", output.string()});
+  if (remake.ekman > 0) args.insert(args.end(), {"--ekman", number_text(remake.ekman)});
+  if (remake.finer > 0) args.insert(args.end(), {"--mesh-level", std::to_string(level + remake.finer)});
+  if (!remake.exact_at.empty()) args.insert(args.end(), {"--exact-at", complex_list(remake.exact_at)});
+  args.insert(args.end(), {"-o", output.string()});
   return args;
+}
+
+std::vector<std::string> refine_arguments(const rc::ModeTable& t, const std::vector<cd>& exact_at,
+                                          const fs::path& output, const fs::path& scratch) {
+  return remake_response_arguments(t, {exact_at, 0, 0}, output, scratch);
 }
 
 fs::path refining_name(const fs::path& file) { return file.parent_path() / (file.stem().string() + ".refining.h5"); }

@@ -23,6 +23,26 @@ namespace rc::rom {
 // negative spin: s = (sigma + omega)/omega, conjugated when omega < 0), without repeats.
 std::vector<std::complex<double>> tank_frequencies(double omega, const std::vector<std::complex<double>>& roots);
 
+// True for a Krylov response table (cavity-modes response SHAPE ... -o FILE.h5 without --fit or --galerkin), the one
+// kind of axisymmetric table that can be made exact at given frequencies.
+bool is_krylov_table(const rc::ModeTable& table);
+
+// How a Krylov response table is remade from its recorded command line: exact at `exact_at` (none: as it was), at
+// another Ekman number (`ekman` > 0), on its mesh family's level `finer` levels up (every element size halved per
+// level: cavity-modes response --mesh-level).
+struct ResponseRemake {
+  std::vector<std::complex<double>> exact_at;
+  double ekman = 0;
+  int finer = 0;
+};
+
+// The arguments after the program's name that remake the Krylov response table `table` as `remake` says, written to
+// `output` (a section's file from the text the table stores, into `scratch`). Throws std::runtime_error with one line
+// when the table is not a Krylov response table or its command line cannot be read back.
+std::vector<std::string> remake_response_arguments(const rc::ModeTable& table, const ResponseRemake& remake,
+                                                   const std::filesystem::path& output,
+                                                   const std::filesystem::path& scratch);
+
 // The arguments after the program's name that remake `table` — a Krylov response table — with R exact at
 // `exact_at`, written to `output`: its recorded command line with -o and any earlier --exact-at replaced (a
 // section's file from the text the table stores, into `scratch`). Throws std::runtime_error with one line when the

@@ -38,7 +38,7 @@ struct GeneralChain {
   std::vector<std::pair<int, double>> coverage;  // per tank, body by body: (body, its kept share of the sum rule)
   std::vector<std::string> not_converged;        // per partially filled 3-D tank with unsettled rows: what to say
   bool dissipative = false;                  // joint or axial friction, a viscous tank: roots leave the real axis
-  double response_window = 0;                // the narrowest 3-D response table's window (rad/s, |Re σ|); 0: none
+  double response_window = 0;                // the narrowest response table's window (rad/s, |Re σ|); 0: none
   int dim_q() const { return (axial ? 3 : 2) * n; }
   bool periodic() const { return period > 0; }  // Floquet: floquet.hpp
   int n_modes() const { return static_cast<int>(modes.size()); }

@@ -65,8 +65,8 @@ Eigen::Matrix3cd row_coupling(const rc::ModeTable& t, std::size_t l, const RowCo
 // Every refusal of a tank here ends with what the chain does take instead.
 const char* const kTanksTaken =
     "; it takes, on or off a body's axis, a full tank's ideal or damped-mode table (axisymmetric or 3-D: cavity-modes "
-    "SHAPE|ellipsoid|volume [--ekman Ek] -o T.h5) or a 3-D response table (cavity-modes ellipsoid|volume --ekman Ek "
-    "--sigma A:B:N -o T.h5), and on a fixed chain's first body a partially filled tank, ideal, on its axis "
+    "SHAPE|ellipsoid|volume [--ekman Ek] -o T.h5) or a response table (cavity-modes ellipsoid|volume --ekman Ek "
+    "--sigma A:B:N -o T.h5, or axisymmetric: cavity-modes response SHAPE --ekman Ek --sigma A:B:N -o T.h5), and on a fixed chain's first body a partially filled tank, ideal, on its axis "
     "(axisymmetric or 3-D) or off it (3-D: cavity-modes ellipsoid --fill F --axis-distance D -o T.h5) (docs/rom.md, "
     "\"Bodies and tanks without axial symmetry\")";
 
@@ -76,9 +76,17 @@ void require_modal(const Scene& scene, const std::string& w, const CavitySpec& c
   if (t.viscous() && t.volume_cavity.present() && spin < 0)
     fail(scene, w + ".table", "a 3-D viscous table holds the modes for a positive spin, and spin -w mirrors the "
                               "cavity: turn the scene's axis over (a positive spin) or mesh the mirrored cavity");
-  // A 3-D response table's rows are its reduced response's poles, each a damped mode of rank one (docs/volume.md §7,
-  // "The response table"); an axisymmetric response fit's are taken by (26) only.
-  if (t.response_fit() && !t.volume_cavity.present()) fail(scene, w + ".table", "a response-fit table's poles" + later);
+  // A response table's rows are its reduced response's poles, each a damped mode of rank one: a 3-D one's
+  // (docs/volume.md §7, "The response table"), and an axisymmetric one's (Krylov, Galerkin or fitted: pole λ + i·decay,
+  // residue E + i·E_imag, docs/viscous.md "Response fit"), whose window must hold both signs of frequency (a body
+  // without axial symmetry drives a tank's m = 1 response at σ and −σ̄ alike).
+  if (t.response_fit() && !t.volume_cavity.present() && !(t.fit_lo < 0 && t.fit_hi > 0)) {
+    std::ostringstream os;
+    os << "an axisymmetric response table's window [" << t.fit_lo << ", " << t.fit_hi << "] (s = σ/ω in the body's "
+       << "frame) must hold s = 0: in the chain without axial symmetry a tank is driven at both signs of frequency "
+       << "(make it with --sigma FROM:TO:N, FROM < 0 < TO)" << kTanksTaken;
+    fail(scene, w + ".table", os.str());
+  }
   if (cav.static_correction) fail(scene, w + ".static_correction", "the static correction" + later);
   if (cav.galerkin) fail(scene, w + ".reduction", "the Galerkin reduction" + later);
   if (!cav.companion.empty()) fail(scene, w + ".companion", "a companion table" + later);
@@ -192,6 +200,15 @@ void add_damped_row_mode(const Scene& scene, const std::string& w, int k, int ro
   tank.modes.push_back({k, row, lambda, lambda_table, decay_table, c, c_left});
 }
 
+// A response table's window in the turning frame (|Re σ|, rad/s) within which it is the fluid's R: a 3-D table's
+// [0, fit_hi] (its rows hold λ > 0, their conjugates the rest); an axisymmetric one's s ∈ [fit_lo, fit_hi] for both
+// σ/ω and −σ̄/ω (require_modal). 0: not a response table.
+double response_window(const rc::ModeTable& t, double spin) {
+  if (!t.response_fit()) return 0;
+  const double s = t.volume_cavity.present() ? t.fit_hi : std::min(-t.fit_lo, t.fit_hi);
+  return s * std::abs(spin);
+}
+
 // The frozen fluid about its centroid and its λ = 0 weight, in the table's units.
 void table_tensors(const rc::ModeTable& t, Eigen::Matrix3d& inertia, Eigen::Matrix3d& geostrophic) {
   if (t.volume_cavity.present()) {
@@ -293,7 +310,7 @@ GeneralTank general_tank(const Scene& scene, int k, const CavitySpec& cav, const
   }
   tank.geostrophic = unit * geostrophic;
   if (t.volume_free_surface.present()) add_fill_about_joint(t, about.c, unit, tank);
-  if (t.response_fit()) tank.window = t.fit_hi * std::abs(spin);
+  tank.window = response_window(t, spin);
   if (cav.bands) {
     tank.coverage = add_band_modes(scene, w, k, t, unit, tank);
   } else {

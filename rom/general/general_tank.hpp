@@ -40,7 +40,7 @@ struct GeneralTank {
   Eigen::Matrix3d inertia;  // the frozen fluid's inertia tensor about O_k (kg m²), body axes
   Eigen::Matrix3d geostrophic;  // the λ = 0 weight (kg m², real symmetric): fluid that does not follow the body
   std::vector<GeneralMode> modes;
-  double window = 0;        // a 3-D response table's: |σ| (rad/s, turning frame) up to which it is the fluid's R; 0: none
+  double window = 0;        // a response table's: |Re σ| (rad/s, turning frame) up to which it is the fluid's R; 0: none
   double coverage = 0;      // the kept rows' E (and the λ = 0 weight's transverse half) over the table's sum rule
   // A partially filled 3-D tank's kept rows whose λ did not settle (their bound above the survey's tolerance: a dense
   // cluster's weight, docs/volume.md §8), and the largest such bound relative to max(|λ|, 0.1).

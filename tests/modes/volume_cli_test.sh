@@ -650,7 +650,7 @@ print("nutation decay %.5f +- %.2g (NOT CONVERGED at 2 %%), a 1.5 times finer ta
 else
   bad "chain-rom confirm: the mesh check of a 3-D table: $(tail -3 mesh.txt meshfine.txt mconf.err mconf.json)"
 fi
-expect_error "confirm --order on a chain without axial symmetry" "3-D tables' mesh on one mesh 1.5 times as coarse" \
+expect_error "confirm --order on a chain without axial symmetry" "its tables' mesh on one other mesh (3-D tables 1.5 times as coarse" \
   "$ROM" confirm mtop.toml --refine-tables --order 3 --cavity-modes "$BIN"
 fi  # confirm_mesh
 
