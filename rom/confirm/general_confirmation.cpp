@@ -151,7 +151,7 @@ void remake_tables(const Scene& scene, const GeneralChain& g, const std::vector<
   }
 }
 
-// The roots to confirm: one of each pair σ, −σ̄ (Re σ ≤ 0), not at σ = 0, within the response tables' window; all of
+// The roots to confirm: one of each pair σ, −σ̄ (Re σ ≤ 0), not neutral (σ = 0, −ω0), within the response tables' window; all of
 // them, or those a verdict rests on — the growing ones and the bodies' roots, taken as those that decay more slowly
 // than half the tanks' slowest pole (a fluid root decays about as fast as its pole) —, or else the least damped one.
 std::vector<cd> selected_roots(const GeneralChain& g, const GeneralSpectrum& sp, bool all) {
@@ -160,8 +160,12 @@ std::vector<cd> selected_roots(const GeneralChain& g, const GeneralSpectrum& sp,
   for (const GeneralMode& m : g.modes)
     if (m.damped()) slowest_pole = std::min(slowest_pole, m.lambda.imag());
   std::vector<cd> candidates, chosen;
+  // Neutral roots are left out as the verdict leaves them: σ = 0, and σ = ±ω0 where a free chain's rigid turn in
+  // space sits in the turning frame (general_system.cpp); no table moves them.
+  const double spin = std::abs(g.spin);
   for (const cd& r : sp.roots) {
-    if (std::abs(r) <= v.tolerance || r.real() > 0) continue;
+    const bool neutral = std::abs(r) <= v.tolerance || (!g.periodic() && std::abs(r + spin) <= v.tolerance);
+    if (neutral || r.real() > 0) continue;
     if (g.response_window > 0 && std::abs(r.real()) > g.response_window) continue;
     candidates.push_back(r);
     if (-r.imag() > v.noise || r.imag() < 0.5 * slowest_pole) chosen.push_back(r);
