@@ -41,7 +41,7 @@ struct SweepRequest {
   SweepAxis a1;
   std::optional<SweepAxis> a2;
   bool by_forced_solves = false;  // a key that moves a viscous tank's Ek, or --confirm
-  bool general = false;           // ... on a chain without axial symmetry: by remade 3-D response tables
+  bool general = false;           // ... on a chain without axial symmetry: by remade response tables
 };
 
 SweepRequest resolve(const SweepOptions& o) {
@@ -67,7 +67,7 @@ SweepRequest resolve(const SweepOptions& o) {
   if (moves && two)
     throw SweepError("a key that moves a viscous tank's Ekman number sweeps one value at a time (no --param2): "
                      "each point serves forced solves at its own Ek");
-  // A chain without axial symmetry has no served forced solves: its 3-D response tables are remade instead
+  // A chain without axial symmetry has no served forced solves: its response tables are remade instead
   // (general_confirmed_sweep.hpp).
   if (moves || o.confirm) {
     TableCache tables;
@@ -84,7 +84,7 @@ SweepRequest resolve(const SweepOptions& o) {
 
 // The line under the sweep's summary: whether the mesh study converged every point's growth rates, and where not.
 std::string mesh_summary(const std::vector<ConfirmedSweepPoint>& points, const SweepOptions& o, bool general) {
-  if (general) return "mesh error NOT MEASURED: a chain without axial symmetry's 3-D tables have no mesh study yet";
+  if (general) return "mesh error NOT MEASURED: a sweep of a chain without axial symmetry has no mesh study yet (confirm --refine-tables at a point has)";
   if (o.study.refine == 0) return "mesh error NOT MEASURED (--refine 0: the roots on the tables' mesh only)";
   std::ostringstream os;
   os << std::setprecision(3);

@@ -89,7 +89,7 @@ std::vector<ConfirmedSweepPoint> run_general_confirmed_sweep(const Scene& base, 
                                                              const ProgramRunner& run, std::ostream& log) {
   check_general_refinable(base);
   const bool remake = moves_viscous_ekman(base, axis.key);
-  log << "chain-rom sweep: a chain without axial symmetry, each point's roots confirmed with its 3-D response tables "
+  log << "chain-rom sweep: a chain without axial symmetry, each point's roots confirmed with its response tables "
       << (remake ? "made again at the point's Ekman number and " : "") << "remade exact at its roots (docs/rom.md, "
       << "\"Spin sweeps of chains without axial symmetry\"); the scene's table files are left as they are" << std::endl;
   const ScratchFolder scratch;

@@ -1,5 +1,5 @@
-// A sweep of a chain without axial symmetry whose viscous tanks are 3-D response tables (docs/rom.md, "Spin sweeps of
-// chains without axial symmetry"): the roots at each point confirmed with the fluid's own response, by remade tables.
+// A sweep of a chain without axial symmetry whose viscous tanks are response tables, 3-D or axisymmetric Krylov ones
+// (docs/rom.md, "Spin sweeps of chains without axial symmetry"): the roots at each point confirmed with the fluid's own response, by remade tables.
 // A key that moves a viscous tank's Ekman number (body[k].spin, system.spin_factor, a cavity's scale) makes each such
 // table again at the point's Ek from its recorded command line; `sweep --confirm` with any other key starts each
 // point from a copy of the scene's table. Then the point's tables are remade exact at its roots until they stop
@@ -19,8 +19,8 @@ namespace rc::rom {
 
 // Runs the sweep point by point (each point's cavity-modes runs are the work); one line per point to `log`. A point
 // whose tables cannot be made is reported in its row (not evaluated); a scene whose tables cannot be remade at all
-// (not 3-D response tables, no recorded command line) throws SceneError. At two spins each point is confirmed as
-// confirm_general does (driven_frequencies.hpp).
+// (neither 3-D nor axisymmetric Krylov response tables, no recorded command line) throws SceneError. At two spins each
+// point is confirmed as confirm_general does (driven_frequencies.hpp).
 std::vector<ConfirmedSweepPoint> run_general_confirmed_sweep(const Scene& base, const SweepAxis& axis,
                                                              const std::string& cavity_modes, double tolerance,
                                                              const ProgramRunner& run, std::ostream& log);
