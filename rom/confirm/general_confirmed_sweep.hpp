@@ -1,5 +1,6 @@
 // A sweep of a chain without axial symmetry whose viscous tanks are response tables, 3-D or axisymmetric Krylov ones
-// (docs/rom.md, "Spin sweeps of chains without axial symmetry"): the roots at each point confirmed with the fluid's own response, by remade tables.
+// (docs/rom.md, "Spin sweeps of chains without axial symmetry"): the roots at each point confirmed with the fluid's
+// own response, by remade tables.
 // A key that moves a viscous tank's Ekman number (body[k].spin, system.spin_factor, a cavity's scale) makes each such
 // table again at the point's Ek from its recorded command line; `sweep --confirm` with any other key starts each
 // point from a copy of the scene's table. Then the point's tables are remade exact at its roots until they stop
