@@ -438,8 +438,9 @@ std::string verdict_with_dissipation(const ChainModel& m, const Spectrum& sp) {
 // One body's line of the spectrum's header: its totals, then what its tank is and how its table stands.
 static void print_body_line(std::ostream& os, const ChainModel& m, const Spectrum& sp, int k) {
   const BodyModel& b = m.bodies[k];
-  os << "  body " << k + 1 << ": m = " << b.m << " kg, A' = " << m.M(k, k) << ", C = " << b.C
-     << ", a = " << m.a[k] << ", spin = " << b.omega << " rad/s";
+  os << "  body " << k + 1 << ": m = " << b.m << " kg, A' = " << m.M(k, k)
+     << (m.free_chain ? " (free chain: the motion about the system's centre of mass, docs/free-chain.md)" : "")
+     << ", C = " << b.C << ", a = " << m.a[k] << ", spin = " << b.omega << " rad/s";
   if (b.has_fluid)
     os << ", fluid " << b.m_f << " kg, A_f = " << b.A_f << ", J_zh = " << b.J_zh
        << ", kept sum E = " << b.E_kept << " (coverage " << b.coverage << ")"
