@@ -196,7 +196,9 @@ std::vector<GeneralBody> general_bodies(const Scene& scene, TableCache& tables) 
       b.com = (b.mass * b.com + tank.mass * tank.centroid.z()) / (b.mass + tank.mass);
       b.mass += tank.mass;
       first_moment += tank.mass * tank.centroid.head<2>();
-      mass_arm += tank.mass * tank.centroid.norm();
+      // The scale the balance is judged on: the tank's arm and its own size (a meshed centroid errs by a fraction of
+      // the tank, wherever it sits: two tanks on the axis have no arm).
+      mass_arm += tank.mass * (tank.centroid.norm() + cav.scale);
       cut_liquid = cut_liquid || tank.cut_liquid;
       b.inertia += tank.inertia;
       b.tanks.push_back(std::move(tank));
