@@ -230,6 +230,23 @@ double relative(std::complex<double> a, std::complex<double> b) { return std::ab
 
 }  // namespace
 
+// The default interior element size of a filled sphere or cylinder at low Ekman numbers. The forced flow's internal
+// shear layers (beams from the corners and the critical latitudes, about Ek^{1/3} R wide away from their sources:
+// Kerswell 1995, "On the internal shear layers spawned by the critical regions in oscillatory Ekman boundary layers")
+// need interior elements a few times their width at order 6; d/8 stops resolving them below an Ekman number that
+// depends on the shape. Measured at the spacecraft's nutation (s = −0.2437; docs/viscous.md, "Interior size at low
+// Ekman numbers"): Im R of the full cylinder (2h/a = 2) at Ek = 1e-6 3.3 % off at h = 1/8, 0.9 % at 0.088, 0.01 % from
+// the mesh with every size halved at 1/16; the full sphere at Ek = 1e-7 2.5 %, 0.14 %, 7.5e-6 from the spectral
+// method's at the same sizes. So h = C Ek^{1/3} R, C = 6.25 (cylinder) and 13.5 (sphere): 1/16 at those Ekman numbers,
+// d/8 above 8e-6 and 7.9e-7. Partially filled tanks and rings keep d/8 (measured converged there: docs/trust.md).
+namespace {
+double shear_layer_interior_size(const geometry::ShapeSpec& shape, double ekman) {
+  const bool filled = !shape.dims.count("free_radius") && !shape.dims.count("inner_radius");
+  const double C = !filled ? 0.0 : shape.kind == "cylinder" ? 6.25 : shape.kind == "sphere" ? 13.5 : 0.0;
+  return C > 0 ? C * std::cbrt(ekman) * shape.dims.at("radius") : std::numeric_limits<double>::infinity();
+}
+}  // namespace
+
 geometry::MeshOptions viscous_mesh_defaults(const geometry::ShapeSpec& shape, double ekman,
                                             geometry::MeshOptions mesh) {
   if (!(ekman >= kMinEkman && ekman <= kMaxEkman))
@@ -241,7 +258,7 @@ geometry::MeshOptions viscous_mesh_defaults(const geometry::ShapeSpec& shape, do
   if (mesh.order == 0) mesh.order = 6;
   if (mesh.order < 2) throw std::runtime_error("--ekman needs --order >= 2 (Taylor-Hood P_k/P_(k-1) elements)");
   if (mesh.radial_size > 0) throw std::runtime_error("--radial-size (structured meshes) does not apply with --ekman");
-  if (mesh.size == 0 && d > 0) mesh.size = d / 8;
+  if (mesh.size == 0 && d > 0) mesh.size = std::min(d / 8, shear_layer_interior_size(shape, ekman));
   if (mesh.wall_size == 0) mesh.wall_size = layer;
   if (mesh.size > 0) mesh.wall_size = std::min(mesh.wall_size, mesh.size);
   // Layers at most half as thick as the interior elements (gmsh's layers invert otherwise); beyond them the
