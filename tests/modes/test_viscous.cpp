@@ -317,13 +317,18 @@ TEST(ViscousRefinement, RoundsRefineTheZoneThenEverySize) {
   const rc::geometry::ShapeSpec cylinder{"cylinder", {{"radius", 1.0}, {"height", 2.0}}, {}};
   const double ek = 1e-6, z = std::cbrt(ek);
   rc::geometry::MeshOptions m = viscous_mesh_defaults(cylinder, ek, {});
+  // A filled cylinder's default interior below Ek = 8e-6 is 6.25 Ek^{1/3} R, not d/8 (docs/viscous.md, "Interior size at
+  // low Ekman numbers"): 1/16 here; at 1e-5, d/8.
+  EXPECT_NEAR(m.size, 6.25 * z, 1e-15);
+  EXPECT_DOUBLE_EQ(viscous_mesh_defaults(cylinder, 1e-5, {}).size, 0.125);
+  const double interior = m.size;
   m.near_wall_size = 0;
   ASSERT_GT(m.wall_layer, 0);
   std::vector<double> zones;
   for (int round = 0; round < 3; ++round) {
     m = refined_viscous_mesh(cylinder, ek, m);
     zones.push_back(m.near_wall_size);
-    EXPECT_DOUBLE_EQ(m.size, 0.125);  // the interior untouched while the zone refines
+    EXPECT_DOUBLE_EQ(m.size, interior);  // the interior untouched while the zone refines
   }
   EXPECT_NEAR(zones[0], 2 * z, 1e-15);
   EXPECT_NEAR(zones[1], z, 1e-15);
