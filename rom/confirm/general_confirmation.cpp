@@ -151,8 +151,8 @@ void remake_tables(const Scene& scene, const GeneralChain& g, const std::vector<
   }
 }
 
-// The roots to confirm: one of each pair σ, −σ̄ (Re σ ≤ 0), not neutral (σ = 0, −ω0), within the response tables' window; all of
-// them, or those a verdict rests on — the growing ones and the bodies' roots, taken as those that decay more slowly
+// The roots to confirm: one of each pair σ, −σ̄ (Re σ ≤ 0), not neutral (σ = 0, −ω0), within the response tables'
+// window; all of them, or those a verdict rests on — the growing ones and the bodies' roots, taken as those that decay more slowly
 // than half the tanks' slowest pole (a fluid root decays about as fast as its pole) —, or else the least damped one.
 std::vector<cd> selected_roots(const GeneralChain& g, const GeneralSpectrum& sp, bool all) {
   const Verdict& v = sp.verdict;
@@ -202,15 +202,12 @@ void remake_at_ekman(const fs::path& table, double ekman, const fs::path& output
 void remake_on_another_mesh(const fs::path& table, double coarsen, const fs::path& output, const std::string& binary,
                              const fs::path& scratch, const ProgramRunner& run) {
   const rc::ModeTable t = rc::read_mode_table(table);
-  std::vector<std::string> args{binary};
-  if (is_krylov_table(t)) {
-    for (auto& a : remake_any(t, {}, refining_name(output), scratch, 0, 1, 1)) args.push_back(std::move(a));
-    run_and_replace(args, output, refining_name(output), scratch, run);
-    return;
-  }
-  if (!(t.mesh_h > 0 && t.mesh_h_wall > 0))
+  const bool axisymmetric = is_krylov_table(t);  // one level finer; a 3-D table `coarsen` times as coarse
+  if (!axisymmetric && !(t.mesh_h > 0 && t.mesh_h_wall > 0))
     throw std::runtime_error(table.string() + ": the table records no interior and wall element sizes to coarsen");
-  for (auto& a : remake_any(t, {}, refining_name(output), scratch, 0, coarsen)) args.push_back(std::move(a));
+  std::vector<std::string> args{binary};
+  for (auto& a : remake_any(t, {}, refining_name(output), scratch, 0, axisymmetric ? 1 : coarsen, axisymmetric ? 1 : 0))
+    args.push_back(std::move(a));
   run_and_replace(args, output, refining_name(output), scratch, run);
 }
 

@@ -66,7 +66,8 @@ Eigen::Matrix3cd row_coupling(const rc::ModeTable& t, std::size_t l, const RowCo
 const char* const kTanksTaken =
     "; it takes, on or off a body's axis, a full tank's ideal or damped-mode table (axisymmetric or 3-D: cavity-modes "
     "SHAPE|ellipsoid|volume [--ekman Ek] -o T.h5) or a response table (cavity-modes ellipsoid|volume --ekman Ek "
-    "--sigma A:B:N -o T.h5, or axisymmetric: cavity-modes response SHAPE --ekman Ek --sigma A:B:N -o T.h5), and on a fixed chain's first body a partially filled tank, ideal, on its axis "
+    "--sigma A:B:N -o T.h5, or axisymmetric: cavity-modes response SHAPE --ekman Ek --sigma A:B:N -o T.h5), and on "
+    "a fixed chain's first body a partially filled tank, ideal, on its axis "
     "(axisymmetric or 3-D) or off it (3-D: cavity-modes ellipsoid --fill F --axis-distance D -o T.h5) (docs/rom.md, "
     "\"Bodies and tanks without axial symmetry\")";
 
@@ -273,6 +274,16 @@ void require_on_the_spin_axis(const Scene& scene, const CavitySpec& cav, const s
   }
 }
 
+// A table scaled to the scene must stay finite: its inertias, and each mode's frequency and couplings.
+void require_finite(const Scene& scene, const std::string& w, const GeneralTank& tank) {
+  if (!tank.inertia.allFinite() || !(tank.mass > 0) || !tank.geostrophic.allFinite())
+    fail(scene, w + ".table", "non-physical table (volume or inertia not positive and finite)");
+  for (const GeneralMode& md : tank.modes)
+    if (!std::isfinite(std::abs(md.lambda)) || !md.c.allFinite() || !md.c_left.allFinite())
+      fail(scene, w + ".table", "a mode scaled to the body's spin and scale overflows double precision (row " +
+                                    std::to_string(md.table_row + 1) + ")");
+}
+
 }  // namespace
 
 GeneralTank general_tank(const Scene& scene, int k, const CavitySpec& cav, const std::string& w,
@@ -328,12 +339,7 @@ GeneralTank general_tank(const Scene& scene, int k, const CavitySpec& cav, const
     }
     tank.coverage = covered;
   }
-  if (!tank.inertia.allFinite() || !(tank.mass > 0) || !tank.geostrophic.allFinite())
-    fail(scene, w + ".table", "non-physical table (volume or inertia not positive and finite)");
-  for (const GeneralMode& md : tank.modes)
-    if (!std::isfinite(std::abs(md.lambda)) || !md.c.allFinite() || !md.c_left.allFinite())
-      fail(scene, w + ".table", "a mode scaled to the body's spin and scale overflows double precision (row " +
-                                    std::to_string(md.table_row + 1) + ")");
+  require_finite(scene, w, tank);
   return tank;
 }
 
