@@ -18,6 +18,13 @@ struct AxialModes {
 AxialModes modes_of(const AxialChain& a) {
   AxialModes m;
   m.c_half = a.C.cwiseSqrt();
+  // Without friction every rate is zero, whatever the inertias (a shell of none among them: its liquid does not follow
+  // its spin, docs/physics.md §3, "Axial rotations"; the model refuses it where a friction or a moment would act).
+  if (a.D.cwiseAbs().maxCoeff() == 0) {
+    m.mu = Eigen::VectorXd::Zero(a.C.size());
+    m.V = Eigen::MatrixXd::Identity(a.C.size(), a.C.size());
+    return m;
+  }
   const Eigen::VectorXd inv = m.c_half.cwiseInverse();
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(inv.asDiagonal() * a.D * inv.asDiagonal());
   m.mu = es.eigenvalues();
@@ -54,10 +61,10 @@ bool AxialChain::moves() const {
   return D.cwiseAbs().maxCoeff() > 0 || moment.cwiseAbs().maxCoeff() > 0 || harmonic.cwiseAbs().maxCoeff() > 0;
 }
 
-AxialChain axial_chain(const Scene& scene, const std::vector<double>& totals) {
+AxialChain axial_chain(const Scene& scene, const std::vector<double>& inertia) {
   const int n = static_cast<int>(scene.size());
   AxialChain a;
-  a.C = Eigen::Map<const Eigen::VectorXd>(totals.data(), n);
+  a.C = Eigen::Map<const Eigen::VectorXd>(inertia.data(), n);
   a.D = Eigen::MatrixXd::Zero(n, n);
   a.spin0 = a.moment = a.harmonic = a.frequency = Eigen::VectorXd::Zero(n);
   // Joint k (0-based) between bodies k and k+1; the support acts on body 0 alone.

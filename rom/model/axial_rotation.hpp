@@ -3,7 +3,9 @@
 // spin's change enters the tilts' gyroscopic terms only times a tilt rate), so they obey, exactly as the nonlinear
 // chain does at zero tilt,
 //   C_k ω̇_k = −β_k (ω_k − ω_{k−1}) + β_{k+1} (ω_{k+1} − ω_k) + M_k(t),     ψ̇_k = ω_k − ω_k0,
-// with C_k the body's axial inertia with its frozen liquid (as the nonlinear chain takes it: a liquid spun up),
+// with C_k the shell's axial inertia: an ideal liquid does not follow its tank's turns about the symmetry axis (Batyr
+// (2010) (34)–(42): the liquid enters the inertia through the projection on potential fields, P_G(e3 × r) = 0 for an
+// axisymmetric cavity; docs/physics.md §3, "Axial rotations"; the nonlinear chain holds it as a gyrostat's momentum),
 // β_k the axial friction of joint k (β_1 against the support, ω_0 = 0 there), M_k the axial moments of [body.moment]
 // (axial, and the z parts of space and harmonic), and ψ_k the angle gained on the reference rotation ω_k0 t.
 // Batyr (2010), Lemma 1 and Properties 1, 6, 7, 10: the roots (e^{iσt}) are σ = 0, n times with its eigenvectors the
@@ -22,7 +24,7 @@
 namespace rc::rom {
 
 struct AxialChain {
-  Eigen::VectorXd C;         // axial inertia per body, kg m² (frozen liquid included)
+  Eigen::VectorXd C;         // axial inertia per body, kg m²: the shell's (its liquid does not follow)
   Eigen::MatrixXd D;         // axial friction, N m s: tridiagonal, positive semi-definite
   Eigen::VectorXd spin0;     // ω_k0, rad/s
   Eigen::VectorXd moment;    // constant axial moments, N m
@@ -43,8 +45,8 @@ struct AxialHistory {
   Eigen::MatrixXd angle;  // steps × n: ψ_k(t), rad
 };
 
-// From the scene: C_k from `totals` (the model's bodies' C), the frictions and axial moments.
-AxialChain axial_chain(const Scene& scene, const std::vector<double>& totals);
+// From the scene: C_k from `inertia` (the shells' C), the frictions and axial moments.
+AxialChain axial_chain(const Scene& scene, const std::vector<double>& inertia);
 
 AxialSpectrum axial_spectrum(const AxialChain& a);
 

@@ -479,6 +479,19 @@ void set_effective_inertia(const Scene& scene, ChainModel& cm, const Eigen::Matr
   }
 }
 
+// A shell without axial inertia whose spin a friction or an axial moment would change: its ideal liquid does not follow
+// (docs/physics.md §3, "Axial rotations"), so nothing resists, and the spin's motion is undetermined.
+void require_axial_inertia(const Scene& scene, const ChainModel& cm) {
+  const AxialChain& a = cm.axial;
+  for (Eigen::Index k = 0; k < a.C.size(); ++k) {
+    const bool moved = a.D.row(k).cwiseAbs().maxCoeff() > 0 || a.moment[k] != 0 || a.harmonic[k] != 0;
+    if (a.C[k] > 0 || !moved) continue;
+    fail(scene, "body[" + std::to_string(k + 1) + "].C",
+         "the shell has no axial inertia, and an axial friction or moment acts on its spin, which its liquid (if any) "
+         "does not follow (docs/physics.md §3, \"Axial rotations\"): give the shell's C > 0");
+  }
+}
+
 }  // namespace
 
 Eigen::MatrixXcd complex_stiffness(const ChainModel& m) {
@@ -498,9 +511,12 @@ ChainModel build_model(const Scene& scene, TableCache* tables, bool linear_keys_
   Eigen::MatrixXd M_fixed = cm.M;  // a free chain's before its reduction a aᵀ/m (what base_translation.hpp extends)
   if (scene.free_chain) M_fixed += cm.a * cm.a.transpose() / mass;
   set_stiffness_friction_gyro(scene, cm);
+  // The spins' own block takes the shells' axial inertia: an ideal liquid does not follow its tank's turns about the
+  // symmetry axis (docs/physics.md §3, "Axial rotations"), although its spin enters the tilts' gyroscopic terms (C_k).
   std::vector<double> axial_inertia;
-  for (const BodyModel& b : cm.bodies) axial_inertia.push_back(b.C);
+  for (const BodySpec& b : scene.bodies) axial_inertia.push_back(b.C);
   cm.axial = axial_chain(scene, axial_inertia);
+  require_axial_inertia(scene, cm);
   // Scene values that are each in range can still overflow together (mass 1e308 times com times g): the
   // matrices of (26) must be finite before any solver sees them.
   if (!cm.M.allFinite() || !cm.K.allFinite() || !cm.D.allFinite() || !cm.G.allFinite())

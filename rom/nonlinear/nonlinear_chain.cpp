@@ -219,7 +219,9 @@ ChainRates chain_rates(const NonlinearChain& c, const ChainState& s) {
       else block = -skew(f.S[k]) * skew(mu[i + 1] * f.S[i] + c.bodies[i].mass * f.rho[i]);
       M.block<3, 3>(3 * k, 3 * i) = block;
     }
-    Vector3d r = lever.cross(g) + tau[k] - f.Omega[k].cross(f.J[k] * f.Omega[k]) - m * f.rho[k].cross(b[k]) +
+    const Vector3d h_liquid = c.bodies[k].liquid_momentum() * f.n[k];  // constant along the axis (ChainBody)
+    Vector3d r = lever.cross(g) + tau[k] - f.Omega[k].cross(f.J[k] * f.Omega[k] + h_liquid) -
+                 m * f.rho[k].cross(b[k]) +
                  f.R[k] * fluid_moment(c.bodies[k], s.omega[k].z(), s.zeta.data() + first_mode[k]);
     if (const VolumeFluid& v = c.bodies[k].volume; v.present()) {  // tanks without axial symmetry (volume_fluid.hpp)
       M.block<3, 3>(3 * k, 3 * k) -= f.R[k] * v.share * f.R[k].transpose();
@@ -271,6 +273,8 @@ double chain_energy(const NonlinearChain& c, const ChainState& s) {
     // About O_k: J_k holds m_k ρ_k²; the kinetic energy is ½ m |v_O|² + m v_O·(Ω × ρ) + ½ Ωᵀ J Ω.
     const Vector3d vO = v[k] - f.Omega[k].cross(f.rho[k]);
     E += 0.5 * m * vO.squaredNorm() + m * vO.dot(f.Omega[k].cross(f.rho[k])) + 0.5 * f.Omega[k].dot(f.J[k] * f.Omega[k]);
+    const ChainBody& body = c.bodies[k];
+    if (body.liquid_axial > 0) E += 0.5 * body.liquid_axial * body.liquid_spin * body.liquid_spin;  // its axial spin's
     E += m * c.gravity * x[k].z() - m * c.field.dot(x[k]);  // the constant field's potential (a harmonic one does work)
     E += c.bodies[k].static_moment * f.n[k].z();  // the static aerodynamic moment's potential: −n × ∂V/∂n = M_α e_z × n
     const Vector3d n_prev = k > 0 ? f.n[k - 1] : Vector3d::UnitZ();
@@ -297,7 +301,7 @@ Vector3d chain_angular_momentum(const NonlinearChain& c, const ChainState& s) {
     const double m = c.bodies[k].mass;
     // J about the centre of mass = J about O_k − m (ρ² I − ρ ρᵀ).
     const Matrix3d Jc = f.J[k] + m * skew(f.rho[k]) * skew(f.rho[k]);
-    L += Jc * f.Omega[k] + m * x[k].cross(v[k]);
+    L += Jc * f.Omega[k] + m * x[k].cross(v[k]) + c.bodies[k].liquid_momentum() * f.n[k];
   }
   // The liquid's relative angular momentum of the tanks without axial symmetry (the same about any point).
   for (int k = 0, first = 0; k < c.size(); first += c.bodies[k].modes(), ++k) {

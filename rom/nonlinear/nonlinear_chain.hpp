@@ -89,6 +89,12 @@ struct ChainBody {
   // e3 from the scene's (its products I_xy with the frozen liquid diagonalised; I_xz, I_yz vanish).
   VolumeFluid volume;
   double principal_turn = 0;
+  // An axisymmetric tank's liquid about the symmetry axis (docs/physics.md §3, "Axial rotations"): the ideal liquid
+  // does not follow the body's turns about that axis (Batyr (2010) (34)–(42): it enters the inertia through the
+  // projection on potential fields, and P_G(e3 × r) = 0), so C above is the shell's and the liquid's axial momentum
+  // stays liquid_axial · liquid_spin along n_k (C_f and its spin at the start: a gyrostat's constant momentum).
+  double liquid_axial = 0, liquid_spin = 0;
+  double liquid_momentum() const { return liquid_axial * liquid_spin; }
   int modes() const { return static_cast<int>(fluid.size()) + volume.size(); }
 };
 
