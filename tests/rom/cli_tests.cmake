@@ -153,3 +153,11 @@ if(_no_mpl EQUAL 0)
   rom_cli(response_png ARGS ${_rs};--body;1;--freq;-400:400:41;-o;out_response2.csv;--png;out_response2.png
           EXPECT_EXIT 0 MATCH "wrote out_response2.png")
 endif()
+
+# A massless shell's spin: its ideal liquid does not follow it (docs/physics.md §3, "Axial rotations"), so an axial
+# friction on it, or the nonlinear chain, is refused in one line.
+rom_cli(bad_massless_axial ARGS spectrum;bad_massless_axial.toml EXPECT_EXIT 1
+        MATCH "^chain-rom: error: [^\n]*body\\[1\\]\\.C: the shell has no axial inertia[^\n]*give the shell's C > 0")
+rom_cli(bad_massless_nonlinear ARGS run;bad_massless_nonlinear.toml;-o;out_bad_massless.h5 EXPECT_EXIT 1
+        MATCH "^chain-rom: error: [^\n]*body\\[1\\]\\.C: the shell has no axial inertia[^\n]*give the shell's C > 0"
+        NO_FILE out_bad_massless.h5)
