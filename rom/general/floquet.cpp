@@ -3,7 +3,7 @@
 #include "balancing.hpp"
 #include "magnus.hpp"
 #include "periodic_system.hpp"
-#include "spectrum.hpp"
+#include "verdict.hpp"
 
 #include "matrix_exponential.hpp"
 

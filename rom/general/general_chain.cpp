@@ -12,10 +12,6 @@
 namespace rc::rom {
 namespace {
 
-[[noreturn]] void fail(const Scene& s, const std::string& key, const std::string& cause) {
-  throw SceneError(s.file.string() + ": " + key + ": " + cause);
-}
-
 std::string body_key(int k) { return "body[" + std::to_string(k + 1) + "]"; }
 
 constexpr double kProductTolerance = 1e-5;

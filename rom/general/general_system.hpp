@@ -14,7 +14,7 @@
 #pragma once
 
 #include "general_chain.hpp"
-#include "spectrum.hpp"
+#include "verdict.hpp"
 
 #include "eigen_dense.hpp"
 

@@ -10,10 +10,6 @@
 namespace rc::rom {
 namespace {
 
-[[noreturn]] void fail(const Scene& s, const std::string& key, const std::string& cause) {
-  throw SceneError(s.file.string() + ": " + key + ": " + cause);
-}
-
 using RowMajor3d = Eigen::Matrix<double, 3, 3, Eigen::RowMajor>;
 
 Eigen::Matrix3d tensor(const std::vector<double>& v) { return Eigen::Map<const RowMajor3d>(v.data()); }

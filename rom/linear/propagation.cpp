@@ -4,7 +4,7 @@
 #include "exact_propagation.hpp"
 #include "first_order_system.hpp"
 #include "forced_solution.hpp"
-#include "spectrum.hpp"
+#include "verdict.hpp"
 
 #include "eigen_dense.hpp"
 #include "matrix_exponential.hpp"

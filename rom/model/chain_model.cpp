@@ -15,10 +15,6 @@
 namespace rc::rom {
 namespace {
 
-[[noreturn]] void fail(const Scene& s, const std::string& key, const std::string& cause) {
-  throw SceneError(s.file.string() + ": " + key + ": " + cause);
-}
-
 // The table of body k's cavity: from the cache when there is one, else read here into `own`.
 const rc::ModeTable& cavity_table(const Scene& scene, const std::string& w, const CavitySpec& cav, TableCache* tables,
                                   rc::ModeTable& own) {

@@ -133,6 +133,11 @@ struct Scene {
   std::size_t size() const { return bodies.size(); }
 };
 
+// The one-line refusal of a scene's key by the layers above the parser: throws SceneError("<file>: <key>: <cause>").
+[[noreturn]] inline void fail(const Scene& s, const std::string& key, const std::string& cause) {
+  throw SceneError(s.file.string() + ": " + key + ": " + cause);
+}
+
 // Parses and validates a scene file. Throws SceneError("<file>: <key>: <cause>").
 Scene parse_scene(const std::filesystem::path& file);
 // Same, from TOML text; `base` is the folder that relative table paths are taken from.
