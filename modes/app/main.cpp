@@ -109,7 +109,8 @@ void add_viscous_options(CLI::App* cmd, ViscousOptions& viscous, bool response) 
   cmd->add_option("--ekman", viscous.ekman,
                   "viscous fluid with Ekman number Ek = nu/(omega0 L^2): damped modes (decay, complex coupling) "
                   "continuing the ideal ones, on a wall-graded Taylor-Hood mesh (docs/viscous.md); --order and "
-                  "--mesh-size then set that mesh (order 6 and d/8 unless given)");
+                  "--mesh-size then set that mesh (order 6 and d/8 unless given; d/4 partially filled cylinders, finer "
+                  "for filled spheres and cylinders at low Ek: docs/viscous.md, \"Interior size\")");
   cmd->add_option("--wall-size", viscous.wall_size, "with --ekman: element size at the wall (default Ek^(1/2))");
   cmd->add_option("--near-wall-size", viscous.near_wall_size,
                   "with --ekman: isotropic elements of this size from the wall layers' edge outwards, growing by 1 per "

@@ -238,12 +238,24 @@ double relative(std::complex<double> a, std::complex<double> b) { return std::ab
 // Ekman numbers"): Im R of the full cylinder (2h/a = 2) at Ek = 1e-6 3.3 % off at h = 1/8, 0.9 % at 0.088, 0.01 % from
 // the mesh with every size halved at 1/16; the full sphere at Ek = 1e-7 2.5 %, 0.14 %, 7.5e-6 from the spectral
 // method's at the same sizes. So h = C Ek^{1/3} R, C = 6.25 (cylinder) and 13.5 (sphere): 1/16 at those Ekman numbers,
-// d/8 above 8e-6 and 7.9e-7. Partially filled tanks and rings keep d/8 (measured converged there: docs/trust.md).
+// d/8 above 8e-6 and 7.9e-7. Partially filled tanks and rings keep their fraction of d (measured converged there:
+// docs/trust.md).
 namespace {
 double shear_layer_interior_size(const geometry::ShapeSpec& shape, double ekman) {
   const bool filled = !shape.dims.count("free_radius") && !shape.dims.count("inner_radius");
   const double C = !filled ? 0.0 : shape.kind == "cylinder" ? 6.25 : shape.kind == "sphere" ? 13.5 : 0.0;
   return C > 0 ? C * std::cbrt(ekman) * shape.dims.at("radius") : std::numeric_limits<double>::infinity();
+}
+
+// The default interior of a liquid whose smallest dimension is d. A partially filled cylinder's liquid (an annulus
+// between straight walls and a coaxial free surface, with or without a rod) converges its forced response on d/4:
+// measured on the spacecraft's nutation decay by forced solves (docs/viscous.md, "Interior size of a partially filled
+// cylinder"), within 0.08 % of the mesh-converged references at Ek = 1e-5 … 1e-7 and fills 0.3 to 0.8, in a third of
+// d/8's time. Below Ek = 1e-7, where nothing is measured, it shrinks with the shear layers' width Ek^{1/3}
+// (54 Ek^{1/3} d is d/4 at 1e-7). Every other liquid keeps d/8.
+double default_interior(const geometry::ShapeSpec& shape, double ekman, double d) {
+  if (shape.kind == "cylinder" && shape.dims.count("free_radius")) return std::min(0.25, 54 * std::cbrt(ekman)) * d;
+  return d / 8;
 }
 }  // namespace
 
@@ -258,7 +270,8 @@ geometry::MeshOptions viscous_mesh_defaults(const geometry::ShapeSpec& shape, do
   if (mesh.order == 0) mesh.order = 6;
   if (mesh.order < 2) throw std::runtime_error("--ekman needs --order >= 2 (Taylor-Hood P_k/P_(k-1) elements)");
   if (mesh.radial_size > 0) throw std::runtime_error("--radial-size (structured meshes) does not apply with --ekman");
-  if (mesh.size == 0 && d > 0) mesh.size = std::min(d / 8, shear_layer_interior_size(shape, ekman));
+  if (mesh.size == 0 && d > 0)
+    mesh.size = std::min(default_interior(shape, ekman, d), shear_layer_interior_size(shape, ekman));
   if (mesh.wall_size == 0) mesh.wall_size = layer;
   if (mesh.size > 0) mesh.wall_size = std::min(mesh.wall_size, mesh.size);
   // Layers at most half as thick as the interior elements (gmsh's layers invert otherwise); beyond them the
