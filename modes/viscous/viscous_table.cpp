@@ -249,9 +249,9 @@ double shear_layer_interior_size(const geometry::ShapeSpec& shape, double ekman)
 
 // The default interior of a liquid whose smallest dimension is d. A partially filled cylinder's liquid (an annulus
 // between straight walls and a coaxial free surface, with or without a rod) converges its forced response on d/4:
-// measured on the spacecraft's nutation decay by forced solves (docs/viscous.md, "Interior size of a partially filled
-// cylinder"), within 0.08 % of the mesh-converged references at Ek = 1e-5 … 1e-7 and fills 0.3 to 0.8, in a third of
-// d/8's time. Below Ek = 1e-7, where nothing is measured, it shrinks with the shear layers' width Ek^{1/3}
+// measured on the spacecraft's nutation decay (docs/viscous.md, "Interior size of a partially filled cylinder"; the
+// tables' at Ek = 1e-5 and 1e-6, fills 0.3 to 0.8, forced solves on the table's mesh at 1e-7), within 0.08 % of the
+// mesh-converged references, in a third of d/8's time. Below Ek = 1e-7, where nothing is measured, it shrinks with the shear layers' width Ek^{1/3}
 // (54 Ek^{1/3} d is d/4 at 1e-7). Every other liquid keeps d/8.
 double default_interior(const geometry::ShapeSpec& shape, double ekman, double d) {
   if (shape.kind == "cylinder" && shape.dims.count("free_radius")) return std::min(0.25, 54 * std::cbrt(ekman)) * d;

@@ -185,6 +185,28 @@ void add_fluid_rates(const NonlinearChain& c, const ChainState& s, const std::ve
   }
 }
 
+// Row k of the mass matrix: body k's moment equation about O_k on every body's Ω̇ (the bodies below it through their
+// joints, its own inertia less what its fluid does not carry rigidly, those above it) and on a free chain's base.
+void add_mass_row(const NonlinearChain& c, const ChainState& s, const Frames& f, const std::vector<double>& mu, int k,
+                  const Vector3d& lever, Eigen::MatrixXd& M) {
+  const int n = c.size();
+  const double above = mu[k + 1];
+  for (int i = 0; i < n; ++i) {
+    Matrix3d block;
+    if (i < k) block = -skew(lever) * skew(f.S[i]);
+    else if (i == k)
+      block = f.J[k] - above * skew(f.S[k]) * skew(f.S[k]) - fluid_inertia(c.bodies[k], s.omega[k].z(), f.n[k]);
+    else block = -skew(f.S[k]) * skew(mu[i + 1] * f.S[i] + c.bodies[i].mass * f.rho[i]);
+    M.block<3, 3>(3 * k, 3 * i) = block;
+  }
+  if (const VolumeFluid& v = c.bodies[k].volume; v.present())  // tanks without axial symmetry (volume_fluid.hpp)
+    M.block<3, 3>(3 * k, 3 * k) -= f.R[k] * v.share * f.R[k].transpose();
+  if (c.free_chain) {
+    M.block<3, 3>(3 * k, 3 * n) = skew(lever);
+    M.block<3, 3>(3 * n, 3 * k) = -skew(lever);
+  }
+}
+
 }  // namespace
 
 ChainRates chain_rates(const NonlinearChain& c, const ChainState& s) {
@@ -209,30 +231,17 @@ ChainRates chain_rates(const NonlinearChain& c, const ChainState& s) {
   M.setZero(dim, dim);
   rhs.resize(dim);
   for (int k = 0; k < n; ++k) {
-    const double m = c.bodies[k].mass, above = mu[k + 1];
-    const Vector3d lever = m * f.rho[k] + above * f.S[k];  // m_k ρ_k + Σ_{j>k} m_j S_k
-    for (int i = 0; i < n; ++i) {
-      Matrix3d block;
-      if (i < k) block = -skew(lever) * skew(f.S[i]);
-      else if (i == k)
-        block = f.J[k] - above * skew(f.S[k]) * skew(f.S[k]) - fluid_inertia(c.bodies[k], s.omega[k].z(), f.n[k]);
-      else block = -skew(f.S[k]) * skew(mu[i + 1] * f.S[i] + c.bodies[i].mass * f.rho[i]);
-      M.block<3, 3>(3 * k, 3 * i) = block;
-    }
+    const double m = c.bodies[k].mass;
+    const Vector3d lever = m * f.rho[k] + mu[k + 1] * f.S[k];  // m_k ρ_k + Σ_{j>k} m_j S_k
+    add_mass_row(c, s, f, mu, k, lever, M);
     const Vector3d h_liquid = c.bodies[k].liquid_momentum() * f.n[k];  // constant along the axis (ChainBody)
     Vector3d r = lever.cross(g) + tau[k] - f.Omega[k].cross(f.J[k] * f.Omega[k] + h_liquid) -
                  m * f.rho[k].cross(b[k]) +
                  f.R[k] * fluid_moment(c.bodies[k], s.omega[k].z(), s.zeta.data() + first_mode[k]);
-    if (const VolumeFluid& v = c.bodies[k].volume; v.present()) {  // tanks without axial symmetry (volume_fluid.hpp)
-      M.block<3, 3>(3 * k, 3 * k) -= f.R[k] * v.share * f.R[k].transpose();
+    if (const VolumeFluid& v = c.bodies[k].volume; v.present())  // tanks without axial symmetry (volume_fluid.hpp)
       r += f.R[k] * volume_moment(v, s.omega[k], s.zeta.data() + first_mode[k] + c.bodies[k].fluid.size());
-    }
     for (int j = k + 1; j < n; ++j) r -= c.bodies[j].mass * f.S[k].cross(d[j]);
     rhs.segment<3>(3 * k) = r;
-    if (c.free_chain) {
-      M.block<3, 3>(3 * k, 3 * n) = skew(lever);
-      M.block<3, 3>(3 * n, 3 * k) = -skew(lever);
-    }
   }
   if (c.free_chain) {
     M.block<3, 3>(3 * n, 3 * n) = mu[0] * Matrix3d::Identity();
@@ -273,8 +282,7 @@ double chain_energy(const NonlinearChain& c, const ChainState& s) {
     // About O_k: J_k holds m_k ρ_k²; the kinetic energy is ½ m |v_O|² + m v_O·(Ω × ρ) + ½ Ωᵀ J Ω.
     const Vector3d vO = v[k] - f.Omega[k].cross(f.rho[k]);
     E += 0.5 * m * vO.squaredNorm() + m * vO.dot(f.Omega[k].cross(f.rho[k])) + 0.5 * f.Omega[k].dot(f.J[k] * f.Omega[k]);
-    const ChainBody& body = c.bodies[k];
-    if (body.liquid_axial > 0) E += 0.5 * body.liquid_axial * body.liquid_spin * body.liquid_spin;  // its axial spin's
+    E += 0.5 * c.bodies[k].liquid_axial * c.bodies[k].liquid_spin * c.bodies[k].liquid_spin;  // the liquid's axial spin
     E += m * c.gravity * x[k].z() - m * c.field.dot(x[k]);  // the constant field's potential (a harmonic one does work)
     E += c.bodies[k].static_moment * f.n[k].z();  // the static aerodynamic moment's potential: −n × ∂V/∂n = M_α e_z × n
     const Vector3d n_prev = k > 0 ? f.n[k - 1] : Vector3d::UnitZ();

@@ -85,9 +85,9 @@ std::vector<ChainBody> axisymmetric_tank_bodies(const Scene& scene) {
     body.B = b.B.value_or(b.A) + (t.A - b.A);
     body.C = b.C;  // the shell's: the liquid's axial part is a gyrostat's momentum (ChainBody::liquid_axial)
     if (!(b.C > 0) && t.C_f > 0)
-      throw SceneError(scene.file.string() + ": body[" + std::to_string(k + 1) + "].C: the shell has no axial inertia "
-                       "and its ideal liquid does not follow the shell's turns about the axis (docs/physics.md §3, "
-                       "\"Axial rotations\"), so the nonlinear chain cannot move its spin: give the shell's C > 0");
+      fail(scene, "body[" + std::to_string(k + 1) + "].C",
+           "the shell has no axial inertia and its ideal liquid does not follow the shell's turns about the axis "
+           "(docs/physics.md §3, \"Axial rotations\"), so the nonlinear chain cannot move its spin: give the shell's C > 0");
     body.liquid_axial = t.C_f;
     body.liquid_spin = b.spin;
     body.com = t.c;

@@ -226,7 +226,8 @@ TEST(Energy, StaticCorrectionRestoresZhukovskyInertiaAtZeroSpin) {
 // chain of rigid pendulums, built here by hand from the bodies, the cavities' volume and J_zh alone (not from the
 // model): with absolute tilts θ_k, joint k + 1 at ℓ_k = next_joint_k along body k and A_k about joint k,
 //   a_k = m_k c_k + ℓ_k Σ_{i>k} m_i,   M_kk = A_k + ℓ_k² Σ_{i>k} m_i,   M_kj = ℓ_k a_j (j > k),   K = −g diag(a_k),
-// the kinetic and potential energies of the hanging chain to second order. Property 11 (the root vectors form a
+// the kinetic and potential energies of the hanging chain to second order (Kononov's (26), docs/physics.md §3, at
+// ω = 0 with no fluid: built here from those formulas, not by the model). Property 11 (the root vectors form a
 // basis): the tilt roots are simple, so the companion matrix is diagonalisable there.
 namespace {
 struct PlanarChain { Eigen::MatrixXd M, K; };
