@@ -254,13 +254,14 @@ std::vector<double> refined_window(const std::vector<cd>& sigmas, int per_gap) {
 
 }  // namespace
 
-ModeTable krylov_response_table(const ResponseRequest& req, double max_error) {
+ModeTable krylov_response_table(const ResponseRequest& req, double max_error, double max_decay_error) {
   const auto start = std::chrono::steady_clock::now();
   check_response_window(req, "a Krylov response table");
   const double lo = req.sigmas.front().real(), hi = req.sigmas.back().real();
   const ViscousForms forms = assemble_cavity_forms(liquid_of(req), req.mesh, req.ekman);
   KrylovOptions options;
   options.tolerance = max_error;
+  options.dissipation_tolerance = max_decay_error;
   options.exact_at = req.exact_at;
   const std::vector<double> window = refined_window(req.sigmas, 8), beyond = response_tail(lo, hi);
   const KrylovReduction k = krylov_reduction(forms, window, beyond, options, [](const std::string& line) {
@@ -272,9 +273,10 @@ ModeTable krylov_response_table(const ResponseRequest& req, double max_error) {
   t.fit_error = std::max(k.estimate, k.check_error);
   if (!k.within_tolerance && is_root_rank())
     std::cerr << fmt::format("cavity-modes response: warning: after {} expansion points the table errs by {:.2g} of "
-                             "max|R|, above --max-fit-error {:.2g}; it is written with that error (fit_error): a "
-                             "larger --max-fit-error, or a narrower window\n", k.points.size(), t.fit_error,
-                             max_error);
+                             "max|R| and its Im R by {:.2g} of itself, above --max-fit-error {:.2g} or "
+                             "--max-decay-fit-error {:.2g}; it is written with that error (fit_error): larger ones, or "
+                             "a narrower window\n", k.points.size(), t.fit_error,
+                             std::max(k.dissipation_estimate, k.check_dissipation_error), max_error, max_decay_error);
   const cd sum = add_rows(t, red, t.fit_error);
   t.coverage = t.sum_rule > 0 ? sum.real() / t.sum_rule : 1.0;
   const PassivityScan passivity = scan_rows(red, lo, hi);
@@ -286,17 +288,20 @@ ModeTable krylov_response_table(const ResponseRequest& req, double max_error) {
   t.solver = fmt::format("Galerkin (Hermitian) projection on a rational Krylov space: {} expansion points chosen "
                          "greedily on {} frequencies of [{:g}, {:g}] and {} beyond it up to |s| = {:.3g}, {} vectors "
                          "per point{}, {} basis vectors ({} directions dropped as dependent), {} Ritz pairs; estimated "
-                         "error (bilinear against Hermitian projection) at most {:.2g} of max|R|, measured by a forced "
-                         "solve at the worst estimate s = {:.6g}: {:.2g}{}; min Im R on the window {:.2g} max|R|; sum of "
+                         "error (bilinear against Hermitian projection) at most {:.2g} of max|R| and {:.2g} of Im R itself "
+                         "on the window (against {:g} of its largest where it is smaller), measured by a forced solve at the worst "
+                         "estimate s = {:.6g}: {:.2g} and {:.2g}{}; min Im R on the window {:.2g} max|R|; sum of "
                          "residues {:.9g}{:+.3g}i, {} = {:.9g}; forced solves on Taylor-Hood P{}/P{}, {} real "
                          "unknowns", k.points.size(), window.size(), lo, hi, beyond.size(), std::abs(beyond.back()),
                          options.vectors_per_point,
                          req.exact_at.empty() ? std::string()
                                               : fmt::format(", and {} more at the given frequencies (--exact-at), "
                                                             "where R is exact", req.exact_at.size()),
-                         k.vectors, red.dropped, red.lambda.size(), k.estimate,
-                         k.check_point, k.check_error,
-                         k.within_tolerance ? "" : fmt::format(" (NOT within --max-fit-error {:.2g})", max_error),
+                         k.vectors, red.dropped, red.lambda.size(), k.estimate, k.dissipation_estimate,
+                         options.dissipation_floor, k.check_point, k.check_error, k.check_dissipation_error,
+                         k.within_tolerance ? "" : fmt::format(" (NOT within --max-fit-error {:.2g} or "
+                                                               "--max-decay-fit-error {:.2g})", max_error,
+                                                               max_decay_error),
                          passivity.min_im, sum.real(), sum.imag(), sum_rule_name(t), t.sum_rule,
                          req.mesh.order, req.mesh.order - 1, 2L * forms.complex_size);
   t.tolerance = 1e-10;

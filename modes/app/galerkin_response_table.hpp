@@ -16,7 +16,8 @@ ModeTable galerkin_response_table(const ResponseRequest& request, double max_err
 
 // The same kind of table from a rational Krylov space with greedily chosen expansion points
 // (viscous/krylov_response.hpp; docs/viscous.md, "Krylov response table"): a few factorisations and many
-// back-substitutions instead of a forced solve per sample. Throws std::runtime_error with a one-line cause.
-ModeTable krylov_response_table(const ResponseRequest& request, double max_error);
+// back-substitutions instead of a forced solve per sample, to `max_error` of max|R| and `max_decay_error` of Im R
+// itself on the window (krylov_response.hpp). Throws std::runtime_error with a one-line cause.
+ModeTable krylov_response_table(const ResponseRequest& request, double max_error, double max_decay_error);
 
 }  // namespace rc::modes

@@ -189,14 +189,34 @@ double entry_error(const Eigen::MatrixXcd& a, const Eigen::MatrixXcd& b, const E
   return ((a - b).cwiseAbs().array() / scale.array()).maxCoeff();
 }
 
+// The largest entry of |Im(a − b)| against b's own dissipation: R's anti-Hermitian part P = Im R (R is complex
+// symmetric) is positive semi-definite on real frequencies (passivity), so |P_ij| ≤ √(P_ii P_jj) is each entry's
+// natural size; below `floor` (entry by entry) the floor is the size. A chain root's decay is Im R at its frequency
+// times its coupling: this is the relative error of the decays the table gives.
+double dissipation_error(const Eigen::MatrixXcd& a, const Eigen::MatrixXcd& b, const Eigen::MatrixXd& floor) {
+  const Eigen::VectorXd own = b.diagonal().imag().cwiseMax(0.0);
+  const Eigen::MatrixXd size = (own * own.transpose()).cwiseSqrt().cwiseMax(floor);
+  return ((a - b).imag().cwiseAbs().array() / size.array()).maxCoeff();
+}
+
+// Both errors of an approximation b of a, and what decides: the larger of each against its tolerance.
+struct FitError {
+  double magnitude = 0, dissipation = 0;
+  double against(const KrylovOptions& o) const {
+    const double im = o.dissipation_tolerance > 0 ? dissipation / o.dissipation_tolerance : 0.0;
+    return std::max(magnitude / o.tolerance, im);
+  }
+};
+
 // The greedy loop's state: the basis, one solver, the candidates and what has been measured. With p inputs (the
 // coupling f, and a free surface's offset coupling g) R is the p × p matrix π yᵢᵀS⁻¹yⱼ, every expansion point adds
 // the Krylov vectors of each input, and each entry's error is measured against its own scale (scale_ij = √(scale_ii
 // scale_jj) off the diagonal, where R_fg may vanish by symmetry).
 class Greedy {
  public:
-  Greedy(const ViscousForms& forms, const std::vector<double>& window, const std::vector<double>& beyond)
-      : forms_(forms), basis_(forms), solver_(forms), window_(window) {
+  Greedy(const ViscousForms& forms, const std::vector<double>& window, const std::vector<double>& beyond,
+         const KrylovOptions& options)
+      : forms_(forms), basis_(forms), solver_(forms), options_(options), window_(window) {
     candidates_ = window;
     candidates_.insert(candidates_.end(), beyond.begin(), beyond.end());
     inputs_.push_back(forms.coupling);
@@ -265,66 +285,84 @@ class Greedy {
     return R;
   }
 
-  // R_G's scales (max over the window, entry by entry), the worst estimate |R_B − R_G| over the candidates relative to
-  // them, and R_G there (what the forced solve at s is measured against).
+  // R_G's scales (max over the window, entry by entry: of |R_G| and of Im R_G), the candidate whose estimate
+  // (R_B − R_G, both errors against their tolerances) is worst, the errors there, and R_G there (what the forced solve
+  // at s is measured against). Im R's error counts on the window only: beyond it no chain root is sought.
   struct Worst {
-    double s = 0, estimate = 0;
-    Eigen::MatrixXd scale;
+    double s = 0;
+    FitError estimate;
+    bool in_window = true;
+    Eigen::MatrixXd scale, floor;
     Eigen::MatrixXcd galerkin;
   };
   Worst worst() const {
     const ReducedTransfer G = basis_.galerkin(), B = basis_.bilinear();
     const Eigen::Index p = inputs();
     std::vector<Eigen::MatrixXcd> g(candidates_.size()), b(candidates_.size());
-    Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(p);
+    Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(p), dissipation = Eigen::VectorXd::Zero(p);
     for (std::size_t i = 0; i < candidates_.size(); ++i) {
       g[i] = G.matrix(candidates_[i]);
       b[i] = B.matrix(candidates_[i]);
-      if (i < window_.size()) diagonal = diagonal.cwiseMax(g[i].diagonal().cwiseAbs());
+      if (i >= window_.size()) continue;
+      diagonal = diagonal.cwiseMax(g[i].diagonal().cwiseAbs());
+      dissipation = dissipation.cwiseMax(g[i].diagonal().imag());
     }
     Worst w;
     w.scale = (diagonal * diagonal.transpose()).cwiseSqrt();
+    w.floor = options_.dissipation_floor * (dissipation * dissipation.transpose()).cwiseSqrt();
     std::size_t at = 0;
+    double worst_ratio = -1;
     for (std::size_t i = 0; i < candidates_.size(); ++i) {
-      const double e = entry_error(b[i], g[i], w.scale);
-      if (e > w.estimate) {
+      const FitError e{entry_error(b[i], g[i], w.scale),
+                       i < window_.size() ? dissipation_error(b[i], g[i], w.floor) : 0.0};
+      if (e.against(options_) > worst_ratio) {
+        worst_ratio = e.against(options_);
         w.estimate = e;
         at = i;
       }
     }
     w.s = candidates_[at];
+    w.in_window = at < window_.size();
     w.scale *= std::numbers::pi;
+    w.floor *= std::numbers::pi;
     w.galerkin = std::numbers::pi * g[at];
-    // Every rank computed this from the same reduced matrices, but the next point is factored collectively: rank 0's
-    // choice is everyone's, so that rounding can never send two ranks to different points.
-    std::vector<double> shared{w.s, w.estimate};
-    for (Eigen::Index k = 0; k < p * p; ++k) {
-      shared.push_back(w.scale.data()[k]);
-      shared.push_back(w.galerkin.data()[k].real());
-      shared.push_back(w.galerkin.data()[k].imag());
-    }
-    MPI_Bcast(shared.data(), static_cast<int>(shared.size()), MPI_DOUBLE, 0, comm_);
-    w.s = shared[0];
-    w.estimate = shared[1];
-    for (Eigen::Index k = 0; k < p * p; ++k) {
-      const auto at_k = static_cast<std::size_t>(2 + 3 * k);
-      w.scale.data()[k] = shared[at_k];
-      w.galerkin.data()[k] = {shared[at_k + 1], shared[at_k + 2]};
-    }
+    share(w);
     return w;
   }
 
-  // R(s) − R_G(s) by a forced solve, relative to the scales: rank 0's value for every rank (it decides whether to
-  // stop).
-  double measured_error(double s, const Eigen::MatrixXcd& before, const Eigen::MatrixXd& scale) {
-    double e = entry_error(forced(s), before, scale);
-    MPI_Bcast(&e, 1, MPI_DOUBLE, 0, comm_);
-    return e;
+  // R(s) − R_G(s) by a forced solve, both errors: rank 0's values for every rank (they decide whether to stop).
+  FitError measured_error(const Worst& at) {
+    const Eigen::MatrixXcd R = forced(at.s);
+    double e[2] = {entry_error(R, at.galerkin, at.scale),
+                   at.in_window ? dissipation_error(R, at.galerkin, at.floor) : 0.0};
+    MPI_Bcast(e, 2, MPI_DOUBLE, 0, comm_);
+    return {e[0], e[1]};
   }
 
   const KrylovBasis& basis() const { return basis_; }
 
  private:
+  // Every rank computed `w` from the same reduced matrices, but the next point is factored collectively: rank 0's
+  // choice is everyone's, so that rounding can never send two ranks to different points.
+  void share(Worst& w) const {
+    const Eigen::Index n = w.scale.size();
+    std::vector<double> shared{w.s, w.estimate.magnitude, w.estimate.dissipation, w.in_window ? 1.0 : 0.0};
+    for (Eigen::Index k = 0; k < n; ++k)
+      for (const double v : {w.scale.data()[k], w.floor.data()[k], w.galerkin.data()[k].real(),
+                             w.galerkin.data()[k].imag()})
+        shared.push_back(v);
+    MPI_Bcast(shared.data(), static_cast<int>(shared.size()), MPI_DOUBLE, 0, comm_);
+    w.s = shared[0];
+    w.estimate = {shared[1], shared[2]};
+    w.in_window = shared[3] != 0;
+    for (Eigen::Index k = 0; k < n; ++k) {
+      const auto at = static_cast<std::size_t>(4 + 4 * k);
+      w.scale.data()[k] = shared[at];
+      w.floor.data()[k] = shared[at + 1];
+      w.galerkin.data()[k] = {shared[at + 2], shared[at + 3]};
+    }
+  }
+
   // q against the columns of W (𝓜W given), twice, then to unit 𝓜-norm, with 𝓜q into mq; false when nothing is left
   // of it. 𝓜q follows q through the subtractions (𝓜 is linear) and is applied afresh only where most of q cancelled,
   // and with it the rounding's share of what is left.
@@ -352,6 +390,7 @@ class Greedy {
   const ViscousForms& forms_;
   KrylovBasis basis_;
   ShiftedSolver solver_;
+  const KrylovOptions& options_;
   MPI_Comm comm_;
   std::vector<double> window_, candidates_;
   std::vector<Vec> inputs_;
@@ -364,7 +403,7 @@ KrylovReduction krylov_reduction(const ViscousForms& forms, const std::vector<do
                                  const std::vector<double>& beyond, const KrylovOptions& options,
                                  const std::function<void(const std::string&)>& progress) {
   if (window.size() < 3) throw std::invalid_argument("a Krylov response reduction needs at least 3 window frequencies");
-  Greedy greedy(forms, window, beyond);
+  Greedy greedy(forms, window, beyond, options);
   KrylovReduction out;
   for (const double s : {window.front(), 0.5 * (window.front() + window.back()), window.back()}) {
     greedy.expand(s, options.vectors_per_point);
@@ -372,35 +411,39 @@ KrylovReduction krylov_reduction(const ViscousForms& forms, const std::vector<do
     out.point_errors.push_back(std::numeric_limits<double>::quiet_NaN());
   }
   for (const cd s : options.exact_at) greedy.expand(s, options.vectors_per_point);
+  const auto finish = [&](const auto& worst, const FitError& check) {
+    out.estimate = worst.estimate.magnitude;
+    out.dissipation_estimate = worst.estimate.dissipation;
+    out.scale = worst.scale(0, 0);
+    out.check_point = worst.s;
+    out.check_error = check.magnitude;
+    out.check_dissipation_error = check.dissipation;
+  };
   for (;;) {
     const auto worst = greedy.worst();
-    const Eigen::MatrixXcd& before = worst.galerkin;
-    if (worst.estimate <= options.tolerance) {
+    if (worst.estimate.against(options) <= 1) {
       // The estimate says done: a forced solve where it is largest says whether it is right. If not, that point
       // (factored already) is expanded like any other and the search goes on.
-      out.check_point = worst.s;
-      out.check_error = greedy.measured_error(worst.s, before, worst.scale);
-      if (out.check_error <= options.tolerance) {
-        out.estimate = worst.estimate;
-        out.scale = worst.scale(0, 0);
+      const FitError check = greedy.measured_error(worst);
+      if (check.against(options) <= 1) {
+        finish(worst, check);
         break;
       }
     }
     if (static_cast<int>(out.points.size()) >= options.max_points) {
       // Out of points: the table is still the best this basis gives, marked by its error (the caller says so).
       out.within_tolerance = false;
-      out.estimate = worst.estimate;
-      out.scale = worst.scale(0, 0);
-      out.check_point = worst.s;
-      out.check_error = greedy.measured_error(worst.s, before, worst.scale);
+      finish(worst, greedy.measured_error(worst));
       break;
     }
     const Eigen::MatrixXcd R = greedy.expand(worst.s, options.vectors_per_point);
     out.points.push_back(worst.s);
-    out.point_errors.push_back(entry_error(R, before, worst.scale));
+    out.point_errors.push_back(entry_error(R, worst.galerkin, worst.scale));
+    const double dissipation = worst.in_window ? dissipation_error(R, worst.galerkin, worst.floor) : 0.0;
     if (progress)
-      progress(fmt::format("krylov response: point {} at s = {:.6g}: estimated {:.2g}, measured {:.2g} of max|R|; {} "
-                           "vectors", out.points.size(), worst.s, worst.estimate, out.point_errors.back(),
+      progress(fmt::format("krylov response: point {} at s = {:.6g}: estimated {:.2g} of max|R| and {:.2g} of Im R, "
+                           "measured {:.2g} and {:.2g}; {} vectors", out.points.size(), worst.s,
+                           worst.estimate.magnitude, worst.estimate.dissipation, out.point_errors.back(), dissipation,
                            greedy.basis().size()));
   }
   out.projection = greedy.basis().projection();

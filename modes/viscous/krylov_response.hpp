@@ -29,6 +29,12 @@ namespace rc::modes {
 
 struct KrylovOptions {
   double tolerance = 1e-6;    // stop when the estimate is below this × max|R| on the window
+  // … and, when positive, when on the window Im R's estimated error is below this × Im R itself (the dissipation sets
+  // a chain root's decay, and far from a resonance it is a small part of R: docs/viscous.md, "Krylov response table",
+  // "The error of Im R"). Where Im R is below dissipation_floor × its largest value on the window the error is
+  // measured against that floor. 0: Im R's error is measured and reported, not a stopping criterion.
+  double dissipation_tolerance = 0;
+  double dissipation_floor = 1e-4;
   int vectors_per_point = 8;  // Krylov vectors per expansion point (one factorisation, this many back-substitutions)
   int max_points = 100;       // expansion points (factorisations) at most
   // Complex frequencies where R_G must be R itself (a chain's roots: chain-rom confirm --refine-tables): each is an
@@ -42,8 +48,10 @@ struct KrylovReduction {
   std::vector<double> points;         // expansion points, in the order chosen (exact_at's are not listed)
   std::vector<double> point_errors;   // |R(s) − R_G(s)| / scale just before s was added (the first ones: NaN)
   double estimate = 0;                // max over the candidates of |R_B − R_G| / scale, final basis
+  double dissipation_estimate = 0;    // max over the window of |Im(R_B − R_G)| / max(Im R_G, floor), final basis
   double check_point = 0;             // a forced solve at the final worst candidate, not added to the basis:
   double check_error = 0;             //   |R − R_G| / scale there
+  double check_dissipation_error = 0; //   and |Im(R − R_G)| / max(Im R_G, floor)
   double scale = 0;                   // max |R_G| over the window's candidates
   int vectors = 0;                    // basis size
   bool within_tolerance = true;       // false: max_points reached first (estimate and check_error say how far)

@@ -487,7 +487,7 @@ TEST(ViscousKrylov, ResponseTableIsTheResponseFromFewFactorisations) {
   req.ekman = 1e-3;
   req.mesh = viscous_mesh_defaults(sphere, req.ekman, {});
   req.sigmas = parse_sigma_spec("-1.5:2:41", 0);
-  const ModeTable t = krylov_response_table(req, 1e-7);
+  const ModeTable t = krylov_response_table(req, 1e-7, 1e-3);
   const std::vector<cd> probe = {-1.23, 0.31, 0.97, 1.04, 1.61};
   const std::vector<cd> R = cavity_response(sphere, req.mesh, req.ekman, probe);
   double scale = 0, worst = 0, min_decay = 1e300;
@@ -498,10 +498,14 @@ TEST(ViscousKrylov, ResponseTableIsTheResponseFromFewFactorisations) {
     residues.emplace_back(t.E[l], t.E_imag[l]);
     min_decay = std::min(min_decay, t.decay[l]);
   }
+  double largest_im = 0, worst_im = 0;
+  for (const cd r : R) largest_im = std::max(largest_im, r.imag());
   for (std::size_t k = 0; k < probe.size(); ++k) {
     cd table = 0;
     for (std::size_t l = 0; l < poles.size(); ++l) table += residues[l] / (probe[k] - poles[l]);
     worst = std::max(worst, std::abs(table - R[k]) / scale);
+    // Im R (the decays) against itself, as --max-decay-fit-error measures it (floor 1e-4 of the largest)
+    worst_im = std::max(worst_im, std::abs((table - R[k]).imag()) / std::max(R[k].imag(), 1e-4 * largest_im));
   }
   const rc::PassivityScan passive = rc::scan_passivity(poles, residues, -3, 4);
   ViscousTableSettings damped_settings;
@@ -517,14 +521,15 @@ TEST(ViscousKrylov, ResponseTableIsTheResponseFromFewFactorisations) {
   const cd ritz(t.lambda[0], t.decay[0]), damped(mode.lambda[0], mode.decay[0]);
   const int points = std::stoi(t.solver.substr(t.solver.find("space: ") + 7));
   const double spectral = off_the_spectral_sphere(probe, poles, residues, req.ekman);
-  std::printf("%d expansion points, %zu Ritz pairs, fit error %.1e; R at 5 other points %.1e of max|R|, %.1e from the "
-              "spectral method's; smallest decay %.2e; min Im R on [-3, 4] %.2e max|R|; leading Ritz pair "
-              "%.9f%+.9fi, damped mode %.9f%+.9fi\n", points, t.size(), t.fit_error, worst, spectral, min_decay,
-              passive.min_im, ritz.real(), ritz.imag(), damped.real(), damped.imag());
+  std::printf("%d expansion points, %zu Ritz pairs, fit error %.1e; R at 5 other points %.1e of max|R| (Im R %.1e of "
+              "itself), %.1e from the spectral method's; smallest decay %.2e; min Im R on [-3, 4] %.2e max|R|; "
+              "leading Ritz pair %.9f%+.9fi, damped mode %.9f%+.9fi\n", points, t.size(), t.fit_error, worst,
+              worst_im, spectral, min_decay, passive.min_im, ritz.real(), ritz.imag(), damped.real(), damped.imag());
   EXPECT_LT(spectral, 1e-3);  // the P3 mesh's own error (measured 3.1e-4): the rows are its forced solves' to 6e-11
   EXPECT_LT(points, 20);
   EXPECT_LE(t.fit_error, 1e-7);
   EXPECT_LT(worst, 1e-6);
+  EXPECT_LT(worst_im, 1e-3);  // --max-decay-fit-error 1e-3
   EXPECT_GE(min_decay, 0.0);
   EXPECT_GE(passive.min_im, 0.0);
   EXPECT_LT(std::abs(ritz - damped), 1e-6);
@@ -546,7 +551,7 @@ TEST(ViscousKrylov, ExactWhereTheChainsRootsAre) {
   }());
   req.sigmas = parse_sigma_spec("-1.5:2:41", 0);
   req.exact_at = {cd(0.7704, -0.00337), cd(0.98935, 7e-7)};
-  const ModeTable t = krylov_response_table(req, 1e-2);
+  const ModeTable t = krylov_response_table(req, 1e-2, 1.0);  // Im R's own criterion off
   std::vector<cd> probe = req.exact_at;
   probe.push_back(-0.85);
   const std::vector<cd> R = cavity_response(cylinder, req.mesh, req.ekman, probe);
@@ -562,6 +567,44 @@ TEST(ViscousKrylov, ExactWhereTheChainsRootsAre) {
   EXPECT_LT(error[1], 1e-10);
   EXPECT_GT(error[2], 1e-8);
   EXPECT_NE(t.solver.find("--exact-at"), std::string::npos);
+}
+
+// --max-decay-fit-error: a loose Krylov table (1e-2 of max|R|) of a tall cylinder at Ek 5e-6, whose Im R between the
+// resonances is a small part of |R|, made twice: without Im R's own criterion and with 1e-2 of Im R. At real
+// frequencies it never expanded at, Im R against forced solves on the same mesh: the second must hold it to 1e-2 of
+// itself (floor 1e-4 of the largest), and the first must not already (else the criterion would be untested).
+TEST(ViscousKrylov, DecayCriterionHoldsImRToItself) {
+  const rc::geometry::ShapeSpec cylinder{"cylinder", {{"radius", 1.0}, {"height", 4.0}}, {}};
+  ResponseRequest req;
+  req.shape = cylinder;
+  req.ekman = 5e-6;
+  req.mesh = viscous_mesh_defaults(cylinder, req.ekman, [] {
+    rc::geometry::MeshOptions m;
+    m.order = 3;
+    m.size = 0.25;
+    return m;
+  }());
+  req.sigmas = parse_sigma_spec("-1.5:2:41", 0);
+  const std::vector<cd> probe = {-1.37, -0.85, -0.23, 0.41, 0.66, 1.13, 1.77};
+  const std::vector<cd> R = cavity_response(cylinder, req.mesh, req.ekman, probe);
+  double largest_im = 0;
+  for (const cd r : R) largest_im = std::max(largest_im, r.imag());
+  const auto im_error = [&](const ModeTable& t) {
+    double worst = 0;
+    for (std::size_t k = 0; k < probe.size(); ++k) {
+      cd table = 0;
+      for (std::size_t l = 0; l < t.size(); ++l)
+        table += cd(t.E[l], t.E_imag[l]) / (probe[k] - cd(t.lambda[l], t.decay[l]));
+      worst = std::max(worst, std::abs((table - R[k]).imag()) / std::max(R[k].imag(), 1e-4 * largest_im));
+    }
+    return worst;
+  };
+  const ModeTable loose = krylov_response_table(req, 1e-2, 0), held = krylov_response_table(req, 1e-2, 1e-2);
+  const double before = im_error(loose), after = im_error(held);
+  std::printf("Im R at %zu frequencies off the points, against itself: %.2e without the decay criterion (%zu rows), "
+              "%.2e with 1e-2 (%zu rows)\n", probe.size(), before, loose.size(), after, held.size());
+  EXPECT_GT(before, 1e-2);
+  EXPECT_LT(after, 1e-2);
 }
 
 // The response by forced solves (no modes) has a pole at the damped mode with the mode's residue E_c: the
