@@ -396,6 +396,7 @@ void write_root_attributes(hid_t root, const ModeTable& t) {
     put_double(root, "fit_lo", t.fit_lo);
     put_double(root, "fit_hi", t.fit_hi);
     put_double(root, "fit_error", t.fit_error);
+    if (t.fit_decay_error >= 0) put_double(root, "fit_decay_error", t.fit_decay_error);
   }
   if (!t.convergence_reference.empty()) {
     put_string(root, "convergence_reference", t.convergence_reference);
@@ -496,6 +497,7 @@ void read_root_attributes(hid_t root, ModeTable& t) {
     t.fit_hi = get_double(root, "fit_hi");
     t.fit_error = get_double(root, "fit_error");
   }
+  if (has_attr(root, "fit_decay_error")) t.fit_decay_error = get_double(root, "fit_decay_error");
   if (has_attr(root, "convergence_reference")) {
     t.convergence_reference = get_string(root, "convergence_reference");
     t.convergence_tolerance = get_double(root, "convergence_tolerance");
@@ -595,6 +597,8 @@ void ModeTable::validate() const {
       fit_hi < fit_lo || (response_fit() && !viscous()))
     throw std::runtime_error("root attributes fit_lo, fit_hi, fit_error: not a window with a finite error of a "
                              "viscous table");
+  if (!std::isfinite(fit_decay_error) || (fit_decay_error >= 0 && !response_fit()))
+    throw std::runtime_error("root attribute fit_decay_error: not a finite error of a response table");
   for (double d : decay)
     if (d < 0) throw std::runtime_error("/modes/decay holds a negative value (a growing viscous mode)");
   if (!members.empty() && members.size() != n) throw std::runtime_error("/modes/members has the wrong length");

@@ -49,6 +49,9 @@ struct ModeTable {
   // the poles and residues of a rational fit of R(s) on the real window [fit_lo, fit_hi], which matches R between
   // its samples to fit_error (max |R − fit| / max |R|). fit_hi > fit_lo marks such a table; 0, 0 otherwise.
   double fit_lo = 0, fit_hi = 0, fit_error = 0;
+  // A Krylov table's estimated error of Im R against Im R itself on the window (the decays' relative error;
+  // docs/viscous.md, "The error of Im R"); < 0: not measured (attribute fit_decay_error absent).
+  double fit_decay_error = -1;
   bool response_fit() const { return fit_hi > fit_lo; }
   // Provenance (/provenance, optional; docs/physics.md §4): how the table was made, so that it can be made again.
   // geometry_source: "sphere radius=1" for a built-in shape, the section file's name for `section FILE`;

@@ -271,6 +271,7 @@ ModeTable krylov_response_table(const ResponseRequest& req, double max_error, do
 
   ModeTable t = response_table_start(req, 2L * forms.complex_size);
   t.fit_error = std::max(k.estimate, k.check_error);
+  t.fit_decay_error = std::max(k.dissipation_estimate, k.check_dissipation_error);
   if (!k.within_tolerance && is_root_rank())
     std::cerr << fmt::format("cavity-modes response: warning: after {} expansion points the table errs by {:.2g} of "
                              "max|R| and its Im R by {:.2g} of itself, above --max-fit-error {:.2g} or "

@@ -178,6 +178,7 @@ std::string table_json(const ModeTable& t) {
     j["fit_lo"] = t.fit_lo;
     j["fit_hi"] = t.fit_hi;
     j["fit_error"] = t.fit_error;
+    if (t.fit_decay_error >= 0) j["fit_decay_error"] = t.fit_decay_error;
   }
   if (t.has_galerkin())
     j["galerkin"] = {{"gram_re", t.galerkin.gram_re}, {"gram_im", t.galerkin.gram_im},

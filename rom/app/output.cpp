@@ -462,7 +462,9 @@ static void print_body_line(std::ostream& os, const ChainModel& m, const Spectru
     os << ", " << b.unconverged << " kept clusters not converged (their roots marked *: docs/cones.md)";
   if (b.fit_hi > b.fit_lo) {
     os << ", the pseudo-modes of " << b.response_kind << " on s in [" << b.fit_lo << ", " << b.fit_hi << "] (error "
-       << b.fit_error << ")";
+       << b.fit_error;
+    if (b.fit_decay_error >= 0) os << " of max|R|, of Im R against itself " << b.fit_decay_error;
+    os << ")";
     const FitPassivity& p = sp.passivity[k];
     if (p.passive())
       os << ", passive on it (Im R >= " << p.scan.min_im << " max|R|)";

@@ -205,6 +205,7 @@ void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
   b.fit_lo = t.fit_lo;
   b.fit_hi = t.fit_hi;
   b.fit_error = t.fit_error;
+  b.fit_decay_error = t.fit_decay_error;
   // Which reduction made the rows (the table's solver text, modes/app/galerkin_response_table.cpp, cavity_response.cpp).
   b.response_kind = t.solver.find("rational Krylov") != std::string::npos ? "a Krylov response table"
                     : t.solver.find("Galerkin") != std::string::npos   ? "a Galerkin response table"

@@ -85,6 +85,7 @@ struct BodyModel {
   // A response-fit table (docs/viscous.md, "Response fit"): its modes stand for R(s) on s in [fit_lo, fit_hi]
   // (table units, s = (sigma + omega)/omega) to fit_error; outside, the fit is extrapolated. fit_hi > fit_lo marks it.
   double fit_lo = 0, fit_hi = 0, fit_error = 0;
+  double fit_decay_error = -1;  // a Krylov table's error of Im R against itself (the decays'); < 0: not measured
   std::string response_kind;  // such a table's: "a Krylov response table", "a Galerkin response table" or "a response fit"
   double coverage = 0;       // E_kept / sum_rule
   int unconverged = 0;       // kept clusters the table flags as not converged
