@@ -84,6 +84,9 @@ expect_error "response-fit table without --ekman" "needs --ekman" "$BIN" respons
 expect_error "response-fit table with too few samples" "N >= 9" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:5 -o out.h5
 expect_error "response-fit table off the real axis" "increasing real frequencies" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:9 --sigma-imag 0.1 -o out.h5
 expect_error "--max-fit-error on a CSV response" "belongs to" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:9 --max-fit-error 1e-3 -o out.csv
+expect_error "--max-decay-fit-error on a rational fit" "belongs to a Krylov" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:9 --fit --max-decay-fit-error 1e-3 -o out.h5
+expect_error "negative --max-decay-fit-error" "must be 0" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:9 --max-decay-fit-error -1 -o out.h5
+expect_error "--max-decay-fit-error without response" "belong to" "$BIN" sphere --radius 1 --ekman 1e-2 --max-decay-fit-error 1e-3 -o out.h5
 expect_error "--galerkin on a CSV response" "belongs to" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:9 --galerkin -o out.csv
 expect_error "--galerkin on a mode table" "belong to 'cavity-modes response" "$BIN" sphere --radius 1 --ekman 1e-2 --galerkin -o out.h5
 expect_error "Galerkin response table with too few samples" "Galerkin response table needs --sigma" "$BIN" response sphere --radius 1 --ekman 1e-2 --sigma 0.5:1.5:5 --galerkin -o out.h5
