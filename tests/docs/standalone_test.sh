@@ -9,9 +9,17 @@ cd "$root"
 fail=0
 bad() { echo "FAILED: $*"; fail=1; }
 
-# Tracked text files (a clean checkout's view), minus this test, which has to spell the patterns.
-mapfile -t files < <(git ls-files 2>/dev/null | grep -vE '\.(h5|png|jpg|pdf)$|^tests/docs/standalone_test\.sh$')
-[ ${#files[@]} -gt 50 ] || { echo "FAILED: no git file list (run from a checkout)"; exit 1; }
+# Tracked text files (a clean checkout's view), minus this test, which has to spell the patterns. A copy without
+# git (an export, as bench/fresh_machine.sh makes) is taken whole, minus build trees and outputs.
+list_files() {
+  if git rev-parse --is-inside-work-tree > /dev/null 2>&1; then
+    git ls-files
+  else
+    find . \( -name .git -o -name 'build*' -o -name out \) -prune -o -type f -print | sed 's#^\./##'
+  fi
+}
+mapfile -t files < <(list_files | grep -vE '\.(h5|png|jpg|pdf)$|^tests/docs/standalone_test\.sh$')
+[ ${#files[@]} -gt 50 ] || { echo "FAILED: no file list (${#files[@]} files)"; exit 1; }
 
 check_pattern() {  # description, extended regex
   local hits
