@@ -176,6 +176,36 @@ std::vector<T> get_vector(hid_t loc, const std::string& name, hid_t mem_type, bo
   return v;
 }
 
+// The meridian free surface's attributes, and its columns only where it is present.
+void validate_free_surface(const ModeTable& t) {
+  if (t.free_surface.present()) {
+    const ModeTable::FreeSurface& f = t.free_surface;
+    for (double x : {f.fill, f.radius, f.K0, f.K1, f.K2, f.J1, f.J2})
+      if (!std::isfinite(x)) throw std::runtime_error("/free_surface holds a non-finite attribute");
+    if (!(f.fill > 0 && f.fill < 1) || !(f.K0 > 0) || !(f.K2 >= 0) || !(f.J2 >= 0))
+      throw std::runtime_error("/free_surface: fill outside (0, 1), or K0, K2, J2 not positive");
+  } else if (!t.free_surface.t.empty()) {
+    throw std::runtime_error("/free_surface/t in a table without a free surface");
+  }
+  if (!t.viscous() && !t.free_surface.t_imag.empty())
+    throw std::runtime_error("/free_surface/t_imag in a table whose ekman is not positive");
+}
+
+// The viscous columns and attributes: only in a viscous table, the response window and its errors finite.
+void validate_viscous_attributes(const ModeTable& t) {
+  if (!t.viscous() && !(t.decay.empty() && t.E_imag.empty() && t.a_imag.empty()))
+    throw std::runtime_error("/modes/decay, E_imag or a_imag in a table whose ekman is not positive");
+  if (!std::isfinite(t.ekman) || t.ekman < 0) throw std::runtime_error("root attribute ekman must be >= 0 and finite");
+  if (!std::isfinite(t.fit_lo) || !std::isfinite(t.fit_hi) || !(t.fit_error >= 0) || !std::isfinite(t.fit_error) ||
+      t.fit_hi < t.fit_lo || (t.response_fit() && !t.viscous()))
+    throw std::runtime_error("root attributes fit_lo, fit_hi, fit_error: not a window with a finite error of a "
+                             "viscous table");
+  if (!std::isfinite(t.fit_decay_error) || (t.fit_decay_error >= 0 && !t.response_fit()))
+    throw std::runtime_error("root attribute fit_decay_error: not a finite error of a response table");
+  for (double d : t.decay)
+    if (d < 0) throw std::runtime_error("/modes/decay holds a negative value (a growing viscous mode)");
+}
+
 // /galerkin: four n × n matrices of a damped-mode table, Hermitian (Gram with a positive diagonal).
 void validate_galerkin(const ModeTable& t) {
   const auto& g = t.galerkin;
@@ -579,28 +609,8 @@ void ModeTable::validate() const {
   check(a_imag, "a_imag", !viscous());
   check(free_surface.t, "t (/free_surface)", !free_surface.present());
   check(free_surface.t_imag, "t_imag (/free_surface)", !(free_surface.present() && viscous()));
-  if (free_surface.present()) {
-    const FreeSurface& f = free_surface;
-    for (double x : {f.fill, f.radius, f.K0, f.K1, f.K2, f.J1, f.J2})
-      if (!std::isfinite(x)) throw std::runtime_error("/free_surface holds a non-finite attribute");
-    if (!(f.fill > 0 && f.fill < 1) || !(f.K0 > 0) || !(f.K2 >= 0) || !(f.J2 >= 0))
-      throw std::runtime_error("/free_surface: fill outside (0, 1), or K0, K2, J2 not positive");
-  } else if (!free_surface.t.empty()) {
-    throw std::runtime_error("/free_surface/t in a table without a free surface");
-  }
-  if (!viscous() && !free_surface.t_imag.empty())
-    throw std::runtime_error("/free_surface/t_imag in a table whose ekman is not positive");
-  if (!viscous() && !(decay.empty() && E_imag.empty() && a_imag.empty()))
-    throw std::runtime_error("/modes/decay, E_imag or a_imag in a table whose ekman is not positive");
-  if (!std::isfinite(ekman) || ekman < 0) throw std::runtime_error("root attribute ekman must be >= 0 and finite");
-  if (!std::isfinite(fit_lo) || !std::isfinite(fit_hi) || !(fit_error >= 0) || !std::isfinite(fit_error) ||
-      fit_hi < fit_lo || (response_fit() && !viscous()))
-    throw std::runtime_error("root attributes fit_lo, fit_hi, fit_error: not a window with a finite error of a "
-                             "viscous table");
-  if (!std::isfinite(fit_decay_error) || (fit_decay_error >= 0 && !response_fit()))
-    throw std::runtime_error("root attribute fit_decay_error: not a finite error of a response table");
-  for (double d : decay)
-    if (d < 0) throw std::runtime_error("/modes/decay holds a negative value (a growing viscous mode)");
+  validate_free_surface(*this);
+  validate_viscous_attributes(*this);
   if (!members.empty() && members.size() != n) throw std::runtime_error("/modes/members has the wrong length");
   if (!converged.empty() && converged.size() != n) throw std::runtime_error("/modes/converged has the wrong length");
   const std::size_t nb = bands.E.size();

@@ -217,7 +217,7 @@ void add_response_options(CLI::App* cmd, ViscousOptions& viscous) {
   cmd->add_option("--max-decay-fit-error", viscous.max_decay_fit_error,
                   fmt::format("-o FILE.h5, Krylov only: the largest error of the table's Im R, which sets the decay "
                               "rates, relative to Im R itself on the window; 0, the default: measured and written "
-                              "in the table's solver line, not a stopping criterion (slow at low Ekman numbers; "
+                              "in the table (fit_decay_error), not a stopping criterion (slow at low Ekman numbers; "
                               "chain-rom confirm removes the table's error at the roots)"));
   cmd->add_flag("--krylov", viscous.krylov,
                 "-o FILE.h5 only, the default: the Galerkin projection on a rational Krylov space whose expansion "
@@ -252,9 +252,8 @@ void refuse_extras(const CLI::App& cmd, bool response) {
       (first == "--sigma" || first == "--sigma-imag" || first == "--max-fit-error" ||
        first == "--max-decay-fit-error" || first == "--galerkin" ||
        first == "--krylov" || first == "--fit"))
-    throw std::runtime_error("--sigma, --sigma-imag, --max-fit-error, --max-decay-fit-error, --krylov, --fit and --galerkin "
-                             "belong to "
-                             "'cavity-modes response SHAPE ...'");
+    throw std::runtime_error("--sigma, --sigma-imag, --max-fit-error, --max-decay-fit-error, --krylov, --fit and "
+                             "--galerkin belong to 'cavity-modes response SHAPE ...'");
   const std::string name = (response ? "cavity-modes response " : "cavity-modes ") + cmd.get_name();
   if (first.rfind("--", 0) == 0)
     throw std::runtime_error(name + " does not take " + first + " (its options: " + name + " --help)");
