@@ -192,7 +192,7 @@ double entry_error(const Eigen::MatrixXcd& a, const Eigen::MatrixXcd& b, const E
 // The largest entry of |Im(a − b)| against b's own dissipation: R's anti-Hermitian part P = Im R (R is complex
 // symmetric) is positive semi-definite on real frequencies (passivity), so |P_ij| ≤ √(P_ii P_jj) is each entry's
 // natural size; below `floor` (entry by entry) the floor is the size. A chain root's decay is Im R at its frequency
-// times its coupling: this is the relative error of the decays the table gives.
+// times its coupling: this is the relative error of the decays the table gives (docs/viscous.md, "The error of Im R").
 double dissipation_error(const Eigen::MatrixXcd& a, const Eigen::MatrixXcd& b, const Eigen::MatrixXd& floor) {
   const Eigen::VectorXd own = b.diagonal().imag().cwiseMax(0.0);
   const Eigen::MatrixXd size = (own * own.transpose()).cwiseSqrt().cwiseMax(floor);
