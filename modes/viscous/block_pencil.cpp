@@ -69,4 +69,16 @@ PVec block_vector(Mat like, const std::vector<double>& real_part) {
   return v;
 }
 
+PVec block_vector(Mat like, const std::vector<std::complex<double>>& values) {
+  PVec v;
+  petsc_check(MatCreateVecs(like, v.out(), nullptr), "MatCreateVecs");
+  PetscInt lo = 0, hi = 0;
+  petsc_check(VecGetOwnershipRange(v, &lo, &hi), "VecGetOwnershipRange");
+  PetscScalar* a = nullptr;
+  petsc_check(VecGetArray(v, &a), "VecGetArray");
+  for (PetscInt g = lo; g < hi; ++g) a[g - lo] = g % 2 == 0 ? values[g / 2].real() : values[g / 2].imag();
+  petsc_check(VecRestoreArray(v, &a), "VecRestoreArray");
+  return v;
+}
+
 }  // namespace rc::modes

@@ -9,6 +9,7 @@
 
 #include <mpi.h>
 
+#include <complex>
 #include <vector>
 
 namespace rc::modes {
@@ -37,5 +38,7 @@ PMat block_imaginary_mass(MPI_Comm comm, int n, const Triplets& mass);
 
 // A block vector laid out like `like`'s columns holding real_part on the real slots and 0 on the imaginary ones.
 PVec block_vector(Mat like, const std::vector<double>& real_part);
+// ... holding a complex vector (its real and imaginary parts on the pairs' slots).
+PVec block_vector(Mat like, const std::vector<std::complex<double>>& values);
 
 }  // namespace rc::modes

@@ -1,8 +1,10 @@
 #include "viscous_volume_forms.hpp"
 
 #include "block_pencil.hpp"
+#include "viscous_fill_surface.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -13,10 +15,11 @@ struct ElementMatrices {
   std::vector<double> m0, k0;    // per pair of local velocity nodes
   std::array<std::vector<double>, 3> b;  // per (pressure node, velocity node): ∫ q ∂_d v
   std::array<std::array<std::vector<double>, 3>, 3> f;  // f[k][d][a]: coupling k on component d of node a
+  std::array<std::array<std::vector<double>, 3>, 3> kc;  // with a free surface: kc[d][d′] = ∫ ∂_d′ w ∂_d v (header)
 };
 
 void integrate_element(const VolumeTaylorHoodSpace& space, std::size_t e, const std::array<double, 3>& centroid,
-                       VolumeQuadrature& eq, ElementMatrices& out) {
+                       bool stress_form, VolumeQuadrature& eq, ElementMatrices& out) {
   const int npe = space.velocity_nodes_per_element(), npp = space.pressure_nodes_per_element();
   space.geometry().quadrature(e, eq);
   out.m0.assign(npe * npe, 0.0);
@@ -24,6 +27,8 @@ void integrate_element(const VolumeTaylorHoodSpace& space, std::size_t e, const 
   for (auto& b : out.b) b.assign(npp * npe, 0.0);
   for (auto& fk : out.f)
     for (auto& fd : fk) fd.assign(npe, 0.0);
+  for (auto& kd : out.kc)
+    for (auto& k : kd) k.assign(stress_form ? npe * npe : 0, 0.0);
   const auto& P = space.pressure_basis();
   for (std::size_t q = 0; q < eq.w.size(); ++q) {
     const double w = eq.w[q];
@@ -38,6 +43,9 @@ void integrate_element(const VolumeTaylorHoodSpace& space, std::size_t e, const 
       for (int c = 0; c < npe; ++c) {
         out.m0[a * npe + c] += N[a] * N[c] * w;
         out.k0[a * npe + c] += (dN[0][a] * dN[0][c] + dN[1][a] * dN[1][c] + dN[2][a] * dN[2][c]) * w;
+        if (stress_form)
+          for (int d = 0; d < 3; ++d)
+            for (int d2 = 0; d2 < 3; ++d2) out.kc[d][d2][a * npe + c] += dN[d2][a] * dN[d][c] * w;
       }
     }
     const double* Pq = &P[q * npp];
@@ -65,6 +73,9 @@ void scatter(const VolumeTaylorHoodSpace& space, std::size_t e, const ElementMat
       }
       ai.add(u[0][a], u[1][c], -2 * em.m0[ac]);  // C: test x, field y
       ai.add(u[1][a], u[0][c], 2 * em.m0[ac]);   //    test y, field x
+      if (!em.kc[0][0].empty())
+        for (int d = 0; d < 3; ++d)
+          for (int d2 = 0; d2 < 3; ++d2) ai.add(u[d][a], u[d2][c], ekman * em.kc[d][d2][ac]);
     }
   }
   for (int q = 0; q < npp; ++q)
@@ -74,6 +85,21 @@ void scatter(const VolumeTaylorHoodSpace& space, std::size_t e, const ElementMat
         ar.add(p[q], u[d][a], b);
         ar.add(u[d][a], p[q], b);
       }
+}
+
+// The five directions' inputs and outputs (viscous_fill_surface.hpp), summed over the ranks' shares.
+void add_fill_directions(const VolumeTaylorHoodSpace& space, const ViscousFillSurface& surface, int n, std::size_t first,
+                         std::size_t last, bool root, MPI_Comm comm, ViscousVolumeForms& out) {
+  auto F = fill_inputs(space, surface, n, first, last, root);
+  for (auto& Fj : F) {
+    std::vector<std::complex<double>> all(Fj.size());
+    MPI_Allreduce(Fj.data(), all.data(), 2 * n, MPI_DOUBLE, MPI_SUM, comm);  // complex<double> is two doubles
+    out.fill_inputs.push_back(block_vector(out.forms.A, all));
+    for (auto& v : all) v = std::conj(v);
+    out.fill_outputs.push_back(block_vector(out.forms.A, all));
+  }
+  out.axis_point = surface.axis_point;
+  out.surface_radius = surface.surface.radius();
 }
 
 }  // namespace
@@ -86,14 +112,20 @@ ViscousVolumeForms assemble_viscous_volume_forms(const VolumeTaylorHoodSpace& sp
   MPI_Comm_size(comm, &ranks);
   const std::size_t ne = space.num_elements();
   const std::size_t first = ne * rank / ranks, last = ne * (rank + 1) / ranks;
-  const int n = space.size();
+  const bool fill = space.free_surface();
   Triplets ar, ai, mass;
+  std::optional<ViscousFillSurface> surface;
+  if (fill) {
+    surface.emplace(number_fill_surface(space, centroid, space.size()));
+    if (rank == 0) add_fill_surface_terms(*surface, ar, mass);
+  }
+  const int n = space.size() + (fill ? surface->count : 0);
   std::array<std::vector<double>, 3> f, f_all;
   for (int k = 0; k < 3; ++k) { f[k].assign(n, 0.0); f_all[k].assign(n, 0.0); }
   VolumeQuadrature eq;
   ElementMatrices em;
   for (std::size_t e = first; e < last; ++e) {
-    integrate_element(space, e, centroid, eq, em);
+    integrate_element(space, e, centroid, fill, eq, em);
     scatter(space, e, em, ekman, ar, ai, mass, f);
   }
   for (int k = 0; k < 3; ++k) MPI_Allreduce(f[k].data(), f_all[k].data(), n, MPI_DOUBLE, MPI_SUM, comm);
@@ -109,6 +141,7 @@ ViscousVolumeForms assemble_viscous_volume_forms(const VolumeTaylorHoodSpace& sp
   forms.real_slots = block_vector(forms.A, std::vector<double>(n, 1.0));
   petsc_check(MatCreateVecs(forms.M, forms.mass_diagonal.out(), nullptr), "MatCreateVecs");
   petsc_check(MatGetDiagonal(forms.M, forms.mass_diagonal), "MatGetDiagonal");
+  if (fill) add_fill_directions(space, *surface, n, first, last, rank == 0, comm, out);
   return out;
 }
 

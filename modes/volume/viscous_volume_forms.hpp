@@ -12,6 +12,10 @@
 // components make C diagonal there): the left eigenvectors are not the right ones, and a mode's coupling needs both.
 // Ideal limit: Ek = 0 makes A Hermitian and every λ real (iC is Hermitian); with Ek > 0, Im λ = Ek x̄ᵀKx / x̄ᵀMx > 0.
 //
+// A partially filled tank (docs/volume.md §8): the free surface's terms and forcing directions, viscous_fill_surface.hpp;
+// the stress-free surface makes K the stress form K_s = 2∫ D(V):D(W) = K + ∫ ∇V:(∇W)ᵀ, in Cartesian blocks
+// K_s[d][d′] = δ_dd′ K0 + ∫ ∂_d′ w ∂_d v (test component d, field component d′).
+//
 // Couplings: c_k = ∫ (e_k × r)·V dτ = f_kᵀx with r measured from `centroid`:
 //   f_x(V) = ∫ (−z' V_y + y' V_z),  f_y(V) = ∫ (z' V_x − x' V_z),  f_z(V) = ∫ (−y' V_x + x' V_y).
 #pragma once
@@ -27,7 +31,13 @@ namespace rc::modes {
 
 struct ViscousVolumeForms {
   ViscousForms forms;                  // Â, M̂, i𝓜 (forms.coupling = f_x)
-  std::array<PVec, 3> couplings;       // f_x, f_y, f_z on the real slots
+  std::array<PVec, 3> couplings;       // f_x, f_y, f_z on the real slots (the velocity's moment only)
+  // A partially filled tank (the space has a free surface: viscous_fill_surface.hpp): K is the stress form K_s, the
+  // surface's η̃ follow the pressure, and the five directions about P0 drive the liquid as F_j and give its moment as
+  // G_jᵀx (G_j = F̄_j). Empty for a full cavity.
+  std::vector<PVec> fill_inputs, fill_outputs;
+  std::array<double, 3> axis_point{};  // P0
+  double surface_radius = 0;           // b
 };
 
 // Assembles on `comm` (each rank a contiguous share of the elements). ekman >= 0.

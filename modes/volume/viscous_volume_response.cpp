@@ -30,6 +30,25 @@ std::vector<Eigen::Matrix3cd> forced_volume_response(const ViscousVolumeForms& f
   return out;
 }
 
+std::vector<FillResponse> forced_fill_response(const ViscousVolumeForms& forms,
+                                               const std::vector<std::complex<double>>& sigmas) {
+  if (forms.fill_inputs.size() != 5) throw std::logic_error("a fill response needs a free surface's five directions");
+  ShiftedSolver solver(forms.forms);
+  PVec x;
+  petsc_check(VecDuplicate(forms.fill_inputs[0], x.out()), "VecDuplicate");
+  std::vector<FillResponse> out;
+  for (const auto sigma : sigmas) {
+    solver.factor(sigma);
+    FillResponse R;
+    for (int k = 0; k < 5; ++k) {
+      solver.solve(forms.fill_inputs[k], x);
+      for (int j = 0; j < 5; ++j) R(j, k) = block_bilinear(forms.fill_outputs[j], x);
+    }
+    out.push_back(R);
+  }
+  return out;
+}
+
 ViscousVolumeResponse viscous_volume_response(const ViscousVolumeResponseRequest& request,
                                               const std::function<void(const std::string&)>& progress) {
   const auto t0 = std::chrono::steady_clock::now();

@@ -37,6 +37,13 @@ struct ViscousVolumeResponse {
 ViscousVolumeResponse viscous_volume_response(const ViscousVolumeResponseRequest& request,
                                               const std::function<void(const std::string&)>& progress = {});
 
+// A partially filled tank's 5 × 5 response about P0 (docs/volume.md §8, "The viscous liquid's pencil"):
+//   R_jk(σ) = G_jᵀ (σ𝓜 − A)⁻¹ F_k over the directions U_x, U_y, U_z, T̂_x, T̂_y (viscous_fill_surface.hpp);
+// the rotation about the axis's point O = P0 − c ẑ is U_k + c T̂_k, so R about O is B R Bᵀ, B = [I₃ | c (e_x, e_y)].
+using FillResponse = Eigen::Matrix<std::complex<double>, 5, 5>;
+std::vector<FillResponse> forced_fill_response(const ViscousVolumeForms& forms,
+                                               const std::vector<std::complex<double>>& sigmas);
+
 // The 3 × 3 response at each σ of an assembled system (the same definition).
 std::vector<Eigen::Matrix3cd> forced_volume_response(const ViscousVolumeForms& forms,
                                                      const std::vector<std::complex<double>>& sigmas,

@@ -32,13 +32,16 @@ class VolumeFreeSurface {
   // ∫_Σ f dS.
   double integral(const std::function<double(const std::array<double, 3>&)>& f) const;
 
- private:
+  // The surface's quadrature points (the viscous pencil's surface terms assemble on them: viscous_fill_surface.hpp).
   struct Point {
     std::array<double, 3> x{};
     double w = 0;                    // weight × dS
     std::vector<int> surface;        // the face's surface indices, one per trace basis function
     std::vector<double> N;           // the trace basis at the point
   };
+  const std::vector<Point>& points() const { return points_; }
+
+ private:
   double radius_ = 0, area_ = 0;
   std::array<double, 2> axis_{};
   std::vector<int> dofs_, index_;

@@ -1,5 +1,6 @@
 #include "volume_taylor_hood.hpp"
 
+#include "partial_volume.hpp"
 #include "tetrahedron_nodes.hpp"
 
 #include <algorithm>
@@ -25,21 +26,33 @@ NodeKey node_key(const int* vertices, const std::array<double, 3>& uvw, int orde
 }
 
 // The mesh nodes on the wall: every node of a face that one tetrahedron alone has (the local nodes whose barycentric
-// weight on the face's opposite vertex is zero).
+// weight on the face's opposite vertex is zero), except a partially filled tank's free-surface faces (every node on
+// the cylinder ρ = b, as volume_free_surface.cpp finds them): stress-free, not no-slip.
 std::vector<char> nodes_on_wall(const geometry::VolumeMesh& mesh) {
   const int npe = mesh.nodes_per_element;
   const auto nodes = geometry::tetrahedron_nodes(mesh.order);
   std::vector<char> wall(mesh.nodes.size(), 0);
-  for (const auto& [e, o] : geometry::wall_faces(mesh))
+  std::vector<int> face;
+  for (const auto& [e, o] : geometry::wall_faces(mesh)) {
+    face.clear();
     for (int a = 0; a < npe; ++a)
-      if (geometry::tetrahedron_lattice(nodes.points[a], mesh.order)[o] == 0) wall[mesh.tetrahedra[e * npe + a]] = 1;
+      if (geometry::tetrahedron_lattice(nodes.points[a], mesh.order)[o] == 0) face.push_back(mesh.tetrahedra[e * npe + a]);
+    const bool free = mesh.free_surface_radius > 0 && std::all_of(face.begin(), face.end(), [&](int n) {
+      return geometry::on_free_surface(mesh.nodes[n], mesh.free_surface_radius, mesh.spin_axis);
+    });
+    if (!free)
+      for (int n : face) wall[n] = 1;
+  }
   return wall;
 }
 
 }  // namespace
 
 VolumeTaylorHoodSpace::VolumeTaylorHoodSpace(geometry::VolumeMesh mesh, int quadrature_degree)
-    : geometry_(std::move(mesh), quadrature_degree) {
+    : geometry_([&] {
+        const bool pin = !(mesh.free_surface_radius > 0);  // read before the move
+        return VolumeSpace(std::move(mesh), quadrature_degree, pin);
+      }()) {
   const auto& m = geometry_.mesh();
   if (m.order < 2)
     throw std::runtime_error("the viscous solver needs elements of order >= 2 (Taylor-Hood P_k/P_(k-1)); got " +
@@ -61,14 +74,15 @@ VolumeTaylorHoodSpace::VolumeTaylorHoodSpace(geometry::VolumeMesh mesh, int quad
   pressure_npe_ = nodes.nodes_per_element;
   std::map<NodeKey, int> numbered;
   pressure_.resize(ne * pressure_npe_);
-  int next = 0;  // pressure nodes numbered from 0; node 0 is the pinned one
+  const int pinned = free_surface() ? 0 : 1;  // pressure nodes numbered from 0; node 0 is the pinned one, if any
+  int next = 0;
   for (std::size_t e = 0; e < ne; ++e)
     for (int b = 0; b < pressure_npe_; ++b) {
       auto [it, is_new] = numbered.try_emplace(node_key(&m.tetrahedra[e * npe], nodes.points[b], pk), next);
       if (is_new) ++next;
-      pressure_[e * pressure_npe_ + b] = it->second == 0 ? -1 : velocity_dofs_ + it->second - 1;
+      pressure_[e * pressure_npe_ + b] = it->second < pinned ? -1 : velocity_dofs_ + it->second - pinned;
     }
-  pressure_dofs_ = next - 1;
+  pressure_dofs_ = next - pinned;
   if (velocity_dofs_ == 0 || pressure_dofs_ <= 0)
     throw std::runtime_error("the 3-D mesh has no free velocity or pressure unknown (too coarse for order " +
                              std::to_string(m.order) + ")");

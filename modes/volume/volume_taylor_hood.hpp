@@ -3,6 +3,9 @@
 // pressure continuous of order k − 1 on the same elements. No slip is built into the numbering: every node on the wall
 // (a face of one tetrahedron only) carries no velocity unknown. The pressure is defined up to a constant in a closed
 // cavity; one pressure node (the first numbered) is pinned to zero to take the constant out.
+// A partially filled tank (the mesh has a free surface, docs/volume.md §8) is stress-free there: the surface's nodes
+// off the walls keep their velocity unknowns (the contact line, on a wall too, has none), and no pressure node is
+// pinned (the surface fixes the pressure's constant). Its geometry() then numbers a dof on every node (dof = node).
 #pragma once
 
 #include "volume_space.hpp"
@@ -28,6 +31,7 @@ class VolumeTaylorHoodSpace {
   int pressure_nodes_per_element() const { return pressure_npe_; }
   const VolumeSpace& geometry() const { return geometry_; }
   int wall_nodes() const { return wall_nodes_; }
+  bool free_surface() const { return geometry_.mesh().free_surface_radius > 0; }
 
   // Global unknown of each local velocity node of element e for component c (0, 1, 2 = x, y, z); −1 on the wall.
   std::span<const int> velocity(std::size_t e, int c) const;
