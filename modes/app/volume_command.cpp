@@ -152,20 +152,30 @@ geometry::VolumeShapeSpec VolumeCommands::resolve_shape() const {
   return shape;
 }
 
-// A 3-D partial fill's modes are printed, ideal, on isotropic meshes (docs/volume.md §8): what else is asked is refused.
+// A 3-D partial fill's ideal modes are printed and tabled on isotropic meshes, its viscous forced response written as
+// CSV (docs/volume.md §8): what else is asked is refused, naming what is built.
 void VolumeCommands::check_partial_fill_options() const {
   const Common& o = common_;
-  if (o.ekman != 0)
-    throw std::runtime_error("--ekman with --fill in 3-D is not built yet: the ideal liquid's modes are (drop --ekman), "
-                             "or an axisymmetric tank on the spin axis takes both (cavity-modes sphere|spheroid ... "
-                             "--fill F --ekman Ek)");
+  const std::string ext = std::filesystem::path(o.output).extension().string();
+  if (o.ekman != 0) {
+    if (o.sigma.empty() || ext != ".csv")
+      throw std::runtime_error("--ekman with --fill in 3-D gives the forced response so far (--ekman Ek --sigma LIST -o "
+                               "FILE.csv); its damped modes and response table are not built yet (an axisymmetric "
+                               "tank on the spin axis has both: cavity-modes response sphere|spheroid|... --fill F "
+                               "--ekman Ek --sigma FROM:TO:N -o T.h5)");
+    if (!(o.ekman > 0 && o.ekman < 1)) throw std::runtime_error("--ekman must be in (0, 1)");
+    if (o.order < 2) throw std::runtime_error("--ekman needs --order >= 2 (Taylor-Hood elements)");
+    if (!o.targets.empty()) throw std::runtime_error("--sigma computes no modes: drop --target");
+  } else if (!o.sigma.empty()) {
+    throw std::runtime_error("--sigma needs --ekman (the ideal fluid's response is its table's modal sum)");
+  }
   if (o.fields)
     throw std::runtime_error("--fields is not written for a partially filled 3-D tank yet: its modes are printed and, "
                              "with -o T.h5, tabled (docs/volume.md §8)");
-  if (!o.output.empty() && std::filesystem::path(o.output).extension() != ".h5")
+  if (o.ekman == 0 && !o.output.empty() && ext != ".h5")
     throw std::runtime_error("-o for a partially filled 3-D tank writes a mode table: a .h5 file");
-  if (o.wall_size > 0 || o.wall_layer > 0)
-    throw std::runtime_error("--wall-size/--wall-layer are not taken with --fill in 3-D");
+  if (o.wall_layer > 0) throw std::runtime_error("--wall-layer is not taken with --fill in 3-D (--wall-size is)");
+  if (o.ekman == 0 && o.wall_size > 0) throw std::runtime_error("--wall-size belongs to --ekman with --fill in 3-D");
 }
 
 VolumeTableRequest VolumeCommands::resolve() const {
@@ -235,6 +245,7 @@ void VolumeCommands::set_provenance(ModeTable& table, const std::string& command
 
 int VolumeCommands::run(const std::string& command_line) const {
   const VolumeTableRequest request = resolve();
+  if (request.shape.fill < 1 && common_.ekman > 0) return run_fill_response(request);
   if (request.shape.fill < 1) return run_partial_fill(request, command_line);
   if (common_.ekman > 0 && !common_.sigma.empty() && std::filesystem::path(common_.output).extension() == ".h5")
     return run_response_table(request, command_line);
@@ -471,6 +482,62 @@ int VolumeCommands::run_response(const VolumeTableRequest& ideal) const {
     const std::complex<double> m1 = 0.5 * (R(0, 0) + I * R(0, 1) - I * R(1, 0) + R(1, 1));
     std::cout << fmt::format("{:.6f}{:+.6f}i  {:.10e} {:+.10e}  {:.6e} {:+.6e}\n", request.sigmas[i].real(),
                              request.sigmas[i].imag(), m1.real(), m1.imag(), R(2, 2).real(), R(2, 2).imag());
+  }
+  std::cout << std::flush;
+  return 0;
+}
+
+namespace {
+
+void write_fill_response(const std::string& path, const std::vector<std::complex<double>>& sigmas,
+                         const ViscousFillResponse& r, const std::string& method) {
+  write_text_atomically(path, [&](std::ostream& out) {
+    out << "# cavity-modes 3-D response of a partially filled tank: " << method << "\n# R_jk(sigma) = G_j^T (sigma M - "
+        << "A)^-1 F_k over the directions Ux, Uy, Uz (rotations about P0 = (" << r.axis_point[0] << ", "
+        << r.axis_point[1] << ", " << r.axis_point[2] << "), the spin axis's point at the liquid's centroid's height) "
+        << "and Tx, Ty (P0 moved along the axis); about O = P0 - c z it is B R B^T, B = [I | c (e_x, e_y)] "
+        << "(docs/volume.md, section 8)\n";
+    out << "sigma_re,sigma_im";
+    const char* name[] = {"Ux", "Uy", "Uz", "Tx", "Ty"};
+    for (int j = 0; j < 5; ++j)
+      for (int k = 0; k < 5; ++k) out << ",R_" << name[j] << name[k] << "_re,R_" << name[j] << name[k] << "_im";
+    out << "\n";
+    out.precision(17);
+    for (std::size_t i = 0; i < sigmas.size(); ++i) {
+      out << sigmas[i].real() << ',' << sigmas[i].imag();
+      for (int j = 0; j < 5; ++j)
+        for (int k = 0; k < 5; ++k) out << ',' << r.R[i](j, k).real() << ',' << r.R[i](j, k).imag();
+      out << '\n';
+    }
+  });
+}
+
+}  // namespace
+
+int VolumeCommands::run_fill_response(const VolumeTableRequest& ideal) const {
+  int ranks = 1;
+  MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
+  if (ranks > 1) throw std::runtime_error("a partially filled 3-D tank is solved on one rank (run it without mpirun)");
+  ViscousVolumeResponseRequest request;
+  request.shape = ideal.shape;
+  request.mesh = ideal.mesh;
+  if (common_.wall_size == 0) request.mesh.wall_size = 2 * std::sqrt(common_.ekman);  // as for a full tank
+  request.ekman = common_.ekman;
+  request.sigmas = parse_sigma_spec(common_.sigma, common_.sigma_imag);
+  const ViscousFillResponse r = viscous_fill_response(request, [](const std::string& line) { std::cerr << line << "\n"; });
+  const std::string method = fmt::format("viscous liquid at Ek = {}, fill {}, free surface b = {:.10g}; forced solves "
+                                         "on 3-D Taylor-Hood P{}/P{} ({} tetrahedra, {} unknowns, {} on the surface; wall size {})",
+                                         request.ekman, request.shape.fill, r.surface_radius, request.mesh.order,
+                                         request.mesh.order - 1, r.elements, r.unknowns, r.surface_unknowns,
+                                         request.mesh.wall_size);
+  write_fill_response(common_.output, request.sigmas, r, method);
+  std::cout << "3-D fill response: " << method << ", " << r.seconds << " s\n"
+            << "# sigma  R_UxUx (re, im)  R_UyUy (re, im)  R_UzUz (re, im)  R_TxTx (re, im)  -> " << common_.output << "\n";
+  for (std::size_t i = 0; i < request.sigmas.size(); ++i) {
+    const FillResponse& R = r.R[i];
+    std::cout << fmt::format("{:.6f}{:+.6f}i", request.sigmas[i].real(), request.sigmas[i].imag());
+    for (int k : {0, 1, 2, 3}) std::cout << fmt::format("  {:.8e} {:+.8e}", R(k, k).real(), R(k, k).imag());
+    std::cout << "\n";
   }
   std::cout << std::flush;
   return 0;

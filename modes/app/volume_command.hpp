@@ -2,7 +2,8 @@
 // `volume FILE` (.geo/.msh with a 3-D group "fluid", or CAD .step/.stp/.brep), each writing an ideal 3-D mode table,
 // or with --ekman the viscous fluid's damped modes and their coupling tensors, printed and, with -o, as a viscous table,
 // or with --ekman and --sigma its forced response: a CSV, or with -o FILE.h5 a response table for chain-rom; an
-// ellipsoid with --fill F (< 1) and the spin axis's distance is a partially filled tank whose ideal modes are printed.
+// ellipsoid with --fill F (< 1) and the spin axis's distance is a partially filled tank whose ideal modes are printed
+// and tabled, or with --ekman and --sigma its viscous forced response written as CSV.
 // The request is resolved here, once; make_volume_table gets only what it needs.
 #pragma once
 
@@ -35,6 +36,7 @@ class VolumeCommands {
   int run_response(const VolumeTableRequest& ideal) const;
   int run_response_table(const VolumeTableRequest& ideal, const std::string& command_line) const;
   int run_partial_fill(const VolumeTableRequest& request, const std::string& command_line) const;
+  int run_fill_response(const VolumeTableRequest& ideal) const;
   void set_provenance(ModeTable& table, const std::string& command_line) const;
   CLI::App *ellipsoid_ = nullptr, *volume_ = nullptr;
   double a_ = 0, b_ = 0, c_ = 0, tilt_degrees_ = 0;

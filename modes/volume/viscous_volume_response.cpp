@@ -31,7 +31,8 @@ std::vector<Eigen::Matrix3cd> forced_volume_response(const ViscousVolumeForms& f
 }
 
 std::vector<FillResponse> forced_fill_response(const ViscousVolumeForms& forms,
-                                               const std::vector<std::complex<double>>& sigmas) {
+                                               const std::vector<std::complex<double>>& sigmas,
+                                               const std::function<void(std::size_t)>& done) {
   if (forms.fill_inputs.size() != 5) throw std::logic_error("a fill response needs a free surface's five directions");
   ShiftedSolver solver(forms.forms);
   PVec x;
@@ -45,6 +46,7 @@ std::vector<FillResponse> forced_fill_response(const ViscousVolumeForms& forms,
       for (int j = 0; j < 5; ++j) R(j, k) = block_bilinear(forms.fill_outputs[j], x);
     }
     out.push_back(R);
+    if (done) done(out.size());
   }
   return out;
 }
@@ -61,6 +63,26 @@ ViscousVolumeResponse viscous_volume_response(const ViscousVolumeResponseRequest
     if (progress) progress(fmt::format("3-D viscous response: {} of {} frequencies", done, request.sigmas.size()));
   });
   out.unknowns = system.space->size();
+  out.elements = system.space->num_elements();
+  out.mesh_h = system.space->geometry().mesh().size;
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+ViscousFillResponse viscous_fill_response(const ViscousVolumeResponseRequest& request,
+                                          const std::function<void(const std::string&)>& progress) {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (request.sigmas.empty()) throw std::runtime_error("no frequency sigma given");
+  if (!(request.shape.fill < 1)) throw std::logic_error("a fill response is a partially filled tank's");
+  const ViscousVolumeSystem system = viscous_volume_system(request.shape, request.mesh, request.ekman, progress);
+  ViscousFillResponse out;
+  out.R = forced_fill_response(system.forms, request.sigmas, [&](std::size_t done) {
+    if (progress) progress(fmt::format("3-D viscous fill response: {} of {} frequencies", done, request.sigmas.size()));
+  });
+  out.axis_point = system.forms.axis_point;
+  out.surface_radius = system.forms.surface_radius;
+  out.unknowns = system.forms.forms.complex_size;
+  out.surface_unknowns = system.forms.forms.complex_size - system.space->size();
   out.elements = system.space->num_elements();
   out.mesh_h = system.space->geometry().mesh().size;
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

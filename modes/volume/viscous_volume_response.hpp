@@ -11,6 +11,8 @@
 
 #include <Eigen/Core>
 
+#include <array>
+
 #include <complex>
 #include <functional>
 #include <string>
@@ -42,7 +44,20 @@ ViscousVolumeResponse viscous_volume_response(const ViscousVolumeResponseRequest
 // the rotation about the axis's point O = P0 − c ẑ is U_k + c T̂_k, so R about O is B R Bᵀ, B = [I₃ | c (e_x, e_y)].
 using FillResponse = Eigen::Matrix<std::complex<double>, 5, 5>;
 std::vector<FillResponse> forced_fill_response(const ViscousVolumeForms& forms,
-                                               const std::vector<std::complex<double>>& sigmas);
+                                               const std::vector<std::complex<double>>& sigmas,
+                                               const std::function<void(std::size_t)>& done = {});
+
+// The partially filled tank's (request.shape.fill < 1) response at every σ: meshes, assembles, solves.
+struct ViscousFillResponse {
+  std::vector<FillResponse> R;          // about P0, over U_x, U_y, U_z, T̂_x, T̂_y
+  std::array<double, 3> axis_point{};   // P0, in the tank's coordinates
+  double surface_radius = 0;            // b
+  int unknowns = 0, surface_unknowns = 0;
+  std::size_t elements = 0;
+  double mesh_h = 0, seconds = 0;
+};
+ViscousFillResponse viscous_fill_response(const ViscousVolumeResponseRequest& request,
+                                          const std::function<void(const std::string&)>& progress = {});
 
 // The 3 × 3 response at each σ of an assembled system (the same definition).
 std::vector<Eigen::Matrix3cd> forced_volume_response(const ViscousVolumeForms& forms,
