@@ -139,6 +139,9 @@ ViscousVolumeForms assemble_viscous_volume_forms(const VolumeTaylorHoodSpace& sp
   for (int k = 0; k < 3; ++k) out.couplings[k] = block_vector(forms.A, f_all[k]);
   forms.coupling = block_vector(forms.A, f_all[0]);
   forms.real_slots = block_vector(forms.A, std::vector<double>(n, 1.0));
+  std::vector<double> velocity(n, 0.0);
+  std::fill(velocity.begin(), velocity.begin() + space.velocity_dofs(), 1.0);  // the velocity's unknowns come first
+  out.velocity_slots = block_vector(forms.A, velocity);
   petsc_check(MatCreateVecs(forms.M, forms.mass_diagonal.out(), nullptr), "MatCreateVecs");
   petsc_check(MatGetDiagonal(forms.M, forms.mass_diagonal), "MatGetDiagonal");
   if (fill) add_fill_directions(space, *surface, n, first, last, rank == 0, comm, out);

@@ -32,6 +32,7 @@ namespace rc::modes {
 struct ViscousVolumeForms {
   ViscousForms forms;                  // Â, M̂, i𝓜 (forms.coupling = f_x)
   std::array<PVec, 3> couplings;       // f_x, f_y, f_z on the real slots (the velocity's moment only)
+  PVec velocity_slots;                 // 1 on the velocity unknowns' real slots, 0 elsewhere (J keeps their real part)
   // A partially filled tank (the space has a free surface: viscous_fill_surface.hpp): K is the stress form K_s, the
   // surface's η̃ follow the pressure, and the five directions about P0 drive the liquid as F_j and give its moment as
   // G_jᵀx (G_j = F̄_j). Empty for a full cavity.

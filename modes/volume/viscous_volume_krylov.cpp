@@ -25,12 +25,11 @@ enum class Op { A, AH, AT, Abar, M };
 // the J-symmetric part of a vector.
 class LocalOperators {
  public:
-  explicit LocalOperators(const ViscousForms& forms) : forms_(forms) {
+  LocalOperators(const ViscousForms& forms, Vec velocity_slots) : forms_(forms) {
     petsc_check(PetscObjectGetComm(reinterpret_cast<PetscObject>(forms.A.get()), &comm_), "PetscObjectGetComm");
     petsc_check(VecDuplicate(forms.coupling, in_.out()), "VecDuplicate");
     petsc_check(VecDuplicate(forms.coupling, out_.out()), "VecDuplicate");
-    // 𝓜's diagonal is positive on the velocity's unknowns and 0 on the pressure's.
-    velocity_ = local_pairs(forms.mass_diagonal).real().array() > 0;
+    velocity_ = local_pairs(velocity_slots).real().array() > 0;
   }
 
   Eigen::Index rows() const { return velocity_.size(); }
@@ -54,7 +53,7 @@ class LocalOperators {
     return out;
   }
 
-  // (x + Jx)/2: the velocity's real part and the pressure's imaginary part.
+  // (x + Jx)/2: the velocity's real part, and the pressure's and a free surface's η̃'s imaginary part.
   Eigen::VectorXcd symmetric(const Eigen::VectorXcd& x) const {
     Eigen::VectorXcd out(x.size());
     for (Eigen::Index i = 0; i < x.size(); ++i) out[i] = velocity_[i] ? cd(x[i].real(), 0.0) : cd(0.0, x[i].imag());
@@ -148,47 +147,56 @@ class ShiftedSmall {
 };
 
 // The greedy search's state: the solver, the primal and dual bases and the small matrices of both projections,
-//   Hx = XᴴAX, fx = XᴴF (the Galerkin model c = (s − Hx)⁻¹fx, R_G = fxᴴc: X is 𝓜-orthonormal and F real),
-//   Hy = YᴴAᵀY, fy = YᴴF (the dual model d = (s − Hy)⁻¹fy), P = Yᵀ𝓜X, Q = YᵀAX (the residual's dual weight),
-// so that the estimate R − R_G ≈ dᵀ(YᵀF − (sP − Q)c) costs O(m²) per frequency.
+//   Hx = XᴴAX, fx = XᴴF (the Galerkin model c = (s − Hx)⁻¹fx, R_G = GᵀXc = fxᴴc: X is 𝓜-orthonormal and G = F̄),
+//   Hy = YᴴAᵀY, fy = YᴴG (the dual model d = (s − Hy)⁻¹fy), P = Yᵀ𝓜X, Q = YᵀAX (the residual's dual weight),
+// so that the estimate R − R_G ≈ dᵀ(YᵀF − (sP − Q)c) = dᵀ(f̄y − (sP − Q)c) costs O(m²) per frequency. The inputs F
+// are a full cavity's three real f_k (G = F) or a partially filled tank's five directions (G = F̄: their η̃ parts are
+// imaginary, viscous_fill_surface.hpp); either way every column is J-symmetric and XᴴF is real.
 class VolumeGreedy {
  public:
   explicit VolumeGreedy(const ViscousVolumeForms& forms)
-      : ops_(forms.forms), solver_(forms.forms), X_(ops_), Y_(ops_) {
-    F_.resize(ops_.rows(), 3);
-    for (int k = 0; k < 3; ++k) {
-      inputs_[k] = forms.couplings[k];
-      F_.col(k) = local_pairs(forms.couplings[k]);
+      : ops_(forms.forms, forms.velocity_slots), solver_(forms.forms), X_(ops_), Y_(ops_) {
+    const bool fill = !forms.fill_inputs.empty();
+    const int n = fill ? static_cast<int>(forms.fill_inputs.size()) : 3;
+    F_.resize(ops_.rows(), n);
+    G_.resize(ops_.rows(), n);
+    for (int k = 0; k < n; ++k) {
+      inputs_.push_back(fill ? forms.fill_inputs[k].get() : forms.couplings[k].get());
+      outputs_.push_back(fill ? forms.fill_outputs[k].get() : forms.couplings[k].get());
+      F_.col(k) = local_pairs(inputs_[k]);
+      G_.col(k) = local_pairs(outputs_[k]);
     }
     petsc_check(VecDuplicate(forms.forms.coupling, x_.out()), "VecDuplicate");
     petsc_check(VecDuplicate(forms.forms.coupling, v_.out()), "VecDuplicate");
   }
 
+  int directions() const { return static_cast<int>(inputs_.size()); }
+
   Eigen::Index primal_size() const { return X_.size(); }
   Eigen::Index dual_size() const { return Y_.size(); }
 
-  // R(s) by forced solves: R_jk = f_jᵀ S(s)⁻¹ f_k.
-  Eigen::Matrix3cd forced(cd s) {
+  // R(s) by forced solves: R_jk = g_jᵀ S(s)⁻¹ f_k.
+  Eigen::MatrixXcd forced(cd s) {
     solver_.factor(s);
-    Eigen::Matrix3cd R;
-    for (int k = 0; k < 3; ++k) {
+    Eigen::MatrixXcd R(directions(), directions());
+    for (int k = 0; k < directions(); ++k) {
       solver_.solve(inputs_[k], x_);
-      R.col(k) = ops_.inner(F_, local_pairs(x_), false);
+      R.col(k) = ops_.inner(G_, local_pairs(x_), false);
     }
     return R;
   }
 
-  // Factors at s, makes each input's primal and dual Krylov vectors and adds their J-symmetric parts to the bases;
-  // returns R(s) from the first, forced solves.
-  Eigen::Matrix3cd expand(cd s, int vectors) {
+  // Factors at s, makes each input's primal and each output's dual Krylov vectors and adds their J-symmetric parts to
+  // the bases; returns R(s) from the first, forced solves.
+  Eigen::MatrixXcd expand(cd s, int vectors) {
     solver_.factor(s);
-    Eigen::Matrix3cd R;
+    Eigen::MatrixXcd R(directions(), directions());
     std::vector<Eigen::VectorXcd> primal, dual;
-    for (int k = 0; k < 3; ++k) {
+    for (int k = 0; k < directions(); ++k) {
       Eigen::VectorXcd first;
       add_symmetric_parts(krylov_vectors(inputs_[k], vectors, false, &first), primal);
-      R.col(k) = ops_.inner(F_, first, false);
-      add_symmetric_parts(krylov_vectors(inputs_[k], vectors, true, nullptr), dual);
+      R.col(k) = ops_.inner(G_, first, false);
+      add_symmetric_parts(krylov_vectors(outputs_[k], vectors, true, nullptr), dual);
     }
     add_primal(X_.add(columns(primal)));
     add_dual(Y_.add(columns(dual)));
@@ -197,8 +205,8 @@ class VolumeGreedy {
 
   struct Worst {
     double s = 0, estimate = 0;
-    Eigen::Matrix3d scale;
-    Eigen::Matrix3cd galerkin;  // R_G(s)
+    Eigen::MatrixXd scale;
+    Eigen::MatrixXcd galerkin;  // R_G(s)
   };
 
   // The estimate's worst candidate, relative to each entry's scale over the first `window` candidates. Rank 0's
@@ -206,8 +214,8 @@ class VolumeGreedy {
   Worst worst(const std::vector<double>& candidates, std::size_t window) const {
     const cd probe(candidates[window / 2], 1e-2);
     const ShiftedSmall primal(Hx_, fx_, probe), dual(Hy_, fy_, probe);
-    std::vector<Eigen::Matrix3cd> g(candidates.size()), e(candidates.size());
-    Eigen::Vector3d top = Eigen::Vector3d::Zero();
+    std::vector<Eigen::MatrixXcd> g(candidates.size()), e(candidates.size());
+    Eigen::VectorXd top = Eigen::VectorXd::Zero(directions());
     for (std::size_t i = 0; i < candidates.size(); ++i) {
       const double s = candidates[i];
       const Eigen::MatrixXcd c = primal(s), d = dual(s);
@@ -234,7 +242,7 @@ class VolumeGreedy {
 
   // max_jk |R − R_G| / scale_jk at s by a forced solve: rank 0's value for every rank.
   double measured_error(double s, const Worst& w) {
-    const Eigen::Matrix3cd R = forced(s);
+    const Eigen::MatrixXcd R = forced(s);
     double e = ((R - w.galerkin).cwiseAbs().array() / w.scale.array()).maxCoeff();
     MPI_Bcast(&e, 1, MPI_DOUBLE, 0, ops_.comm());
     return e;
@@ -284,23 +292,23 @@ class VolumeGreedy {
   }
 
   // A block W just appended to a basis Z: the projection's new columns Zᴴ(op W) and rows Wᴴ op Z = (Zᴴ op' W)ᴴ
-  // (op' the adjoint of op), and the inputs' new rows WᴴF. Returns op W.
-  Eigen::MatrixXcd grow(const SymmetricBasis& Z, const Eigen::MatrixXcd& W, Op op, Op adjoint, Eigen::MatrixXcd& H,
-                        Eigen::MatrixXcd& f) {
+  // (op' the adjoint of op), and the inputs' new rows Wᴴ in (F for the primal basis, G for the dual). Returns op W.
+  Eigen::MatrixXcd grow(const SymmetricBasis& Z, const Eigen::MatrixXcd& W, Op op, Op adjoint, const Eigen::MatrixXcd& in,
+                        Eigen::MatrixXcd& H, Eigen::MatrixXcd& f) {
     const Eigen::Index n = Z.size(), k = W.cols(), old = n - k;
     const Eigen::MatrixXcd OW = ops_.apply(op, W), cols = ops_.inner(Z.vectors(), OW);
     const Eigen::MatrixXcd rows = ops_.inner(Z.vectors().leftCols(old), ops_.apply(adjoint, W));
     H.conservativeResize(n, n);
     H.rightCols(k) = cols;
     H.bottomLeftCorner(k, old) = rows.adjoint();
-    f.conservativeResize(n, 3);
-    f.bottomRows(k) = ops_.inner(W, F_);
+    f.conservativeResize(n, in.cols());
+    f.bottomRows(k) = ops_.inner(W, in);
     return OW;
   }
 
   // W was just appended to X: Hx and fx grow, and P = Yᵀ𝓜X, Q = YᵀAX by their columns.
   void add_primal(const Eigen::MatrixXcd& W) {
-    const Eigen::MatrixXcd AW = grow(X_, W, Op::A, Op::AH, Hx_, fx_);
+    const Eigen::MatrixXcd AW = grow(X_, W, Op::A, Op::AH, F_, Hx_, fx_);
     const Eigen::Index my = Y_.size(), n = X_.size(), k = W.cols();
     P_.conservativeResize(my, n);
     Q_.conservativeResize(my, n);
@@ -312,7 +320,7 @@ class VolumeGreedy {
   // V was just appended to Y: Hy (YᴴAᵀY; the adjoint of Aᵀ is Ā) and fy grow, and P, Q by their rows Vᵀ𝓜X = (𝓜V)ᵀX
   // and VᵀAX = (AᵀV)ᵀX.
   void add_dual(const Eigen::MatrixXcd& V) {
-    const Eigen::MatrixXcd AtV = grow(Y_, V, Op::AT, Op::Abar, Hy_, fy_);
+    const Eigen::MatrixXcd AtV = grow(Y_, V, Op::AT, Op::Abar, G_, Hy_, fy_);
     const Eigen::Index n = Y_.size(), k = V.cols();
     P_.conservativeResize(n, X_.size());
     Q_.conservativeResize(n, X_.size());
@@ -322,7 +330,8 @@ class VolumeGreedy {
 
   void share_from_root(Worst& w) const {
     std::vector<double> shared{w.s, w.estimate};
-    for (int k = 0; k < 9; ++k) {
+    const int entries = directions() * directions();
+    for (int k = 0; k < entries; ++k) {
       shared.push_back(w.scale.data()[k]);
       shared.push_back(w.galerkin.data()[k].real());
       shared.push_back(w.galerkin.data()[k].imag());
@@ -330,7 +339,7 @@ class VolumeGreedy {
     MPI_Bcast(shared.data(), static_cast<int>(shared.size()), MPI_DOUBLE, 0, ops_.comm());
     w.s = shared[0];
     w.estimate = shared[1];
-    for (int k = 0; k < 9; ++k) {
+    for (int k = 0; k < entries; ++k) {
       w.scale.data()[k] = shared[2 + 3 * k];
       w.galerkin.data()[k] = {shared[3 + 3 * k], shared[4 + 3 * k]};
     }
@@ -339,15 +348,15 @@ class VolumeGreedy {
   LocalOperators ops_;
   ShiftedSolver solver_;
   SymmetricBasis X_, Y_;
-  Eigen::MatrixXcd F_;
-  std::array<Vec, 3> inputs_{};
+  Eigen::MatrixXcd F_, G_;
+  std::vector<Vec> inputs_, outputs_;
   PVec x_, v_;
   Eigen::MatrixXcd Hx_, fx_, Hy_, fy_, P_, Q_;
 };
 
 }  // namespace
 
-Eigen::Matrix3cd ReducedVolumeResponse::operator()(std::complex<double> s) const {
+Eigen::MatrixXcd ReducedVolumeResponse::operator()(std::complex<double> s) const {
   Eigen::MatrixXcd S = cd(0, -1) * K.cast<cd>();
   S.diagonal().array() += s;
   const Eigen::MatrixXcd bc = b.cast<cd>();
@@ -373,8 +382,9 @@ std::vector<VolumePole> volume_poles(const ReducedVolumeResponse& model) {
   return out;
 }
 
-Eigen::Matrix3cd pole_sum(const std::vector<VolumePole>& poles, std::complex<double> s) {
-  Eigen::Matrix3cd R = Eigen::Matrix3cd::Zero();
+Eigen::MatrixXcd pole_sum(const std::vector<VolumePole>& poles, std::complex<double> s) {
+  if (poles.empty()) throw std::invalid_argument("pole_sum of no poles (its size is unknown)");
+  Eigen::MatrixXcd R = Eigen::MatrixXcd::Zero(poles.front().H.rows(), poles.front().H.cols());
   for (const VolumePole& p : poles) R += p.H / (s - p.lambda) + p.H.conjugate() / (s + std::conj(p.lambda));
   return R;
 }
@@ -422,7 +432,7 @@ VolumeKrylovReduction volume_krylov_reduction(const ViscousVolumeForms& forms, c
         break;
       }
     }
-    const Eigen::Matrix3cd R = greedy.expand(worst.s, options.vectors_per_point);
+    const Eigen::MatrixXcd R = greedy.expand(worst.s, options.vectors_per_point);
     out.points.push_back(worst.s);
     out.point_errors.push_back(((R - worst.galerkin).cwiseAbs().array() / worst.scale.array()).maxCoeff());
     say(fmt::format("3-D krylov response: point {} at s = {:.6g}: estimated {:.2g}, measured {:.2g}; {} + {} vectors",

@@ -2,7 +2,9 @@
 // chosen greedily (docs/volume.md §7, "The response table"): the meridian Krylov response table (krylov_response.hpp)
 // for a pencil that is neither complex symmetric nor of one input.
 //
-// R(s) = Fᵀ S(s)⁻¹ F, S(s) = s𝓜 − A, F = [f_x f_y f_z] (viscous_volume_forms.hpp). Two properties shape it:
+// R(s) = Fᵀ S(s)⁻¹ F, S(s) = s𝓜 − A, F = [f_x f_y f_z] (viscous_volume_forms.hpp); for a partially filled tank
+// R(s) = Gᵀ S(s)⁻¹ F over its five directions, G = F̄ (viscous_fill_surface.hpp), with the same properties (JF = F,
+// JG = G, J also negating and conjugating η̃). Two properties shape it:
 // * Real motions. With J(v, q) = (v̄, −q̄) (the velocity conjugated, the pressure conjugated and negated) AJ = −JA and
 //   JF = F, so x(−s̄) = −J x(s): R(−s̄) = −conj R(s), and the damped modes pair as (λ, H) and (−λ̄, H̄), one real motion.
 //   The bases hold J-symmetric vectors only (Jx = x: real velocity, imaginary pressure — the real time-domain system),
@@ -39,10 +41,10 @@ struct VolumeKrylovOptions {
   std::vector<std::complex<double>> exact_at;
 };
 
-// The Galerkin model R_G(s) = bᵀ (s − iK)⁻¹ b (K real m × m, b real m × 3), evaluated by a dense solve.
+// The Galerkin model R_G(s) = bᵀ (s − iK)⁻¹ b (K real m × m, b real m × 3 or m × 5), evaluated by a dense solve.
 struct ReducedVolumeResponse {
   Eigen::MatrixXd K, b;
-  Eigen::Matrix3cd operator()(std::complex<double> s) const;
+  Eigen::MatrixXcd operator()(std::complex<double> s) const;
 };
 
 // One real motion of the reduced fluid: the pole λ (Re λ ≥ 0, Im λ ≥ 0 its decay) and its residue H (rank one), so
@@ -50,10 +52,10 @@ struct ReducedVolumeResponse {
 // residue, so that the same sum holds.
 struct VolumePole {
   std::complex<double> lambda;
-  Eigen::Matrix3cd H;
+  Eigen::MatrixXcd H;  // 3 × 3 (a full cavity) or 5 × 5 (a partially filled tank's directions)
 };
 std::vector<VolumePole> volume_poles(const ReducedVolumeResponse& model);
-Eigen::Matrix3cd pole_sum(const std::vector<VolumePole>& poles, std::complex<double> s);
+Eigen::MatrixXcd pole_sum(const std::vector<VolumePole>& poles, std::complex<double> s);  // poles not empty
 
 struct VolumeKrylovReduction {
   ReducedVolumeResponse model;
@@ -62,7 +64,7 @@ struct VolumeKrylovReduction {
   double estimate = 0;               // the final estimate's largest entry, relative to its scale, over the candidates
   double check_point = 0;            // a forced solve where it is largest, not added to the basis:
   double check_error = 0;            //   the measured error there (same measure)
-  Eigen::Matrix3d scale;             // entry jk's scale: √(max|R_jj| max|R_kk|) over the window
+  Eigen::MatrixXd scale;             // entry jk's scale: √(max|R_jj| max|R_kk|) over the window
   int primal_vectors = 0, dual_vectors = 0;
   bool within_tolerance = true;      // false: max_points reached first
 };
