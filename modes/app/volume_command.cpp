@@ -158,12 +158,18 @@ void VolumeCommands::check_partial_fill_options() const {
   const Common& o = common_;
   const std::string ext = std::filesystem::path(o.output).extension().string();
   if (o.ekman != 0) {
-    if (o.sigma.empty() || ext != ".csv")
-      throw std::runtime_error("--ekman with --fill in 3-D gives the forced response so far (--ekman Ek --sigma LIST -o "
-                               "FILE.csv); its damped modes and response table are not built yet (an axisymmetric "
-                               "tank on the spin axis has both: cavity-modes response sphere|spheroid|... --fill F "
-                               "--ekman Ek --sigma FROM:TO:N -o T.h5)");
+    if (o.sigma.empty() || (ext != ".csv" && ext != ".h5"))
+      throw std::runtime_error("--ekman with --fill in 3-D gives the forced response (--ekman Ek --sigma LIST -o "
+                               "FILE.csv) and the response table (--ekman Ek --sigma FROM:TO:N -o T.h5); its damped "
+                               "modes are not built yet");
     if (!(o.ekman > 0 && o.ekman < 1)) throw std::runtime_error("--ekman must be in (0, 1)");
+    if (ext == ".h5") {
+      if (!(o.max_fit_error > 0 && o.max_fit_error < 1)) throw std::runtime_error("--max-fit-error must be in (0, 1)");
+      if (o.krylov_vectors < 1 || o.krylov_vectors > 16) throw std::runtime_error("--krylov-vectors must be in 1..16");
+      if (o.sigma_imag != 0) throw std::runtime_error("a response table's window is real: drop --sigma-imag");
+    } else if (!o.exact_at.empty()) {
+      throw std::runtime_error("--exact-at belongs to a response table: --ekman Ek --sigma FROM:TO:N -o FILE.h5");
+    }
     if (o.order < 2) throw std::runtime_error("--ekman needs --order >= 2 (Taylor-Hood elements)");
     if (!o.targets.empty()) throw std::runtime_error("--sigma computes no modes: drop --target");
   } else if (!o.sigma.empty()) {
@@ -245,6 +251,8 @@ void VolumeCommands::set_provenance(ModeTable& table, const std::string& command
 
 int VolumeCommands::run(const std::string& command_line) const {
   const VolumeTableRequest request = resolve();
+  if (request.shape.fill < 1 && common_.ekman > 0 && std::filesystem::path(common_.output).extension() == ".h5")
+    return run_response_table(request, command_line);
   if (request.shape.fill < 1 && common_.ekman > 0) return run_fill_response(request);
   if (request.shape.fill < 1) return run_partial_fill(request, command_line);
   if (common_.ekman > 0 && !common_.sigma.empty() && std::filesystem::path(common_.output).extension() == ".h5")
@@ -352,6 +360,22 @@ ModeTable ideal_tensors_table(const VolumeTableRequest& ideal, const std::string
   request.mesh.wall_layer = 0;
   request.mesh.near_wall_size = 0;
   return make_volume_table(request).table;
+}
+
+// A partially filled tank's ideal table on the interior mesh (the same order and --mesh-size, no wall grading), for
+// its static parts: the frozen liquid, the surface's axis and Gram matrices (docs/volume.md §8). One rank.
+ModeTable ideal_fill_table(const VolumeTableRequest& ideal) {
+  int ranks = 1;
+  MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
+  if (ranks > 1) throw std::runtime_error("a partially filled 3-D tank is solved on one rank (run it without mpirun)");
+  std::cerr << "3-D viscous fill: the ideal table first (the liquid's tensors)\n";
+  geometry::MeshOptions mesh = ideal.mesh;
+  mesh.wall_size = 0;
+  mesh.wall_layer = 0;
+  mesh.near_wall_size = 0;
+  const FreeSurfaceSurveySettings settings;
+  const FreeSurfaceRunResult r = run_free_surface_modes(ideal.shape, mesh, settings);
+  return free_surface_table(r, ideal.shape, settings);
 }
 
 // The damped modes' targets: those given; else, printing only, the ellipsoid's spin-over in closed form (any tilt);
@@ -563,7 +587,7 @@ int VolumeCommands::run_response_table(const VolumeTableRequest& ideal, const st
   std::optional<ModeTable> ideal_table;
   std::string error;
   try {
-    ideal_table = ideal_tensors_table(ideal, "the cavity's tensors");
+    ideal_table = ideal.shape.fill < 1 ? ideal_fill_table(ideal) : ideal_tensors_table(ideal, "the cavity's tensors");
   } catch (const std::exception& e) {
     error = e.what();
   }

@@ -46,11 +46,12 @@ std::string solver_line(const VolumeResponseTableRequest& req, const VolumeRespo
                         std::size_t window, const std::vector<double>& beyond) {
   const VolumeKrylovReduction& k = r.reduction;
   return fmt::format(
-      "Galerkin (Hermitian) projection of the 3 x 3 response on J-symmetric rational Krylov spaces (docs/volume.md "
+      "Galerkin (Hermitian) projection of the {} on J-symmetric rational Krylov spaces (docs/volume.md "
       "section 7, \"The response table\"): {} expansion points chosen greedily on {} frequencies of [{:g}, {:g}] and "
       "{} beyond it up to {:.3g}{}, {} vectors per input and point, {} primal and {} dual basis vectors, {} poles; "
       "dual-weighted residual estimate at most {:.2g} of each entry's scale, measured by a forced solve at its worst, "
       "s = {:.6g}: {:.2g}{}; the rows against the reduced model {:.2g}; Taylor-Hood P{}/P{}, {} unknowns",
+      req.shape.fill < 1 ? "partially filled tank's 5 x 5 response (docs/volume.md section 8)" : "3 x 3 response",
       k.points.size(), window, req.window.front(), req.window.back(), beyond.size(), beyond.back(),
       req.krylov.exact_at.empty() ? std::string() : fmt::format(", and {} more at the given frequencies (--exact-at), "
                                                                 "where R is exact", req.krylov.exact_at.size()),
@@ -83,7 +84,18 @@ VolumeResponseTableResult viscous_volume_response_table(const ModeTable* ideal,
   // The rows hold the viscous spin-up that the ideal fluid's λ = 0 weight stands for elsewhere.
   std::fill(t.volume_cavity.geostrophic_re.begin(), t.volume_cavity.geostrophic_re.end(), 0.0);
   std::fill(t.volume_cavity.geostrophic_im.begin(), t.volume_cavity.geostrophic_im.end(), 0.0);
-  for (const VolumePole& p : r.poles) add_viscous_volume_row(t, {p.lambda.real(), std::max(p.lambda.imag(), 0.0)}, p.H, 0.0);
+  auto& vf = t.volume_free_surface;  // a partially filled tank's (docs/volume.md §8): its five directions' residues
+  std::fill(vf.geostrophic_re.begin(), vf.geostrophic_re.end(), 0.0);
+  std::fill(vf.geostrophic_im.begin(), vf.geostrophic_im.end(), 0.0);
+  for (const VolumePole& p : r.poles) {
+    add_viscous_volume_row(t, {p.lambda.real(), std::max(p.lambda.imag(), 0.0)}, p.H.topLeftCorner<3, 3>(), 0.0);
+    if (!vf.present()) continue;
+    for (int i = 0; i < 5; ++i)
+      for (int j = 0; j < 5; ++j) {
+        vf.coupling_re.push_back(p.H(i, j).real());
+        vf.coupling_im.push_back(p.H(i, j).imag());
+      }
+  }
   t.fit_lo = request.window.front();
   t.fit_hi = request.window.back();
   t.fit_error = std::max({r.reduction.estimate, r.reduction.check_error, r.rows_error});
@@ -92,6 +104,7 @@ VolumeResponseTableResult viscous_volume_response_table(const ModeTable* ideal,
                     "rank-one residue H (its conjugate at -conj(lambda) implied; a row with lambda = 0 carries half "
                     "its own), R(s) = sum H/(s - lambda) + conj(H)/(s + conj(lambda)); E + i E_imag = H_xx + H_yy, "
                     "a + i a_imag = sqrt((E + i E_imag)/2), N2 = 1 (docs/volume.md section 7)";
+  if (vf.present()) t.normalisation += "; a partially filled tank's H over (U_x, U_y, U_z, T_x, T_y) about P0 (section 8)";
   double kept = 0;
   for (const double E : t.E) kept += E;
   t.coverage = t.sum_rule > 0 ? kept / t.sum_rule : 0;

@@ -73,6 +73,10 @@ ModeTable viscous_volume_table_start(const ModeTable& ideal, const geometry::Mes
   t.volume_cavity.band_coupling_re.clear();
   t.volume_cavity.band_coupling_im.clear();
   t.volume_cavity.band_lambda.clear();
+  // A partially filled tank's surface, axis and static parts stay; its rows are the viscous table's.
+  t.volume_free_surface = ideal.volume_free_surface;
+  t.volume_free_surface.coupling_re.clear();
+  t.volume_free_surface.coupling_im.clear();
   t.fe_order = mesh.order;
   t.mesh_h = mesh_h;
   t.mesh_h_wall = mesh.wall_size;

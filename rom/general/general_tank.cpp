@@ -63,9 +63,10 @@ const char* const kTanksTaken =
     "; it takes, on or off a body's axis, a full tank's ideal or damped-mode table (axisymmetric or 3-D: cavity-modes "
     "SHAPE|ellipsoid|volume [--ekman Ek] -o T.h5) or a response table (cavity-modes ellipsoid|volume --ekman Ek "
     "--sigma A:B:N -o T.h5, or axisymmetric: cavity-modes response SHAPE --ekman Ek --sigma A:B:N -o T.h5), and on "
-    "a fixed chain's first body a partially filled tank, ideal, on its axis "
-    "(axisymmetric or 3-D) or off it (3-D: cavity-modes ellipsoid --fill F --axis-distance D -o T.h5) (docs/rom.md, "
-    "\"Bodies and tanks without axial symmetry\")";
+    "a fixed chain's first body a partially filled tank, ideal on its axis (axisymmetric or 3-D) or off it (3-D: "
+    "cavity-modes ellipsoid --fill F --axis-distance D -o T.h5), or viscous, 3-D, as its response table (cavity-modes "
+    "ellipsoid --fill F --axis-distance D --ekman Ek --sigma 0:TO:N -o T.h5) (docs/rom.md, \"Bodies and tanks without "
+    "axial symmetry\"; docs/volume.md section 8)";
 
 void require_modal(const Scene& scene, const std::string& w, const CavitySpec& cav, const rc::ModeTable& t, double spin) {
   const std::string later = std::string(" is not in the chain without axial symmetry yet") + kTanksTaken;

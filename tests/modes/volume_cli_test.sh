@@ -161,8 +161,8 @@ fi
 expect_error "a fill above 1" "must lie in (0, 1]" "$BIN" ellipsoid --a 1 --b 1 --c 1 --fill 1.5
 expect_error "a 3-D fill with --fields" "--fields is not written for a partially filled 3-D tank" "$BIN" ellipsoid --a 1 --b 1 --c 1 --fill 0.5 --fields -o out.h5
 expect_error "a 3-D fill's table as CSV" "writes a mode table: a .h5 file" "$BIN" ellipsoid --a 1 --b 1 --c 1 --fill 0.5 -o out.csv
-expect_error "a 3-D fill's damped modes" "gives the forced response so far" "$BIN" ellipsoid --a 1 --b 1 --c 1 --fill 0.5 --ekman 1e-3
-expect_error "a 3-D fill's response table" "gives the forced response so far" "$BIN" ellipsoid --a 1 --b 1 --c 1 --fill 0.5 --ekman 1e-3 --sigma 0:1:3 -o out.h5
+expect_error "a 3-D fill's damped modes" "its damped modes are not built yet" "$BIN" ellipsoid --a 1 --b 1 --c 1 --fill 0.5 --ekman 1e-3
+expect_error "a 3-D fill's response table off the real axis" "window is real" "$BIN" ellipsoid --a 1 --b 1 --c 1 --fill 0.5 --ekman 1e-3 --sigma 0:1:3 --sigma-imag 0.1 -o out.h5
 expect_error "a 3-D fill's wall layers" "--wall-layer is not taken with --fill" "$BIN" ellipsoid --a 1 --b 1 --c 1 --fill 0.5 --ekman 1e-3 --sigma 0.5 --wall-layer 0.01 -o out.csv
 expect_error "an ideal 3-D fill's --sigma" "--sigma needs --ekman" "$BIN" ellipsoid --a 1 --b 1 --c 1 --fill 0.5 --sigma 0.5 -o out.h5
 # Its viscous forced response (docs/volume.md §8, "The viscous liquid"): the 5 x 5 response about P0 as CSV, every
@@ -178,6 +178,15 @@ assert all(math.isfinite(float(x)) for r in rows[1:] for x in r)'; then
   ok "ellipsoid --fill 0.5 --axis-distance 2 --ekman --sigma: the 5 x 5 response"
 else
   bad "ellipsoid --fill --ekman --sigma: $(tail -3 pfr.txt)"
+fi
+# and its response table (the check against the forced response is ViscousFill3d.ResponseTableIsTheForcedResponse),
+# read back by info.
+if "$BIN" ellipsoid --a 1 --b 1 --c 1 --fill 0.5 --axis-distance 2 --ekman 1e-2 --order 2 --mesh-size 0.5 \
+     --sigma 0:2:5 -o pft.h5 > pft.txt 2>&1 && grep -q "partially filled tank's 5 x 5 response" pft.txt &&
+   "$BIN" info pft.h5 > pftinfo.txt 2>&1 && grep -q "3-D (no axial symmetry)" pftinfo.txt; then
+  ok "ellipsoid --fill 0.5 --axis-distance 2 --ekman --sigma -o T.h5: a response table"
+else
+  bad "ellipsoid --fill --ekman --sigma -o T.h5: $(tail -3 pft.txt)"
 fi
 expect_error "an axis distance without a fill" "with --fill < 1" "$BIN" ellipsoid --a 1 --b 1 --c 1 --axis-distance 2 -o out.h5
 # --tilt on a user's file turns the whole mesh about x: the box's sum rule tensor is the upright box's turned (it comes
