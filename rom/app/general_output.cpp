@@ -44,7 +44,11 @@ void print_general_spectrum(std::ostream& os, const GeneralChain& g, const Gener
     if (share < 1 - 1e-9) os << "body " << k + 1 << ": a tank's kept modes cover " << share << " of its sum rule\n";
   // The verdict as (26)'s (docs/rom.md, "Spectrum", "Verdict with dissipation"), its line saying when a tank's rows
   // did not settle.
-  const std::string unsettled = g.not_converged.empty() ? "" : "; NOT CONVERGED: a partially filled 3-D tank's rows (below)";
+  std::string unsettled = g.not_converged.empty() ? "" : "; NOT CONVERGED: a partially filled 3-D tank's rows (below)";
+  // A viscous tank's rates are its table mesh's: said on the line a user reads, as (26)'s (docs/rom.md, "Mesh error of
+  // confirmed roots").
+  if (std::any_of(g.modes.begin(), g.modes.end(), [](const GeneralMode& m) { return m.damped(); }))
+    unsettled += "; mesh error NOT MEASURED (the tables' mesh only: chain-rom confirm SCENE --refine-tables measures it)";
   if (!g.dissipative) {
     os << "stable: " << (v.stable ? "yes" : "no") << " (|Im sigma| <= " << v.tolerance << " counts as real)" << unsettled << "\n";
     os << "margin (largest |Im sigma|): " << v.margin << " rad/s\n";
