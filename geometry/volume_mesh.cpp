@@ -160,9 +160,9 @@ int fluid_group(const std::string& where) {
 
 // Isotropic grading towards the wall (MeshOptions::wall_size, wall_growth): elements of wall_size on the wall
 // surfaces, growing by wall_growth per unit distance up to `size`. The geometry error of isoparametric elements
-// lives on the wall, so this buys accuracy at the cost of surface, not volume, elements.
-void grade_towards_wall(const MeshOptions& options, double size, const std::string& where) {
-  if (options.wall_size <= 0 || options.wall_size >= size) return;
+// lives on the wall, so this buys accuracy at the cost of surface, not volume, elements. Returns the size field, or −1.
+int grade_towards_wall(const MeshOptions& options, double size, const std::string& where) {
+  if (options.wall_size <= 0 || options.wall_size >= size) return -1;
   if (model_extent() / options.wall_size > kMaxCellsPerExtent)
     throw std::runtime_error(where + ": wall mesh size " + number(options.wall_size) + " is too small for isotropic "
                              "grading (at least the model's extent / " + number(kMaxCellsPerExtent) + " = " +
@@ -181,7 +181,60 @@ void grade_towards_wall(const MeshOptions& options, double size, const std::stri
   field::setNumber(threshold, "SizeMax", size);
   field::setNumber(threshold, "DistMin", 0);
   field::setNumber(threshold, "DistMax", (size - options.wall_size) / std::max(options.wall_growth, 1e-3));
-  field::setAsBackgroundMesh(threshold);
+  return threshold;
+}
+
+// A partially filled tank's contact lines: the curves where its free surface ρ = b meets the wall (those that bound
+// both a surface on the cylinder and one off it, not the cylinder's seam).
+std::vector<double> contact_curves(double radius, const std::array<double, 2>& axis) {
+  gmsh::vectorpair surfaces;
+  gmsh::model::getEntities(surfaces, 2);
+  std::map<int, int> on_free, on_wall;  // curve -> how many free / wall surfaces it bounds
+  for (const auto& [dim, tag] : surfaces) {
+    std::vector<double> lo, hi, xyz;
+    gmsh::model::getParametrizationBounds(2, tag, lo, hi);
+    gmsh::model::getValue(2, tag, {0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1])}, xyz);
+    const bool free = on_free_surface({xyz[0], xyz[1], xyz[2]}, radius, axis, 1e-6);
+    gmsh::vectorpair boundary;
+    gmsh::model::getBoundary({{2, tag}}, boundary, false, false, false);
+    for (const auto& [d, c] : boundary) ++(free ? on_free : on_wall)[std::abs(c)];
+  }
+  std::vector<double> out;
+  for (const auto& [curve, count] : on_free)
+    if (on_wall.count(curve)) out.push_back(curve);
+  return out;
+}
+
+// Where no-slip meets the stress-free surface the viscous flow is singular, and a response converges slowly with the
+// interior size (docs/volume.md §8; the meridian solver refines towards its contact points the same way,
+// meridian_mesh.cpp): size/8 within size/8 of the contact lines, growing to `size` at 2 size. Returns the field, or −1.
+int refine_contact_lines(double size, double radius, const std::array<double, 2>& axis) {
+  const std::vector<double> curves = contact_curves(radius, axis);
+  if (curves.empty()) return -1;
+  namespace field = gmsh::model::mesh::field;
+  const int distance = field::add("Distance");
+  field::setNumbers(distance, "CurvesList", curves);
+  field::setNumber(distance, "NumPointsPerCurve", 400);  // the curves sampled finely: the distance is accurate near them
+  const int threshold = field::add("Threshold");
+  field::setNumber(threshold, "InField", distance);
+  field::setNumber(threshold, "SizeMin", size / 8);
+  field::setNumber(threshold, "SizeMax", size);
+  field::setNumber(threshold, "DistMin", size / 8);
+  field::setNumber(threshold, "DistMax", 2 * size);
+  return threshold;
+}
+
+// The background size: the smallest of the fields given (none: the uniform `size`).
+void use_smallest(const std::vector<int>& fields) {
+  namespace field = gmsh::model::mesh::field;
+  if (fields.empty()) return;
+  if (fields.size() == 1) {
+    field::setAsBackgroundMesh(fields.front());
+    return;
+  }
+  const int smallest = field::add("Min");
+  field::setNumbers(smallest, "FieldsList", std::vector<double>(fields.begin(), fields.end()));
+  field::setAsBackgroundMesh(smallest);
 }
 
 // The linear mesh of the 'fluid' group, counted (linear_tet_counts.hpp).
@@ -197,12 +250,18 @@ LinearTetCounts count_fluid_tets(const std::string& where) {
   return count_linear_tets(tets);
 }
 
+// A viscous mesh of a partially filled tank (wall_size > 0 and a free surface of `surface_radius` about `axis`) is
+// refined towards its contact lines too.
 void generate(int order, double size, const std::string& where, const MeshOptions& options,
-              const LinearMeshCheck& check) {
+              const LinearMeshCheck& check, double surface_radius = 0, const std::array<double, 2>& axis = {}) {
   if (model_extent() / size > kMaxCellsPerExtent)
     throw std::runtime_error(where + ": mesh size " + number(size) + " is too small for a model of extent " +
                              number(model_extent()));
-  grade_towards_wall(options, size, where);
+  std::vector<int> fields;
+  if (const int wall = grade_towards_wall(options, size, where); wall >= 0) fields.push_back(wall);
+  if (surface_radius > 0 && options.wall_size > 0)
+    if (const int contact = refine_contact_lines(size, surface_radius, axis); contact >= 0) fields.push_back(contact);
+  use_smallest(fields);
   gmsh::option::setNumber("Mesh.MeshSizeMax", size);
   gmsh::option::setNumber("Mesh.MeshSizeMin", 0);
   gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
@@ -271,7 +330,7 @@ GmshTets mesh_in_gmsh(const VolumeShapeSpec& shape, const MeshOptions& options, 
     size = options.size > 0 ? options.size
                             : kDefaultSizeFraction * (shape.kind == "volume" ? model_smallest_side()
                                                                               : smallest_dimension(shape));
-    generate(options.order, size, where, options, check);
+    generate(options.order, size, where, options, check, surface_radius, shape.spin_axis);
     session.throw_if_error(where);
     return read_tets(where);
   });
