@@ -5,6 +5,7 @@
 #include "gmsh_session.hpp"
 #include "section_cut.hpp"
 #include "shapes.hpp"
+#include "size_fields.hpp"
 
 #include <gmsh.h>
 
@@ -137,18 +138,10 @@ bool wall_meets_axis_obliquely() {
 // "Partially filled tanks"). A Threshold field refines towards those points: size/8 within size/8 of them, growing to
 // `size` at 2 size. Returns the field, or -1 without a free surface.
 int contact_line_field(double size) {
-  const std::vector<double> points = contact_points();
-  if (points.empty()) return -1;
-  namespace field = gmsh::model::mesh::field;
-  const int distance = field::add("Distance");
-  field::setNumbers(distance, "PointsList", points);
-  const int threshold = field::add("Threshold");
-  field::setNumber(threshold, "InField", distance);
-  field::setNumber(threshold, "SizeMin", size / 8);
-  field::setNumber(threshold, "SizeMax", size);
-  field::setNumber(threshold, "DistMin", size / 8);
-  field::setNumber(threshold, "DistMax", 2 * size);
-  return threshold;
+  DistanceTo points;
+  points.points = contact_points();
+  if (points.points.empty()) return -1;
+  return distance_threshold(points, size / 8, size, size / 8, 2 * size);
 }
 
 void use_as_background(int field_tag) {
@@ -162,17 +155,8 @@ void use_as_background(int field_tag) {
 // Threshold on the distance to the wall (sampled at 1/8 of `fine`). Returns the field's tag.
 int wall_distance_field(const std::vector<double>& curves, double extent, double fine, double from, double growth,
                         double size) {
-  namespace field = gmsh::model::mesh::field;
-  const int distance = field::add("Distance");
-  field::setNumbers(distance, "CurvesList", curves);
-  field::setNumber(distance, "NumPointsPerCurve", std::min(1e5, std::ceil(8 * extent / fine)));
-  const int threshold = field::add("Threshold");
-  field::setNumber(threshold, "InField", distance);
-  field::setNumber(threshold, "SizeMin", fine);
-  field::setNumber(threshold, "SizeMax", size);
-  field::setNumber(threshold, "DistMin", from);
-  field::setNumber(threshold, "DistMax", from + (size - fine) / std::max(growth, 1e-3));
-  return threshold;
+  DistanceTo walls{{}, curves, {}, std::min(1e5, std::ceil(8 * extent / fine))};
+  return distance_threshold(walls, fine, size, from, from + (size - fine) / std::max(growth, 1e-3));
 }
 
 // The background size: the smaller of the given fields (−1: none), or gmsh's own rules when there is none.

@@ -4,6 +4,7 @@
 
 #include "gmsh_session.hpp"
 #include "partial_volume.hpp"
+#include "size_fields.hpp"
 #include "volume_wall_layers.hpp"
 
 #include <gmsh.h>
@@ -170,18 +171,10 @@ int grade_towards_wall(const MeshOptions& options, double size, const std::strin
                              "(--wall-layer with --wall-size, docs/volume.md §7)");
   gmsh::vectorpair surfaces;
   gmsh::model::getEntities(surfaces, 2);
-  std::vector<double> tags;
-  for (const auto& [dim, tag] : surfaces) tags.push_back(tag);
-  namespace field = gmsh::model::mesh::field;
-  const int distance = field::add("Distance");
-  field::setNumbers(distance, "SurfacesList", tags);
-  const int threshold = field::add("Threshold");
-  field::setNumber(threshold, "InField", distance);
-  field::setNumber(threshold, "SizeMin", options.wall_size);
-  field::setNumber(threshold, "SizeMax", size);
-  field::setNumber(threshold, "DistMin", 0);
-  field::setNumber(threshold, "DistMax", (size - options.wall_size) / std::max(options.wall_growth, 1e-3));
-  return threshold;
+  DistanceTo walls;
+  for (const auto& [dim, tag] : surfaces) walls.surfaces.push_back(tag);
+  return distance_threshold(walls, options.wall_size, size, 0,
+                            (size - options.wall_size) / std::max(options.wall_growth, 1e-3));
 }
 
 // A partially filled tank's contact lines: the curves where its free surface ρ = b meets the wall (those that bound
@@ -209,19 +202,11 @@ std::vector<double> contact_curves(double radius, const std::array<double, 2>& a
 // interior size (docs/volume.md §8; the meridian solver refines towards its contact points the same way,
 // meridian_mesh.cpp): size/8 within size/8 of the contact lines, growing to `size` at 2 size. Returns the field, or −1.
 int refine_contact_lines(double size, double radius, const std::array<double, 2>& axis) {
-  const std::vector<double> curves = contact_curves(radius, axis);
-  if (curves.empty()) return -1;
-  namespace field = gmsh::model::mesh::field;
-  const int distance = field::add("Distance");
-  field::setNumbers(distance, "CurvesList", curves);
-  field::setNumber(distance, "NumPointsPerCurve", 400);  // the curves sampled finely: the distance is accurate near them
-  const int threshold = field::add("Threshold");
-  field::setNumber(threshold, "InField", distance);
-  field::setNumber(threshold, "SizeMin", size / 8);
-  field::setNumber(threshold, "SizeMax", size);
-  field::setNumber(threshold, "DistMin", size / 8);
-  field::setNumber(threshold, "DistMax", 2 * size);
-  return threshold;
+  DistanceTo lines;
+  lines.curves = contact_curves(radius, axis);
+  if (lines.curves.empty()) return -1;
+  lines.points_per_curve = 400;  // sampled finely: the distance is accurate near them
+  return distance_threshold(lines, size / 8, size, size / 8, 2 * size);
 }
 
 // The background size: the smallest of the fields given (none: the uniform `size`).

@@ -462,24 +462,32 @@ namespace {
 // CSV: `#` lines (the method, the definition), then sigma_re, sigma_im and the nine complex entries R_jk (row-major:
 // xx, xy, xz, yx, ...), each as _re and _im. Written to a temporary name and renamed (atomic_file.hpp), so no
 // half-written file is left.
-void write_volume_response(const std::string& path, const std::vector<std::complex<double>>& sigmas,
-                           const ViscousVolumeResponse& r, const std::string& method) {
+// A response's CSV: a header, then σ and every entry R_jk (re, im), the directions named by `names`.
+template <class Matrix>
+void write_response_csv(const std::string& path, const std::string& header, const std::vector<std::string>& names,
+                        const std::vector<std::complex<double>>& sigmas, const std::vector<Matrix>& R) {
   write_text_atomically(path, [&](std::ostream& out) {
-    out << "# cavity-modes 3-D response: " << method << "\n# R_jk(sigma) = f_j^T (sigma M - A)^-1 f_k = sum_l H_jk/"
-        << "(sigma - lambda_l) + const, the moment about e_j per unit rotation about e_k (docs/volume.md, section 7)\n";
+    out << header;
     out << "sigma_re,sigma_im";
-    const char* axis = "xyz";
-    for (int j = 0; j < 3; ++j)
-      for (int k = 0; k < 3; ++k) out << ",R_" << axis[j] << axis[k] << "_re,R_" << axis[j] << axis[k] << "_im";
+    for (const auto& j : names)
+      for (const auto& k : names) out << ",R_" << j << k << "_re,R_" << j << k << "_im";
     out << "\n";
     out.precision(17);
+    const auto n = static_cast<Eigen::Index>(names.size());
     for (std::size_t i = 0; i < sigmas.size(); ++i) {
       out << sigmas[i].real() << ',' << sigmas[i].imag();
-      for (int j = 0; j < 3; ++j)
-        for (int k = 0; k < 3; ++k) out << ',' << r.R[i](j, k).real() << ',' << r.R[i](j, k).imag();
+      for (Eigen::Index j = 0; j < n; ++j)
+        for (Eigen::Index k = 0; k < n; ++k) out << ',' << R[i](j, k).real() << ',' << R[i](j, k).imag();
       out << '\n';
     }
   });
+}
+
+void write_volume_response(const std::string& path, const std::vector<std::complex<double>>& sigmas,
+                           const ViscousVolumeResponse& r, const std::string& method) {
+  write_response_csv(path, "# cavity-modes 3-D response: " + method + "\n# R_jk(sigma) = f_j^T (sigma M - A)^-1 f_k = "
+                     "sum_l H_jk/(sigma - lambda_l) + const, the moment about e_j per unit rotation about e_k "
+                     "(docs/volume.md, section 7)\n", {"x", "y", "z"}, sigmas, r.R);
 }
 
 }  // namespace
@@ -515,25 +523,12 @@ namespace {
 
 void write_fill_response(const std::string& path, const std::vector<std::complex<double>>& sigmas,
                          const ViscousFillResponse& r, const std::string& method) {
-  write_text_atomically(path, [&](std::ostream& out) {
-    out << "# cavity-modes 3-D response of a partially filled tank: " << method << "\n# R_jk(sigma) = G_j^T (sigma M - "
-        << "A)^-1 F_k over the directions Ux, Uy, Uz (rotations about P0 = (" << r.axis_point[0] << ", "
-        << r.axis_point[1] << ", " << r.axis_point[2] << "), the spin axis's point at the liquid's centroid's height) "
-        << "and Tx, Ty (P0 moved along the axis); about O = P0 - c z it is B R B^T, B = [I | c (e_x, e_y)] "
-        << "(docs/volume.md, section 8)\n";
-    out << "sigma_re,sigma_im";
-    const char* name[] = {"Ux", "Uy", "Uz", "Tx", "Ty"};
-    for (int j = 0; j < 5; ++j)
-      for (int k = 0; k < 5; ++k) out << ",R_" << name[j] << name[k] << "_re,R_" << name[j] << name[k] << "_im";
-    out << "\n";
-    out.precision(17);
-    for (std::size_t i = 0; i < sigmas.size(); ++i) {
-      out << sigmas[i].real() << ',' << sigmas[i].imag();
-      for (int j = 0; j < 5; ++j)
-        for (int k = 0; k < 5; ++k) out << ',' << r.R[i](j, k).real() << ',' << r.R[i](j, k).imag();
-      out << '\n';
-    }
-  });
+  const std::string header = fmt::format(
+      "# cavity-modes 3-D response of a partially filled tank: {}\n# R_jk(sigma) = G_j^T (sigma M - A)^-1 F_k over the "
+      "directions Ux, Uy, Uz (rotations about P0 = ({}, {}, {}), the spin axis's point at the liquid's centroid's "
+      "height) and Tx, Ty (P0 moved along the axis); about O = P0 - c z it is B R B^T, B = [I | c (e_x, e_y)] "
+      "(docs/volume.md, section 8)\n", method, r.axis_point[0], r.axis_point[1], r.axis_point[2]);
+  write_response_csv(path, header, {"Ux", "Uy", "Uz", "Tx", "Ty"}, sigmas, r.R);
 }
 
 }  // namespace

@@ -58,15 +58,7 @@ PMat block_imaginary_mass(MPI_Comm comm, int n, const Triplets& m) {
 }
 
 PVec block_vector(Mat like, const std::vector<double>& real_part) {
-  PVec v;
-  petsc_check(MatCreateVecs(like, v.out(), nullptr), "MatCreateVecs");
-  PetscInt lo = 0, hi = 0;
-  petsc_check(VecGetOwnershipRange(v, &lo, &hi), "VecGetOwnershipRange");
-  PetscScalar* a = nullptr;
-  petsc_check(VecGetArray(v, &a), "VecGetArray");
-  for (PetscInt g = lo; g < hi; ++g) a[g - lo] = g % 2 == 0 ? real_part[g / 2] : 0.0;
-  petsc_check(VecRestoreArray(v, &a), "VecRestoreArray");
-  return v;
+  return block_vector(like, std::vector<std::complex<double>>(real_part.begin(), real_part.end()));
 }
 
 PVec block_vector(Mat like, const std::vector<std::complex<double>>& values) {
