@@ -78,6 +78,18 @@ void add_common_options(CLI::App* cmd, Common& o) {
   cmd->add_option("--sigma-imag", o.sigma_imag, "with --sigma FROM:TO:N: the imaginary part of every frequency");
 }
 
+// Progress lines on stderr, from the root rank only.
+void print_progress(const std::string& line) {
+  if (is_root_rank()) std::cerr << line << "\n";
+}
+
+// A partially filled 3-D tank's solvers are serial (docs/volume.md §8).
+void require_one_rank() {
+  int ranks = 1;
+  MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
+  if (ranks > 1) throw std::runtime_error("a partially filled 3-D tank is solved on one rank (run it without mpirun)");
+}
+
 std::string text_of(const std::string& file) {
   std::ifstream in(file);
   std::ostringstream os;
@@ -259,8 +271,7 @@ int VolumeCommands::run(const std::string& command_line) const {
     return run_response_table(request, command_line);
   if (common_.ekman > 0 && !common_.sigma.empty()) return run_response(request);
   if (common_.ekman > 0) return run_viscous(request, command_line);
-  VolumeTableResult result =
-      make_volume_table(request, [](const std::string& line) { if (is_root_rank()) std::cerr << line << "\n"; });
+  VolumeTableResult result = make_volume_table(request, print_progress);
   if (!is_root_rank()) return 0;
   set_provenance(result.table, command_line);
   write_mode_table(result.table, common_.output, result.fields ? &*result.fields : nullptr);
@@ -309,12 +320,10 @@ void print_partial_fill(const FreeSurfaceRunResult& r, const geometry::VolumeSha
 }  // namespace
 
 int VolumeCommands::run_partial_fill(const VolumeTableRequest& request, const std::string& command_line) const {
-  int ranks = 1;
-  MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
-  if (ranks > 1) throw std::runtime_error("a partially filled 3-D tank is solved on one rank (run it without mpirun)");
+  require_one_rank();
   const FreeSurfaceSurveySettings settings;
   const FreeSurfaceRunResult r = run_free_surface_modes(request.shape, request.mesh, settings,
-                                                        [](const std::string& line) { std::cerr << line << "\n"; });
+                                                        print_progress);
   print_partial_fill(r, request.shape);
   if (common_.output.empty()) return 0;
   ModeTable t = free_surface_table(r, request.shape, settings);
@@ -365,9 +374,7 @@ ModeTable ideal_tensors_table(const VolumeTableRequest& ideal, const std::string
 // A partially filled tank's ideal table on the interior mesh (the same order and --mesh-size, no wall grading), for
 // its static parts: the frozen liquid, the surface's axis and Gram matrices (docs/volume.md §8). One rank.
 ModeTable ideal_fill_table(const VolumeTableRequest& ideal) {
-  int ranks = 1;
-  MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
-  if (ranks > 1) throw std::runtime_error("a partially filled 3-D tank is solved on one rank (run it without mpirun)");
+  require_one_rank();
   std::cerr << "3-D viscous fill: the ideal table first (the liquid's tensors)\n";
   geometry::MeshOptions mesh = ideal.mesh;
   mesh.wall_size = 0;
@@ -417,19 +424,30 @@ void print_viscous_report(const ViscousVolumeRequest& request, const ViscousVolu
 
 }  // namespace
 
-int VolumeCommands::run_viscous(const VolumeTableRequest& ideal, const std::string& command_line) const {
-  ViscousVolumeRequest request;
+namespace {
+
+// Every viscous run (damped modes, forced response, response table; filled or not) starts from the ideal request's
+// shape and mesh with the Ekman number and the wall's default: the Ekman layers (about Ek^{1/2} thick) need elements
+// of their order there, 2 Ek^{1/2} unless --wall-size is given (docs/volume.md §7). The ideal table keeps the ideal
+// mesh.
+template <class Request>
+Request viscous_volume_request(const VolumeTableRequest& ideal, double ekman, double given_wall_size) {
+  Request request;
   request.shape = ideal.shape;
   request.mesh = ideal.mesh;
-  // The wall's Ekman layers (about Ek^{1/2} thick) need elements of their order there: 2 Ek^{1/2} unless given
-  // (docs/volume.md §7). The ideal table keeps the ideal mesh.
-  if (common_.wall_size == 0) request.mesh.wall_size = 2 * std::sqrt(common_.ekman);
-  request.ekman = common_.ekman;
+  if (given_wall_size == 0) request.mesh.wall_size = 2 * std::sqrt(ekman);
+  request.ekman = ekman;
+  return request;
+}
+
+}  // namespace
+
+int VolumeCommands::run_viscous(const VolumeTableRequest& ideal, const std::string& command_line) const {
+  auto request = viscous_volume_request<ViscousVolumeRequest>(ideal, common_.ekman, common_.wall_size);
   const bool table_wanted = !common_.output.empty();
   std::optional<ModeTable> ideal_table;
   request.targets = viscous_targets(ideal, common_.targets, common_.modes, table_wanted, ideal_table);
-  const auto progress = [](const std::string& line) { if (is_root_rank()) std::cerr << line << "\n"; };
-  const ViscousVolumeResult result = solve_viscous_volume(request, progress);
+  const ViscousVolumeResult result = solve_viscous_volume(request, print_progress);
   // The convergence check: the modes just found, again on a mesh 1.5 times as coarse (interior and wall sizes; the
   // layers' first thickness), each from its fine mode's frequency, so that row i meets row i.
   ViscousVolumeCheck check;
@@ -441,8 +459,8 @@ int VolumeCommands::run_viscous(const VolumeTableRequest& ideal, const std::stri
     c.mesh.near_wall_size = 1.5 * request.mesh.near_wall_size;
     c.targets.clear();
     for (const auto& m : result.modes) c.targets.push_back(m.lambda.real());
-    progress("3-D viscous: the convergence check on a mesh 1.5 times as coarse");
-    coarse = solve_viscous_volume(c, progress);
+    print_progress("3-D viscous: the convergence check on a mesh 1.5 times as coarse");
+    coarse = solve_viscous_volume(c, print_progress);
     check = {&*coarse, fmt::format("the same order on a mesh 1.5 times as coarse (h = {:.4g}, wall {:.4g})",
                                    c.mesh.size, c.mesh.wall_size), common_.convergence_tolerance};
   }
@@ -493,14 +511,9 @@ void write_volume_response(const std::string& path, const std::vector<std::compl
 }  // namespace
 
 int VolumeCommands::run_response(const VolumeTableRequest& ideal) const {
-  ViscousVolumeResponseRequest request;
-  request.shape = ideal.shape;
-  request.mesh = ideal.mesh;
-  if (common_.wall_size == 0) request.mesh.wall_size = 2 * std::sqrt(common_.ekman);  // as for the damped modes
-  request.ekman = common_.ekman;
+  auto request = viscous_volume_request<ViscousVolumeResponseRequest>(ideal, common_.ekman, common_.wall_size);
   request.sigmas = parse_sigma_spec(common_.sigma, common_.sigma_imag);
-  const ViscousVolumeResponse r =
-      viscous_volume_response(request, [](const std::string& line) { if (is_root_rank()) std::cerr << line << "\n"; });
+  const ViscousVolumeResponse r = viscous_volume_response(request, print_progress);
   if (!is_root_rank()) return 0;
   const std::string method = fmt::format("viscous fluid at Ek = {}, forced solves on 3-D Taylor-Hood P{}/P{} ({} "
                                          "tetrahedra, {} unknowns, wall size {})", request.ekman, request.mesh.order,
@@ -534,16 +547,10 @@ void write_fill_response(const std::string& path, const std::vector<std::complex
 }  // namespace
 
 int VolumeCommands::run_fill_response(const VolumeTableRequest& ideal) const {
-  int ranks = 1;
-  MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
-  if (ranks > 1) throw std::runtime_error("a partially filled 3-D tank is solved on one rank (run it without mpirun)");
-  ViscousVolumeResponseRequest request;
-  request.shape = ideal.shape;
-  request.mesh = ideal.mesh;
-  if (common_.wall_size == 0) request.mesh.wall_size = 2 * std::sqrt(common_.ekman);  // as for a full tank
-  request.ekman = common_.ekman;
+  require_one_rank();
+  auto request = viscous_volume_request<ViscousVolumeResponseRequest>(ideal, common_.ekman, common_.wall_size);
   request.sigmas = parse_sigma_spec(common_.sigma, common_.sigma_imag);
-  const ViscousFillResponse r = viscous_fill_response(request, [](const std::string& line) { std::cerr << line << "\n"; });
+  const ViscousFillResponse r = viscous_fill_response(request, print_progress);
   const std::string method = fmt::format("viscous liquid at Ek = {}, fill {}, free surface b = {:.10g}; forced solves "
                                          "on 3-D Taylor-Hood P{}/P{} ({} tetrahedra, {} unknowns, {} on the surface; wall size {})",
                                          request.ekman, request.shape.fill, r.surface_radius, request.mesh.order,
@@ -563,11 +570,7 @@ int VolumeCommands::run_fill_response(const VolumeTableRequest& ideal) const {
 }
 
 int VolumeCommands::run_response_table(const VolumeTableRequest& ideal, const std::string& command_line) const {
-  VolumeResponseTableRequest request;
-  request.shape = ideal.shape;
-  request.mesh = ideal.mesh;
-  if (common_.wall_size == 0) request.mesh.wall_size = 2 * std::sqrt(common_.ekman);  // as for the damped modes
-  request.ekman = common_.ekman;
+  auto request = viscous_volume_request<VolumeResponseTableRequest>(ideal, common_.ekman, common_.wall_size);
   for (const std::complex<double> s : parse_sigma_spec(common_.sigma, 0.0)) {
     if (s.imag() != 0 || !(s.real() >= 0)) throw std::runtime_error("a response table's window is real sigma >= 0 (the "
                                                                     "table holds -sigma by symmetry): " + common_.sigma);
@@ -587,9 +590,8 @@ int VolumeCommands::run_response_table(const VolumeTableRequest& ideal, const st
     error = e.what();
   }
   shared_from_root({}, error);
-  const auto progress = [](const std::string& line) { if (is_root_rank()) std::cerr << line << "\n"; };
   VolumeResponseTableResult r =
-      viscous_volume_response_table(is_root_rank() ? &*ideal_table : nullptr, request, progress);
+      viscous_volume_response_table(is_root_rank() ? &*ideal_table : nullptr, request, print_progress);
   if (!is_root_rank()) return 0;
   const VolumeKrylovReduction& k = r.reduction;
   if (!k.within_tolerance)

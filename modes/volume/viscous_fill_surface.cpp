@@ -24,17 +24,6 @@ double surface_part(int j, const std::array<double, 3>& x, const std::array<doub
   }
 }
 
-// The direction j's velocity part at r (from P0): e_k × r, then e_x × ẑ = −e_y and e_y × ẑ = e_x.
-std::array<double, 3> velocity_part(int j, double rx, double ry, double rz) {
-  switch (j) {
-    case 0: return {0, -rz, ry};
-    case 1: return {rz, 0, -rx};
-    case 2: return {-ry, rx, 0};
-    case 3: return {0, -1, 0};
-    default: return {1, 0, 0};
-  }
-}
-
 }  // namespace
 
 ViscousFillSurface number_fill_surface(const VolumeTaylorHoodSpace& space, const std::array<double, 3>& centroid,
@@ -79,27 +68,25 @@ void add_fill_surface_terms(const ViscousFillSurface& s, Triplets& ar, Triplets&
   }
 }
 
-std::array<std::vector<std::complex<double>>, kFillDirections> fill_inputs(const VolumeTaylorHoodSpace& space,
-                                                                         const ViscousFillSurface& s, int n,
-                                                                         std::size_t first_element,
-                                                                         std::size_t last_element, bool surface_too) {
-  std::array<std::vector<std::complex<double>>, kFillDirections> F;
-  for (auto& f : F) f.assign(n, 0.0);
+std::array<std::vector<std::complex<double>>, kFillDirections> fill_inputs(const ViscousFillSurface& s,
+                                                                         const DirectionFunctionals& rotations,
+                                                                         const DirectionFunctionals& translations,
+                                                                         const std::array<double, 3>& centroid) {
   const auto& p0 = s.axis_point;
-  const int npe = space.velocity_nodes_per_element();
-  VolumeQuadrature eq;
-  for (std::size_t e = first_element; e < last_element; ++e) {
-    space.geometry().quadrature(e, eq);
-    const std::array<std::span<const int>, 3> u = {space.velocity(e, 0), space.velocity(e, 1), space.velocity(e, 2)};
-    for (std::size_t q = 0; q < eq.w.size(); ++q)
-      for (int j = 0; j < kFillDirections; ++j) {
-        const auto v = velocity_part(j, eq.x[q] - p0[0], eq.y[q] - p0[1], eq.z[q] - p0[2]);
-        for (int a = 0; a < npe; ++a)
-          for (int d = 0; d < 3; ++d)
-            if (u[d][a] >= 0 && v[d] != 0) F[j][u[d][a]] += v[d] * eq.N[q * npe + a] * eq.w[q];
-      }
+  const std::array<double, 3> d = {centroid[0] - p0[0], centroid[1] - p0[1], centroid[2] - p0[2]};  // c − P0
+  // e_k × d for k = x, y, z, and the translations' velocities −e_y, e_x.
+  const std::array<std::array<double, 3>, kFillDirections> moved = {{{0, -d[2], d[1]}, {d[2], 0, -d[0]},
+                                                                     {-d[1], d[0], 0}, {0, -1, 0}, {1, 0, 0}}};
+  const std::size_t n = rotations[0].size();
+  std::array<std::vector<std::complex<double>>, kFillDirections> F;
+  for (int j = 0; j < kFillDirections; ++j) {
+    F[j].assign(n, 0.0);
+    for (std::size_t i = 0; i < n; ++i) {
+      double v = j < 3 ? rotations[j][i] : 0.0;
+      for (int c = 0; c < 3; ++c) v += moved[j][c] * translations[c][i];
+      F[j][i] = v;
+    }
   }
-  if (!surface_too) return F;
   // The surface parts: +i ∫_Σ ζ (ψ_j − ψ̄_j) dS (a constant surface pressure moves nothing).
   const std::complex<double> I(0, 1);
   for (int j = 0; j < kFillDirections; ++j) {

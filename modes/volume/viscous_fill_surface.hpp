@@ -41,12 +41,15 @@ ViscousFillSurface number_fill_surface(const VolumeTaylorHoodSpace& space, const
 // The surface's terms of Re A (b S and b Sᵀ) and 𝓜 (b M_s).
 void add_fill_surface_terms(const ViscousFillSurface& s, Triplets& ar, Triplets& mass);
 
-// The five directions' input functionals F_0 … F_4 (U_x, U_y, U_z, T̂_x, T̂_y) over the complex problem's n unknowns;
-// each rank integrates its elements' share [first_element, last_element) of the volume parts, rank 0 the surface's.
+// The five directions' input functionals F_0 … F_4 (U_x, U_y, U_z, T̂_x, T̂_y) over the complex problem's n unknowns,
+// from the whole mesh's rotation functionals about the liquid's centroid c (∫ W·(e_k × (x − c))) and translation
+// functionals (∫ W·e_k): about P0, e_k × (x − P0) = e_k × (x − c) + e_k × (c − P0), and T̂_x, T̂_y move the liquid as
+// −e_y, e_x. Then the surface parts.
 constexpr int kFillDirections = 5;
-std::array<std::vector<std::complex<double>>, kFillDirections> fill_inputs(const VolumeTaylorHoodSpace& space,
-                                                                         const ViscousFillSurface& s, int n,
-                                                                         std::size_t first_element,
-                                                                         std::size_t last_element, bool surface_too);
+using DirectionFunctionals = std::array<std::vector<double>, 3>;
+std::array<std::vector<std::complex<double>>, kFillDirections> fill_inputs(const ViscousFillSurface& s,
+                                                                         const DirectionFunctionals& rotations,
+                                                                         const DirectionFunctionals& translations,
+                                                                         const std::array<double, 3>& centroid);
 
 }  // namespace rc::modes

@@ -15,6 +15,7 @@ struct ElementMatrices {
   std::vector<double> m0, k0;    // per pair of local velocity nodes
   std::array<std::vector<double>, 3> b;  // per (pressure node, velocity node): ∫ q ∂_d v
   std::array<std::array<std::vector<double>, 3>, 3> f;  // f[k][d][a]: coupling k on component d of node a
+  std::vector<double> n1;        // per velocity node, ∫ N: the translations' functionals (a free surface's directions)
   std::array<std::array<std::vector<double>, 3>, 3> kc;  // with a free surface: kc[d][d′] = ∫ ∂_d′ w ∂_d v (header)
 };
 
@@ -27,6 +28,7 @@ void integrate_element(const VolumeTaylorHoodSpace& space, std::size_t e, const 
   for (auto& b : out.b) b.assign(npp * npe, 0.0);
   for (auto& fk : out.f)
     for (auto& fd : fk) fd.assign(npe, 0.0);
+  out.n1.assign(npe, 0.0);
   for (auto& kd : out.kc)
     for (auto& k : kd) k.assign(stress_form ? npe * npe : 0, 0.0);
   const auto& P = space.pressure_basis();
@@ -37,6 +39,7 @@ void integrate_element(const VolumeTaylorHoodSpace& space, std::size_t e, const 
     const std::array<const double*, 3> dN = {&eq.dNx[q * npe], &eq.dNy[q * npe], &eq.dNz[q * npe]};
     for (int a = 0; a < npe; ++a) {
       const double Nw = N[a] * w;
+      out.n1[a] += Nw;
       out.f[0][1][a] -= z * Nw; out.f[0][2][a] += y * Nw;  // e_x × r = (0, −z, y)
       out.f[1][0][a] += z * Nw; out.f[1][2][a] -= x * Nw;  // e_y × r = (z, 0, −x)
       out.f[2][0][a] -= y * Nw; out.f[2][1][a] += x * Nw;  // e_z × r = (−y, x, 0)
@@ -57,14 +60,16 @@ void integrate_element(const VolumeTaylorHoodSpace& space, std::size_t e, const 
 
 // One element's entries: Re A (B and Bᵀ), Im A (C + Ek K), 𝓜, and the coupling functionals.
 void scatter(const VolumeTaylorHoodSpace& space, std::size_t e, const ElementMatrices& em, double ekman,
-             Triplets& ar, Triplets& ai, Triplets& mass, std::array<std::vector<double>, 3>& f) {
+             Triplets& ar, Triplets& ai, Triplets& mass, DirectionFunctionals& f, DirectionFunctionals& t) {
   const int npe = space.velocity_nodes_per_element(), npp = space.pressure_nodes_per_element();
   const std::array<std::span<const int>, 3> u = {space.velocity(e, 0), space.velocity(e, 1), space.velocity(e, 2)};
   const auto p = space.pressure(e);
   for (int a = 0; a < npe; ++a) {
-    for (int k = 0; k < 3; ++k)
-      for (int d = 0; d < 3; ++d)
-        if (u[d][a] >= 0) f[k][u[d][a]] += em.f[k][d][a];
+    for (int d = 0; d < 3; ++d) {
+      if (u[d][a] < 0) continue;
+      for (int k = 0; k < 3; ++k) f[k][u[d][a]] += em.f[k][d][a];
+      t[d][u[d][a]] += em.n1[a];
+    }
     for (int c = 0; c < npe; ++c) {
       const int ac = a * npe + c;
       for (int d = 0; d < 3; ++d) {
@@ -87,16 +92,14 @@ void scatter(const VolumeTaylorHoodSpace& space, std::size_t e, const ElementMat
       }
 }
 
-// The five directions' inputs and outputs (viscous_fill_surface.hpp), summed over the ranks' shares.
-void add_fill_directions(const VolumeTaylorHoodSpace& space, const ViscousFillSurface& surface, int n, std::size_t first,
-                         std::size_t last, bool root, MPI_Comm comm, ViscousVolumeForms& out) {
-  auto F = fill_inputs(space, surface, n, first, last, root);
-  for (auto& Fj : F) {
-    std::vector<std::complex<double>> all(Fj.size());
-    MPI_Allreduce(Fj.data(), all.data(), 2 * n, MPI_DOUBLE, MPI_SUM, comm);  // complex<double> is two doubles
-    out.fill_inputs.push_back(block_vector(out.forms.A, all));
-    for (auto& v : all) v = std::conj(v);
-    out.fill_outputs.push_back(block_vector(out.forms.A, all));
+// The five directions' inputs and outputs (viscous_fill_surface.hpp) from the whole mesh's functionals.
+void add_fill_directions(const ViscousFillSurface& surface, const DirectionFunctionals& rotations,
+                         const DirectionFunctionals& translations, const std::array<double, 3>& centroid,
+                         ViscousVolumeForms& out) {
+  for (auto& Fj : fill_inputs(surface, rotations, translations, centroid)) {
+    out.fill_inputs.push_back(block_vector(out.forms.A, Fj));
+    for (auto& v : Fj) v = std::conj(v);
+    out.fill_outputs.push_back(block_vector(out.forms.A, Fj));
   }
   out.axis_point = surface.axis_point;
   out.surface_radius = surface.surface.radius();
@@ -120,15 +123,19 @@ ViscousVolumeForms assemble_viscous_volume_forms(const VolumeTaylorHoodSpace& sp
     if (rank == 0) add_fill_surface_terms(*surface, ar, mass);
   }
   const int n = space.size() + (fill ? surface->count : 0);
-  std::array<std::vector<double>, 3> f, f_all;
-  for (int k = 0; k < 3; ++k) { f[k].assign(n, 0.0); f_all[k].assign(n, 0.0); }
+  DirectionFunctionals f, f_all, t, t_all;  // rotations about the centroid, translations
+  for (auto* v : {&f, &f_all, &t, &t_all})
+    for (auto& vk : *v) vk.assign(n, 0.0);
   VolumeQuadrature eq;
   ElementMatrices em;
   for (std::size_t e = first; e < last; ++e) {
     integrate_element(space, e, centroid, fill, eq, em);
-    scatter(space, e, em, ekman, ar, ai, mass, f);
+    scatter(space, e, em, ekman, ar, ai, mass, f, t);
   }
-  for (int k = 0; k < 3; ++k) MPI_Allreduce(f[k].data(), f_all[k].data(), n, MPI_DOUBLE, MPI_SUM, comm);
+  for (int k = 0; k < 3; ++k) {
+    MPI_Allreduce(f[k].data(), f_all[k].data(), n, MPI_DOUBLE, MPI_SUM, comm);
+    if (fill) MPI_Allreduce(t[k].data(), t_all[k].data(), n, MPI_DOUBLE, MPI_SUM, comm);
+  }
 
   ViscousVolumeForms out;
   ViscousForms& forms = out.forms;
@@ -144,7 +151,7 @@ ViscousVolumeForms assemble_viscous_volume_forms(const VolumeTaylorHoodSpace& sp
   out.velocity_slots = block_vector(forms.A, velocity);
   petsc_check(MatCreateVecs(forms.M, forms.mass_diagonal.out(), nullptr), "MatCreateVecs");
   petsc_check(MatGetDiagonal(forms.M, forms.mass_diagonal), "MatGetDiagonal");
-  if (fill) add_fill_directions(space, *surface, n, first, last, rank == 0, comm, out);
+  if (fill) add_fill_directions(*surface, f_all, t_all, centroid, out);
   return out;
 }
 
