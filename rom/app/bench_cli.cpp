@@ -3,6 +3,7 @@
 
 #include "bench.hpp"
 #include "external_programs.hpp"
+#include "load_scene.hpp"
 #include "scene.hpp"
 
 #include <cstdio>
@@ -31,7 +32,7 @@ Command add_bench_command(CLI::App& app) {
             if (!o->out.empty() && out.has_parent_path() && !std::filesystem::is_directory(out.parent_path()))
               throw std::runtime_error(o->out + ": the output folder does not exist");
             if (!o->png.empty()) check_plot_tools(RC_PLOT_BENCH_SCRIPT, "figure");  // before the benchmark
-            const BenchResult r = run_bench(parse_scene(o->scene), {}, [](const BenchRow& row) {
+            const BenchResult r = run_bench(load_scene(o->scene), {}, [](const BenchRow& row) {
               std::printf("%s\n", format_bench_row(row).c_str());
               std::fflush(stdout);
             });

@@ -8,6 +8,7 @@
 #include "frequency_response.hpp"
 #include "general_chain.hpp"
 #include "general_response.hpp"
+#include "load_scene.hpp"
 #include "scene.hpp"
 
 #include <cmath>
@@ -115,7 +116,7 @@ void print_summary(const FrequencyResponse& r, const ResponseOptions& o) {
 
 int run_response(const ResponseOptions& o) {
   const FrequencyRange range = parse_range(o.freq);
-  const Scene scene = parse_scene(o.scene);
+  const Scene scene = load_scene(o.scene);
   if (o.body < 1 || o.body > static_cast<int>(scene.bodies.size()))
     throw std::runtime_error("--body " + std::to_string(o.body) + ": the scene has bodies 1.." +
                              std::to_string(scene.bodies.size()));

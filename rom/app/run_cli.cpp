@@ -6,6 +6,7 @@
 #include "general_run.hpp"
 #include "general_system.hpp"
 #include "linear_validity.hpp"
+#include "load_scene.hpp"
 #include "nonlinear_run.hpp"
 #include "output.hpp"
 #include "propagation.hpp"
@@ -203,7 +204,7 @@ Command add_run_command(CLI::App& app) {
   cmd->add_option("SCENE", o->scene, "scene file (TOML)")->required();
   cmd->add_option("-o,--output", o->out, "output file: HDF5, or CSV when the name ends in .csv")->required();
   return {cmd, [o] {
-            const Scene scene = parse_scene(o->scene);
+            const Scene scene = load_scene(o->scene);
             if (scene.run.present && scene.run.nonlinear()) return run_nonlinear(scene, o->out);
             TableCache tables;
             if (needs_general_chain(scene, tables)) return run_general(scene, tables, o->scene, o->out);

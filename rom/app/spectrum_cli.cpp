@@ -7,6 +7,7 @@
 #include "confirm_command.hpp"
 #include "external_programs.hpp"
 #include "general_output.hpp"
+#include "load_scene.hpp"
 #include "mesh_study_options.hpp"
 #include "output.hpp"
 #include "scene.hpp"
@@ -55,7 +56,7 @@ Command add_spectrum_command(CLI::App& app) {
   add_cavity_modes_option(cmd, o->confirm_request, "with --confirm: ");
   add_mesh_study_options(cmd, o->confirm_request.mesh, "with --confirm: ");
   return {cmd, [o] {
-            const Scene scene = parse_scene(o->scene);
+            const Scene scene = load_scene(o->scene);
             TableCache tables;
             if (o->confirm) {
               o->confirm_request.json = o->json;
@@ -94,7 +95,7 @@ Command add_confirm_command(CLI::App& app) {
                 "and sweep give the confirmed roots; prints how far the new tables' roots are from them");
   add_mesh_study_options(cmd, o->request.mesh);
   o->request.run = run_program_logged;
-  return {cmd, [o] { return confirm_exit(parse_scene(o->scene), o->request); }};
+  return {cmd, [o] { return confirm_exit(load_scene(o->scene), o->request); }};
 }
 
 }  // namespace rc::rom::app

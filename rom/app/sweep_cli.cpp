@@ -8,6 +8,7 @@
 #include "general_confirmed_sweep.hpp"
 #include "confirmed_sweep.hpp"
 #include "external_programs.hpp"
+#include "load_scene.hpp"
 #include "mesh_study_options.hpp"
 #include "scene.hpp"
 #include "served_response.hpp"
@@ -51,7 +52,7 @@ SweepRequest resolve(const SweepOptions& o) {
   if (o.steps1 < 1) throw SweepError("--steps " + std::to_string(o.steps1) + ": must be >= 1");
   if (two && o.steps2 < 1) throw SweepError("--steps2 " + std::to_string(o.steps2) + ": must be >= 1");
   if (two && o.key2 == o.key1) throw SweepError("--param2 " + o.key2 + ": same key as --param");
-  SweepRequest r{parse_scene(o.scene), {}, std::nullopt, false};
+  SweepRequest r{load_scene(o.scene), {}, std::nullopt, false};
   r.a1 = SweepAxis{parse_param_key(o.key1, r.scene, "--param"), o.from1, o.to1, o.steps1};
   check_param_value(r.a1.key, o.from1, "--from (--param)");
   check_param_value(r.a1.key, o.to1, "--to (--param)");

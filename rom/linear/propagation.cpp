@@ -1,13 +1,11 @@
 #include "propagation.hpp"
 
 #include "energy.hpp"
-#include "exact_propagation.hpp"
 #include "first_order_system.hpp"
 #include "forced_solution.hpp"
 #include "verdict.hpp"
 
 #include "eigen_dense.hpp"
-#include "matrix_exponential.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -18,48 +16,6 @@
 
 namespace rc::rom {
 using cd = std::complex<double>;
-
-void rk45_advance(const Eigen::MatrixXcd& B, Eigen::VectorXcd& y, double t0, double t1, double tol, double& h,
-                  long& steps) {
-  static const double c2 = 1.0 / 5, c3 = 3.0 / 10, c4 = 4.0 / 5, c5 = 8.0 / 9;
-  static const double a21 = 1.0 / 5, a31 = 3.0 / 40, a32 = 9.0 / 40, a41 = 44.0 / 45,
-                      a42 = -56.0 / 15, a43 = 32.0 / 9, a51 = 19372.0 / 6561,
-                      a52 = -25360.0 / 2187, a53 = 64448.0 / 6561, a54 = -212.0 / 729,
-                      a61 = 9017.0 / 3168, a62 = -355.0 / 33, a63 = 46732.0 / 5247,
-                      a64 = 49.0 / 176, a65 = -5103.0 / 18656, b1 = 35.0 / 384,
-                      b3 = 500.0 / 1113, b4 = 125.0 / 192, b5 = -2187.0 / 6784, b6 = 11.0 / 84;
-  static const double e1 = 71.0 / 57600, e3 = -71.0 / 16695, e4 = 71.0 / 1920,
-                      e5 = -17253.0 / 339200, e6 = 22.0 / 525, e7 = -1.0 / 40;
-  (void)c2; (void)c3; (void)c4; (void)c5;
-  double t = t0;
-  Eigen::VectorXcd k1 = B * y;
-  while (t < t1 - 1e-14 * std::abs(t1)) {
-    if (t + h > t1) h = t1 - t;
-    Eigen::VectorXcd k2 = B * (y + h * a21 * k1);
-    Eigen::VectorXcd k3 = B * (y + h * (a31 * k1 + a32 * k2));
-    Eigen::VectorXcd k4 = B * (y + h * (a41 * k1 + a42 * k2 + a43 * k3));
-    Eigen::VectorXcd k5 = B * (y + h * (a51 * k1 + a52 * k2 + a53 * k3 + a54 * k4));
-    Eigen::VectorXcd k6 = B * (y + h * (a61 * k1 + a62 * k2 + a63 * k3 + a64 * k4 + a65 * k5));
-    Eigen::VectorXcd yn = y + h * (b1 * k1 + b3 * k3 + b4 * k4 + b5 * k5 + b6 * k6);
-    Eigen::VectorXcd k7 = B * yn;
-    Eigen::VectorXcd err = h * (e1 * k1 + e3 * k3 + e4 * k4 + e5 * k5 + e6 * k6 + e7 * k7);
-    const double sc = tol * (1 + std::max(y.norm(), yn.norm()));
-    const double r = err.norm() / sc;
-    if (++steps > 100000000L) throw std::runtime_error("run.tolerance: rk45 needs more than 1e8 steps");
-    if (r <= 1) {
-      t += h;
-      y = yn;
-      k1 = k7;
-    }
-    h *= std::min(5.0, std::max(0.2, 0.9 * std::pow(std::max(r, 1e-300), -0.2)));
-  }
-}
-
-Eigen::MatrixXcd gauss_step_matrix(const Eigen::MatrixXcd& B, double h) {
-  const Eigen::MatrixXcd Z = B * cd(h), Z2 = Z * Z;
-  const Eigen::MatrixXcd Id = Eigen::MatrixXcd::Identity(B.rows(), B.cols());
-  return Eigen::PartialPivLU<Eigen::MatrixXcd>(Id - 0.5 * Z + Z2 / 12.0).solve(Id + 0.5 * Z + Z2 / 12.0);
-}
 
 namespace {
 
@@ -79,20 +35,6 @@ std::string sci(double x) {
 
 }  // namespace
 
-double estimate_integrator_steps(const std::string& method, double rho, const RunSpec& run) {
-  const double outputs = std::floor(run.t_end / run.output_step + 1e-9);
-  if (!(rho > 0)) return (method == "gauss" || method == "rk45") ? outputs : 0.0;
-  if (method == "gauss") {
-    const double hs = std::pow(4320.0 * run.tolerance / (run.t_end * std::pow(rho, 5)), 0.25);
-    return std::max(outputs, outputs * std::ceil(run.output_step / hs));
-  }
-  if (method == "rk45") {
-    const double rho_h = std::min(3.0, std::pow(run.tolerance / 8e-4, 0.2));
-    return std::max(outputs, run.t_end * rho / rho_h);
-  }
-  return 0.0;
-}
-
 namespace {
 
 // The initial state of (26) in first-order form: the scene's tilts and rates, the fluid at rest relative to its
@@ -108,11 +50,11 @@ Eigen::VectorXcd initial_state(const ChainModel& m, const Scene& scene, const Fi
 }
 
 // The integrators' cost before any work: refused, with why, when the scene is too stiff for them.
-double checked_spectral_radius(const FirstOrderSystem& f, const Scene& scene) {
-  const std::string& method = scene.run.method;
-  if (method != "gauss" && method != "rk45") return -1;
+double checked_spectral_radius(const FirstOrderSystem& f, const Scene& scene, const LinearIntegrator& integrator) {
+  const std::string& method = integrator.name;
+  if (!integrator.estimate_steps) return -1;
   const double rho = spectral_radius_of(f);
-  const double est = estimate_integrator_steps(method, rho, scene.run);
+  const double est = integrator.estimate_steps(rho, scene.run);
   if (!(est <= kMaxIntegratorSteps))
     throw std::runtime_error(scene.file.string() + ": run.method: " + method + " would need about " + sci(est) +
                              " steps (fastest root |sigma| = " + sci(rho) + " rad/s, t_end = " +
@@ -125,7 +67,7 @@ double checked_spectral_radius(const FirstOrderSystem& f, const Scene& scene) {
 // Writes the states of a run into its History: tilts, fluid amplitudes relative to their bodies, the energy and,
 // with viscous tanks, the frozen chain's budget (energy_budget.hpp) and, with Galerkin tanks, the fluid's energy
 // balance (galerkin_energy.hpp).
-class Recorder {
+class Recorder final : public StateSink {
  public:
   // `forced`: the particular solution added to every stored state (the run propagates the free part only).
   Recorder(const ChainModel& m, const FirstOrderSystem& f, double h, long steps, History& hist,
@@ -150,7 +92,7 @@ class Recorder {
     }
   }
 
-  void store(long j, const Eigen::VectorXcd& free_part) {
+  void store(long j, const Eigen::VectorXcd& free_part) override {
     const Eigen::VectorXcd y = forced_ ? Eigen::VectorXcd(free_part + forced_->at(j * h_)) : free_part;
     if (budget_meter_) budget_[j] = (*budget_meter_)(y);
     if (balance_meter_) measure_balance(j, y);
@@ -166,7 +108,8 @@ class Recorder {
   }
 
   // Columns of re + i*im are the states at j0, j0 + 1, ... (exact propagation's blocks).
-  void store_block(long j0, const Eigen::Ref<const Eigen::MatrixXd>& re, const Eigen::Ref<const Eigen::MatrixXd>& im) {
+  void store_block(long j0, const Eigen::Ref<const Eigen::MatrixXd>& re,
+                   const Eigen::Ref<const Eigen::MatrixXd>& im) override {
     if (!forced_) return store_states(j0, re, im);
     Eigen::MatrixXd re_total = re, im_total = im;
     for (long i = 0; i < re.cols(); ++i) {
@@ -261,72 +204,6 @@ class Recorder {
   std::vector<double> power_;  // forced runs: dH/dt at each sample
 };
 
-// method = "exact": the eigen-decomposition, or the step's matrix exponential where its eigenvectors are
-// ill-conditioned.
-void run_exact(const ChainModel& m, const FirstOrderSystem& f, const Eigen::VectorXcd& y0, double h, long steps,
-               Recorder& rec, History& hist) {
-  ModalForm mf = modal_form(f, !m.dissipative(), kRealTolerance);
-  hist.eigvec_condition = mf.condition;
-  hist.integrator_steps = steps;
-  if (mf.usable) {
-    // Undamped and stable: the roots are real; drop their rounding-level imaginary parts so that
-    // |e^{i sigma t}| = 1 exactly and the energy cannot drift over long runs (the real form has
-    // exactly real roots already).
-    const bool snap = mf.undamped_real;
-    if (snap && !mf.real) snap_to_imaginary_axis(mf);
-    modal_states(mf, y0, h, steps,
-                 [&](long j0, const Eigen::Ref<const Eigen::MatrixXd>& re, const Eigen::Ref<const Eigen::MatrixXd>& im) {
-                   rec.store_block(j0, re, im);
-                 });
-    hist.method_used = snap ? "exact (eigen-decomposition, real roots)" : "exact (eigen-decomposition)";
-    return;
-  }
-  const Eigen::MatrixXcd Phi = rc::matrix_exponential(Eigen::MatrixXcd(f.B * cd(h)));
-  Eigen::VectorXcd y = y0;
-  rec.store(0, y);
-  for (long j = 1; j <= steps; ++j) {
-    y = Phi * y;
-    rec.store(j, y);
-  }
-  hist.method_used = "exact (matrix exponential of the step; eigenvectors ill-conditioned)";
-}
-
-// method = "gauss": (2,2) Pade = 2-stage Gauss-Legendre; global error ~ t_end rho^5 hs^4 / 4320 <= tol.
-void run_gauss(const FirstOrderSystem& f, const Eigen::VectorXcd& y0, double h, long steps, double rho,
-               const RunSpec& run, Recorder& rec, History& hist) {
-  long sub = 1;
-  if (rho > 0) {
-    const double hs = std::pow(4320.0 * run.tolerance / (run.t_end * std::pow(rho, 5)), 0.25);
-    sub = std::max(1L, static_cast<long>(std::ceil(h / hs)));
-  }
-  if (sub * steps > 200000000L) throw std::runtime_error("run.tolerance: gauss needs more than 2e8 steps");
-  const double hs = h / sub;
-  const Eigen::MatrixXcd P = gauss_step_matrix(f.B, hs);
-  Eigen::VectorXcd y = y0;
-  rec.store(0, y);
-  for (long j = 1; j <= steps; ++j) {
-    for (long s = 0; s < sub; ++s) y = P * y;
-    rec.store(j, y);
-  }
-  hist.method_used = "gauss (" + std::to_string(sub) + " substeps per output step)";
-  hist.integrator_steps = sub * steps;
-}
-
-// method = "rk45": Dormand-Prince with its own step control, stopping at every output time.
-void run_rk45(const FirstOrderSystem& f, const Eigen::VectorXcd& y0, double h, long steps, const RunSpec& run,
-              Recorder& rec, History& hist) {
-  Eigen::VectorXcd y = y0;
-  rec.store(0, y);
-  double hh = h;
-  long nsteps = 0;
-  for (long j = 1; j <= steps; ++j) {
-    rk45_advance(f.B, y, (j - 1) * h, j * h, run.tolerance, hh, nsteps);
-    rec.store(j, y);
-  }
-  hist.method_used = "rk45 (" + std::to_string(nsteps) + " steps)";
-  hist.integrator_steps = nsteps;
-}
-
 }  // namespace
 
 History propagate(const ChainModel& m, const Scene& scene) {
@@ -339,19 +216,15 @@ History propagate(const ChainModel& m, const Scene& scene) {
   const double h = scene.run.output_step;
   const long steps = static_cast<long>(std::floor(scene.run.t_end / h + 1e-9));
   if (steps > 50000000L) throw std::runtime_error("run.output_step: more than 5e7 output steps");
-  const std::string& method = scene.run.method;
-  if (method != "exact" && method != "gauss" && method != "rk45")
-    throw std::runtime_error("run.method: unknown method " + method);
-  const double rho = checked_spectral_radius(f, scene);  // fastest |sigma|, for the integrators
+  const LinearIntegrator& integrator = linear_integrator(scene);
+  const double rho = checked_spectral_radius(f, scene, integrator);  // fastest |sigma|, for the step-controlled ones
 
   // External moments: the particular solution in closed form, the free part from y(0) − y_p(0) (forced_solution.hpp).
   const ForcedSolution forced = forced_solution(m, f, scene);
   const Eigen::VectorXcd y_free = forced.present ? Eigen::VectorXcd(y0 - forced.at(0)) : y0;
   History hist;
   Recorder rec(m, f, h, steps, hist, forced.present ? &forced : nullptr);
-  if (method == "exact") run_exact(m, f, y_free, h, steps, rec, hist);
-  else if (method == "gauss") run_gauss(f, y_free, h, steps, rho, scene.run, rec, hist);
-  else run_rk45(f, y_free, h, steps, scene.run, rec, hist);
+  integrator.run({m, f, y_free, h, steps, rho, scene.run, rec, hist});
   rec.finish(steps);
   if (m.axial.moves()) {
     const AxialHistory axial = axial_history(m.axial, hist.t);

@@ -35,6 +35,11 @@ rom_cli(bad_joints ARGS spectrum;bad_joints.toml EXPECT_EXIT 1 MATCH "joint: the
 rom_cli(bad_huge_mass_run ARGS run;bad_huge_mass.toml;-o;out_huge.h5 EXPECT_EXIT 1 MATCH "^chain-rom: error: the trajectory is not finite[^\n]*nothing written\n?$" NO_FILE out_huge.h5)
 rom_cli(run_unstable_warns ARGS run;unstable_run.toml;-o;out_unstable.h5 EXPECT_EXIT 0 MATCH "wrote out_unstable.h5" MATCH_STDERR "^chain-rom: warning: the scene is unstable .margin, largest .Im sigma. [0-9.]+ rad.s.: the linearised tilts grow")
 rom_cli(bad_tilt ARGS run;bad_tilt.toml;-o;out_bad_tilt.h5 EXPECT_EXIT 1 MATCH "initial\\.tilt: has 1 entries" NO_FILE out_bad_tilt.h5)
+# run.method against the integrators' registry (linear/integrator.hpp), by every command, before any work.
+rom_cli(bad_method_run ARGS run;bad_method.toml;-o;out_bad_method.h5 EXPECT_EXIT 1
+        MATCH "bad_method\\.toml: run\\.method: must be one of \"exact\", \"gauss\", \"rk45\" \\(got \"rk4\"\\)"
+        NO_FILE out_bad_method.h5)
+rom_cli(bad_method_spectrum ARGS spectrum;bad_method.toml EXPECT_EXIT 1 MATCH "run\\.method: must be one of")
 rom_cli(bad_output_dir ARGS run;two_tops.toml;-o;no_such_dir/out.h5 EXPECT_EXIT 1 MATCH "output folder does not exist" NO_FILE no_such_dir/out.h5)
 rom_cli(missing_scene ARGS spectrum;nope.toml EXPECT_EXIT 1 MATCH "nope.toml: cannot open")
 
