@@ -278,3 +278,29 @@ TEST(Batyr, PropertySevenWithoutFriction) {
   EXPECT_GT(gap, 1e-3);
   EXPECT_TRUE(sp.stable);
 }
+
+// Batyr's Lemma 1: the gravity operator B of (44) is non-negative, diagonal, with b_kk = m_k l_k + (m_{k+1} + …) h_k
+// for his hanging chain (the liquid frozen at its centre; l_k, h_k the depths of body k's centre of mass and next joint
+// below joint k). Its kernel (45) is the three axial directions, which (26) leaves to the spins' own block
+// (axial_rotation.hpp): on the tilts B is positive definite. The model's K against (44) built by hand, and the same
+// chain standing on its joints (every position mirrored) must lose it.
+TEST(Batyr, LemmaOneGravityIsNonNegativeForTheHangingChain) {
+  const std::vector<Body> hanging = batyr_bodies(true);
+  const ChainModel m = model_of(scene_text(hanging, {{0, 0}, {0, 0}}, 9.81, false, 0));
+  const PlanarChain hand = zhukovsky_pendulums(hanging, 9.81);
+  const double against_44 = (m.K - hand.K).norm() / hand.K.norm();
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> hang(m.K);
+  std::vector<Body> standing = hanging;
+  for (Body& b : standing) {
+    b.com = -b.com;
+    b.next = -b.next;
+    b.center = -b.center;
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> stand(model_of(scene_text(standing, {{0, 0}, {0, 0}}, 9.81, false, 0)).K);
+  std::printf("  K against (44) by hand %.1e; hanging: eigenvalues of B %.4g … %.4g N m (kernel on the tilts: none); "
+              "standing: %.4g … %.4g\n", against_44, hang.eigenvalues().minCoeff(), hang.eigenvalues().maxCoeff(),
+              stand.eigenvalues().minCoeff(), stand.eigenvalues().maxCoeff());
+  EXPECT_LT(against_44, 1e-14);
+  EXPECT_GT(hang.eigenvalues().minCoeff(), 1e-3 * hang.eigenvalues().maxCoeff());
+  EXPECT_LT(stand.eigenvalues().maxCoeff(), 0.0);
+}
