@@ -2,9 +2,7 @@
 // the one of the meshes gmsh writes (as in reference_element.cpp).
 #include "lagrange_nodes.hpp"
 
-#include "gmsh_session.hpp"
-
-#include <gmsh.h>
+#include "gmsh_lagrange_element.hpp"
 
 #include <cmath>
 #include <map>
@@ -47,28 +45,14 @@ TriangleNodes triangle_nodes(int order) {
   TriangleNodes t;
   t.order = order;
   t.nodes_per_element = (order + 1) * (order + 2) / 2;
-  std::vector<double> grad;
-  detail::with_gmsh("triangle_nodes", [&](detail::GmshSession&) {
-    const int type = gmsh::model::mesh::getElementType("Triangle", order);
-    std::string name;
-    int dim = 0, element_order = 0, num_nodes = 0, num_primary = 0;
-    std::vector<double> local;  // must be empty: gmsh 4.8 appends to it
-    gmsh::model::mesh::getElementProperties(type, name, dim, element_order, num_nodes, local, num_primary);
-    std::vector<double> uvw;
-    for (int a = 0; a < num_nodes; ++a) {
-      t.points.push_back({local[2 * a], local[2 * a + 1]});
-      uvw.insert(uvw.end(), {local[2 * a], local[2 * a + 1], 0.0});
-    }
-    int components = 0, orientations = 0;
-    gmsh::model::mesh::getBasisFunctions(type, uvw, "GradLagrange", components, grad, orientations);
-  });
+  const detail::GmshLagrangeElement e =
+      detail::gmsh_lagrange_element("triangle_nodes", "Triangle", 2, order, t.nodes_per_element);
   const std::size_t npe = t.nodes_per_element;
-  if (t.points.size() != npe || grad.size() != npe * npe * 3)
-    throw std::runtime_error("triangle_nodes: unexpected gmsh basis of order " + std::to_string(order));
+  for (std::size_t a = 0; a < npe; ++a) t.points.push_back({e.points[2 * a], e.points[2 * a + 1]});
   t.dN.resize(npe * npe * 2);
   for (std::size_t i = 0; i < npe * npe; ++i) {
-    t.dN[2 * i] = grad[3 * i];
-    t.dN[2 * i + 1] = grad[3 * i + 1];
+    t.dN[2 * i] = e.grad[3 * i];
+    t.dN[2 * i + 1] = e.grad[3 * i + 1];
   }
   t.sub_triangles = lattice_triangles(t.points, order);
   return t;

@@ -2,9 +2,7 @@
 // of the meshes gmsh writes (as lagrange_nodes.cpp for the triangle).
 #include "tetrahedron_nodes.hpp"
 
-#include "gmsh_session.hpp"
-
-#include <gmsh.h>
+#include "gmsh_lagrange_element.hpp"
 
 #include <cmath>
 #include <map>
@@ -77,21 +75,11 @@ TetrahedronNodes tetrahedron_nodes(int order) {
   TetrahedronNodes t;
   t.order = order;
   t.nodes_per_element = (order + 1) * (order + 2) * (order + 3) / 6;
-  std::vector<double> grad;
-  detail::with_gmsh("tetrahedron_nodes", [&](detail::GmshSession&) {
-    const int type = gmsh::model::mesh::getElementType("Tetrahedron", order);
-    std::string name;
-    int dim = 0, element_order = 0, num_nodes = 0, num_primary = 0;
-    std::vector<double> local;  // must be empty: gmsh 4.8 appends to it
-    gmsh::model::mesh::getElementProperties(type, name, dim, element_order, num_nodes, local, num_primary);
-    for (int a = 0; a < num_nodes; ++a) t.points.push_back({local[3 * a], local[3 * a + 1], local[3 * a + 2]});
-    int components = 0, orientations = 0;
-    gmsh::model::mesh::getBasisFunctions(type, local, "GradLagrange", components, grad, orientations);
-  });
-  const std::size_t npe = t.nodes_per_element;
-  if (t.points.size() != npe || grad.size() != npe * npe * 3)
-    throw std::runtime_error("tetrahedron_nodes: unexpected gmsh basis of order " + std::to_string(order));
-  t.dN = std::move(grad);
+  detail::GmshLagrangeElement e =
+      detail::gmsh_lagrange_element("tetrahedron_nodes", "Tetrahedron", 3, order, t.nodes_per_element);
+  for (int a = 0; a < t.nodes_per_element; ++a)
+    t.points.push_back({e.points[3 * a], e.points[3 * a + 1], e.points[3 * a + 2]});
+  t.dN = std::move(e.grad);
   t.sub_tetrahedra = lattice_tetrahedra(t.points, order);
   return t;
 }
