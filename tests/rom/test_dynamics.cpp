@@ -4,6 +4,7 @@
 #include "propagation.hpp"
 #include "rom_test_util.hpp"
 
+#include <Eigen/SVD>
 #include <gtest/gtest.h>
 
 #include <random>
@@ -303,4 +304,54 @@ TEST(Batyr, LemmaOneGravityIsNonNegativeForTheHangingChain) {
   EXPECT_LT(against_44, 1e-14);
   EXPECT_GT(hang.eigenvalues().minCoeff(), 1e-3 * hang.eigenvalues().maxCoeff());
   EXPECT_LT(stand.eigenvalues().maxCoeff(), 0.0);
+}
+
+// Batyr's Property 2: with friction A (43) the roots λ (e^{−λt}; ours e^{iσt}, λ = −iσ) of (75), λ²C − λA + B = 0, are
+// on their eigenvectors u the roots of (79), λ± = ((Au, u) ± √((Au, u)² − 4 (Cu, u)(Bu, u))) / (2 (Cu, u)), and
+// Re λ > 0 (80). C, A and B built by hand (the hanging Zhukovsky pendulums and (43)'s tridiagonal friction), the roots
+// the model's: each must make the hand-built pencil singular, and (79) on its null vector must return it. With the
+// support's friction left out of the hand-built A the pencil is no longer singular there.
+TEST(Batyr, PropertyTwoRootsAreTheirEigenvectorsQuotients) {
+  const std::vector<Body> bodies = batyr_bodies(true);
+  const double alpha[3] = {0.03, 0.02, 0.01};  // the support, joint 1, joint 2
+  const ChainModel m = model_of(scene_text(bodies, {{0, alpha[1]}, {0, alpha[2]}}, 9.81, false, alpha[0]));
+  const Spectrum sp = compute_spectrum(m);
+  const auto tilts = tilt_roots(sp, m.n_modes(), sp.tolerance);
+  ASSERT_EQ(tilts.size(), 6u);
+  const PlanarChain hand = zhukovsky_pendulums(bodies, 9.81);
+  const auto friction = [&](bool with_support) {  // Batyr (43)
+    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(3, 3);
+    for (int k = 0; k < 3; ++k) A(k, k) = (k == 0 && !with_support ? 0.0 : alpha[k]) + (k < 2 ? alpha[k + 1] : 0.0);
+    for (int k = 0; k < 2; ++k) A(k, k + 1) = A(k + 1, k) = -alpha[k + 1];
+    return A;
+  };
+  // Per root: the hand-built pencil's smallest singular value against its norm, and (79) on its null vector.
+  const auto measure = [&](const Eigen::MatrixXd& A, cd lambda, double& singular, double& quotient) {
+    const Eigen::MatrixXcd Q = lambda * lambda * hand.M.cast<cd>() - lambda * A.cast<cd>() + hand.K.cast<cd>();
+    const Eigen::JacobiSVD<Eigen::MatrixXcd> svd(Q, Eigen::ComputeFullV);
+    singular = svd.singularValues()(2) / svd.singularValues()(0);
+    const Eigen::VectorXcd u = svd.matrixV().col(2);
+    const double c = u.dot(hand.M.cast<cd>() * u).real(), a = u.dot(A.cast<cd>() * u).real(),
+                 b = u.dot(hand.K.cast<cd>() * u).real();
+    const cd root = std::sqrt(cd(a * a - 4 * c * b));
+    quotient = std::min(std::abs((a + root) / (2 * c) - lambda), std::abs((a - root) / (2 * c) - lambda)) / std::abs(lambda);
+  };
+  double worst_singular = 0, worst_quotient = 0, min_re = 1e300, wrong_singular = 1e300;
+  for (const cd s : tilts) {
+    const cd lambda = cd(0, -1) * s;
+    double singular = 0, quotient = 0;
+    measure(friction(true), lambda, singular, quotient);
+    worst_singular = std::max(worst_singular, singular);
+    worst_quotient = std::max(worst_quotient, quotient);
+    min_re = std::min(min_re, lambda.real());
+    measure(friction(false), lambda, singular, quotient);
+    wrong_singular = std::min(wrong_singular, singular);
+  }
+  std::printf("  (75) by hand at the model's 6 tilt roots: smallest singular value %.1e of the largest; (79) on the "
+              "null vectors returns the root to %.1e; smallest Re lambda %.4e 1/s (80); without the support's friction "
+              "the pencil's smallest singular value is %.1e\n", worst_singular, worst_quotient, min_re, wrong_singular);
+  EXPECT_LT(worst_singular, 1e-12);
+  EXPECT_LT(worst_quotient, 1e-10);
+  EXPECT_GT(min_re, 0.0);
+  EXPECT_GT(wrong_singular, 1e-6);  // measured 1.7e-4: the friction is light, yet 1e11 times the right pencil's
 }
