@@ -355,3 +355,69 @@ TEST(Batyr, PropertyTwoRootsAreTheirEigenvectorsQuotients) {
   EXPECT_GT(min_re, 0.0);
   EXPECT_GT(wrong_singular, 1e-6);  // measured 1.7e-4: the friction is light, yet 1e11 times the right pencil's
 }
+
+// Batyr's Theorem 6 (second part) and Property 11 on one transverse plane of his three pendulums (at ω = 0 the two planes
+// are alike and the axial block is apart, axial_rotation.hpp): where the friction is strong enough for (84),
+// λ_min(C^{-1/2} A C^{-1/2}) > 2 λ_max(C^{-1/2} B C^{-1/2})^{1/2}, every root is real and positive and the eigenvectors of
+// (90)–(92)'s operator 𝒜 = [[C^{-1/2}AC^{-1/2}, i C^{-1/2}B^{1/2}], [i B^{1/2}C^{-1/2}, 0]], self-adjoint in the metric
+// J = diag(I, −I) (98), are a J-orthogonal basis. 𝒜 built by hand; its eigenvalues against the model's roots.
+TEST(Batyr, TheoremSixStrongFrictionGivesRealRootsAndAJOrthogonalBasis) {
+  const std::vector<Body> bodies = batyr_bodies(true);
+  const PlanarChain hand = zhukovsky_pendulums(bodies, 9.81);
+  const auto friction = [](const double (&alpha)[3]) {  // Batyr (43)
+    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(3, 3);
+    for (int k = 0; k < 3; ++k) A(k, k) = alpha[k] + (k < 2 ? alpha[k + 1] : 0.0);
+    for (int k = 0; k < 2; ++k) A(k, k + 1) = A(k + 1, k) = -alpha[k + 1];
+    return A;
+  };
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> Ch(hand.M);
+  const Eigen::MatrixXd Cm = Ch.operatorInverseSqrt(), Bh = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(hand.K).operatorSqrt();
+  const double light[3] = {0.03, 0.02, 0.01};
+  const double amin = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(Cm * friction(light) * Cm).eigenvalues().minCoeff();
+  const double bmax = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(Cm * hand.K * Cm).eigenvalues().maxCoeff();
+  const double scale = 1.5 * 2 * std::sqrt(bmax) / amin;  // (84) with a margin of 1.5
+  const double alpha[3] = {scale * light[0], scale * light[1], scale * light[2]};
+  const Eigen::MatrixXd A = friction(alpha);
+  const ChainModel m = model_of(scene_text(bodies, {{0, alpha[1]}, {0, alpha[2]}}, 9.81, false, alpha[0]));
+  const Spectrum sp = compute_spectrum(m);
+  const auto tilts = tilt_roots(sp, m.n_modes(), sp.tolerance);
+  ASSERT_EQ(tilts.size(), 6u);
+  Eigen::MatrixXcd op = Eigen::MatrixXcd::Zero(6, 6);  // (92)
+  op.topLeftCorner(3, 3) = (Cm * A * Cm).cast<cd>();
+  op.topRightCorner(3, 3) = cd(0, 1) * (Cm * Bh).cast<cd>();
+  op.bottomLeftCorner(3, 3) = cd(0, 1) * (Bh * Cm).cast<cd>();
+  const Eigen::ComplexEigenSolver<Eigen::MatrixXcd> es(op);
+  Eigen::VectorXcd Jd(6);
+  Jd << 1, 1, 1, -1, -1, -1;
+  const Eigen::MatrixXcd& V = es.eigenvectors();
+  const Eigen::MatrixXcd gram = V.adjoint() * Jd.asDiagonal() * V;  // [v_i, v_j] (96)
+  double off = 0, diag_min = 1e300, worst_root = 0, max_imag = 0, min_lambda = 1e300;
+  for (int i = 0; i < 6; ++i) {
+    for (int j = 0; j < 6; ++j)
+      if (i != j) off = std::max(off, std::abs(gram(i, j)) / std::sqrt(std::abs(gram(i, i) * gram(j, j))));
+    diag_min = std::min(diag_min, std::abs(gram(i, i)) / V.col(i).squaredNorm());
+    max_imag = std::max(max_imag, std::abs(es.eigenvalues()[i].imag()));
+    min_lambda = std::min(min_lambda, es.eigenvalues()[i].real());
+  }
+  // Each of the model's tilt roots (λ = −iσ) against the nearest eigenvalue of (92); at ω = 0 each appears in both
+  // planes, and the model's complex tilts carry the plane once.
+  for (const cd s : tilts) {
+    const cd lambda = cd(0, -1) * s;
+    double nearest = 1e300;
+    for (int i = 0; i < 6; ++i) nearest = std::min(nearest, std::abs(es.eigenvalues()[i] - lambda));
+    worst_root = std::max(worst_root, nearest / std::abs(lambda));
+    max_imag = std::max(max_imag, std::abs(lambda.imag()));
+  }
+  const Eigen::JacobiSVD<Eigen::MatrixXcd> basis(V);
+  const double condition = basis.singularValues()(0) / basis.singularValues()(5);
+  std::printf("  friction x%.3g for (84): the model's tilt roots are (92)'s eigenvalues to %.1e, all real (|Im| <= "
+              "%.1e) and positive (smallest %.4g 1/s); (92)'s eigenvectors J-orthogonal to %.1e, |[v, v]| >= %.3g of "
+              "|v|^2; a basis of condition %.3g (Property 11)\n", scale, worst_root, max_imag, min_lambda, off, diag_min,
+              condition);
+  EXPECT_LT(worst_root, 1e-10);
+  EXPECT_LT(max_imag, 1e-9 * std::sqrt(bmax));
+  EXPECT_GT(min_lambda, 0.0);
+  EXPECT_LT(off, 1e-10);
+  EXPECT_GT(diag_min, 1e-3);
+  EXPECT_LT(condition, 1e6);
+}
