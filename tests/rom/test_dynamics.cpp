@@ -1,6 +1,7 @@
 // Batyr (2010) (three pendulums with fluid, joint friction, w = 0) and the energy: its derivation,
 // conservation under exact propagation and decay with friction.
 #include "energy.hpp"
+#include "krein_gap.hpp"
 #include "propagation.hpp"
 #include "rom_test_util.hpp"
 
@@ -420,4 +421,35 @@ TEST(Batyr, TheoremSixStrongFrictionGivesRealRootsAndAJOrthogonalBasis) {
   EXPECT_LT(off, 1e-10);
   EXPECT_GT(diag_min, 1e-3);
   EXPECT_LT(condition, 1e6);
+}
+
+// Batyr's indefinite metric (90)–(98) against krein_gap's signature (krein_gap.hpp) where both apply: the undamped
+// chain at ω = 0. They answer different questions. Batyr's J makes the damped operator 𝒜 self-adjoint, and its definite
+// vectors are the real λ (overdamped) roots. Without friction every root is an oscillation, λ = −iσ non-real, so every
+// eigenvector of 𝒜 is J-neutral ([v, v] = 0). krein_gap's signature, sign vᵀ Φ'(σ) v, reads the real-σ roots of the
+// undamped chain. At ω = 0, Φ(σ) = M − K/σ² (characteristic.hpp, with the liquid's part of M), Φ'(σ) = 2K/σ³, and K > 0
+// on the hanging chain (Lemma 1): the signature is sign σ. The two roots ±σ of one pendulum mode have opposite signs
+// and meet only at σ = 0.
+TEST(Batyr, IndefiniteMetricAndKreinSignatureOfTheUndampedChain) {
+  const std::vector<Body> bodies = batyr_bodies(true);
+  const PlanarChain hand = zhukovsky_pendulums(bodies, 9.81);
+  const Eigen::MatrixXd Cm = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(hand.M).operatorInverseSqrt();
+  const Eigen::MatrixXd Bh = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(hand.K).operatorSqrt();
+  Eigen::MatrixXcd op = Eigen::MatrixXcd::Zero(6, 6);  // (92) with A = 0
+  op.topRightCorner(3, 3) = cd(0, 1) * (Cm * Bh).cast<cd>();
+  op.bottomLeftCorner(3, 3) = cd(0, 1) * (Bh * Cm).cast<cd>();
+  const Eigen::ComplexEigenSolver<Eigen::MatrixXcd> es(op);
+  double neutral = 0;
+  for (int i = 0; i < 6; ++i) {
+    const Eigen::VectorXcd& v = es.eigenvectors().col(i);
+    neutral = std::max(neutral, std::abs(v.head(3).squaredNorm() - v.tail(3).squaredNorm()) / v.squaredNorm());
+  }
+  const ChainModel m = model_of(scene_text(bodies, {{0, 0}, {0, 0}}, 9.81, false, 0));
+  const auto tilts = tilt_roots(compute_spectrum(m), m.n_modes(), 1e-9);
+  int agree = 0;
+  for (const cd s : tilts) agree += krein_signature(m, s.real()) == (s.real() > 0 ? 1 : -1);
+  std::printf("  A = 0: |[v, v]| <= %.1e of |v|^2 for every eigenvector of (92) (all J-neutral); krein_signature = "
+              "sign sigma at %d of %zu tilt roots\n", neutral, agree, tilts.size());
+  EXPECT_LT(neutral, 1e-12);
+  EXPECT_EQ(agree, static_cast<int>(tilts.size()));
 }
