@@ -41,6 +41,11 @@ Eigen::VectorXd general_initial_state(const GeneralChain& g, const GeneralSystem
   if (!scene.fluid.empty())
     throw std::runtime_error(scene.file.string() + ": initial.fluid: the chain without axial symmetry starts with its "
                              "fluid at rest (its modes are not (26)'s); leave it out");
+  for (const double change : scene.axial_rate)
+    if (change != 0)
+      throw SceneError(scene.file.string() + ": initial.axial_rate: a linear run of the chain without axial symmetry "
+                       "starts with its spins at omega_k0; the axisymmetric chain (26) and the nonlinear model "
+                       "([run] model = \"nonlinear\") take a change of spin");
   Eigen::VectorXd y = Eigen::VectorXd::Zero(sys.dim());
   const int nq = 2 * g.n;
   for (int k = 0; k < g.n; ++k) {

@@ -58,7 +58,8 @@ Modal harmonic_part(double mu, double h, double w, double t) {
 }  // namespace
 
 bool AxialChain::moves() const {
-  return D.cwiseAbs().maxCoeff() > 0 || moment.cwiseAbs().maxCoeff() > 0 || harmonic.cwiseAbs().maxCoeff() > 0;
+  return D.cwiseAbs().maxCoeff() > 0 || moment.cwiseAbs().maxCoeff() > 0 || harmonic.cwiseAbs().maxCoeff() > 0 ||
+         start.cwiseAbs().maxCoeff() > 0;
 }
 
 AxialChain axial_chain(const Scene& scene, const std::vector<double>& inertia) {
@@ -66,7 +67,7 @@ AxialChain axial_chain(const Scene& scene, const std::vector<double>& inertia) {
   AxialChain a;
   a.C = Eigen::Map<const Eigen::VectorXd>(inertia.data(), n);
   a.D = Eigen::MatrixXd::Zero(n, n);
-  a.spin0 = a.moment = a.harmonic = a.frequency = Eigen::VectorXd::Zero(n);
+  a.spin0 = a.start = a.moment = a.harmonic = a.frequency = Eigen::VectorXd::Zero(n);
   // Joint k (0-based) between bodies k and k+1; the support acts on body 0 alone.
   if (!scene.free_chain) a.D(0, 0) += scene.support_axial_friction;
   for (std::size_t k = 0; k < scene.joints.size() && k + 1 < scene.size(); ++k) {
@@ -79,6 +80,7 @@ AxialChain axial_chain(const Scene& scene, const std::vector<double>& inertia) {
   for (int k = 0; k < n; ++k) {
     const BodySpec& b = scene.bodies[k];
     a.spin0[k] = b.spin;
+    if (scene.axial_rate.size() == static_cast<std::size_t>(n)) a.start[k] = scene.axial_rate[k];
     if (!b.moment) continue;
     a.moment[k] = b.moment->axial + b.moment->space[2];
     a.harmonic[k] = b.moment->harmonic[2];
@@ -105,7 +107,7 @@ AxialHistory axial_history(const AxialChain& a, const std::vector<double>& t) {
   const AxialModes m = modes_of(a);
   const int n = static_cast<int>(a.C.size());
   const Eigen::VectorXd inv = m.c_half.cwiseInverse();
-  const Eigen::VectorXd y0 = m.V.transpose() * m.c_half.cwiseProduct(a.spin0);
+  const Eigen::VectorXd y0 = m.V.transpose() * m.c_half.cwiseProduct(a.spin0 + a.start);
   const Eigen::VectorXd g = m.V.transpose() * inv.cwiseProduct(a.moment);
   AxialHistory h;
   h.spin.resize(static_cast<Eigen::Index>(t.size()), n);

@@ -27,10 +27,11 @@ struct AxialChain {
   Eigen::VectorXd C;         // axial inertia per body, kg m²: the shell's (its liquid does not follow)
   Eigen::MatrixXd D;         // axial friction, N m s: tridiagonal, positive semi-definite
   Eigen::VectorXd spin0;     // ω_k0, rad/s
+  Eigen::VectorXd start;     // ω_k(0) − ω_k0, rad/s ([initial] axial_rate; Batyr (89) without friction)
   Eigen::VectorXd moment;    // constant axial moments, N m
   Eigen::VectorXd harmonic;  // amplitudes of the harmonic axial moments (· sin(2π f_k t)), N m
   Eigen::VectorXd frequency; // f_k, Hz
-  bool moves() const;        // some friction or moment: the spins change
+  bool moves() const;        // some friction, moment or initial change: the spins move
 };
 
 struct AxialSpectrum {
@@ -50,7 +51,7 @@ AxialChain axial_chain(const Scene& scene, const std::vector<double>& inertia);
 
 AxialSpectrum axial_spectrum(const AxialChain& a);
 
-// ω(t) and ψ(t) in closed form at the times t (ω(0) = ω_k0, ψ(0) = 0): the modal solution of the symmetric system
+// ω(t) and ψ(t) in closed form at the times t (ω(0) = ω_k0 + start, ψ(0) = 0): the modal solution of the symmetric system
 // y = C^{1/2} ω, ẏ = −C^{-1/2} D C^{-1/2} y + C^{-1/2} M(t), constant and harmonic parts summed.
 AxialHistory axial_history(const AxialChain& a, const std::vector<double>& t);
 

@@ -476,15 +476,16 @@ void set_effective_inertia(const Scene& scene, ChainModel& cm, const Eigen::Matr
   }
 }
 
-// A shell without axial inertia whose spin a friction or an axial moment would change: its ideal liquid does not follow
+// A shell without axial inertia whose spin a friction, an axial moment or an initial change would move: its ideal liquid does not follow
 // (docs/physics.md §3, "Axial rotations"), so nothing resists, and the spin's motion is undetermined.
 void require_axial_inertia(const Scene& scene, const ChainModel& cm) {
   const AxialChain& a = cm.axial;
   for (Eigen::Index k = 0; k < a.C.size(); ++k) {
-    const bool moved = a.D.row(k).cwiseAbs().maxCoeff() > 0 || a.moment[k] != 0 || a.harmonic[k] != 0;
+    const bool moved = a.D.row(k).cwiseAbs().maxCoeff() > 0 || a.moment[k] != 0 || a.harmonic[k] != 0 || a.start[k] != 0;
     if (a.C[k] > 0 || !moved) continue;
     fail(scene, "body[" + std::to_string(k + 1) + "].C",
-         "the shell has no axial inertia, and an axial friction or moment acts on its spin, which its liquid (if any) "
+         "the shell has no axial inertia, and an axial friction, moment or initial.axial_rate acts on its spin, which its "
+         "liquid (if any) "
          "does not follow (docs/physics.md §3, \"Axial rotations\"): give the shell's C > 0");
   }
 }

@@ -154,8 +154,9 @@ ChainState nonlinear_initial_state(const Scene& scene, const NonlinearChain& cha
                                  Eigen::Quaterniond(Eigen::AngleAxisd(chain.bodies[k].principal_turn, Vector3d::UnitZ()));
     const Vector3d n = q * Vector3d::UnitZ();
     const Vector3d transverse = -alpha_dot * Vector3d::UnitX() + beta_dot * (first * Vector3d::UnitY());
-    // The spin is the axial component of Ω: add along n what makes Ω·n = ω_k0.
-    const Vector3d Omega = transverse + (scene.bodies[k].spin - transverse.dot(n)) * n;
+    // The spin is the axial component of Ω: add along n what makes Ω·n = ω_k0 + initial.axial_rate.
+    const double change = scene.axial_rate.size() == scene.bodies.size() ? scene.axial_rate[k] : 0.0;
+    const Vector3d Omega = transverse + (scene.bodies[k].spin + change - transverse.dot(n)) * n;
     s.q.push_back(q);
     s.omega.push_back(q.conjugate() * Omega);
   }

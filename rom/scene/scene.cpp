@@ -75,6 +75,19 @@ std::array<double, 3> get_vector3(const Ctx& c, const toml::table& t, const std:
   return v;
 }
 
+// One finite number per body, e.g. the spins' initial change (zeros when absent).
+std::vector<double> get_number_array(const Ctx& c, const toml::table& t, const std::string& key,
+                                     const std::string& where, std::size_t n) {
+  std::vector<double> out(n, 0.0);
+  const toml::node* node = t.get(key);
+  if (!node) return out;
+  const toml::array* arr = node->as_array();
+  if (!arr || arr->size() != n)
+    c.fail(where, "must be an array of " + std::to_string(n) + " numbers, one per body");
+  for (std::size_t k = 0; k < n; ++k) out[k] = finite_number(c, (*arr)[k], where);
+  return out;
+}
+
 std::vector<std::complex<double>> get_complex_array(const Ctx& c, const toml::table& t,
                                                     const std::string& key,
                                                     const std::string& where, std::size_t n) {
@@ -325,15 +338,18 @@ void parse_support(Ctx& c, const toml::table& root, Scene& s) {
     c.fail("support.axial_friction", "a free chain has no support (must be 0 or absent)");
 }
 
-// [initial]: tilts, rates and the fluid's state.
+// [initial]: tilts, rates, the spins' change and the fluid's state.
 void parse_initial(Ctx& c, const toml::table& root, std::size_t n, Scene& s) {
   s.tilt.assign(n, 0.0);
   s.rate.assign(n, 0.0);
+  s.axial_rate.assign(n, 0.0);
   const toml::table* ini = sub_table(c, root, "initial", "initial");
   if (!ini) return;
-  check_keys(c, *ini, "initial", {"tilt", "rate", "fluid"});
+  check_keys(c, *ini, "initial", {"tilt", "rate", "fluid", "axial_rate"});
   s.tilt = get_complex_array(c, *ini, "tilt", "initial.tilt", n);
   s.rate = get_complex_array(c, *ini, "rate", "initial.rate", n);
+  // The spins' change at t = 0 (Batyr (89): a uniform change of spin is a motion of the chain).
+  s.axial_rate = get_number_array(c, *ini, "axial_rate", "initial.axial_rate", n);
   // The fluid's initial state, one pair per kept mode (its count is known once the tables are read: checked there).
   if (const toml::node* fl = ini->get("fluid")) {
     const toml::array* arr = fl->as_array();

@@ -129,6 +129,7 @@ struct Scene {
   double support_axial_friction = 0;  // on body 1's spin (nonlinear model only)
   std::vector<std::complex<double>> tilt, rate;  // u_k(0), du_k/dt(0); zeros when absent
   std::vector<std::complex<double>> fluid;        // z_kl(0) of the kept modes, body by body (empty: at rest)
+  std::vector<double> axial_rate;                 // ω_k(0) − ω_k0, rad/s: the spins' change at t = 0 (zeros when absent)
   RunSpec run;
   std::size_t size() const { return bodies.size(); }
 };

@@ -47,6 +47,31 @@ std::pair<int, int> ranks(const AxialChain& a) {
   return {rank(A), rank(A * A)};
 }
 
+// The three bodies' spins by the linear block's closed form and by the nonlinear chain from the same scene text
+// (`run` holds [initial] and [run]): their largest difference and the linear spins' largest change from t = 0.
+struct SpinComparison {
+  History linear;
+  NonlinearHistory nonlinear;
+  double diff = 0, change = 0;
+};
+SpinComparison spins_against_nonlinear(double support, double joint, double moment, double harmonic,
+                                       const std::string& run) {
+  SpinComparison c;
+  const Scene s = parse_scene_text(three_bodies(support, joint, moment, harmonic, run), ".", "axial");
+  c.linear = propagate(build_model(s), s);
+  const Scene sn = parse_scene_text(three_bodies(support, joint, moment, harmonic, run + "model = \"nonlinear\"\n"),
+                                    ".", "nl");
+  const NonlinearChain chain = nonlinear_chain(sn);
+  c.nonlinear = integrate_nonlinear(chain, nonlinear_initial_state(sn, chain), sn.run);
+  EXPECT_EQ(c.linear.spin.rows(), static_cast<Eigen::Index>(c.nonlinear.base.t.size()));
+  for (Eigen::Index j = 0; j < c.linear.spin.rows(); ++j)
+    for (int k = 0; k < 3; ++k) {
+      c.diff = std::max(c.diff, std::abs(c.linear.spin(j, k) - c.nonlinear.spins[j * 3 + k]));
+      c.change = std::max(c.change, std::abs(c.linear.spin(j, k) - c.linear.spin(0, k)));
+    }
+  return c;
+}
+
 }  // namespace
 
 // Batyr's Property 7 (no friction: σ = 0 2n-fold with n chains), Property 1 / Theorem 6 (friction to the support:
@@ -85,18 +110,9 @@ TEST(AxialRotation, ZeroRootsAndRatesAreBatyrs) {
 TEST(AxialRotation, SpinsAreTheNonlinearChains) {
   const std::string run = "[initial]\ntilt = [[0.001, -0.0005], [0.0, 0.0], [0.0, 0.0]]\n"
                           "[run]\nt_end = 5.0\noutput_step = 0.01\ntolerance = 1e-11\n";
-  const Scene s = parse_scene_text(three_bodies(0.02, 0.004, 0.01, 0.005, run), ".", "axial");
-  const History linear = propagate(build_model(s), s);
-  const Scene sn = parse_scene_text(three_bodies(0.02, 0.004, 0.01, 0.005, run + "model = \"nonlinear\"\n"), ".", "nl");
-  const NonlinearChain chain = nonlinear_chain(sn);
-  const NonlinearHistory nl = integrate_nonlinear(chain, nonlinear_initial_state(sn, chain), sn.run);
-  ASSERT_EQ(linear.spin.rows(), static_cast<Eigen::Index>(nl.base.t.size()));
-  double diff = 0, change = 0;
-  for (Eigen::Index j = 0; j < linear.spin.rows(); ++j)
-    for (int k = 0; k < 3; ++k) {
-      diff = std::max(diff, std::abs(linear.spin(j, k) - nl.spins[j * 3 + k]));
-      change = std::max(change, std::abs(linear.spin(j, k) - linear.spin(0, k)));
-    }
+  const SpinComparison c = spins_against_nonlinear(0.02, 0.004, 0.01, 0.005, run);
+  const History& linear = c.linear;
+  const double diff = c.diff, change = c.change;
   std::printf("spins over 5 s: largest change %.4f rad/s; linear closed form against the nonlinear chain %.2e rad/s "
               "(%.1e of the change)\n", change, diff, diff / change);
   EXPECT_GT(change, 0.5);
@@ -108,6 +124,44 @@ TEST(AxialRotation, SpinsAreTheNonlinearChains) {
   const double last = linear.axial_angle(linear.spin.rows() - 1, 2);
   std::printf("top body's angle gained: %.9f rad (trapezoid sum of its spin %.9f)\n", last, integral);
   EXPECT_NEAR(last, integral, 1e-4 * std::abs(last));
+}
+
+// A change of spin at t = 0 ([initial] axial_rate). Without axial friction it is Batyr's (89): each spin keeps
+// ω_k0 + δ_k and gains the angle δ_k t. With friction to the support and in the joints the spins fall back, the linear
+// block's closed form against the nonlinear chain (its own integrator, at a small tilt).
+TEST(AxialRotation, AnInitialSpinChangeIsBatyrsUniformRotationOrDecays) {
+  const double delta[3] = {0.5, -0.3, 0.2};
+  const std::string initial = "[initial]\ntilt = [[0.001, -0.0005], [0.0, 0.0], [0.0, 0.0]]\naxial_rate = [0.5, -0.3, 0.2]\n";
+  const std::string run = "[run]\nt_end = 5.0\noutput_step = 0.01\ntolerance = 1e-11\n";
+  const Scene free = parse_scene_text(three_bodies(0, 0, 0, 0, initial + run), ".", "axial_free");
+  const History uniform = propagate(build_model(free), free);
+  ASSERT_GT(uniform.spin.rows(), 0) << "a change of spin moves the spins' block";
+  const Eigen::Index last = uniform.spin.rows() - 1;
+  const double t_end = uniform.t[last], spins[3] = {30.0, 25.0, 20.0};
+  double worst89 = 0;
+  for (int k = 0; k < 3; ++k)
+    for (Eigen::Index j = 0; j <= last; ++j)
+      worst89 = std::max({worst89, std::abs(uniform.spin(j, k) - spins[k] - delta[k]),
+                          std::abs(uniform.axial_angle(j, k) - delta[k] * uniform.t[j])});
+  std::printf("no axial friction: spins and angles against Batyr (89), omega_k0 + delta_k and delta_k t over %.0f s: "
+              "%.1e\n", t_end, worst89);
+  EXPECT_LT(worst89, 1e-12);
+
+  const SpinComparison c = spins_against_nonlinear(0.02, 0.004, 0, 0, initial + run);
+  const History& linear = c.linear;
+  const NonlinearHistory& nl = c.nonlinear;
+  const double diff = c.diff, change = c.change;
+  std::printf("with axial friction: the spins fall back by up to %.4f rad/s over 5 s; the linear closed form against "
+              "the nonlinear chain %.2e rad/s (%.1e of the change); at t = 0 the nonlinear chain's spins are "
+              "omega_k0 + delta_k to %.1e\n", change, diff, diff / change,
+              std::max({std::abs(nl.spins[0] - spins[0] - delta[0]), std::abs(nl.spins[1] - spins[1] - delta[1]),
+                        std::abs(nl.spins[2] - spins[2] - delta[2])}));
+  EXPECT_GT(change, 0.1);
+  EXPECT_LT(diff, 1e-6 * change);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(nl.spins[k], spins[k] + delta[k], 1e-9);
+    EXPECT_NEAR(linear.spin(0, k), spins[k] + delta[k], 1e-9);
+  }
 }
 
 namespace {
