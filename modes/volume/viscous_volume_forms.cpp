@@ -68,7 +68,7 @@ void scatter(const VolumeTaylorHoodSpace& space, std::size_t e, const ElementMat
     for (int d = 0; d < 3; ++d) {
       if (u[d][a] < 0) continue;
       for (int k = 0; k < 3; ++k) f[k][u[d][a]] += em.f[k][d][a];
-      t[d][u[d][a]] += em.n1[a];
+      if (!t[d].empty()) t[d][u[d][a]] += em.n1[a];
     }
     for (int c = 0; c < npe; ++c) {
       const int ac = a * npe + c;
@@ -123,9 +123,12 @@ ViscousVolumeForms assemble_viscous_volume_forms(const VolumeTaylorHoodSpace& sp
     if (rank == 0) add_fill_surface_terms(*surface, ar, mass);
   }
   const int n = space.size() + (fill ? surface->count : 0);
-  DirectionFunctionals f, f_all, t, t_all;  // rotations about the centroid, translations
-  for (auto* v : {&f, &f_all, &t, &t_all})
+  DirectionFunctionals f, f_all, t, t_all;  // rotations about the centroid; translations (a free surface's only)
+  for (auto* v : {&f, &f_all})
     for (auto& vk : *v) vk.assign(n, 0.0);
+  if (fill)
+    for (auto* v : {&t, &t_all})
+      for (auto& vk : *v) vk.assign(n, 0.0);
   VolumeQuadrature eq;
   ElementMatrices em;
   for (std::size_t e = first; e < last; ++e) {

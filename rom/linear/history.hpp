@@ -30,7 +30,8 @@ struct History {
   // Forced, ideal tanks: max_t |H(t) − H(0) − W(t)| / max_t scale(t), W the work of the external moments, forces and field
   // less the friction's, ∫ Re(F̄ᵀu̇) − u̇ᴴDu̇ by the trapezoid rule on the output samples (Batyr (11)); NaN otherwise.
   double work_balance = std::numeric_limits<double>::quiet_NaN();
-  // The spins' own motion (axial_rotation.hpp), when axial friction or moments move them: steps x n, else empty.
+  // The spins' own motion (axial_rotation.hpp), when axial friction, moments or initial.axial_rate move them: steps x n,
+  // else empty.
   Eigen::MatrixXd spin, axial_angle;
   std::string method_used;  // what actually ran
   double max_energy_drift = 0;  // max |H - H0| / scale(0) (undamped) or max increase (damped)

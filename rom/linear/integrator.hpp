@@ -1,6 +1,6 @@
-// The linear chain's time integrators (run.method; docs/rom.md, "Integrators"). Each is one file under
-// linear/integrators/ defining a LinearIntegrator, and one line in integrator_registry.cpp; propagate() (propagation.hpp)
-// and the drivers' scene check find it there by name.
+// The linear chain's time integrators (run.method; docs/rom.md, "Propagation (`run`)" and "Source layout"). Each is one
+// file under linear/integrators/ defining a LinearIntegrator, and one line in integrator_registry.cpp; propagate()
+// (propagation.hpp) and the drivers' scene check find it there by name.
 #pragma once
 
 #include "chain_model.hpp"

@@ -361,7 +361,9 @@ TEST(Batyr, PropertyTwoRootsAreTheirEigenvectorsQuotients) {
 // are alike and the axial block is apart, axial_rotation.hpp): where the friction is strong enough for (84),
 // λ_min(C^{-1/2} A C^{-1/2}) > 2 λ_max(C^{-1/2} B C^{-1/2})^{1/2}, every root is real and positive and the eigenvectors of
 // (90)–(92)'s operator 𝒜 = [[C^{-1/2}AC^{-1/2}, i C^{-1/2}B^{1/2}], [i B^{1/2}C^{-1/2}, 0]], self-adjoint in the metric
-// J = diag(I, −I) (98), are a J-orthogonal basis. 𝒜 built by hand; its eigenvalues against the model's roots.
+// J = diag(I, −I) (98), are a J-orthogonal basis. 𝒜 built by hand; the product's part is its eigenvalues against the
+// model's roots (and the model's roots all real and positive); the basis and its J-orthogonality check Batyr's statement
+// on his own operator, as the issue of his last results asked.
 TEST(Batyr, TheoremSixStrongFrictionGivesRealRootsAndAJOrthogonalBasis) {
   const std::vector<Body> bodies = batyr_bodies(true);
   const PlanarChain hand = zhukovsky_pendulums(bodies, 9.81);
@@ -429,7 +431,7 @@ TEST(Batyr, TheoremSixStrongFrictionGivesRealRootsAndAJOrthogonalBasis) {
 // eigenvector of 𝒜 is J-neutral ([v, v] = 0). krein_gap's signature, sign vᵀ Φ'(σ) v, reads the real-σ roots of the
 // undamped chain. At ω = 0, Φ(σ) = M − K/σ² (characteristic.hpp, with the liquid's part of M), Φ'(σ) = 2K/σ³, and K > 0
 // on the hanging chain (Lemma 1): the signature is sign σ. The two roots ±σ of one pendulum mode have opposite signs
-// and meet only at σ = 0.
+// and meet only at σ = 0. The product's part is krein_signature; the J-neutrality checks Batyr's construction itself.
 TEST(Batyr, IndefiniteMetricAndKreinSignatureOfTheUndampedChain) {
   const std::vector<Body> bodies = batyr_bodies(true);
   const PlanarChain hand = zhukovsky_pendulums(bodies, 9.81);

@@ -17,7 +17,7 @@ Eigen::MatrixXcd gauss_step_matrix(const Eigen::MatrixXcd& B, double h) {
 
 namespace {
 
-// t_end rho^5 hs^4 / 4320 = tolerance: the substep (docs/rom.md, "Integrators").
+// t_end rho^5 hs^4 / 4320 = tolerance: the substep (docs/rom.md, "Propagation (`run`)").
 double gauss_substep(double rho, const RunSpec& run) {
   return std::pow(4320.0 * run.tolerance / (run.t_end * std::pow(rho, 5)), 0.25);
 }
