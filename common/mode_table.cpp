@@ -191,6 +191,20 @@ void validate_free_surface(const ModeTable& t) {
     throw std::runtime_error("/free_surface/t_imag in a table whose ekman is not positive");
 }
 
+// /fit_decay: a profile of Im R's error over the window of a table that has fit_decay_error, s increasing inside it.
+void validate_fit_decay_profile(const ModeTable& t) {
+  const auto& s = t.fit_decay_s;
+  const auto& e = t.fit_decay_profile;
+  if (s.empty() && e.empty()) return;
+  if (s.size() != e.size() || s.size() < 2 || t.fit_decay_error < 0)
+    throw std::runtime_error("/fit_decay: s and error differ in length, hold fewer than 2 points, or the table has no "
+                             "fit_decay_error");
+  for (std::size_t i = 0; i < s.size(); ++i)
+    if (!std::isfinite(s[i]) || !(e[i] >= 0) || !std::isfinite(e[i]) || (i > 0 && !(s[i] > s[i - 1])) ||
+        s[i] < t.fit_lo - 1e-12 || s[i] > t.fit_hi + 1e-12)
+      throw std::runtime_error("/fit_decay: s not increasing inside [fit_lo, fit_hi], or an error not finite and >= 0");
+}
+
 // The viscous columns and attributes: only in a viscous table, the response window and its errors finite.
 void validate_viscous_attributes(const ModeTable& t) {
   if (!t.viscous() && !(t.decay.empty() && t.E_imag.empty() && t.a_imag.empty()))
@@ -202,6 +216,7 @@ void validate_viscous_attributes(const ModeTable& t) {
                              "viscous table");
   if (!std::isfinite(t.fit_decay_error) || (t.fit_decay_error >= 0 && !t.response_fit()))
     throw std::runtime_error("root attribute fit_decay_error: not a finite error of a response table");
+  validate_fit_decay_profile(t);
   for (double d : t.decay)
     if (d < 0) throw std::runtime_error("/modes/decay holds a negative value (a growing viscous mode)");
 }
@@ -455,7 +470,7 @@ void write_modes_group(hid_t root, const ModeTable& t) {
   }
 }
 
-// /bands, /galerkin, /free_surface, /provenance where the table has them.
+// /bands, /galerkin, /fit_decay, /free_surface, /provenance where the table has them.
 void write_optional_groups(hid_t root, const ModeTable& t) {
   if (t.bands.size() > 0) {
     Hid bands(H5Gcreate2(root, "bands", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
@@ -475,6 +490,11 @@ void write_optional_groups(hid_t root, const ModeTable& t) {
       put_vector(gal.get(), "coupling_re", t.galerkin.coupling_re, H5T_NATIVE_DOUBLE);
       put_vector(gal.get(), "coupling_im", t.galerkin.coupling_im, H5T_NATIVE_DOUBLE);
     }
+  }
+  if (!t.fit_decay_s.empty()) {
+    Hid fit(H5Gcreate2(root, "fit_decay", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+    put_vector(fit.get(), "s", t.fit_decay_s, H5T_NATIVE_DOUBLE);
+    put_vector(fit.get(), "error", t.fit_decay_profile, H5T_NATIVE_DOUBLE);
   }
   if (t.free_surface.present()) write_free_surface(root, t.free_surface);
   if (t.volume_free_surface.present()) write_volume_free_surface(root, t.volume_free_surface);
@@ -554,7 +574,7 @@ void read_modes_group(hid_t root, ModeTable& t) {
   t.a_imag = get_vector<double>(modes.get(), "a_imag", H5T_NATIVE_DOUBLE, false);
 }
 
-// /bands, /galerkin, /free_surface, /provenance where the file has them.
+// /bands, /galerkin, /fit_decay, /free_surface, /provenance where the file has them.
 void read_optional_groups(hid_t root, ModeTable& t) {
   if (H5Lexists(root, "bands", H5P_DEFAULT) > 0) {
     Hid bands(H5Gopen2(root, "bands", H5P_DEFAULT), H5Gclose);
@@ -573,6 +593,11 @@ void read_optional_groups(hid_t root, ModeTable& t) {
     t.galerkin.coupling_im = get_vector<double>(gal.get(), "coupling_im", H5T_NATIVE_DOUBLE, false);
     if (has_attr(gal.get(), "dissipation_mismatch"))
       t.galerkin.dissipation_mismatch = get_double(gal.get(), "dissipation_mismatch");
+  }
+  if (H5Lexists(root, "fit_decay", H5P_DEFAULT) > 0) {
+    Hid fit(H5Gopen2(root, "fit_decay", H5P_DEFAULT), H5Gclose);
+    t.fit_decay_s = get_vector<double>(fit.get(), "s", H5T_NATIVE_DOUBLE, true);
+    t.fit_decay_profile = get_vector<double>(fit.get(), "error", H5T_NATIVE_DOUBLE, true);
   }
   if (H5Lexists(root, "free_surface", H5P_DEFAULT) > 0) t.free_surface = read_free_surface(root);
   if (H5Lexists(root, "volume_free_surface", H5P_DEFAULT) > 0) t.volume_free_surface = read_volume_free_surface(root);

@@ -52,6 +52,9 @@ struct ModeTable {
   // A Krylov table's estimated error of Im R against Im R itself on the window (the decays' relative error;
   // docs/viscous.md, "The error of Im R"); < 0: not measured (attribute fit_decay_error absent).
   double fit_decay_error = -1;
+  // … and that estimate at each frequency of the window (/fit_decay: s increasing in [fit_lo, fit_hi], error ≥ 0):
+  // what the fit may take from the decay of a chain root at that frequency. Empty: not stored (older tables, fits).
+  std::vector<double> fit_decay_s, fit_decay_profile;
   bool response_fit() const { return fit_hi > fit_lo; }
   // Provenance (/provenance, optional; docs/physics.md §4): how the table was made, so that it can be made again.
   // geometry_source: "sphere radius=1" for a built-in shape, the section file's name for `section FILE`;

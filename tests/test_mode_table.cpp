@@ -111,6 +111,39 @@ TEST(ModeTable, ViscousFieldsRoundTrip) {
   EXPECT_THROW(missing.validate(), std::runtime_error);
 }
 
+// A Krylov table's Im R error profile (/fit_decay) is read back as written, and one that does not describe the
+// window (unsorted, outside it, negative, of another length, without fit_decay_error) is refused.
+TEST(ModeTable, FitDecayProfileRoundTripsAndIsChecked) {
+  rc::ModeTable t;
+  t.shape = "sphere";
+  t.dimensions = {{"radius", 1.0}};
+  t.kappa = {2.0}; t.lambda = {1.0}; t.E = {1.6}; t.N2 = {1.0}; t.residual = {1e-12};
+  t.volume = 4.18879020479; t.A_f = 1.67551608191; t.C_f = t.A_f; t.sum_rule = t.A_f;
+  t.ekman = 1e-4;
+  t.decay = {0.027}; t.E_imag = {-0.08};
+  const std::complex<double> a_c = std::sqrt(std::complex<double>(1.6, -0.08) / 2.0);
+  t.a = {a_c.real()}; t.a_imag = {a_c.imag()};
+  t.fit_lo = -1; t.fit_hi = 2; t.fit_error = 1e-5; t.fit_decay_error = 0.03;
+  t.fit_decay_s = {-1, 0.5, 2};
+  t.fit_decay_profile = {1e-3, 0.03, 2e-4};
+  const auto p = std::filesystem::temp_directory_path() / "rc_fit_decay_roundtrip.h5";
+  rc::write_mode_table(t, p);
+  const auto r = rc::read_mode_table(p);
+  std::filesystem::remove(p);
+  EXPECT_EQ(r.fit_decay_s, t.fit_decay_s);
+  EXPECT_EQ(r.fit_decay_profile, t.fit_decay_profile);
+  const auto refused = [&](auto change) {
+    rc::ModeTable b = t;
+    change(b);
+    EXPECT_THROW(b.validate(), std::runtime_error);
+  };
+  refused([](rc::ModeTable& b) { b.fit_decay_s = {-1, 2, 0.5}; });
+  refused([](rc::ModeTable& b) { b.fit_decay_s = {-1, 0.5, 2.5}; });
+  refused([](rc::ModeTable& b) { b.fit_decay_profile = {1e-3, -0.03, 2e-4}; });
+  refused([](rc::ModeTable& b) { b.fit_decay_profile.pop_back(); });
+  refused([](rc::ModeTable& b) { b.fit_decay_error = -1; });
+}
+
 // A table that breaks one of its identities (docs/physics.md §2) is refused, naming the identity.
 TEST(ModeTable, IdentitiesAreCheckedOnReading) {
   const auto expect_identity = [](rc::ModeTable t, const char* what) {

@@ -279,6 +279,8 @@ ModeTable krylov_response_table(const ResponseRequest& req, double max_error, do
   ModeTable t = response_table_start(req, 2L * forms.complex_size);
   t.fit_error = std::max(k.estimate, k.check_error);
   t.fit_decay_error = std::max(k.dissipation_estimate, k.check_dissipation_error);
+  t.fit_decay_s = window;
+  t.fit_decay_profile = k.dissipation_profile;
   if (!k.within_tolerance && is_root_rank())
     std::cerr << fmt::format("cavity-modes response: warning: after {} expansion points the table errs by {:.2g} of "
                              "max|R| and its Im R by {:.2g} of itself, above {}; it is written with that error "

@@ -293,6 +293,7 @@ class Greedy {
   struct Worst {
     double s = 0;
     FitError estimate, largest;
+    std::vector<double> window_dissipation;  // Im R's estimate at each window frequency
     bool in_window = true;
     Eigen::MatrixXd scale, floor;
     Eigen::MatrixXcd galerkin;
@@ -318,6 +319,7 @@ class Greedy {
       const FitError e{entry_error(b[i], g[i], w.scale),
                        i < window_.size() ? dissipation_error(b[i], g[i], w.floor) : 0.0};
       w.largest = {std::max(w.largest.magnitude, e.magnitude), std::max(w.largest.dissipation, e.dissipation)};
+      if (i < window_.size()) w.window_dissipation.push_back(e.dissipation);
       if (e.against(options_) > worst_ratio) {
         worst_ratio = e.against(options_);
         w.estimate = e;
@@ -355,7 +357,10 @@ class Greedy {
       for (const double v : {w.scale.data()[k], w.floor.data()[k], w.galerkin.data()[k].real(),
                              w.galerkin.data()[k].imag()})
         shared.push_back(v);
+    shared.insert(shared.end(), w.window_dissipation.begin(), w.window_dissipation.end());
     MPI_Bcast(shared.data(), static_cast<int>(shared.size()), MPI_DOUBLE, 0, comm_);
+    std::copy(shared.end() - static_cast<std::ptrdiff_t>(w.window_dissipation.size()), shared.end(),
+              w.window_dissipation.begin());
     w.s = shared[0];
     w.estimate = {shared[1], shared[2]};
     w.largest = {shared[3], shared[4]};
@@ -423,6 +428,12 @@ KrylovReduction krylov_reduction(const ViscousForms& forms, const std::vector<do
     out.check_point = worst.s;
     out.check_error = check.magnitude;
     out.check_dissipation_error = check.dissipation;
+    out.dissipation_profile = worst.window_dissipation;
+    const auto at = std::find(window.begin(), window.end(), worst.s);
+    if (at != window.end()) {
+      double& e = out.dissipation_profile[static_cast<std::size_t>(at - window.begin())];
+      e = std::max(e, check.dissipation);
+    }
   };
   for (;;) {
     const auto worst = greedy.worst();

@@ -49,6 +49,9 @@ struct KrylovReduction {
   std::vector<double> point_errors;   // |R(s) − R_G(s)| / scale just before s was added (the first ones: NaN)
   double estimate = 0;                // max over the candidates of |R_B − R_G| / scale, final basis
   double dissipation_estimate = 0;    // max over the window of |Im(R_B − R_G)| / max(Im R_G, floor), final basis
+  // … that estimate at each window frequency, in the window's order, and at the check point (when in the window)
+  // at least the error measured there: what a chain root at that frequency may take from the fit in its decay
+  std::vector<double> dissipation_profile;
   double check_point = 0;             // a forced solve at the final worst candidate, not added to the basis:
   double check_error = 0;             //   |R − R_G| / scale there
   double check_dissipation_error = 0; //   and |Im(R − R_G)| / max(Im R_G, floor)

@@ -89,10 +89,10 @@ void tally_roots(const ChainModel& m, Spectrum& sp) {
     for (const BodyModel& b : m.bodies)
       if (b.fit_hi > b.fit_lo && b.omega != 0) {
         const double s = ((r.sigma + b.omega) / b.omega).real();
-        if (s < b.fit_lo || s > b.fit_hi) {
+        r.fit_decay_error = std::max(r.fit_decay_error, b.fit_decay_error_at(s));
+        if ((s < b.fit_lo || s > b.fit_hi) && !r.outside_fit) {
           ++sp.outside_fit;
           r.outside_fit = true;
-          break;
         }
       }
   }

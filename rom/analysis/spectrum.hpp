@@ -25,6 +25,9 @@ struct Root {
   // NaN where (22) is undefined or Newton did not converge.
   double newton_shift = 0;
   bool outside_fit = false;        // some tank's response fit is extrapolated at this root (Spectrum::outside_fit)
+  // The largest of the tanks' Krylov-table Im R errors at this root's frequency (BodyModel::fit_decay_error_at): what
+  // the tables' fit alone may take from its decay, relative; −1 where no table gives it.
+  double fit_decay_error = -1;
   bool unconverged_owner = false;  // owned by a cluster its table flags as not converged (docs/cones.md)
   // With companion tables (companion_check.hpp): the relative distance to the nearest root computed with them, and
   // whether that passes kCompanionTolerance. NaN and false without companions.

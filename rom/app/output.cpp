@@ -322,6 +322,14 @@ std::string spectrum_json(const ChainModel& m, const Spectrum& sp) {
   j["bodies"] = nlohmann::ordered_json::array();
   for (int k = 0; k < m.n; ++k)
     j["bodies"].push_back({{"A_prime", m.M(k, k)}, {"C", m.bodies[k].C}, {"a", m.a[k]}, {"spin", m.bodies[k].omega}});
+  // Per root, the Krylov tables' Im R error at its frequency (Root::fit_decay_error), null where no table gives it.
+  bool profiled = false;
+  for (const Root& r : sp.roots) profiled = profiled || r.fit_decay_error >= 0;
+  if (profiled) {
+    j["fit_decay_error"] = nlohmann::ordered_json::array();
+    for (const Root& r : sp.roots)
+      j["fit_decay_error"].push_back(r.fit_decay_error >= 0 ? nlohmann::ordered_json(r.fit_decay_error) : nullptr);
+  }
   if (sp.companion_checked) {
     j["companion_moved"] = sp.companion_moved;
     j["companion_worst"] = sp.companion_worst;
@@ -363,9 +371,13 @@ void print_root(std::ostream& os, const ChainModel& m, const Spectrum& sp, const
   else os << std::setprecision(3) << r.residual;
   // With dissipation the rate a user reads: growth or decay with its e-folding time.
   const double rate = -r.sigma.imag();
-  if (m.dissipative() && std::abs(r.sigma) > sp.tolerance && std::abs(rate) > sp.noise)
+  if (m.dissipative() && std::abs(r.sigma) > sp.tolerance && std::abs(rate) > sp.noise) {
     os << std::setprecision(3) << (rate > 0 ? "  grows " : "  decays ") << std::abs(rate) << " 1/s (e-folding "
-       << 1 / std::abs(rate) << " s)";
+       << 1 / std::abs(rate) << " s";
+    // What the tables' fit alone may take from this rate, relative (the Krylov tables' Im R error here).
+    if (r.fit_decay_error >= 0) os << ", table fit " << std::setprecision(2) << r.fit_decay_error << " of it";
+    os << ")";
+  }
   // The same motion seen in its owner's body frame, which turns at that body's spin: σ + ω_k (docs/rom.md, "Spectrum").
   const int k = owner_body(r.owner);
   if (k >= 0 && k < static_cast<int>(m.bodies.size()) && std::abs(r.sigma) > sp.tolerance)
@@ -463,7 +475,10 @@ static void print_body_line(std::ostream& os, const ChainModel& m, const Spectru
   if (b.fit_hi > b.fit_lo) {
     os << ", the pseudo-modes of " << b.response_kind << " on s in [" << b.fit_lo << ", " << b.fit_hi << "] (error "
        << b.fit_error;
-    if (b.fit_decay_error >= 0) os << " of max|R|, of Im R against itself " << b.fit_decay_error;
+    if (b.fit_decay_error >= 0) {
+      os << " of max|R|, of Im R against itself " << b.fit_decay_error << " at most";
+      if (!b.fit_decay_s.empty()) os << "; each root's on its line";
+    }
     os << ")";
     const FitPassivity& p = sp.passivity[k];
     if (p.passive())

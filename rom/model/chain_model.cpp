@@ -206,6 +206,8 @@ void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
   b.fit_hi = t.fit_hi;
   b.fit_error = t.fit_error;
   b.fit_decay_error = t.fit_decay_error;
+  b.fit_decay_s = t.fit_decay_s;
+  b.fit_decay_profile = t.fit_decay_profile;
   // Which reduction made the rows (the table's solver text, modes/app/galerkin_response_table.cpp, cavity_response.cpp).
   b.response_kind = t.solver.find("rational Krylov") != std::string::npos ? "a Krylov response table"
                     : t.solver.find("Galerkin") != std::string::npos   ? "a Galerkin response table"
@@ -496,6 +498,15 @@ Eigen::MatrixXcd complex_stiffness(const ChainModel& m) {
   Eigen::MatrixXcd K = m.K.cast<std::complex<double>>();
   for (Eigen::Index k = 0; k < m.circulatory.size(); ++k) K(k, k) -= std::complex<double>(0, m.circulatory[k]);
   return K;
+}
+
+double BodyModel::fit_decay_error_at(double s) const {
+  const auto& x = fit_decay_s;
+  if (x.size() < 2 || !(s >= x.front() && s <= x.back())) return -1;
+  const auto hi = std::max<std::ptrdiff_t>(1, std::upper_bound(x.begin(), x.end(), s) - x.begin());
+  const auto i = static_cast<std::size_t>(std::min<std::ptrdiff_t>(hi, static_cast<std::ptrdiff_t>(x.size()) - 1));
+  const double w = (s - x[i - 1]) / (x[i] - x[i - 1]);
+  return (1 - w) * fit_decay_profile[i - 1] + w * fit_decay_profile[i];
 }
 
 ChainModel build_model(const Scene& scene, TableCache* tables, bool linear_keys_only) {

@@ -86,6 +86,11 @@ struct BodyModel {
   // (table units, s = (sigma + omega)/omega) to fit_error; outside, the fit is extrapolated. fit_hi > fit_lo marks it.
   double fit_lo = 0, fit_hi = 0, fit_error = 0;
   double fit_decay_error = -1;  // a Krylov table's error of Im R against itself (the decays'); < 0: not measured
+  // … and that error at each s of the window (the table's /fit_decay; empty for older tables and other kinds)
+  std::vector<double> fit_decay_s, fit_decay_profile;
+  // The table's Im R error at s (table units), linear between the profile's frequencies; −1 where it is not known
+  // (no profile, or s outside it).
+  double fit_decay_error_at(double s) const;
   std::string response_kind;  // such a table's: "a Krylov response table", "a Galerkin response table" or "a response fit"
   double coverage = 0;       // E_kept / sum_rule
   int unconverged = 0;       // kept clusters the table flags as not converged

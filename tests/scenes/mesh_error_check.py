@@ -134,6 +134,27 @@ text = confirm("--refine", "0", json_out=False)
 verdict = [l for l in text.splitlines() if l.startswith("with the confirmed roots:")][0]
 check("mesh error NOT MEASURED" in verdict, "--refine 0 says the mesh error is not measured")
 
+# 7. The table's own fit error at the root (the Krylov table's Im R profile, docs/viscous.md "The error of Im R"):
+#    spectrum's estimate for the body root against the distance of the table's decay from the forced solves' on the
+#    same mesh (confirm --refine 0), which is the fit's error alone; the estimate under the window's largest. (The
+#    greedy search puts a point near the nutation's resonance, so both are at rounding here, 1e-14 and 1e-12: the
+#    estimate's size away from the points is checked frequency by frequency in ViscousKrylov.DecayCriterionHolds….)
+sp = json.loads(subprocess.run([rom, "spectrum", "scene.toml", "--json"], capture_output=True, text=True,
+                               check=True).stdout)
+text = subprocess.run([rom, "spectrum", "scene.toml"], capture_output=True, text=True, check=True).stdout
+same = body_row(confirm("--refine", "0"))
+at = min(range(len(sp["roots"])), key=lambda i: abs(complex(*sp["roots"][i]) - complex(*same["table"])))
+estimate = sp.get("fit_decay_error", [None] * len(sp["roots"]))[at]
+actual = abs(same["table"][1] - same["confirmed"][1]) / abs(same["confirmed"][1])
+window = json.loads(subprocess.run([modes, "info", "fill.h5", "--json"], capture_output=True, text=True,
+                                   check=True).stdout)["fit_decay_error"]
+print("the body root's decay: table %.10e, forced solves %.10e (%.2e apart); the table's estimate there %s, the "
+      "window's largest %.2e" % (same["table"][1], same["confirmed"][1], actual, estimate, window))
+check(estimate is not None and actual <= 5 * estimate + 1e-10 and estimate <= window,
+      "the table's Im R estimate at the body root covers its decay's fit error (to confirm's rounding), under the "
+      "window's largest")
+check(any(" body 1 " in l and "table fit" in l for l in text.splitlines()), "the body root's line gives it")
+
 # 6. Sweeps: the study at every point.
 def sweep(csv, *extra):
     p = subprocess.run([rom, "sweep", "scene.toml", "-o", csv, "--cavity-modes", modes] + list(extra),
