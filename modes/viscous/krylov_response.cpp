@@ -51,13 +51,15 @@ class KrylovBasis {
     return std::numbers::pi * m.col(0);
   }
 
-  ReducedTransfer galerkin() const {
+  // The two reduced models' transfer functions; try_poles as ReducedTransfer's.
+  ReducedTransfer galerkin(bool try_poles) const {
     const auto n = m_;
-    return {Mh_.topLeftCorner(n, n), Hh_.topLeftCorner(n, n), fh_.topRows(n).conjugate(), fh_.topRows(n)};
+    return {Mh_.topLeftCorner(n, n), Hh_.topLeftCorner(n, n), fh_.topRows(n).conjugate(), fh_.topRows(n), try_poles};
   }
-  ReducedTransfer bilinear() const {
+  ReducedTransfer bilinear(bool try_poles) const {
     const auto n = m_;
-    return {Mb_.topLeftCorner(n, n), Ab_.topLeftCorner(n, n), fh_.topRows(n).conjugate(), fh_.topRows(n).conjugate()};
+    return {Mb_.topLeftCorner(n, n), Ab_.topLeftCorner(n, n), fh_.topRows(n).conjugate(), fh_.topRows(n).conjugate(),
+            try_poles};
   }
   GalerkinMatrices projection() const;
 
@@ -298,8 +300,13 @@ class Greedy {
     Eigen::MatrixXd scale, floor;
     Eigen::MatrixXcd galerkin;
   };
-  Worst worst() const {
-    const ReducedTransfer G = basis_.galerkin(), B = basis_.bilinear();
+  Worst worst() {
+    // Once a model's eigenvectors were too ill-conditioned for its pole–residue form, the larger bases that follow
+    // (the same vectors and more) are taken to the Schur form directly: the failed attempt cost as much as the Schur
+    // form itself (docs/viscous.md, "Where a partially filled tank's table spends its time").
+    const ReducedTransfer G = basis_.galerkin(galerkin_poles_), B = basis_.bilinear(bilinear_poles_);
+    galerkin_poles_ = G.pole_residue();
+    bilinear_poles_ = B.pole_residue();
     const Eigen::Index p = inputs();
     std::vector<Eigen::MatrixXcd> g(candidates_.size()), b(candidates_.size());
     Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(p), dissipation = Eigen::VectorXd::Zero(p);
@@ -405,6 +412,7 @@ class Greedy {
   std::vector<double> window_, candidates_;
   std::vector<Vec> inputs_;
   std::vector<PVec> x_, v_;  // one solution and one right-hand side per input
+  bool galerkin_poles_ = true, bilinear_poles_ = true;  // whether to try each model's pole–residue form
 };
 
 }  // namespace

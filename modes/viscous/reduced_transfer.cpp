@@ -1,6 +1,7 @@
 #include "reduced_transfer.hpp"
 
 #include "complex_eigen.hpp"
+#include "complex_schur.hpp"
 
 #include <cmath>
 #include <utility>
@@ -8,12 +9,12 @@
 namespace rc::modes {
 
 ReducedTransfer::ReducedTransfer(const Eigen::MatrixXcd& mass, const Eigen::MatrixXcd& op,
-                                 const Eigen::MatrixXcd& left, const Eigen::MatrixXcd& right) {
+                                 const Eigen::MatrixXcd& left, const Eigen::MatrixXcd& right, bool try_poles) {
   using cd = std::complex<double>;
   const Eigen::PartialPivLU<Eigen::MatrixXcd> lu(mass);
   const Eigen::MatrixXcd K = lu.solve(op);
   const Eigen::MatrixXcd Kr = lu.solve(right);
-  if (K.allFinite()) {
+  if (try_poles && K.allFinite()) {
     const ComplexEigen es = complex_eigen(K, true, "a reduced response pencil");
     const Eigen::MatrixXcd& V = es.vectors;
     out_poles_ = left.transpose() * V;
@@ -33,38 +34,29 @@ ReducedTransfer::ReducedTransfer(const Eigen::MatrixXcd& mass, const Eigen::Matr
     }
   }
   if (!poles_.empty()) return;
-  const Eigen::HessenbergDecomposition<Eigen::MatrixXcd> hess(K);
-  T_ = hess.matrixH();
-  const Eigen::MatrixXcd Q = hess.matrixQ();
-  in_ = Q.adjoint() * Kr;
-  out_ = left.transpose() * Q;
+  const ComplexSchurForm schur = complex_schur(K, "a reduced response pencil");
+  T_ = schur.T;
+  in_ = schur.Z.adjoint() * Kr;
+  out_ = left.transpose() * schur.Z;
 }
 
 Eigen::MatrixXcd ReducedTransfer::matrix(std::complex<double> sigma) const {
-  if (poles_.empty()) return hessenberg(sigma);
+  if (poles_.empty()) return schur(sigma);
   Eigen::VectorXcd w(static_cast<Eigen::Index>(poles_.size()));
   for (std::size_t j = 0; j < poles_.size(); ++j) w[static_cast<Eigen::Index>(j)] = 1.0 / (sigma - poles_[j]);
   return out_poles_ * w.asDiagonal() * in_poles_;
 }
 
-// (σ − T) Y = in by Gaussian elimination with partial pivoting between neighbouring rows (the only subdiagonal is
-// T's), then back substitution.
-Eigen::MatrixXcd ReducedTransfer::hessenberg(std::complex<double> sigma) const {
-  const Eigen::Index m = T_.rows();
-  Eigen::MatrixXcd U = -T_;
-  U.diagonal().array() += sigma;
+// (σ − T) y = Zᴴ𝓜⁻¹R by back substitution: y_i = (b_i + Σ_{j>i} T_ij y_j) / (σ − T_ii), T's row i read once for
+// every input. The diagonal is never zero at a σ off the spectrum (σ = T_ii is a pole: the entries are then inf).
+Eigen::MatrixXcd ReducedTransfer::schur(std::complex<double> sigma) const {
+  const Eigen::Index m = T_.rows(), p = in_.cols();
   Eigen::MatrixXcd y = in_;
-  for (Eigen::Index k = 0; k + 1 < m; ++k) {
-    if (std::abs(U(k + 1, k)) > std::abs(U(k, k))) {
-      U.row(k).tail(m - k).swap(U.row(k + 1).tail(m - k));
-      y.row(k).swap(y.row(k + 1));
-    }
-    if (U(k + 1, k) == 0.0) continue;
-    const std::complex<double> l = U(k + 1, k) / U(k, k);
-    U.row(k + 1).tail(m - k) -= l * U.row(k).tail(m - k);
-    y.row(k + 1) -= l * y.row(k);
+  for (Eigen::Index i = m - 1; i >= 0; --i) {
+    const auto row = T_.row(i).tail(m - 1 - i);
+    for (Eigen::Index c = 0; c < p; ++c)
+      y(i, c) = (y(i, c) + row.transpose().cwiseProduct(y.col(c).tail(m - 1 - i)).sum()) / (sigma - T_(i, i));
   }
-  U.triangularView<Eigen::Upper>().solveInPlace(y);
   return out_ * y;
 }
 

@@ -1,5 +1,5 @@
 // ReducedTransfer (modes/viscous/reduced_transfer.hpp): lᵀ(σ𝓜 − 𝒜)⁻¹r of a small dense pencil by its pole–residue
-// form, or by a Hessenberg solve where that form cannot be trusted, against a direct LU solve at the same σ.
+// form, or by the Schur form where that form cannot be trusted, against a direct LU solve at the same σ.
 #include "reduced_transfer.hpp"
 
 #include "eigen_dense.hpp"
@@ -47,8 +47,8 @@ TEST(ReducedTransfer, PoleResidueFormIsTheTransferFunction) {
 }
 
 // A defective pencil (a Jordan block: its eigenvectors are parallel): the pole–residue form is refused and the
-// Hessenberg path is the transfer function to rounding.
-TEST(ReducedTransfer, DefectivePencilFallsBackToHessenberg) {
+// Schur path is the transfer function to rounding.
+TEST(ReducedTransfer, DefectivePencilFallsBackToTheSchurForm) {
   std::srand(11);
   const int m = 12;
   Eigen::MatrixXcd J = Eigen::MatrixXcd::Zero(m, m);
@@ -66,7 +66,7 @@ TEST(ReducedTransfer, DefectivePencilFallsBackToHessenberg) {
 }
 
 // Two inputs (a partially filled tank's coupling and offset coupling): the matrix Lᵀ(σ𝓜 − 𝒜)⁻¹R, entry by entry, on
-// both paths (a random pencil: pole–residue; a Jordan block: Hessenberg) against direct solves.
+// both paths (a random pencil: pole–residue; a Jordan block: Schur) against direct solves.
 TEST(ReducedTransfer, TwoInputsGiveTheTransferMatrix) {
   std::srand(5);
   const int m = 24;
@@ -88,4 +88,26 @@ TEST(ReducedTransfer, TwoInputsGiveTheTransferMatrix) {
                 worst);
     EXPECT_LT(worst, 1e-10);
   }
+}
+
+// Told not to try the pole–residue form (the Krylov search, once a smaller basis's failed), a well-conditioned pencil
+// takes the Schur path, and it is the transfer function to rounding too, at real σ as the search asks.
+TEST(ReducedTransfer, SchurPathWhenThePolesAreNotTried) {
+  std::srand(9);
+  const int m = 60;
+  const Eigen::MatrixXcd A = Eigen::MatrixXcd::Random(m, m);
+  const Eigen::MatrixXcd M = Eigen::MatrixXcd::Identity(m, m) + 0.1 * Eigen::MatrixXcd::Random(m, m);
+  const Eigen::MatrixXcd L = Eigen::MatrixXcd::Random(m, 2), R = Eigen::MatrixXcd::Random(m, 2);
+  const ReducedTransfer poles(M, A, L, R), schur(M, A, L, R, false);
+  double worst = 0, apart = 0;
+  for (const cd s : {cd(0.3, 0.0), cd(-1.2, 0.0), cd(2.5, 0.0), cd(0.05, 1.0)}) {
+    const Eigen::MatrixXcd want = L.transpose() * (s * M - A).partialPivLu().solve(R);
+    worst = std::max(worst, (schur.matrix(s) - want).cwiseAbs().maxCoeff() / want.cwiseAbs().maxCoeff());
+    apart = std::max(apart, (schur.matrix(s) - poles.matrix(s)).cwiseAbs().maxCoeff() / want.cwiseAbs().maxCoeff());
+  }
+  std::printf("Schur path against direct solves %.2e, against the pole-residue form %.2e\n", worst, apart);
+  EXPECT_TRUE(poles.pole_residue());
+  EXPECT_FALSE(schur.pole_residue());
+  EXPECT_LT(worst, 1e-11);
+  EXPECT_LT(apart, 1e-10);
 }
