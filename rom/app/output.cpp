@@ -480,6 +480,9 @@ static void print_body_line(std::ostream& os, const ChainModel& m, const Spectru
       if (!b.fit_decay_s.empty()) os << "; each root's on its line";
     }
     os << ")";
+    if (b.pruned_rows > 0)
+      os << ", " << b.pruned_rows << " rows left out that no root needs (together under 1e-2 of the fit error and "
+            "1e-4 of Im R on the window; prune = false keeps them)";
     const FitPassivity& p = sp.passivity[k];
     if (p.passive())
       os << ", passive on it (Im R >= " << p.scan.min_im << " max|R|)";

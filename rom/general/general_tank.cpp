@@ -1,6 +1,7 @@
 #include "general_tank.hpp"
 
 #include "chain_model.hpp"
+#include "response_row_pruning.hpp"
 #include "row_coupling.hpp"
 
 #include <algorithm>
@@ -159,6 +160,10 @@ std::vector<int> kept_rows(const Scene& scene, const std::string& w, const Cavit
     }
   }
   idx.resize(keep);
+  // An axisymmetric response table's rows that no root needs, left out as the chain with axial symmetry leaves them
+  // (rom/model/response_row_pruning.hpp): both chains hold the same rows.
+  if (prunable(t, cav) && !t.volume_cavity.present() && !fill3)
+    idx = prune_response_rows(t, idx, kPruneMagnitude, kPruneDissipation).kept;
   covered = geostrophic;
   for (const int l : idx) covered += E(l);
   covered /= total;

@@ -5,6 +5,7 @@
 
 #include "galerkin_fluid.hpp"
 #include "mode_table.hpp"
+#include "response_row_pruning.hpp"
 #include "row_coupling.hpp"
 
 #include <algorithm>
@@ -174,7 +175,13 @@ void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
   set_frozen_fluid(scene, w, cav, t, b);
   const double L5 = inertia_unit(cav);
   const RowCoupling rc{t, b.fluid_center / cav.scale};
-  const std::vector<int> rows = kept_rows(scene, w, cav, t, rc);
+  std::vector<int> rows = kept_rows(scene, w, cav, t, rc);
+  // A response table's rows no root needs (prunable, response_row_pruning.hpp).
+  if (prunable(t, cav)) {
+    const PrunedRows pruned = prune_response_rows(t, rows, kPruneMagnitude, kPruneDissipation);
+    rows = pruned.kept;
+    b.pruned_rows = pruned.dropped;
+  }
   if (cav.bands)
     fail(scene, w + ".reduction", "\"bands\" takes a 3-D table's band couplings, in the chain without axial symmetry "
                                   "(`spectrum`, `run`, `sweep`, `bench`; docs/rom.md); this command takes modal tanks");

@@ -91,6 +91,8 @@ struct BodyModel {
   // The table's Im R error at s (table units), linear between the profile's frequencies; −1 where it is not known
   // (no profile, or s outside it).
   double fit_decay_error_at(double s) const;
+  // Such a table's rows left out as no root needs them (response_row_pruning.hpp).
+  int pruned_rows = 0;
   std::string response_kind;  // such a table's: "a Krylov response table", "a Galerkin response table" or "a response fit"
   double coverage = 0;       // E_kept / sum_rule
   int unconverged = 0;       // kept clusters the table flags as not converged

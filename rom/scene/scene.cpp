@@ -111,7 +111,7 @@ std::vector<std::complex<double>> get_complex_array(const Ctx& c, const toml::ta
 CavitySpec parse_cavity(const Ctx& c, const toml::table& t, const std::string& where,
                         const std::filesystem::path& base) {
   check_keys(c, t, where, {"table", "companion", "density", "scale", "center", "origin", "modes", "coverage",
-                           "static_correction", "viscosity", "reduction", "offset"});
+                           "static_correction", "viscosity", "reduction", "offset", "prune"});
   CavitySpec cav;
   const toml::node* tab = t.get("table");
   if (!tab) c.fail(where + ".table", "missing");
@@ -150,6 +150,10 @@ CavitySpec parse_cavity(const Ctx& c, const toml::table& t, const std::string& w
   if (const toml::node* s = t.get("static_correction")) {
     if (!s->is_boolean()) c.fail(where + ".static_correction", "must be true or false");
     cav.static_correction = s->as_boolean()->get();
+  }
+  if (const toml::node* s = t.get("prune")) {
+    if (!s->is_boolean()) c.fail(where + ".prune", "must be true or false");
+    cav.prune = s->as_boolean()->get();
   }
   cav.viscosity = get_number(c, t, "viscosity", where + ".viscosity", Sign::pos, false);
   if (const toml::node* r = t.get("reduction")) {

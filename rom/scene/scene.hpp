@@ -26,6 +26,9 @@ struct CavitySpec {
   std::optional<int> modes;        // keep the first `modes` modes (table is sorted by E)
   std::optional<double> coverage;  // or: the fewest leading modes whose sum E >= coverage*sum_rule
   bool static_correction = false;  // add the unkept remainder (A_f - J_zh) - sum E as inertia
+  // A response table's rows that no root needs (their summed contribution on the window under 1 % of its fit
+  // error: rom/model/response_row_pruning.hpp) are left out; false keeps every row.
+  bool prune = true;
   std::filesystem::path companion; // optional: the same cavity's table on a coarser mesh; `spectrum` marks the roots
                                    // that move when it replaces `table` (companion_check.hpp)
   std::optional<double> viscosity; // kinematic viscosity nu (m^2/s): the table must then be viscous with

@@ -40,6 +40,7 @@ rom_cli(bad_method_run ARGS run;bad_method.toml;-o;out_bad_method.h5 EXPECT_EXIT
         MATCH "bad_method\\.toml: run\\.method: must be one of \"exact\", \"gauss\", \"rk45\" \\(got \"rk4\"\\)"
         NO_FILE out_bad_method.h5)
 rom_cli(bad_method_spectrum ARGS spectrum;bad_method.toml EXPECT_EXIT 1 MATCH "run\\.method: must be one of")
+rom_cli(bad_prune ARGS spectrum;bad_prune.toml EXPECT_EXIT 1 MATCH "body\\[1\\]\\.cavity\\.prune: must be true or false")
 rom_cli(bad_axial_rate ARGS spectrum;bad_axial_rate.toml EXPECT_EXIT 1
         MATCH "initial\\.axial_rate: must be an array of 2 numbers, one per body")
 rom_cli(bad_output_dir ARGS run;two_tops.toml;-o;no_such_dir/out.h5 EXPECT_EXIT 1 MATCH "output folder does not exist" NO_FILE no_such_dir/out.h5)
