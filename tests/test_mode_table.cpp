@@ -78,17 +78,26 @@ TEST(ModeTable, InvalidTableLeavesNoFile) {
 }
 
 // Format version 2: a viscous table keeps its decay and complex coupling; an ideal table has none of them.
-TEST(ModeTable, ViscousFieldsRoundTrip) {
+namespace {
+// A one-row viscous table of the unit sphere (its damped spin-over mode at Ek = 1e-4).
+rc::ModeTable viscous_sample() {
   rc::ModeTable t;
   t.shape = "sphere";
   t.dimensions = {{"radius", 1.0}};
   t.kappa = {2.0}; t.lambda = {1.0}; t.E = {1.6}; t.N2 = {1.0}; t.residual = {1e-12};
   t.volume = 4.18879020479; t.A_f = 1.67551608191; t.C_f = t.A_f; t.sum_rule = t.A_f;
   t.ekman = 1e-4;
-  t.mesh_h_wall = 0.01;
   t.decay = {0.027}; t.E_imag = {-0.08};
   const std::complex<double> a_c = std::sqrt(std::complex<double>(1.6, -0.08) / 2.0);  // E_c = 2 a_c² (N² = 1)
   t.a = {a_c.real()}; t.a_imag = {a_c.imag()};
+  return t;
+}
+}  // namespace
+
+TEST(ModeTable, ViscousFieldsRoundTrip) {
+  rc::ModeTable t = viscous_sample();
+  t.mesh_h_wall = 0.01;
+  const std::complex<double> a_c(t.a[0], t.a_imag[0]);
   const auto p = std::filesystem::temp_directory_path() / "rc_viscous_roundtrip.h5";
   rc::write_mode_table(t, p);
   const auto r = rc::read_mode_table(p);
@@ -114,15 +123,7 @@ TEST(ModeTable, ViscousFieldsRoundTrip) {
 // A Krylov table's Im R error profile (/fit_decay) is read back as written, and one that does not describe the
 // window (unsorted, outside it, negative, of another length, without fit_decay_error) is refused.
 TEST(ModeTable, FitDecayProfileRoundTripsAndIsChecked) {
-  rc::ModeTable t;
-  t.shape = "sphere";
-  t.dimensions = {{"radius", 1.0}};
-  t.kappa = {2.0}; t.lambda = {1.0}; t.E = {1.6}; t.N2 = {1.0}; t.residual = {1e-12};
-  t.volume = 4.18879020479; t.A_f = 1.67551608191; t.C_f = t.A_f; t.sum_rule = t.A_f;
-  t.ekman = 1e-4;
-  t.decay = {0.027}; t.E_imag = {-0.08};
-  const std::complex<double> a_c = std::sqrt(std::complex<double>(1.6, -0.08) / 2.0);
-  t.a = {a_c.real()}; t.a_imag = {a_c.imag()};
+  rc::ModeTable t = viscous_sample();
   t.fit_lo = -1; t.fit_hi = 2; t.fit_error = 1e-5; t.fit_decay_error = 0.03;
   t.fit_decay_s = {-1, 0.5, 2};
   t.fit_decay_profile = {1e-3, 0.03, 2e-4};

@@ -4,6 +4,7 @@
 // allowance gives, and a table whose far rows are too heavy for it keeps them all.
 #include "chain_model.hpp"
 #include "closed_form_tables.hpp"
+#include "response_fit_rows.hpp"
 #include "scene.hpp"
 #include "spectrum.hpp"
 
@@ -19,33 +20,6 @@
 namespace rc::rom {
 namespace {
 using cd = std::complex<double>;
-
-// The viscous sphere's table (make_viscous_tables.sh) turned into a response fit on s in [-1.5, 2] with these rows.
-std::string fit_table(const std::vector<cd>& poles, const std::vector<cd>& residues, const std::string& name) {
-  rc::ModeTable t = rc::read_mode_table(std::string(RC_VISCOUS_TABLES) + "/sphere_ek1e-3.h5");
-  t.galerkin = {};
-  t.kappa.clear(); t.lambda.clear(); t.decay.clear(); t.E.clear(); t.E_imag.clear(); t.a.clear(); t.a_imag.clear();
-  t.N2.clear(); t.residual.clear(); t.spread.clear(); t.members.clear(); t.dlambda.clear(); t.dE.clear();
-  t.converged.clear();
-  for (std::size_t l = 0; l < poles.size(); ++l) {
-    t.lambda.push_back(poles[l].real());
-    t.kappa.push_back(2 / poles[l].real());
-    t.decay.push_back(poles[l].imag());
-    t.E.push_back(residues[l].real());
-    t.E_imag.push_back(residues[l].imag());
-    const cd a = std::sqrt(residues[l] / 2.0);
-    t.a.push_back(a.real());
-    t.a_imag.push_back(a.imag());
-    t.N2.push_back(1);
-    t.residual.push_back(0);
-  }
-  t.fit_lo = -1.5;
-  t.fit_hi = 2;
-  t.fit_error = 1e-4;
-  const std::string file = std::string(RC_VISCOUS_TABLES) + "/" + name;
-  test::write_table(t, file);
-  return file;
-}
 
 ChainModel chain(const std::string& file, bool prune) {
   std::ostringstream s;
@@ -72,7 +46,7 @@ TEST(ResponseRowPruning, FarRowsOfTinyResidueAreLeftOutAndTheRootsStay) {
     poles.emplace_back((l % 2 ? 1 : -1) * (10.0 + l), 1.0 + 0.1 * l);
     residues.emplace_back(1e-13, 1e-14);
   }
-  const std::string file = fit_table(poles, residues, "pruning_fit.h5");
+  const std::string file = test::write_response_fit(poles, residues, 1e-4, "pruning_fit.h5");
   const ChainModel pruned = chain(file, true), all = chain(file, false);
   std::vector<int> kept;
   for (const FluidMode& md : pruned.modes) kept.push_back(md.table_index);
@@ -99,7 +73,7 @@ TEST(ResponseRowPruning, FarRowsOfTinyResidueAreLeftOutAndTheRootsStay) {
   // The same far rows 1e8 times heavier (1e-5 each): together they matter on the window, and the allowance keeps
   // most of them.
   for (std::size_t l = 4; l < residues.size(); ++l) residues[l] *= 1e8;
-  const std::string heavy_file = fit_table(poles, residues, "pruning_heavy_fit.h5");
+  const std::string heavy_file = test::write_response_fit(poles, residues, 1e-4, "pruning_heavy_fit.h5");
   const ChainModel heavy = chain(heavy_file, true);
   const std::vector<cd> c = body_roots(heavy), d = body_roots(chain(heavy_file, false));
   ASSERT_EQ(c.size(), d.size());

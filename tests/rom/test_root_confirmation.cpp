@@ -5,6 +5,7 @@
 #include "chain_model.hpp"
 #include "characteristic.hpp"
 #include "closed_form_tables.hpp"
+#include "response_fit_rows.hpp"
 #include "root_confirmation.hpp"
 #include "scene.hpp"
 #include "spectrum.hpp"
@@ -28,28 +29,12 @@ struct Pole {
 
 // The viscous sphere's table (make_viscous_tables.sh) with its rows replaced by `poles`, as a response fit.
 std::string fit_table(const std::vector<Pole>& poles, const std::string& name) {
-  rc::ModeTable t = rc::read_mode_table(std::string(RC_VISCOUS_TABLES) + "/sphere_ek1e-3.h5");
-  t.galerkin = {};
-  t.lambda.clear(); t.kappa.clear(); t.decay.clear(); t.E.clear(); t.E_imag.clear(); t.a.clear(); t.a_imag.clear();
-  t.N2.clear(); t.residual.clear(); t.converged.clear();
+  std::vector<cd> p, r;
   for (const Pole& q : poles) {
-    t.lambda.push_back(q.p.real());
-    t.kappa.push_back(2 / q.p.real());
-    t.decay.push_back(q.p.imag());
-    t.E.push_back(q.r.real());
-    t.E_imag.push_back(q.r.imag());
-    const cd a = std::sqrt(q.r / 2.0);
-    t.a.push_back(a.real());
-    t.a_imag.push_back(a.imag());
-    t.N2.push_back(1);
-    t.residual.push_back(0);
+    p.push_back(q.p);
+    r.push_back(q.r);
   }
-  t.fit_lo = -1.5;
-  t.fit_hi = 2;
-  t.fit_error = 1e-6;
-  const std::string file = std::string(RC_VISCOUS_TABLES) + "/" + name + ".h5";
-  test::write_table(t, file);
-  return file;
+  return test::write_response_fit(p, r, 1e-6, name + ".h5");
 }
 
 // Two bodies on an elastic joint, the tank in body 2 (a diagonal entry other than the first), gravity.
