@@ -42,6 +42,10 @@ void print_general_spectrum(std::ostream& os, const GeneralChain& g, const Gener
   if (g.periodic()) print_floquet(os, g, sp);
   for (const auto& [k, share] : g.coverage)
     if (share < 1 - 1e-9) os << "body " << k + 1 << ": a tank's kept modes cover " << share << " of its sum rule\n";
+  for (const auto& [k, rows] : g.pruned_rows)
+    os << "body " << k + 1 << ": a tank's response table has " << rows << (rows == 1 ? " row" : " rows")
+       << " left out that no root needs (together "
+       << "under 1e-2 of its fit error and 1e-4 of Im R on its window; prune = false keeps them)\n";
   // The verdict as (26)'s (docs/rom.md, "Spectrum", "Verdict with dissipation"), its line saying when a tank's rows
   // did not settle.
   std::string unsettled = g.not_converged.empty() ? "" : "; NOT CONVERGED: a partially filled 3-D tank's rows (below)";

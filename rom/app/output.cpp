@@ -481,7 +481,8 @@ static void print_body_line(std::ostream& os, const ChainModel& m, const Spectru
     }
     os << ")";
     if (b.pruned_rows > 0)
-      os << ", " << b.pruned_rows << " rows left out that no root needs (together under 1e-2 of the fit error and "
+      os << ", " << b.pruned_rows << (b.pruned_rows == 1 ? " row" : " rows")
+         << " left out that no root needs (together under 1e-2 of the fit error and "
             "1e-4 of Im R on the window; prune = false keeps them)";
     const FitPassivity& p = sp.passivity[k];
     if (p.passive())

@@ -237,6 +237,7 @@ GeneralChain build_general_chain(const Scene& scene, TableCache* tables, std::op
       geostrophic += t.geostrophic;
       g.modes.insert(g.modes.end(), t.modes.begin(), t.modes.end());
       g.coverage.emplace_back(k, t.coverage);
+      if (t.pruned_rows > 0) g.pruned_rows.emplace_back(k, t.pruned_rows);
       if (t.unsettled_rows > 0) {
         std::ostringstream os;
         os << "body " << k + 1 << "'s partially filled 3-D tank: " << t.unsettled_rows << " of its kept rows did not "

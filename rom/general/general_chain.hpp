@@ -36,6 +36,7 @@ struct GeneralChain {
   std::vector<Eigen::Matrix3d> geostrophic;  // per body: the 3-D tanks' λ = 0 weight (kg m²), else 0
   std::vector<GeneralMode> modes;            // every tank's kept modes, body by body
   std::vector<std::pair<int, double>> coverage;  // per tank, body by body: (body, its kept share of the sum rule)
+  std::vector<std::pair<int, int>> pruned_rows;  // (body, rows) per tank whose response table had rows left out
   std::vector<std::string> not_converged;        // per partially filled 3-D tank with unsettled rows: what to say
   bool dissipative = false;                  // joint or axial friction, a viscous tank: roots leave the real axis
   double response_window = 0;                // the narrowest response table's window (rad/s, |Re σ|); 0: none

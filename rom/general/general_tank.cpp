@@ -121,9 +121,10 @@ void require_axial_field(const Scene& scene) {
 }
 
 // The rows kept, heaviest E first: every one that couples, or the first `modes`, or as many as reach `coverage` of
-// the sum rule (a 3-D table's λ = 0 weight counted as kept). Returns the coverage reached in `covered`.
+// the sum rule (a 3-D table's λ = 0 weight counted as kept). Returns the coverage reached in `covered`, and in
+// `pruned` how many rows of a response table were left out as no root needs them.
 std::vector<int> kept_rows(const Scene& scene, const std::string& w, const CavitySpec& cav, const rc::ModeTable& t,
-                           const RowCoupling& about, double& covered) {
+                           const RowCoupling& about, double& covered, int& pruned) {
   // About the joint: a partially filled tank's rows weigh E = 2(a + c t)²/N² there, its sum rule A_f + K − J_zh.
   const bool surface = t.free_surface.present(), fill3 = t.volume_free_surface.present();
   const auto& vf = t.volume_free_surface;
@@ -162,8 +163,12 @@ std::vector<int> kept_rows(const Scene& scene, const std::string& w, const Cavit
   idx.resize(keep);
   // An axisymmetric response table's rows that no root needs, left out as the chain with axial symmetry leaves them
   // (rom/model/response_row_pruning.hpp): both chains hold the same rows.
-  if (prunable(t, cav) && !t.volume_cavity.present() && !fill3)
-    idx = prune_response_rows(t, idx, kPruneMagnitude, kPruneDissipation).kept;
+  pruned = 0;
+  if (prunable(t, cav)) {
+    const PrunedRows p = prune_response_rows(t, idx, kPruneMagnitude, kPruneDissipation);
+    idx = p.kept;
+    pruned = p.dropped;
+  }
   covered = geostrophic;
   for (const int l : idx) covered += E(l);
   covered /= total;
@@ -328,7 +333,7 @@ GeneralTank general_tank(const Scene& scene, int k, const CavitySpec& cav, const
     tank.coverage = add_band_modes(scene, w, k, t, unit, tank);
   } else {
     double covered = 0;
-    for (const int l : kept_rows(scene, w, cav, t, about, covered)) {
+    for (const int l : kept_rows(scene, w, cav, t, about, covered, tank.pruned_rows)) {
       const double bound = t.residual[l] / std::max(std::abs(t.lambda[l]), 0.1);
       if (t.volume_free_surface.present() && bound > t.tolerance * (1 + 1e-9)) {  // the survey's own test (docs/volume.md §8)
         ++tank.unsettled_rows;

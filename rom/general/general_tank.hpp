@@ -45,6 +45,7 @@ struct GeneralTank {
   // A partially filled 3-D tank's kept rows whose λ did not settle (their bound above the survey's tolerance: a dense
   // cluster's weight, docs/volume.md §8), and the largest such bound relative to max(|λ|, 0.1).
   int unsettled_rows = 0;
+  int pruned_rows = 0;      // a response table's rows left out as no root needs them (response_row_pruning.hpp)
   double worst_bound = 0;
   bool cut_liquid = false;  // a 3-D partial fill: its liquid cut from the tank and meshed (its centroid has that error)
 };
