@@ -6,10 +6,16 @@
 # root needs"; docs/viscous.md, "Where a partially filled tank's table spends its time").
 #   bash bench/krylov_table_cost.sh "cone --radius 1 --height 1.5" 0.8 1e-7 [BUILD_DIR] [OUT]   (about 75 s idle)
 set -euo pipefail
+usage="usage: bash bench/krylov_table_cost.sh SHAPE_ARGS FILL EKMAN [BUILD_DIR] [OUT]"
+if [ "${1:-}" = "--help" ] || [ "${1:-}" = "-h" ]; then
+  echo "$usage"
+  sed -n '2,/^set -euo/p' "$0" | grep '^#' | sed 's/^# \{0,1\}//'
+  exit 0
+fi
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
-SHAPE=${1:?usage: krylov_table_cost.sh SHAPE_ARGS FILL EKMAN [BUILD_DIR] [OUT]}
-FILL=${2:?fill}
-EK=${3:?Ekman number}
+SHAPE=${1:?$usage}
+FILL=${2:?$usage}
+EK=${3:?$usage}
 BUILD=${4:-$ROOT/build}
 OUT=${5:-$ROOT/bench/results}
 MODES=$BUILD/modes/cavity-modes
