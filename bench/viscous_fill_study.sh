@@ -23,14 +23,12 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 mkdir -p "$OUT"
 cd "$work"
-now() { date +%s.%N; }
-since() { python3 -c "print(round($(now) - $1, 1))"; }
+# shellcheck source=spacecraft_tank.sh
+source "$ROOT/bench/spacecraft_tank.sh"
 fill_args=()
 [ "$FILL" = 1 ] || fill_args=(--fill "$FILL")
 read -r -a shape <<< "$SHAPE"
-nu=$(python3 -c "print($EK * 6.2832 * 0.16)")
-sed -e "s#\"../../out/tables/sphere_fill0.6_hydrazine.h5\"#\"tank.h5\"#" -e "s#^viscosity = .*#viscosity = $nu#" \
-  "$ROOT/data/scenes/spacecraft_nutation.toml" > scene.toml
+spacecraft_tank_scene "$EK" tank.h5 > scene.toml
 t=$(now)
 "$MODES" response "${shape[@]}" "${fill_args[@]}" --ekman "$EK" --sigma -2.5:2:181 -o tank.h5 > table.txt 2>&1
 table_s=$(since "$t")

@@ -163,6 +163,20 @@ void set_galerkin_forms(const GalerkinFluid& gf, const CavitySpec& cav, BodyMode
   }
 }
 
+// A response table's window, its errors (with the Im R profile) and which reduction made its rows.
+void set_response_fit(const rc::ModeTable& t, BodyModel& b) {
+  b.fit_lo = t.fit_lo;
+  b.fit_hi = t.fit_hi;
+  b.fit_error = t.fit_error;
+  b.fit_decay_error = t.fit_decay_error;
+  b.fit_decay_s = t.fit_decay_s;
+  b.fit_decay_profile = t.fit_decay_profile;
+  // The table's solver text says which (modes/app/galerkin_response_table.cpp, cavity_response.cpp).
+  b.response_kind = t.solver.find("rational Krylov") != std::string::npos ? "a Krylov response table"
+                    : t.solver.find("Galerkin") != std::string::npos   ? "a Galerkin response table"
+                                                                       : "a response fit";
+}
+
 // Fluid of body k: mass, frozen inertia, centre of mass, kept modes (docs/physics.md §4 scaling).
 void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
                std::vector<FluidMode>& modes, TableCache* tables) {
@@ -209,16 +223,7 @@ void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
     modes.push_back(m);
   }
   b.ekman = t.ekman;
-  b.fit_lo = t.fit_lo;
-  b.fit_hi = t.fit_hi;
-  b.fit_error = t.fit_error;
-  b.fit_decay_error = t.fit_decay_error;
-  b.fit_decay_s = t.fit_decay_s;
-  b.fit_decay_profile = t.fit_decay_profile;
-  // Which reduction made the rows (the table's solver text, modes/app/galerkin_response_table.cpp, cavity_response.cpp).
-  b.response_kind = t.solver.find("rational Krylov") != std::string::npos ? "a Krylov response table"
-                    : t.solver.find("Galerkin") != std::string::npos   ? "a Galerkin response table"
-                                                                       : "a response fit";
+  set_response_fit(t, b);
   b.coverage = b.sum_rule > 0 ? b.E_kept / b.sum_rule : 1.0;
   // The residues of all modes sum to the real A_f - J_zh (the response's 1/sigma term involves only the
   // real mass and divergence matrices; an argument, not measured: a table holds too few modes to sum), so the

@@ -68,13 +68,14 @@ double shares(const rc::ModeTable& t, int l, const std::vector<std::vector<doubl
   const cd p = pole(t, l);
   const double n2 = std::abs(t.N2[static_cast<std::size_t>(l)]);
   out.assign(inputs * inputs * kGrid, 0.0);
+  std::vector<double> top(inputs * inputs);
+  for (std::size_t e = 0; e < top.size(); ++e) top[e] = std::abs(2.0 * c[e / inputs] * c[e % inputs]) / n2;
   double worst = 0;
   for (std::size_t g = 0; g < static_cast<std::size_t>(kGrid); ++g) {
     const double far = std::sqrt(std::norm(grid_point(t, static_cast<int>(g)) - p));
-    for (std::size_t e = 0; e < inputs * inputs; ++e) {
-      const double top = std::sqrt(std::norm(2.0 * c[e / inputs] * c[e % inputs])) / n2;
+    for (std::size_t e = 0; e < top.size(); ++e) {
       const double a = allow[e][g];
-      const double v = a > 0 ? top / far / a : HUGE_VAL;
+      const double v = a > 0 ? top[e] / far / a : HUGE_VAL;
       out[e * kGrid + g] = v;
       worst = std::max(worst, v);
     }
@@ -121,7 +122,6 @@ PrunedRows prune_response_rows(const rc::ModeTable& t, const std::vector<int>& r
   for (std::size_t r = 0; r < rows.size(); ++r)
     if (drop[r]) ++out.dropped;
     else out.kept.push_back(rows[r]);
-  out.used = used.empty() ? 0.0 : *std::max_element(used.begin(), used.end());
   return out;
 }
 

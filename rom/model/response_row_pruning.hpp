@@ -24,7 +24,6 @@ inline constexpr double kPruneMagnitude = 1e-2, kPruneDissipation = 1e-4;
 struct PrunedRows {
   std::vector<int> kept;  // the rows kept, in the given order
   int dropped = 0;
-  double used = 0;        // the largest share of an allowance the left-out rows take (≤ 1)
 };
 
 // Whether a tank's rows are pruned: a response table's, unless the scene says prune = false, names its rows (modes or
