@@ -1,5 +1,6 @@
 #include "block_lanczos.hpp"
 
+#include "dense_blas.hpp"
 #include "progress.hpp"
 
 #include "eigen_dense.hpp"
@@ -25,19 +26,32 @@ BlockLanczos::BlockLanczos(const Eigen::VectorXd& weights, const Eigen::MatrixXd
   block_end_ = used_;
 }
 
+Eigen::MatrixXd BlockLanczos::project(const Eigen::MatrixXd& U, Eigen::Index begin, Eigen::Index end) const {
+  const Eigen::MatrixXd WU = weights_.asDiagonal() * U;
+  Eigen::MatrixXd H;
+  blas_product(basis_.middleCols(begin, end - begin), true, WU, H);
+  sum_over_ranks(H);
+  return H;
+}
+
 Eigen::MatrixXd BlockLanczos::append_block(Eigen::MatrixXd U, double scale) {
-  Eigen::MatrixXd coef = Eigen::MatrixXd::Zero(U.cols(), U.cols());  // rows: new columns
   const Eigen::Index first = used_;
+  // Against the basis so far, twice and a block at a time (block classical Gram–Schmidt, BCGS2), each pass two
+  // matrix products in the system BLAS (dense_blas.hpp). Column by column, in Eigen's matrix–vector products, the
+  // basis was read four times per column: 47 % of a 3-D survey's time (2026-12-07:
+  // VolumeModes.TiltedFileIsTheClosedForm 39.6 s before, 21.5 s after).
+  for (int pass = 0; pass < 2 && first > 0; ++pass)
+    blas_subtract_product(basis_.leftCols(first), project(U, 0, first), U);
+  // Within the block: each column against the block's columns kept so far, twice. These coefficients are B's (the
+  // ones on the older basis are T's, or reorthogonalisation).
+  Eigen::MatrixXd coef = Eigen::MatrixXd::Zero(U.cols(), U.cols());  // rows: new columns
   Eigen::Index kept = 0;
   for (Eigen::Index j = 0; j < U.cols(); ++j) {
     Eigen::VectorXd u = U.col(j);
-    for (int pass = 0; pass < 2; ++pass) {
-      const auto Q = basis_.leftCols(used_);
-      Eigen::MatrixXd h = Q.transpose() * weights_.cwiseProduct(u);
-      sum_over_ranks(h);
-      u.noalias() -= Q * h;
-      // The coefficients on this block's own new columns are B's entries (the rest is T's or reorthogonalisation).
-      for (Eigen::Index i = first; i < used_; ++i) coef(i - first, j) += h(i);
+    for (int pass = 0; pass < 2 && kept > 0; ++pass) {
+      const Eigen::MatrixXd h = project(u, first, used_);
+      u.noalias() -= basis_.middleCols(first, kept) * h;
+      coef.col(j).head(kept) += h.col(0);
     }
     const double norm = weighted_norm(u);
     if (!(norm > kDeflation * scale) || used_ >= basis_.cols()) continue;
@@ -73,11 +87,9 @@ bool BlockLanczos::step(const Apply& apply) {
     scale = std::max(scale, weighted_norm(out));
   }
   // T's columns of this block: the projections on every basis vector so far (full orthogonalisation).
-  const auto Q = basis_.leftCols(used_);
-  Eigen::MatrixXd H = Q.transpose() * weights_.asDiagonal() * U;
-  sum_over_ranks(H);
+  const Eigen::MatrixXd H = project(U, 0, used_);
   T_.block(0, block_begin_, used_, b) = H;
-  U.noalias() -= Q * H;
+  blas_subtract_product(basis_.leftCols(used_), H, U);
   const Eigen::Index before = used_;
   last_B_ = append_block(U, std::max(scale, 1e-300));
   if (used_ == before) { exhausted_ = true; last_B_.resize(0, b); return false; }

@@ -43,6 +43,8 @@ class BlockLanczos {
   // Orthonormalises the columns of U against the basis and each other (twice), appends the independent ones and
   // returns their coefficients (rows: new columns, in order) — the block's B.
   Eigen::MatrixXd append_block(Eigen::MatrixXd U, double scale);
+  // Qᵀ Ω U for the basis's columns [begin, end), summed over the ranks.
+  Eigen::MatrixXd project(const Eigen::MatrixXd& U, Eigen::Index begin, Eigen::Index end) const;
   // Sums a block of inner products over the ranks' rows (in place).
   void sum_over_ranks(Eigen::MatrixXd& m) const;
   double weighted_norm(const Eigen::VectorXd& u) const;
