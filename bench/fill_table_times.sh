@@ -30,9 +30,9 @@ csv=$OUT/fill_table_times_$(date +%F).csv
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
-nu=$(python3 -c "print($EK * 6.2832 * 0.16)")  # the tank's scale 0.4 m at 60 rpm: Ek = nu / (Omega L^2)
-sed -e "s#\"../../out/tables/sphere_fill0.6_hydrazine.h5\"#\"tank.h5\"#" -e "s#^viscosity = .*#viscosity = $nu#" \
-  "$ROOT/data/scenes/spacecraft_nutation.toml" > scene.toml
+# shellcheck source=spacecraft_tank.sh
+source "$ROOT/bench/spacecraft_tank.sh"
+spacecraft_tank_scene "$EK" tank.h5 > scene.toml
 while IFS= read -r shape_line; do
   read -r -a shape <<< "$shape_line"
   for fill in $FILLS; do

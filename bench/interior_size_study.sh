@@ -22,9 +22,9 @@ cd "$work"
 read -r -a shape <<< "$SHAPE"
 fill_args=()
 [ "$FILL" = 1 ] || fill_args=(--fill "$FILL")
-nu=$(python3 -c "print($EK * 6.2832 * 0.16)")
-sed -e "s#\"../../out/tables/sphere_fill0.6_hydrazine.h5\"#\"tank.h5\"#" -e "s#^viscosity = .*#viscosity = $nu#" \
-  "$ROOT/data/scenes/spacecraft_nutation.toml" > scene.toml
+# shellcheck source=spacecraft_tank.sh
+source "$ROOT/bench/spacecraft_tank.sh"
+spacecraft_tank_scene "$EK" tank.h5 > scene.toml
 csv=$OUT/interior_size_study.csv
 [ -f "$csv" ] || echo "date,shape,fill,ekman,interior_h,unknowns,table_s,nutation_decay" > "$csv"
 for size in $SIZES; do

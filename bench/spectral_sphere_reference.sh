@@ -22,14 +22,9 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 mkdir -p "$OUT"
 cd "$work"
-now() { date +%s.%N; }
-since() { python3 -c "print(round($(now) - $1, 1))"; }
-scene() {  # TABLE EK: the spacecraft with that table, the viscosity giving EK
-  local nu
-  nu=$(python3 -c "print($2 * 6.2832 * 0.16)")
-  sed -e "s#\"../../out/tables/sphere_fill0.6_hydrazine.h5\"#\"$1\"#" -e "s#^viscosity = .*#viscosity = $nu#" \
-    "$ROOT/data/scenes/spacecraft_nutation.toml"
-}
+# shellcheck source=spacecraft_tank.sh
+source "$ROOT/bench/spacecraft_tank.sh"
+scene() { spacecraft_tank_scene "$2" "$1"; }  # TABLE EK: the spacecraft with that table at EK
 body_decay() { "$ROM" spectrum "$1" | awk '/ body 1 .*decays/ {sub("i$", "", $2); print $2; exit}'; }
 confirmed() {  # confirm --json output: decay,bar,flag of the body's root
   python3 -c 'import json, sys
