@@ -572,6 +572,11 @@ void add_free_surface(MeridianMesh& m, const GmshMesh& g, const std::unordered_m
 
 void check_shape(const ShapeSpec& shape) { detail::validate_shape(shape); }
 
+double smallest_dimension(const ShapeSpec& shape) {
+  detail::validate_shape(shape);
+  return shape.kind != "section" ? detail::smallest_dimension(shape) : default_mesh_size(shape) / kDefaultSizeFraction;
+}
+
 double default_mesh_size(const ShapeSpec& shape) {
   detail::validate_shape(shape);
   if (shape.kind != "section") return kDefaultSizeFraction * detail::smallest_dimension(shape);

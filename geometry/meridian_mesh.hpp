@@ -76,6 +76,11 @@ void check_shape(const ShapeSpec& shape);
 // file is opened for it). Throws what mesh_meridian throws for an unreadable shape.
 double default_mesh_size(const ShapeSpec& shape);
 
+// The liquid's smallest dimension, the length the mesh defaults scale with: a built-in shape's (a partially filled
+// tank's is the layer outside its free surface, a rod's the gap around it), a section's the smallest side of its
+// bounding box (the file is opened for it).
+double smallest_dimension(const ShapeSpec& shape);
+
 // The reference triangle of a given order with a Gauss rule exact to `degree`: basis values and
 // gradients at the quadrature points, in the same local node order as MeridianMesh::triangles.
 struct ReferenceTriangle {

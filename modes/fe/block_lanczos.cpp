@@ -36,12 +36,12 @@ Eigen::MatrixXd BlockLanczos::project(const Eigen::MatrixXd& U, Eigen::Index beg
 
 Eigen::MatrixXd BlockLanczos::append_block(Eigen::MatrixXd U, double scale) {
   const Eigen::Index first = used_;
-  // Against the basis so far, twice and a block at a time (block classical Gram–Schmidt, BCGS2), each pass two
-  // matrix products in the system BLAS (dense_blas.hpp). Column by column, in Eigen's matrix–vector products, the
-  // basis was read four times per column: 47 % of a 3-D survey's time (2026-12-07:
-  // VolumeModes.TiltedFileIsTheClosedForm 39.6 s before, 21.5 s after).
-  for (int pass = 0; pass < 2 && first > 0; ++pass)
-    blas_subtract_product(basis_.leftCols(first), project(U, 0, first), U);
+  // Against the basis so far, once more and a block at a time: step() took the first pass, whose projections are T's,
+  // and two passes of classical Gram–Schmidt are enough (BCGS2; the constructor's start block has no basis before
+  // it). Each pass is two matrix products in the system BLAS (dense_blas.hpp). Column by column, twice, in Eigen's
+  // matrix–vector products, the basis was read four times per column: 47 % of a 3-D survey's time (2026-12-07:
+  // VolumeModes.TiltedFileIsTheClosedForm 39.6 s before, 21.2 s after, each beside another job).
+  if (first > 0) blas_subtract_product(basis_.leftCols(first), project(U, 0, first), U);
   // Within the block: each column against the block's columns kept so far, twice. These coefficients are B's (the
   // ones on the older basis are T's, or reorthogonalisation).
   Eigen::MatrixXd coef = Eigen::MatrixXd::Zero(U.cols(), U.cols());  // rows: new columns

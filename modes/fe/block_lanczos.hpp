@@ -40,8 +40,8 @@ class BlockLanczos {
   std::vector<BlockGaussNode> rule() const;
 
  private:
-  // Orthonormalises the columns of U against the basis and each other (twice), appends the independent ones and
-  // returns their coefficients (rows: new columns, in order) — the block's B.
+  // Orthonormalises the columns of U, already projected once off the basis, against it (a second time) and each other
+  // (twice), appends the independent ones and returns their coefficients (rows: new columns, in order) — the block's B.
   Eigen::MatrixXd append_block(Eigen::MatrixXd U, double scale);
   // Qᵀ Ω U for the basis's columns [begin, end), summed over the ranks.
   Eigen::MatrixXd project(const Eigen::MatrixXd& U, Eigen::Index begin, Eigen::Index end) const;

@@ -28,17 +28,7 @@ constexpr double kMaxWallSizePerLayer = 4.0;  // a wall element may span at most
 constexpr double kLayersThickness = 10.0;     // anisotropic wall layers cover this many Ek^{1/2}
 constexpr double kNearWallZoneFrom = 1e-5;    // default_near_wall_size: the Ekman numbers where it is given
 
-// The liquid's: a partially filled tank's (its free_radius) is the layer outside its free surface.
-double smallest_dimension(const geometry::ShapeSpec& shape) {
-  const double free = shape.dims.count("free_radius") ? shape.dims.at("free_radius") : 0.0;
-  if (shape.kind == "sphere") return shape.dims.at("radius") - free;
-  if (shape.kind == "spheroid") return std::min(shape.dims.at("a") - free, shape.dims.at("c"));
-  if (shape.kind == "cylinder" || shape.kind == "cone") {
-    const double rod = shape.dims.count("inner_radius") ? shape.dims.at("inner_radius") : 0.0;  // a rod's gap
-    return std::min(shape.dims.at("radius") - std::max(rod, free), shape.dims.at("height"));
-  }
-  return 8 * geometry::default_mesh_size(shape);  // section: the smallest side of its bounding box
-}
+using geometry::smallest_dimension;  // the liquid's (geometry/meridian_mesh.hpp)
 
 struct Solved {
   std::vector<ViscousMode> rows;  // one per target
