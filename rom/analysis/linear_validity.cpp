@@ -31,7 +31,10 @@ LinearValidity validity_scope(const Scene& scene, bool& forced) {
   for (std::size_t k = 0; k < scene.size(); ++k)
     v.amplitude = std::max(v.amplitude, std::abs(scene.tilt[k]) + std::abs(scene.rate[k]) / std::max(1.0, spin));
   forced = std::any_of(scene.bodies.begin(), scene.bodies.end(), [](const BodySpec& b) { return b.moment; });
-  if (v.amplitude == 0 && !forced) v.why_not = "the scene starts at rest in the straight chain";
+  const bool fluid_moves = std::any_of(scene.fluid.begin(), scene.fluid.end(), [](auto z) { return z != 0.0; });
+  if (v.amplitude == 0 && !forced)
+    v.why_not = fluid_moves ? "the bodies start at rest in the straight chain, only the fluid in motion"
+                            : "the scene starts at rest in the straight chain";
   else if (scene.run.t_end * spin / (2 * std::numbers::pi) > kValidityMaxTurns)
     v.why_not = "the run is longer than " + std::to_string(long(kValidityMaxTurns)) + " turns of the fastest body";
   return v;

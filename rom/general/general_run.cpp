@@ -20,7 +20,8 @@ using cd = std::complex<double>;
 }  // namespace
 
 // y(0) from the scene's u_k(0), u̇_k(0): in F, v = e^{iω0t}u gives v(0) = u(0), v̇(0) = u̇(0) + iω0 u(0), and
-// q = (Re v, −Im v); the spins at ω0 and the fluid at rest.
+// q = (Re v, −Im v); the spins at ω0; the fluid's modes at `initial.fluid`, each its z(0) in its body's frame
+// (general_tank.hpp: the flow z V e^{iλt}; F and the bodies' frames coincide at t = 0), at rest without it.
 void require_unforced(const Scene& scene) {
   const std::string why = " drives the chain, which a linear run of the chain without axial symmetry does not take "
                           "yet: run it with [run] model = \"nonlinear\" (its roots, maps and responses do not depend on it)";
@@ -38,9 +39,7 @@ void require_unforced(const Scene& scene) {
 
 Eigen::VectorXd general_initial_state(const GeneralChain& g, const GeneralSystem& sys, const Scene& scene) {
   require_unforced(scene);
-  if (!scene.fluid.empty())
-    throw std::runtime_error(scene.file.string() + ": initial.fluid: the chain without axial symmetry starts with its "
-                             "fluid at rest (its modes are not (26)'s); leave it out");
+  const Eigen::VectorXcd z0 = initial_fluid(scene, g.n_modes());  // one pair per kept mode, body by body
   for (const double change : scene.axial_rate)
     if (change != 0)
       throw SceneError(scene.file.string() + ": initial.axial_rate: a linear run of the chain without axial symmetry "
@@ -54,6 +53,10 @@ Eigen::VectorXd general_initial_state(const GeneralChain& g, const GeneralSystem
     y[2 * k + 1] = -sys.s * u.imag();
     y[nq + 2 * k] = v_dot.real();
     y[nq + 2 * k + 1] = -v_dot.imag();
+  }
+  for (int l = 0; l < g.n_modes(); ++l) {
+    y[nq + g.dim_q() + 2 * l] = z0[l].real();
+    y[nq + g.dim_q() + 2 * l + 1] = z0[l].imag();
   }
   return y;
 }

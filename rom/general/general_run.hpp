@@ -1,7 +1,7 @@
 // Time histories of the chain without axial symmetry (`chain-rom run`; docs/rom.md, "Bodies and tanks without axial
 // symmetry"): general_system.hpp's first-order form propagated exactly, y_{j+1} = exp(B h) y_j over each output step
 // h — or, at two spins (periodic coefficients), by floquet.hpp's Magnus steps, as many a period as its roots settled
-// with —, from the scene's tilts and rates (the fluid at rest), and written in (26)'s terms: u_k = e^{−iω0t}(q_x − i q_y)
+// with —, from the scene's tilts, rates and fluid amplitudes, and written in (26)'s terms: u_k = e^{−iω0t}(q_x − i q_y)
 // in space.
 #pragma once
 
@@ -31,12 +31,12 @@ struct GeneralHistory {
 // moments and forces, a field's transverse parts (the aerodynamic moments and a field's axial part are in its matrices).
 void require_unforced(const Scene& scene);
 
-// y(0) from the scene's u_k(0), u̇_k(0) (the spins at ω0 and the fluid at rest). Throws std::runtime_error for initial
-// fluid amplitudes (the general chain's modes are not (26)'s), SceneError as require_unforced.
+// y(0) from the scene's u_k(0), u̇_k(0), the spins at ω0 and the fluid's modes at `initial.fluid` (each mode's z(0),
+// general_tank.hpp; at rest without it). Throws SceneError for a change of spin, a count of fluid pairs that is not
+// the kept modes', and as require_unforced.
 Eigen::VectorXd general_initial_state(const GeneralChain& g, const GeneralSystem& sys, const Scene& scene);
 
-// Throws std::runtime_error for what the general run does not take (a method other than "exact", initial fluid
-// amplitudes) and when the trajectory leaves double precision. At two spins `steps_per_period` > 0 is the Magnus steps
+// Throws std::runtime_error for what the general run does not take (a method other than "exact") and when the trajectory leaves double precision. At two spins `steps_per_period` > 0 is the Magnus steps
 // a period the roots settled with (general_spectrum's floquet_steps), else they are settled here.
 GeneralHistory propagate_general(const GeneralChain& g, const Scene& scene, int steps_per_period = 0);
 
