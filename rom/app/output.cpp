@@ -3,6 +3,7 @@
 #include "atomic_file.hpp"
 
 #include "companion_check.hpp"
+#include "mesh_study.hpp"
 
 #include <hdf5.h>
 #include <nlohmann/json.hpp>
@@ -520,13 +521,12 @@ namespace {
 // Where a Krylov table's fit alone may put a body root's or a growing root's rate off by more than the 2 % that
 // `confirm` holds a mesh to by default (--mesh-tolerance): the worst such root, for the verdict line (docs/viscous.md,
 // "The error of Im R"); empty otherwise.
-std::string fit_decay_warning(const ChainModel& m, const Spectrum& sp) {
-  constexpr double kTolerance = 0.02;
+std::string fit_decay_warning(const Spectrum& sp) {
   const Root* worst = nullptr;
   int count = 0;
   for (const Root& r : sp.roots) {
     const bool decides = r.owner.rfind("body", 0) == 0 || -r.sigma.imag() > sp.noise;
-    if (!decides || !(r.fit_decay_error > kTolerance) || std::abs(r.sigma) <= sp.tolerance) continue;
+    if (!decides || !(r.fit_decay_error > kDefaultMeshTolerance) || std::abs(r.sigma) <= sp.tolerance) continue;
     ++count;
     if (!worst || r.fit_decay_error > worst->fit_decay_error) worst = &r;
   }
@@ -534,7 +534,8 @@ std::string fit_decay_warning(const ChainModel& m, const Spectrum& sp) {
   std::ostringstream os;
   os << std::setprecision(3) << "; the table's fit alone may put " << worst->owner << "'s rate at "
      << worst->sigma.real() << " rad/s " << 100 * worst->fit_decay_error << " % off"
-     << (count > 1 ? " (and " + std::to_string(count - 1) + (count == 2 ? " more root" : " more roots") + " over 2 %)"
+     << (count > 1 ? " (and " + std::to_string(count - 1) + (count == 2 ? " more root" : " more roots") + " over " +
+                         std::to_string(static_cast<int>(100 * kDefaultMeshTolerance)) + " %)"
                    : "")
      << ": chain-rom confirm removes it";
   return os.str();
@@ -558,7 +559,7 @@ void print_verdict(std::ostream& os, const ChainModel& m, const Spectrum& sp) {
   if (m.viscous)
     verdict.insert(std::min(verdict.find('\n'), verdict.size()),
                    "; mesh error NOT MEASURED (the tables' mesh only: chain-rom confirm measures it)" +
-                       fit_decay_warning(m, sp));
+                       fit_decay_warning(sp));
   os << verdict << "\n";
 }
 

@@ -18,11 +18,14 @@
 
 namespace rc::rom {
 
+// A growth rate's relative mesh error above which `confirm` says "not converged" unless --mesh-tolerance says otherwise.
+inline constexpr double kDefaultMeshTolerance = 0.02;
+
 struct MeshStudy {
   ServedMesh base;          // level 0: the table's mesh, or the one --mesh-size/--order give
   int refine = 1;           // finer levels after level 0; 0: no study
   bool by_order = false;    // each level raises the Taylor-Hood order by one instead of halving every size
-  double tolerance = 0.02;  // relative error of a growth rate above which it is "not converged"
+  double tolerance = kDefaultMeshTolerance;  // relative error of a growth rate above which it is "not converged"
   // Per body, the Ekman number whose wall layers every level's mesh is made for (a sweep over spin: its smallest,
   // so that each level is one mesh for the whole sweep); empty or 0: the served Ek's own, as the tables'.
   std::vector<double> mesh_ekman;
