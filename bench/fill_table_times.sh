@@ -22,7 +22,6 @@ spheroid --a 1 --c 0.666667
 cone --radius 1 --height 1.5
 cylinder --radius 1 --height 2
 cylinder --radius 1 --height 2 --inner-radius 0.3"}
-source "$ROOT/scripts/blas-core.sh"
 mkdir -p "$OUT"
 OUT=$(cd "$OUT" && pwd)
 csv=$OUT/fill_table_times_$(date +%F).csv

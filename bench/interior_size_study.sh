@@ -14,25 +14,16 @@ EK=${3:?Ekman number}
 SIZES=${4:?sizes}
 BUILD=${5:-$ROOT/build}
 OUT=${6:-$ROOT/bench/results}
-source "$ROOT/scripts/blas-core.sh"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-mkdir -p "$OUT"
-cd "$work"
-read -r -a shape <<< "$SHAPE"
-fill_args=()
-[ "$FILL" = 1 ] || fill_args=(--fill "$FILL")
 # shellcheck source=spacecraft_tank.sh
 source "$ROOT/bench/spacecraft_tank.sh"
-spacecraft_tank_scene "$EK" tank.h5 > scene.toml
+spacecraft_tank_workdir "$EK"
 csv=$OUT/interior_size_study.csv
 [ -f "$csv" ] || echo "date,shape,fill,ekman,interior_h,unknowns,table_s,nutation_decay" > "$csv"
 for size in $SIZES; do
   size_args=()
   [ "$size" = default ] || size_args=(--mesh-size "$size")
   start=$(date +%s.%N)
-  "$BUILD/modes/cavity-modes" response "${shape[@]}" "${fill_args[@]}" --ekman "$EK" --sigma -2.5:2:181 \
-    "${size_args[@]}" -o tank.h5 > table.txt 2>&1
+  spacecraft_tank_table "$BUILD/modes/cavity-modes" "$SHAPE" "$FILL" "$EK" tank.h5 "${size_args[@]}" > table.txt 2>&1
   seconds=$(python3 -c "print(round($(date +%s.%N) - $start, 1))")
   h=$("$BUILD/modes/cavity-modes" info tank.h5 | sed -n '1s/.*h = \([0-9.e-]*\),.*/\1/p')
   unknowns=$(grep -o '[0-9]* real unknowns' table.txt | head -1 | cut -d' ' -f1)

@@ -20,21 +20,12 @@ BUILD=${4:-$ROOT/build}
 OUT=${5:-$ROOT/bench/results}
 MODES=$BUILD/modes/cavity-modes
 ROM=$BUILD/rom/chain-rom
-# shellcheck source=../scripts/blas-core.sh
-source "$ROOT/scripts/blas-core.sh"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-mkdir -p "$OUT"
-cd "$work"
 # shellcheck source=spacecraft_tank.sh
 source "$ROOT/bench/spacecraft_tank.sh"
-fill_args=()
-[ "$FILL" = 1 ] || fill_args=(--fill "$FILL")
-read -r -a shape <<< "$SHAPE"
-spacecraft_tank_scene "$EK" tank.h5 > scene.toml
+spacecraft_tank_workdir "$EK"
 sed 's/^viscosity = \(.*\)/viscosity = \1\nprune = false/' scene.toml > all_rows.toml
 t=$(now)
-"$MODES" response "${shape[@]}" "${fill_args[@]}" --ekman "$EK" --sigma -2.5:2:181 -o tank.h5 > table.txt 2>&1
+spacecraft_tank_table "$MODES" "$SHAPE" "$FILL" "$EK" tank.h5 > table.txt 2>&1
 table_s=$(since "$t")
 points=$("$MODES" info tank.h5 | sed -n 's/.*Krylov space: \([0-9]*\) expansion points.*/\1/p' | head -1)
 rows=$(/usr/bin/python3 -c "import h5py; print(len(h5py.File('tank.h5', 'r')['modes/lambda']))")

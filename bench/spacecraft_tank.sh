@@ -17,3 +17,25 @@ spacecraft_tank_scene() {
   sed -e "s#\"../../out/tables/sphere_fill0.6_hydrazine.h5\"#\"$2\"#" -e "s#^viscosity = .*#viscosity = $nu#" \
     "$root/data/scenes/spacecraft_nutation.toml"
 }
+# The tank's default response table, the recipe of docs/trust.md's rows: SHAPE_ARGS as one string (e.g. "sphere
+# --radius 1"), FILL (1: full), EKMAN, the table file, then any further options of `cavity-modes response`.
+#   spacecraft_tank_table MODES SHAPE_ARGS FILL EKMAN TABLE.h5 [OPTIONS...] > table.txt 2>&1
+spacecraft_tank_table() {
+  local modes=$1 shape_line=$2 fill=$3 ek=$4 table=$5
+  shift 5
+  local shape fill_args=()
+  read -r -a shape <<< "$shape_line"
+  [ "$fill" = 1 ] || fill_args=(--fill "$fill")
+  "$modes" response "${shape[@]}" "${fill_args[@]}" --ekman "$ek" --sigma -2.5:2:181 "$@" -o "$table"
+}
+# The run's folders: OUT (the results, read from the caller) made and made absolute, and a work folder, removed at
+# exit, entered, holding the scene for EKMAN with tank.h5 as its table.
+#   spacecraft_tank_workdir EKMAN
+spacecraft_tank_workdir() {
+  mkdir -p "$OUT"
+  OUT=$(cd "$OUT" && pwd)
+  work=$(mktemp -d)
+  trap 'rm -rf "$work"' EXIT
+  cd "$work"
+  spacecraft_tank_scene "$1" tank.h5 > scene.toml
+}

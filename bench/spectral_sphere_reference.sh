@@ -16,8 +16,6 @@ EKS=("$@")
 [ ${#EKS[@]} -gt 0 ] || EKS=(1e-4 1e-5 1e-6)
 MODES=$BUILD/modes/cavity-modes
 ROM=$BUILD/rom/chain-rom
-# shellcheck source=../scripts/blas-core.sh
-source "$ROOT/scripts/blas-core.sh"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 mkdir -p "$OUT"

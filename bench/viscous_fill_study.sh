@@ -19,18 +19,11 @@ BUILD=${4:-$ROOT/build}
 OUT=${5:-$ROOT/bench/results}
 MODES=$BUILD/modes/cavity-modes
 ROM=$BUILD/rom/chain-rom
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-mkdir -p "$OUT"
-cd "$work"
 # shellcheck source=spacecraft_tank.sh
 source "$ROOT/bench/spacecraft_tank.sh"
-fill_args=()
-[ "$FILL" = 1 ] || fill_args=(--fill "$FILL")
-read -r -a shape <<< "$SHAPE"
-spacecraft_tank_scene "$EK" tank.h5 > scene.toml
+spacecraft_tank_workdir "$EK"
 t=$(now)
-"$MODES" response "${shape[@]}" "${fill_args[@]}" --ekman "$EK" --sigma -2.5:2:181 -o tank.h5 > table.txt 2>&1
+spacecraft_tank_table "$MODES" "$SHAPE" "$FILL" "$EK" tank.h5 > table.txt 2>&1
 table_s=$(since "$t")
 h=$("$MODES" info tank.h5 | sed -n '1s/.*h = \([0-9.e-]*\),.*/\1/p')
 # The body's root (the nutation), not the verdict's slowest: a fluid root can decay more slowly than it.
