@@ -40,6 +40,11 @@ void print_general_spectrum(std::ostream& os, const GeneralChain& g, const Gener
   os << "roots sigma (e^{i sigma t}) in the frame turning with the bodies: the motion in space has sigma -+ spin "
         "too (docs/rom.md, \"Bodies and tanks without axial symmetry\")\n";
   if (g.periodic()) print_floquet(os, g, sp);
+  if (g.recoil)
+    os << "free chain: the base recoils with its partially filled tanks' liquid (its translation eliminated through the "
+          "momentum, check " << sp.recoil_residual << "); the liquid's axial recoil is not modelled, so the roots of "
+          "order 0 about the spin axis (the spins' rates, the liquid's axial sloshing) are those of a base held "
+          "axially; the tilts' are exact (docs/volume.md section 8, \"The free chain\")\n";
   for (const auto& [k, share] : g.coverage)
     if (share < 1 - 1e-9) os << "body " << k + 1 << ": a tank's kept modes cover " << share << " of its sum rule\n";
   for (const auto& [k, rows] : g.pruned_rows)
@@ -104,6 +109,7 @@ std::string general_spectrum_json(const GeneralChain& g, const GeneralSpectrum& 
     j["outside"] = nlohmann::ordered_json::array();
     for (const auto& r : sp.roots) j["outside"].push_back(std::abs(r.real()) > g.response_window);
   }
+  if (g.recoil) j["recoil_residual"] = sp.recoil_residual;
   if (g.periodic())
     j["floquet"] = {{"period", g.period}, {"steps_per_period", sp.floquet_steps}, {"settled", sp.floquet_error},
                     {"unresolved", sp.floquet_unresolved}};

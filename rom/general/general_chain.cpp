@@ -1,5 +1,6 @@
 #include "general_chain.hpp"
 
+#include "free_recoil.hpp"
 #include "general_system.hpp"
 #include "general_tank.hpp"
 
@@ -143,11 +144,14 @@ Eigen::Matrix2d real_block(double a, double b) {
   return m;
 }
 
+}  // namespace
+
 // (26) carried into the turning frame (u = e^{−iω0t} v): M v̈ + (i(G − 2ω0 M) + D) v̇ + (K − ω0² M + ω0 G − iω0 D) v,
 // K with its aerodynamic and field terms and the Magnus moments' −i·circulatory (complex_stiffness),
 // each complex coefficient as its real block; then each body's anisotropy and, with axial rates, the spins' block
 // (axial_rotation.hpp: C_k ψ̈_k + axial friction).
-void set_matrices(const ChainModel& cm, const std::vector<Eigen::Matrix3d>& inertia, GeneralChain& g) {
+void set_turning_frame_matrices(const ChainModel& cm, const ChainModel& axial, const std::vector<Eigen::Matrix3d>& inertia,
+                                GeneralChain& g) {
   const int n = g.n, d = g.dim_q();
   const double w = g.spin;
   g.M.setZero(d, d);
@@ -162,7 +166,7 @@ void set_matrices(const ChainModel& cm, const std::vector<Eigen::Matrix3d>& iner
       const double circulatory = (k == i && cm.circulatory.size() > k) ? cm.circulatory[k] : 0.0;
       g.K.block<2, 2>(2 * k, 2 * i) = real_block(cm.K(k, i) - w * w * M + w * G, -w * D - circulatory);
     }
-  for (int k = 0; k < n; ++k) {
+  for (int k = 0; k < static_cast<int>(inertia.size()); ++k) {
     const Eigen::Matrix2d I_tt = inertia[k].topLeftCorner<2, 2>();
     const Eigen::Matrix2d Delta = I_tt - 0.5 * I_tt.trace() * Eigen::Matrix2d::Identity();
     g.anisotropy.push_back(Delta);
@@ -170,11 +174,10 @@ void set_matrices(const ChainModel& cm, const std::vector<Eigen::Matrix3d>& iner
     g.K.block<2, 2>(2 * k, 2 * k) -= w * w * Delta;
   }
   if (!g.axial) return;
-  for (int k = 0; k < n; ++k) g.M(2 * n + k, 2 * n + k) = cm.bodies[k].C;
-  g.C.bottomRightCorner(n, n) = cm.axial.D;
+  const int spinning = g.spinning();
+  for (int k = 0; k < spinning; ++k) g.M(2 * n + k, 2 * n + k) = axial.bodies[k].C;
+  g.C.bottomRightCorner(spinning, spinning) = axial.axial.D;
 }
-
-}  // namespace
 
 std::vector<GeneralBody> general_bodies(const Scene& scene, TableCache& tables) {
   std::vector<GeneralBody> out;
@@ -255,8 +258,16 @@ GeneralChain build_general_chain(const Scene& scene, TableCache* tables, std::op
   for (int k = 0; k < g.n; ++k) g.axial_inertia[k] = cm.bodies[k].C;
   std::vector<Eigen::Matrix3d> inertia;
   for (const GeneralBody& b : bodies) inertia.push_back(b.inertia);
-  set_matrices(cm, inertia, g);
-  check_effective_inertia(scene, g);
+  set_turning_frame_matrices(cm, cm, inertia, g);
+  if (std::any_of(bodies.begin(), bodies.end(), [](const GeneralBody& b) {
+        return std::any_of(b.tanks.begin(), b.tanks.end(), [](const GeneralTank& t) { return t.recoil; });
+      })) {
+    if (g.periodic())
+      fail(scene, "body", "a free chain with a partially filled tank off its axis at two spins is not modelled yet (its "
+                          "base's recoil at periodic coefficients); give its bodies one spin");
+    g.recoil = std::make_shared<const GeneralChain>(extend_with_recoil(scene, g, cm, bodies));
+  }
+  check_effective_inertia(scene, g.recoil ? *g.recoil : g);
   return g;
 }
 

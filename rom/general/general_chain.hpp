@@ -16,6 +16,7 @@
 
 #include "eigen_dense.hpp"
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -40,7 +41,17 @@ struct GeneralChain {
   std::vector<std::string> not_converged;        // per partially filled 3-D tank with unsettled rows: what to say
   bool dissipative = false;                  // joint or axial friction, a viscous tank: roots leave the real axis
   double response_window = 0;                // the narrowest response table's window (rad/s, |Re σ|); 0: none
-  int dim_q() const { return (axial ? 3 : 2) * n; }
+  // A free chain with partially filled 3-D tanks (free_recoil.hpp): the same chain extended by its base's translation X,
+  // from which build_general_system reduces this one's first-order form.
+  std::shared_ptr<const GeneralChain> recoil;
+  // In that extended chain: body n − 1 is the base X (q = X, tilt-like maps, no spin, no axial rate), and the base's
+  // rows of the λ = 0 weight against each body's velocities (3 × 3(n − 1)) and of the kinetic form against every
+  // velocity (3 × 3n: the bodies' first moments, the total mass, the tanks' surface parts), whose product with the
+  // velocities is its transverse momentum (turned by J).
+  bool base = false;
+  Eigen::MatrixXd base_geostrophic, base_form;
+  int spinning() const { return base ? n - 1 : n; }  // the bodies with an axial rate (with `axial`)
+  int dim_q() const { return 2 * n + (axial ? spinning() : 0); }
   bool periodic() const { return period > 0; }  // Floquet: floquet.hpp
   int n_modes() const { return static_cast<int>(modes.size()); }
 };
@@ -71,5 +82,10 @@ bool needs_general_chain(const Scene& scene, TableCache& tables);
 // effective inertia with the modes' share taken out is not positive definite.
 GeneralChain build_general_chain(const Scene& scene, TableCache* tables = nullptr,
                                  std::optional<double> frame = std::nullopt);
+
+// (26) carried into the turning frame (u = e^{−iω0t} v) for `cm`'s coordinates, each body's anisotropy from `inertia`
+// (one per spinning body) and, with axial rates, the spins' block from `axial`'s bodies: g's M, C, K and anisotropy.
+void set_turning_frame_matrices(const ChainModel& cm, const ChainModel& axial, const std::vector<Eigen::Matrix3d>& inertia,
+                                GeneralChain& g);
 
 }  // namespace rc::rom

@@ -66,7 +66,7 @@ namespace {
 // One body, no gravity, field, aerodynamic moment or friction: the angular momentum in space is an integral
 // (general_run.hpp).
 bool has_momentum_integral(const GeneralChain& g, const Scene& scene) {
-  return g.n == 1 && (scene.free_chain || scene.gravity == 0) && !scene.field && !scene.bodies[0].aero &&
+  return g.n == 1 && !g.recoil && (scene.free_chain || scene.gravity == 0) && !scene.field && !scene.bodies[0].aero &&
          !g.dissipative && scene.support_friction == 0;
 }
 

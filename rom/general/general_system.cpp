@@ -2,6 +2,7 @@
 
 #include "balancing.hpp"
 #include "floquet.hpp"
+#include "free_recoil.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -22,11 +23,16 @@ FluidMaps fluid_maps(const GeneralChain& g) {
   Eigen::Matrix2d J;
   J << 0, -1, 1, 0;
   for (int k = 0; k < n; ++k) {
-    f.P.block<2, 2>(3 * k, 2 * k) = J;
-    if (g.axial) f.P(3 * k + 2, 2 * n + k) = 1;
+    f.P.block<2, 2>(3 * k, 2 * k) = J;  // the base X (g.base) too: its τ = J Ẋ − ω0 X, as a tilt's δω_t
+    if (g.axial && k < g.spinning()) f.P(3 * k + 2, 2 * n + k) = 1;
     f.R.block<2, 2>(3 * k, 2 * k) = -w * Eigen::Matrix2d::Identity();
     f.S.block<2, 2>(2 * k, 3 * k) = w * Eigen::Matrix2d::Identity();
     f.G.block<3, 3>(3 * k, 3 * k) = g.geostrophic[k];
+  }
+  if (g.base) {  // the base's λ = 0 weight against the bodies' velocities (free_recoil.hpp)
+    const int b = 3 * (n - 1);
+    f.G.block(b, 0, 3, b) = g.base_geostrophic;
+    f.G.block(0, b, b, 3) = g.base_geostrophic.transpose();
   }
   f.N = f.G;
   f.W.setZero(3 * n, 2 * m);
@@ -34,13 +40,25 @@ FluidMaps fluid_maps(const GeneralChain& g) {
   f.Lambda.setZero(2 * m, 2 * m);
   for (int l = 0; l < m; ++l) {
     const GeneralMode& md = g.modes[l];
-    const Eigen::Vector3d re = md.c.real(), im = md.c.imag(), re_l = md.c_left.real(), im_l = md.c_left.imag();
-    // W Ĉ = 2 Re(c c_leftᵀ): the mode's share of the fluid that does not follow the body (ideal: 2 Re(c cᴴ)).
-    f.N.block<3, 3>(3 * md.body, 3 * md.body) += 2 * (re * re_l.transpose() - im * im_l.transpose());
-    f.W.block<3, 1>(3 * md.body, 2 * l) = 2 * re;
-    f.W.block<3, 1>(3 * md.body, 2 * l + 1) = -2 * im;
-    f.Chat.block<1, 3>(2 * l, 3 * md.body) = re_l.transpose();
-    f.Chat.block<1, 3>(2 * l + 1, 3 * md.body) = im_l.transpose();
+    // The mode's coupling over its body's velocities and, in the extended free chain, the base's τ (rows 3(n − 1)…).
+    const bool on_base = g.base && (md.c_base.squaredNorm() > 0 || md.c_left_base.squaredNorm() > 0);
+    const int rows = on_base ? 5 : 3;
+    Eigen::VectorXcd c(rows), c_left(rows);
+    c.head<3>() = md.c;
+    c_left.head<3>() = md.c_left;
+    if (on_base) {
+      c.tail<2>() = md.c_base;
+      c_left.tail<2>() = md.c_left_base;
+    }
+    const auto at = [&](int i) { return i < 3 ? 3 * md.body + i : 3 * (n - 1) + i - 3; };
+    for (int i = 0; i < rows; ++i) {
+      // W Ĉ = 2 Re(c c_leftᵀ): the mode's share of the fluid that does not follow the body (ideal: 2 Re(c cᴴ)).
+      for (int j = 0; j < rows; ++j) f.N(at(i), at(j)) += 2 * (c[i] * c_left[j]).real();
+      f.W(at(i), 2 * l) = 2 * c[i].real();
+      f.W(at(i), 2 * l + 1) = -2 * c[i].imag();
+      f.Chat(2 * l, at(i)) = c_left[i].real();
+      f.Chat(2 * l + 1, at(i)) = c_left[i].imag();
+    }
     // iλ z with λ = λ_r + i·decay: (Re, Im) ↦ (−λ_r Im − decay Re, λ_r Re − decay Im).
     f.Lambda(2 * l, 2 * l) = f.Lambda(2 * l + 1, 2 * l + 1) = -md.lambda.imag();
     f.Lambda(2 * l, 2 * l + 1) = -md.lambda.real();
@@ -71,6 +89,7 @@ void check_effective_inertia(const Scene& scene, const GeneralChain& g) {
 }
 
 GeneralSystem build_general_system(const GeneralChain& g, double s) {
+  if (g.recoil) return reduce_on_recoil(g, *g.recoil, build_general_system(*g.recoil, s));
   if (g.periodic())
     throw std::runtime_error("the chain's coefficients are periodic (a body without axial symmetry or with tanks turns "
                              "against another): spectrum, sweep, run, bench and response take it, confirm takes "
@@ -112,12 +131,13 @@ GeneralSystem build_general_system(const GeneralChain& g, double s) {
 GeneralSpectrum general_spectrum(const GeneralChain& g) {
   if (g.periodic()) return floquet_spectrum(g);
   GeneralSystem sys = build_general_system(g);
+  GeneralSpectrum sp;
+  sp.recoil_residual = sys.recoil_residual;
   balance_in_place(sys.B);
   const Eigen::EigenSolver<Eigen::MatrixXd> es(sys.B, false);
   if (es.info() != Eigen::Success)
     throw std::runtime_error("the general chain's eigen-solver did not converge (" + std::to_string(sys.dim()) +
                              " states)");
-  GeneralSpectrum sp;
   Eigen::VectorXcd sigma(es.eigenvalues().size());
   for (Eigen::Index i = 0; i < sigma.size(); ++i) {
     const std::complex<double> mu = es.eigenvalues()[i];

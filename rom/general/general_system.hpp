@@ -27,6 +27,7 @@ struct GeneralSystem {
   Eigen::MatrixXd B;   // y' = B y
   Eigen::MatrixXd input;  // dim × dim_q: y' = B y + input F for a generalised force F on Q (a moment's rows)
   double s = 1;        // q is carried as s q
+  double recoil_residual = -1;  // a free chain with partial fills: free_recoil.hpp's check of its reduction; else −1
   int dim() const { return static_cast<int>(B.rows()); }
 };
 
@@ -58,6 +59,7 @@ struct GeneralSpectrum {
   int floquet_steps = 0;                    // a periodic chain (floquet.hpp): Magnus steps per period, else 0
   double floquet_error = 0;                 // and how far its roots moved from half as many (rad/s)
   int floquet_unresolved = 0;               // roots decaying beyond the monodromy's precision (floquet.hpp)
+  double recoil_residual = -1;              // a free chain with partial fills: its reduction's check (free_recoil.hpp)
 };
 
 // The roots of the chain, by Floquet's theory when its coefficients are periodic (floquet.hpp). Throws

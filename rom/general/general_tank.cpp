@@ -38,6 +38,21 @@ Eigen::Matrix3cd fill_tensor_about_joint(const Directions5& H, double c) {
   return B.cast<std::complex<double>>() * H * B.transpose().cast<std::complex<double>>();
 }
 
+// In a free chain the joint O translates too, with velocity V in F: the T̂ directions' amplitude gains τ = J V
+// (docs/volume.md §8, "The free chain"). The five velocities (δω, τ) about the joint, τ in m/s: the table's T̂ amplitude
+// is τ/L (its lengths in units of L).
+Eigen::Matrix<double, 5, 5> fill_with_base(double c, double L) {
+  Eigen::Matrix<double, 5, 5> B = Eigen::Matrix<double, 5, 5>::Zero();
+  B.topRows<3>() = fill_about_joint(c);
+  B(3, 3) = B(4, 4) = 1 / L;
+  return B;
+}
+
+Directions5 fill_form_with_base(const Directions5& H, double c, double L) {
+  const Eigen::Matrix<double, 5, 5> B = fill_with_base(c, L);
+  return B.cast<std::complex<double>>() * H * B.transpose().cast<std::complex<double>>();
+}
+
 // A row's coupling tensor H about the body's joint: the 3-D table's, or an axisymmetric m = 1 row's
 // E/2 (1, i, 0)(1, −i, 0)ᵀ — with a viscous row's complex E + i·E_imag (the rank-one product of its right and left
 // couplings, docs/volume.md §7), and a partially filled tank's E = 2(a + c t)²/N² about the joint (row_coupling.hpp);
@@ -64,9 +79,10 @@ const char* const kTanksTaken =
     "; it takes, on or off a body's axis, a full tank's ideal or damped-mode table (axisymmetric or 3-D: cavity-modes "
     "SHAPE|ellipsoid|volume [--ekman Ek] -o T.h5) or a response table (cavity-modes ellipsoid|volume --ekman Ek "
     "--sigma A:B:N -o T.h5, or axisymmetric: cavity-modes response SHAPE --ekman Ek --sigma A:B:N -o T.h5), and on "
-    "a fixed chain's first body a partially filled tank, ideal on its axis (axisymmetric or 3-D) or off it (3-D: "
-    "cavity-modes ellipsoid --fill F --axis-distance D -o T.h5), or viscous, 3-D, as its response table (cavity-modes "
-    "ellipsoid --fill F --axis-distance D --ekman Ek --sigma 0:TO:N -o T.h5) (docs/rom.md, \"Bodies and tanks without "
+    "the chain's first body a partially filled tank, ideal on its axis (3-D, or axisymmetric on a fixed chain) or off "
+    "it (3-D: cavity-modes ellipsoid --fill F --axis-distance D -o T.h5), or viscous, 3-D, as its response table "
+    "(cavity-modes ellipsoid --fill F --axis-distance D --ekman Ek --sigma 0:TO:N -o T.h5); in a free chain the 3-D "
+    "fills sit in a layout that a turn about the spin axis maps onto itself (docs/rom.md, \"Bodies and tanks without "
     "axial symmetry\"; docs/volume.md section 8)";
 
 void require_modal(const Scene& scene, const std::string& w, const CavitySpec& cav, const rc::ModeTable& t, double spin) {
@@ -102,9 +118,13 @@ void require_fixed_joint(const Scene& scene, int k, const CavitySpec& cav, const
     fail(scene, w + ".offset", "an axisymmetric table of a partially filled tank holds it on the spin axis; off the "
                                "axis its free surface faces the spin axis sideways: make its 3-D table with cavity-modes "
                                "ellipsoid --fill F --axis-distance D -o T.h5 (docs/volume.md §8)" + later);
-  if (k > 0 || scene.free_chain)
-    fail(scene, w + ".table", "a partially filled tank in the chain without axial symmetry sits on the first body of a "
-                              "fixed chain so far (a moving joint couples its modes to the earlier bodies)" + later);
+  if (k > 0)
+    fail(scene, w + ".table", "a partially filled tank in the chain without axial symmetry sits on the chain's first "
+                              "body so far (a moving joint couples its modes to the earlier bodies)" + later);
+  if (!three_d && scene.free_chain)
+    fail(scene, w + ".table", "an axisymmetric table of a partially filled tank is taken by the chain with axial "
+                              "symmetry in a free chain (one tank on the axis, docs/free-chain.md), not by the chain "
+                              "without it; a 3-D table (cavity-modes ellipsoid --fill F -o T.h5) is" + later);
 }
 
 // A field that moves the free surface sideways (its transverse parts, or a gradient) is not modelled, as in (26)
@@ -175,17 +195,28 @@ std::vector<int> kept_rows(const Scene& scene, const std::string& w, const Cavit
   return idx;
 }
 
+// A mode from its coupling over the body's rotation (3) and, for a free chain's partial fill, the base's τ (2 more).
+GeneralMode row_mode(int k, int row, std::complex<double> lambda, double lambda_table, double decay_table,
+                     const Eigen::VectorXcd& c, const Eigen::VectorXcd& c_left) {
+  GeneralMode m{k, row, lambda, lambda_table, decay_table, c.head<3>(), c_left.head<3>()};
+  if (c.size() == 5) {
+    m.c_base = c.tail<2>();
+    m.c_left_base = c_left.tail<2>();
+  }
+  return m;
+}
+
 // A row's H = Σ_j μ_j u_j u_jᴴ as rank-one couplings c_j = √μ_j u_j, c_left = c̄ (one per discrete copy the row's
-// cluster sums).
-void add_ideal_row_modes(int k, int row, const Eigen::Matrix3cd& H, double spin, double lambda_table, double unit,
+// cluster sums). H is over the body's rotation, or also over the base's τ (5 × 5: a free chain's partial fill).
+void add_ideal_row_modes(int k, int row, const Eigen::MatrixXcd& H, double spin, double lambda_table, double unit,
                          GeneralTank& tank) {
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3cd> es(H);
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXcd> es(H);
   const double top = es.eigenvalues().maxCoeff();
-  for (int j = 0; j < 3; ++j) {
+  for (Eigen::Index j = 0; j < H.rows(); ++j) {
     const double mu = es.eigenvalues()[j];
     if (!(mu > 1e-12 * top)) continue;
-    const Eigen::Vector3cd c = std::sqrt(mu * unit) * es.eigenvectors().col(j);
-    tank.modes.push_back({k, row, spin * lambda_table, lambda_table, 0.0, c, c.conjugate()});
+    const Eigen::VectorXcd c = std::sqrt(mu * unit) * es.eigenvectors().col(j);
+    tank.modes.push_back(row_mode(k, row, spin * lambda_table, lambda_table, 0.0, c, c.conjugate()));
   }
 }
 
@@ -193,19 +224,19 @@ void add_ideal_row_modes(int k, int row, const Eigen::Matrix3cd& H, double spin,
 // c = √s u, c_left = √s v̄ (any split of the scale between them gives the same chain). Spin −ω (an axisymmetric
 // tank only: require_modal) mirrors the flow (x → −x: H → M H M, M = diag(−1, 1, 1)) and writes it as its conjugate,
 // λ → −λ̄, H → conj(M H M) = Hᴴ for an axisymmetric row (E_c → Ē_c, as (26)'s; docs/rom.md, "Viscous tanks").
-void add_damped_row_mode(const Scene& scene, const std::string& w, int k, int row, Eigen::Matrix3cd H, double spin,
+void add_damped_row_mode(const Scene& scene, const std::string& w, int k, int row, Eigen::MatrixXcd H, double spin,
                          double lambda_table, double decay_table, double unit, GeneralTank& tank) {
   if (spin < 0) H = H.adjoint().eval();
-  const Eigen::JacobiSVD<Eigen::Matrix3cd> svd(H, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  const Eigen::Vector3d s = svd.singularValues();
+  const Eigen::JacobiSVD<Eigen::MatrixXcd> svd(H, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  const Eigen::VectorXd s = svd.singularValues();
   if (!(s[1] <= 1e-6 * s[0]))
     fail(scene, w + ".table", "row " + std::to_string(row + 1) + "'s coupling tensor is not of rank one (singular "
                               "values " + std::to_string(s[0]) + ", " + std::to_string(s[1]) + "): a viscous row is "
                               "one damped mode");
-  const Eigen::Vector3cd c = std::sqrt(s[0] * unit) * svd.matrixU().col(0);
-  const Eigen::Vector3cd c_left = std::sqrt(s[0] * unit) * svd.matrixV().col(0).conjugate();
+  const Eigen::VectorXcd c = std::sqrt(s[0] * unit) * svd.matrixU().col(0);
+  const Eigen::VectorXcd c_left = std::sqrt(s[0] * unit) * svd.matrixV().col(0).conjugate();
   const std::complex<double> lambda(spin * lambda_table, std::abs(spin) * decay_table);
-  tank.modes.push_back({k, row, lambda, lambda_table, decay_table, c, c_left});
+  tank.modes.push_back(row_mode(k, row, lambda, lambda_table, decay_table, c, c_left));
 }
 
 // A response table's window in the turning frame (|Re σ|, rad/s) within which it is the fluid's R: a 3-D table's
@@ -252,11 +283,24 @@ double add_band_modes(const Scene& scene, const std::string& w, int k, const rc:
 
 // A 3-D partial fill about its joint (docs/volume.md §8): the surface re-centres on the tilted spin axis, K(O) = B S Bᵀ
 // more inertia (S the directions' surface Gram matrix), and the λ = 0 weight is B G Bᵀ.
-void add_fill_about_joint(const rc::ModeTable& t, double c, double unit, GeneralTank& tank) {
+// In a free chain both forms are kept over the base's τ as well (fill_with_base).
+void add_fill_about_joint(const rc::ModeTable& t, double c, double L, double unit, GeneralTank& tank) {
   const auto& vf = t.volume_free_surface;
   tank.inertia += unit * fill_tensor_about_joint(fill_block(vf.surface_gram, {}, 0), c).real();
   const Eigen::Matrix3d G = fill_tensor_about_joint(fill_block(vf.geostrophic_re, vf.geostrophic_im, 0), c).real();
   tank.geostrophic = unit * 0.5 * (G + G.transpose());
+  if (!tank.recoil) return;
+  tank.surface_form = unit * fill_form_with_base(fill_block(vf.surface_gram, {}, 0), c, L).real();
+  const Eigen::Matrix<double, 5, 5> G5 = fill_form_with_base(fill_block(vf.geostrophic_re, vf.geostrophic_im, 0), c, L).real();
+  tank.geostrophic_form = unit * 0.5 * (G5 + G5.transpose());
+}
+
+// A row's coupling tensor as the chain takes it: about the joint (3 × 3), or with the base's τ (5 × 5) in a free chain.
+Eigen::MatrixXcd row_tensor(const rc::ModeTable& t, std::size_t l, const RowCoupling& about, const GeneralTank& tank,
+                            double L) {
+  if (!tank.recoil) return row_coupling(t, l, about);
+  const auto& vf = t.volume_free_surface;
+  return fill_form_with_base(fill_block(vf.coupling_re, vf.coupling_im, l), about.c, L);
 }
 
 // A 3-D partial fill's table holds its spin axis (the surface is a cylinder about it): the body's axis must be that
@@ -301,6 +345,7 @@ GeneralTank general_tank(const Scene& scene, int k, const CavitySpec& cav, const
   GeneralTank tank;
   tank.three_d = t.volume_cavity.present();
   tank.mass = cav.density * L * L * L * t.volume;
+  tank.scale = L;
   const Eigen::Vector3d offset = cav.offset ? Eigen::Vector3d((*cav.offset)[0], (*cav.offset)[1], 0) : Eigen::Vector3d::Zero();
   const Eigen::Vector3d centroid = tank.three_d ? Eigen::Vector3d(t.volume_cavity.centroid.data()) :
                                                   Eigen::Vector3d(0, 0, t.centroid_z);
@@ -327,7 +372,8 @@ GeneralTank general_tank(const Scene& scene, int k, const CavitySpec& cav, const
     tank.inertia(1, 1) += K;
   }
   tank.geostrophic = unit * geostrophic;
-  if (t.volume_free_surface.present()) add_fill_about_joint(t, about.c, unit, tank);
+  tank.recoil = t.volume_free_surface.present() && scene.free_chain;
+  if (t.volume_free_surface.present()) add_fill_about_joint(t, about.c, L, unit, tank);
   tank.window = response_window(t, spin);
   if (cav.bands) {
     tank.coverage = add_band_modes(scene, w, k, t, unit, tank);
@@ -339,10 +385,11 @@ GeneralTank general_tank(const Scene& scene, int k, const CavitySpec& cav, const
         ++tank.unsettled_rows;
         tank.worst_bound = std::max(tank.worst_bound, bound);
       }
+      const Eigen::MatrixXcd H = row_tensor(t, l, about, tank, L);
       if (t.viscous())
-        add_damped_row_mode(scene, w, k, l, row_coupling(t, l, about), spin, t.lambda[l], t.decay[l], unit, tank);
+        add_damped_row_mode(scene, w, k, l, H, spin, t.lambda[l], t.decay[l], unit, tank);
       else
-        add_ideal_row_modes(k, l, row_coupling(t, l, about), spin, t.lambda[l], unit, tank);
+        add_ideal_row_modes(k, l, H, spin, t.lambda[l], unit, tank);
     }
     tank.coverage = covered;
   }

@@ -30,12 +30,17 @@ struct GeneralMode {
   double decay_table = 0;       // the table's decay (viscous tables; 0 for the ideal fluid)
   Eigen::Vector3cd c;           // kg^{1/2} m
   Eigen::Vector3cd c_left;      // kg^{1/2} m
+  // A partially filled 3-D tank's mode in a free chain: its coupling to the base's translation, through the T̂
+  // directions' amplitude τ = J V (V the joint's velocity in F; docs/volume.md §8, "The free chain"); else 0.
+  Eigen::Vector2cd c_base = Eigen::Vector2cd::Zero();       // kg^{1/2}
+  Eigen::Vector2cd c_left_base = Eigen::Vector2cd::Zero();  // kg^{1/2}
   bool damped() const { return decay_table > 0; }
 };
 
 struct GeneralTank {
   bool three_d = false;     // from a 3-D table (its modes may couple to the spin)
   double mass = 0;          // kg
+  double scale = 0;         // its length unit L (m)
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();  // O_k -> the fluid's centroid, body axes (m)
   Eigen::Matrix3d inertia;  // the frozen fluid's inertia tensor about O_k (kg m²), body axes
   Eigen::Matrix3d geostrophic;  // the λ = 0 weight (kg m², real symmetric): fluid that does not follow the body
@@ -48,6 +53,12 @@ struct GeneralTank {
   int pruned_rows = 0;      // a response table's rows left out as no root needs them (response_row_pruning.hpp)
   double worst_bound = 0;
   bool cut_liquid = false;  // a 3-D partial fill: its liquid cut from the tank and meshed (its centroid has that error)
+  // A 3-D partial fill in a free chain (free_recoil.hpp): its re-centring form and λ = 0 weight over the velocities
+  // (δω_x, δω_y, δω_z, τ_x, τ_y) about the joint, τ = J V the base's translation as its T̂ directions see it. Their
+  // first 3 × 3 blocks are in `inertia` and `geostrophic`.
+  bool recoil = false;
+  Eigen::Matrix<double, 5, 5> surface_form = Eigen::Matrix<double, 5, 5>::Zero();      // kg m² (blocks with τ: kg m, kg)
+  Eigen::Matrix<double, 5, 5> geostrophic_form = Eigen::Matrix<double, 5, 5>::Zero();
 };
 
 // Body k's tank `cav` (scene key `where`) from its table. Rows kept as for an axisymmetric tank (every coupling one,
@@ -58,8 +69,9 @@ struct GeneralTank {
 // table's origin at (offset, origin). A viscous table (axisymmetric or 3-D) needs the scene's viscosity at its Ekman
 // number (check_viscosity); its rows are single damped modes whose H = c c_leftᵀ is of rank one. Throws SceneError
 // naming the key for the static correction, a Galerkin reduction, a companion table, a partially filled tank elsewhere
-// than on a fixed chain's first body (a 3-D partial fill's table taken there on the spin axis it was made for: its five
-// directions about the joint, docs/volume.md §8; an axisymmetric one on the body's axis), a 3-D viscous table on a body spinning the other way (its mirror image is another cavity) or
+// than on the chain's first body (a 3-D partial fill's table taken there on the spin axis it was made for: its five
+// directions about the joint, docs/volume.md §8, in a fixed or a free chain; an axisymmetric one on the body's axis of a
+// fixed chain), a 3-D viscous table on a body spinning the other way (its mirror image is another cavity) or
 // a viscous row whose coupling tensor is not of rank one.
 GeneralTank general_tank(const Scene& scene, int k, const CavitySpec& cav, const std::string& where,
                          const rc::ModeTable& t);

@@ -11,7 +11,11 @@ the general chain (roots in the frame turning at the spin: sigma_turning = sigma
 3. the verdict line says NOT CONVERGED while rows of the 3-D table did not settle (its dense surface-wave cluster);
 4. two such tanks on the axis (the 3-D table twice: a balance judged on the tanks' size) against (26) with one tank of
    twice the density;
-5. refused in one line: the tank placed off the axis its table was made for.
+5. refused in one line: the tank placed off the axis its table was made for;
+6. the free chain (docs/volume.md §8, "The free chain"): the c = 0.3 body in free flight, the 3-D table's general chain
+   (its base recoiling with the liquid's momentum) against (26)'s free chain with the meridian table (its base's
+   translation eliminated in the complex chain, docs/free-chain.md): the nutation, its move from the fixed chain (10 %
+   off without the recoil: measured 2026-12-07), and the reduction's own check (X only through tau, pi conserved).
 usage: fill_3d_check.py CAVITY_MODES CHAIN_ROM WORKDIR
 """
 import json, os, subprocess, sys
@@ -32,19 +36,19 @@ run(modes_bin, "ellipsoid", "--a", "1", "--b", "1", "--c", "0.8", "--fill", "0.7
     "-o", "volume.h5")
 
 SPIN = 30.0
-def scene(table, center, offset=None):
-    name = "%s_%g.toml" % (table.split(".")[0], center)
+def scene(table, center, offset=None, kind="fixed"):
+    name = "%s_%g%s.toml" % (table.split(".")[0], center, "" if kind == "fixed" else "_" + kind)
     with open(name, "w") as f:
-        f.write('[system]\nkind = "fixed"\ngravity = 0\n[[body]]\nmass = 80.0\nA = 12.0\nC = 10.0\ncom = 0.05\n'
+        f.write('[system]\nkind = "%s"\ngravity = 0\n' % kind + '[[body]]\nmass = 80.0\nA = 12.0\nC = 10.0\ncom = 0.05\n'
                 'spin = %g\n[body.cavity]\ntable = "%s"\ndensity = 1004.0\nscale = 0.2\ncenter = %g\n' % (SPIN, table, center))
         if offset: f.write("offset = [%g, %g]\n" % offset)
     return name
 
-def nutation(center, near=None):
+def nutation(center, near=None, kind="fixed"):
     """The body's nutation root in the turning frame: the axisymmetric chain's (the one root in (-spin, 0) with the
     centroid at the joint's height, else the one nearest `near`) and the general chain's nearest it."""
-    space = json.loads(run(rom_bin, "spectrum", scene("meridian.h5", center), "--json"))["roots"]
-    turning = json.loads(run(rom_bin, "spectrum", scene("volume.h5", center), "--json"))
+    space = json.loads(run(rom_bin, "spectrum", scene("meridian.h5", center, kind=kind), "--json"))["roots"]
+    turning = json.loads(run(rom_bin, "spectrum", scene("volume.h5", center, kind=kind), "--json"))
     body = [r[0] + SPIN for r in space if -SPIN + 1 < r[0] < -1]  # the body's root in space: between -spin and 0
     if near is not None: body = [min(body, key=lambda x: abs(x - near))]
     if len(body) != 1: sys.exit("expected one body root in (-spin, 0) of the axisymmetric chain, got %s" % body)
@@ -81,6 +85,18 @@ err2 = abs(got2 - axial2[0]) / abs(axial2[0])
 print("two 3-D tanks on the axis: nutation %.9f against (26)'s with twice the density %.9f: %.1e relative"
       % (got2, axial2[0], err2))
 if not err2 < 5e-4: failures.append("two tanks on the axis off by %.1e" % err2)
+
+# The free chain: the body of c = 0.3 in free flight (the fixed chain's nutation is moves[1]).
+ref_free, got_free, turning_free = nutation(0.06, moves[1][0], kind="free")
+err_free = abs(got_free - ref_free) / abs(ref_free)
+move_ref, move_got = ref_free - moves[1][0], got_free - moves[1][1]
+residual = turning_free.get("recoil_residual", 1.0)
+print("free chain, c = 0.30: nutation (26) %.9f, general chain %.9f: %.1e relative; its move from the fixed chain "
+      "%.6f against %.6f (%.1e); the reduction's check %.1e" % (ref_free, got_free, err_free, move_got, move_ref,
+      abs(move_got / move_ref - 1), residual))
+if not err_free < 5e-4: failures.append("the free chain's nutation off by %.1e" % err_free)
+if not abs(move_got / move_ref - 1) < 5e-3: failures.append("the move to the free chain differs by %.1e" % abs(move_got / move_ref - 1))
+if not residual < 1e-12: failures.append("the free chain's reduction check %.1e" % residual)
 
 p = subprocess.run([rom_bin, "spectrum", scene("volume.h5", 0.0, (0.1, 0.0))], capture_output=True, text=True)
 lines = [l for l in p.stderr.splitlines() if l.strip()]
