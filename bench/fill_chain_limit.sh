@@ -10,8 +10,10 @@
 #   LIQUID ideal:   spheroidal tanks (c/a 0.8) filled to 0.7, mode tables (P3, h 0.35); the nutation's frequency.
 #   LIQUID viscous: spherical tanks filled to 0.6, nu 0.012 m^2/s (Ek 1e-2), response tables (--ekman 1e-2 --sigma
 #                   0:3:31, P2, h 0.3); the growing nutation's frequency and rate.
+# KIND=free puts the body in free flight (both chains free: (26)'s base eliminated in the complex chain, the general
+# chain's recoiling with the liquid, docs/volume.md §8 "The free chain"), the files ending _free.csv.
 # Writes OUT/off_axis_fill_chain_limit.csv (ideal) or OUT/viscous_fill_chain_limit.csv; about 4 minutes idle each.
-#   bash bench/fill_chain_limit.sh ideal|viscous [BUILD_DIR] [OUT] [DISTANCES...]
+#   [KIND=fixed|free] bash bench/fill_chain_limit.sh ideal|viscous [BUILD_DIR] [OUT] [DISTANCES...]
 set -euo pipefail
 LIQUID=${1:-}
 case "$LIQUID" in
@@ -30,11 +32,17 @@ ROM=$BUILD/rom/chain-rom
 source "$ROOT/scripts/blas-core.sh"
 tank='[[body.cavity]]\ntable = "%s"\ndensity = %s\nscale = 0.2\norigin = 0.0\noffset = [%s, 0.0]\n'
 to_axis='s/^\[\[body.cavity\]\]$/[body.cavity]/; /^offset/d'  # one tank on the axis: (26)'s cavity keys
+KIND=${KIND:-fixed}
+case "$KIND" in
+  fixed) suffix= ;;
+  free) suffix=_free ;;
+  *) echo "fill_chain_limit.sh: KIND is fixed or free, not '$KIND'" >&2; exit 1 ;;
+esac
 if [ "$LIQUID" = ideal ]; then
   [ ${#DISTANCES[@]} -gt 0 ] || DISTANCES=(0 0.03 0.1 0.3)
   meridian=(spheroid --a 1 --c 0.8 --fill 0.7)
   volume=(ellipsoid --a 1 --b 1 --c 0.8 --fill 0.7 --order 3 --mesh-size 0.35)
-  csv=$OUT/off_axis_fill_chain_limit.csv
+  csv=$OUT/off_axis_fill_chain_limit$suffix.csv
   header="distance,nutation_turning,axisymmetric_chain,relative,tables_s,unsettled_tanks"
 else
   [ ${#DISTANCES[@]} -gt 0 ] || DISTANCES=(0 0.05 0.1 0.2 0.4)
@@ -42,13 +50,13 @@ else
   to_axis=$to_axis'; s/^origin = 0.0$/center = 0.0/'
   meridian=(response sphere --radius 1 --fill 0.6 --ekman 1e-2 --sigma -3:3:61)
   volume=(ellipsoid --a 1 --b 1 --c 1 --fill 0.6 --ekman 1e-2 --order 2 --mesh-size 0.3 --sigma 0:3:31)
-  csv=$OUT/viscous_fill_chain_limit.csv
+  csv=$OUT/viscous_fill_chain_limit$suffix.csv
   header="distance,nutation_turning,growth,axisymmetric_nutation,axisymmetric_growth,frequency_relative,growth_relative,tables_s"
 fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
-body='[system]\nkind = "fixed"\ngravity = 0\n[[body]]\nmass = 80.0\nA = 12.0\nC = 10.0\ncom = 0.05\nspin = 30.0\n'
+body='[system]\nkind = "'$KIND'"\ngravity = 0\n[[body]]\nmass = 80.0\nA = 12.0\nC = 10.0\ncom = 0.05\nspin = 30.0\n'
 "$MODES" "${meridian[@]}" -o meridian.h5 > /dev/null 2>&1
 printf "$body$tank" meridian.h5 2008.0 0.0 | sed "$to_axis" > axial.toml
 echo "$header" > "$csv"

@@ -189,7 +189,7 @@ TrackedRoots track_roots(const ChainModel& m, const Eigen::VectorXcd& start, dou
   // Its pole sums run row by row; a mode coupled to several bodies (a partially filled tank whose joint moves) is off
   // the diagonal: the eigen-solver takes such a point.
   for (const FluidMode& md : m.modes)
-    if (!md.lever.empty() || md.lever_base != 0.0) {
+    if (!md.lever.empty() || md.lever_base != 0.0 || md.own != 1.0) {
       t.why = "a fluid mode coupled to several bodies";
       return t;
     }

@@ -142,9 +142,10 @@ void require_axial_field(const Scene& scene) {
 
 // The rows kept, heaviest E first: every one that couples, or the first `modes`, or as many as reach `coverage` of
 // the sum rule (a 3-D table's λ = 0 weight counted as kept). Returns the coverage reached in `covered`, and in
-// `pruned` how many rows of a response table were left out as no root needs them.
+// `pruned` how many rows of a response table were left out as no root needs them. A free chain's 3-D fill (`recoil`)
+// keeps a row that couples through the base's translation alone too (its rotation coupling zero about the joint).
 std::vector<int> kept_rows(const Scene& scene, const std::string& w, const CavitySpec& cav, const rc::ModeTable& t,
-                           const RowCoupling& about, double& covered, int& pruned) {
+                           const RowCoupling& about, bool recoil, double& covered, int& pruned) {
   // About the joint: a partially filled tank's rows weigh E = 2(a + c t)²/N² there, its sum rule A_f + K − J_zh.
   const bool surface = t.free_surface.present(), fill3 = t.volume_free_surface.present();
   const auto& vf = t.volume_free_surface;
@@ -159,7 +160,9 @@ std::vector<int> kept_rows(const Scene& scene, const std::string& w, const Cavit
   };
   std::vector<int> idx;
   for (std::size_t l = 0; l < t.size(); ++l)
-    if (row_coupling(t, l, about).norm() > tiny) idx.push_back(static_cast<int>(l));  // a viscous H's trace may vanish
+    if ((recoil ? fill_form_with_base(fill_block(vf.coupling_re, vf.coupling_im, l), about.c, 1.0).norm()
+                : row_coupling(t, l, about).norm()) > tiny)
+      idx.push_back(static_cast<int>(l));  // a viscous H's trace may vanish
   std::stable_sort(idx.begin(), idx.end(), [&](int i, int j) { return E(i) > E(j); });
   const double geostrophic =
       fill3 ? fill_tensor_about_joint(fill_block(vf.geostrophic_re, vf.geostrophic_im, 0), about.c).topLeftCorner<2, 2>().trace().real() / 2
@@ -379,7 +382,7 @@ GeneralTank general_tank(const Scene& scene, int k, const CavitySpec& cav, const
     tank.coverage = add_band_modes(scene, w, k, t, unit, tank);
   } else {
     double covered = 0;
-    for (const int l : kept_rows(scene, w, cav, t, about, covered, tank.pruned_rows)) {
+    for (const int l : kept_rows(scene, w, cav, t, about, tank.recoil, covered, tank.pruned_rows)) {
       const double bound = t.residual[l] / std::max(std::abs(t.lambda[l]), 0.1);
       if (t.volume_free_surface.present() && bound > t.tolerance * (1 + 1e-9)) {  // the survey's own test (docs/volume.md §8)
         ++tank.unsettled_rows;

@@ -69,15 +69,23 @@ void set_frozen_fluid(const Scene& scene, const std::string& w, const CavitySpec
 }
 
 // The rows the scene keeps, heaviest first about O_k: every coupling one (E = 0 rows, e.g. a spheroid's beyond its
-// single mode, are left out), or the first `modes`, or as many as reach `coverage` of the sum rule.
+// single mode, are left out), or the first `modes`, or as many as reach `coverage` of the sum rule. On a joint that
+// moves (`translates`: a free chain's first body, or a later one) a partially filled tank's row couples through its
+// translation t too, and one with E = 0 about O_k (a + c t = 0) but t ≠ 0 is kept.
 std::vector<int> kept_rows(const Scene& scene, const std::string& w, const CavitySpec& cav, const rc::ModeTable& t,
-                           const RowCoupling& rc) {
+                           const RowCoupling& rc, bool translates) {
   const double sum_rule = rc.sum_rule();
   std::vector<int> idx;
   const double tiny = 1e-14 * std::max(sum_rule, 1e-300);
+  const auto moves_with_joint = [&](std::size_t l) {
+    if (!translates || !t.free_surface.present() || t.N2[l] == 0) return false;
+    const std::complex<double> tc(t.free_surface.t[l], t.viscous() ? t.free_surface.t_imag[l] : 0.0);
+    return std::abs(2.0 * tc * tc / t.N2[l]) > tiny;
+  };
   // A viscous mode's residue may have a negative real part (docs/viscous.md section 5): kept by its modulus.
   for (std::size_t l = 0; l < t.size(); ++l)
-    if (t.viscous() ? std::abs(rc.E_c(l)) > tiny : rc.E(l) > tiny) idx.push_back(static_cast<int>(l));
+    if ((t.viscous() ? std::abs(rc.E_c(l)) > tiny : rc.E(l) > tiny) || moves_with_joint(l))
+      idx.push_back(static_cast<int>(l));
   // About O_k a free-surface table's rows weigh otherwise than about its centroid, where they are sorted.
   if (t.free_surface.present())
     std::stable_sort(idx.begin(), idx.end(), [&](int i, int j) { return rc.E(i) > rc.E(j); });
@@ -141,12 +149,22 @@ void set_lever(const Scene& scene, int k, int l, const rc::ModeTable& t, const R
     a_c = std::conj(a_c);
     t_c = std::conj(t_c);
   }
-  if (a_c == 0.0) return;  // not kept (E about O_k is 0)
+  // The row's weights over (u_k, u_j, X) are a_c, s_j t_c, t_c/L (table units): E w wᵀ with the largest of a_c and t_c
+  // as the pivot, so that a row with a_c = 0 (E = 0 about O_k) still couples through t_c.
+  std::complex<double> pivot = a_c;
+  if (std::abs(a_c) < std::abs(t_c)) {
+    pivot = t_c;
+    m.own = a_c / t_c;
+    const std::complex<double> E = inertia_unit(cav) * 2.0 * t_c * t_c / t.N2[l];
+    m.E = E.real();
+    m.E_imag = visc ? E.imag() : 0.0;  // spin −ω conjugates E_c, as chain_mode's: t_c is conjugated already
+    m.a_over_N2 = cav.scale * t_c.real() / t.N2[l];
+  }
   for (int j = 0; j < k; ++j) {
     const double s = scene.bodies[j].next_joint / cav.scale;
-    if (s != 0) m.lever.emplace_back(j, s * t_c / a_c);
+    if (s != 0) m.lever.emplace_back(j, s * t_c / pivot);
   }
-  if (scene.free_chain) m.lever_base = t_c / a_c / cav.scale;
+  if (scene.free_chain) m.lever_base = t_c / pivot / cav.scale;
 }
 
 // A Galerkin tank's fluid energy and dissipation forms in chain units; spin -omega conjugates the flow, the forms
@@ -189,7 +207,7 @@ void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
   set_frozen_fluid(scene, w, cav, t, b);
   const double L5 = inertia_unit(cav);
   const RowCoupling rc{t, b.fluid_center / cav.scale};
-  std::vector<int> rows = kept_rows(scene, w, cav, t, rc);
+  std::vector<int> rows = kept_rows(scene, w, cav, t, rc, k > 0 || scene.free_chain);
   // A response table's rows no root needs (prunable, response_row_pruning.hpp).
   if (prunable(t, cav)) {
     const PrunedRows pruned = prune_response_rows(t, rows, kPruneMagnitude, kPruneDissipation);
@@ -217,9 +235,9 @@ void add_fluid(const Scene& scene, int k, const CavitySpec& cav, BodyModel& b,
       m.E = L5 * gf.residue[static_cast<Eigen::Index>(j)].real();
       m.E_imag = (b.omega < 0 ? -1 : 1) * L5 * gf.residue[static_cast<Eigen::Index>(j)].imag();
     }
-    if (t.free_surface.present()) set_lever(scene, k, rows[j], t, rc, cav, b.omega, m);
-    b.E_kept += m.E;
+    b.E_kept += m.E;  // about O_k (set_lever may put a row's E on its translation)
     b.E_kept_imag += m.E_imag;
+    if (t.free_surface.present()) set_lever(scene, k, rows[j], t, rc, cav, b.omega, m);
     modes.push_back(m);
   }
   b.ekman = t.ekman;

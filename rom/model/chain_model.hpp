@@ -37,20 +37,25 @@ struct FluidMode {
   std::vector<std::pair<int, std::complex<double>>> lever;
   // The same on a free chain's base translation X (1/m; base_translation.hpp): 0 unless the tank is partially filled.
   std::complex<double> lever_base = 0;
+  // Its weight on its own body's tilt: 1, or, for a row whose coupling about O_k is smaller than its translation's
+  // (|a + c t| < |t|: an even mode with the joint at the equator's height couples to the joint's motion alone), the
+  // ratio (a + c t)/t, with E and the levers the translation's (set_lever): the same E w wᵀ, finite where a + c t = 0.
+  std::complex<double> own = 1;
   std::complex<double> E_c() const { return {E, E_imag}; }
   std::complex<double> lambda_c() const { return {lambda, decay}; }
   std::complex<double> nu_c() const { return {nu, -decay}; }  // omega_k0 - lambda_c
 };
 
-// The mode's coupling row w (w_k = 1 for its own body k, lever_j for the earlier ones): its forcing is wᵀ(ü + iω_k0 u̇)
-// and its term of (22) E w wᵀ. Adds scale · w wᵀ to the square complex matrix A.
+// The mode's coupling row w (w_k = own for its own body k, lever_j for the earlier ones): its forcing is
+// wᵀ(ü + iω_k0 u̇) and its term of (22) E w wᵀ. Adds scale · w wᵀ to the square complex matrix A.
 template <class Mat, class Scalar>
 void add_mode_term(Mat& A, const FluidMode& md, Scalar scale) {
-  A(md.body, md.body) += scale;
+  const Scalar own = static_cast<Scalar>(md.own);
+  A(md.body, md.body) += scale * own * own;
   for (const auto& [j, r] : md.lever) {
     const Scalar rj = static_cast<Scalar>(r);
-    A(md.body, j) += scale * rj;
-    A(j, md.body) += scale * rj;
+    A(md.body, j) += scale * own * rj;
+    A(j, md.body) += scale * own * rj;
     for (const auto& [i, q] : md.lever) A(j, i) += scale * rj * static_cast<Scalar>(q);
   }
 }
@@ -59,7 +64,7 @@ void add_mode_term(Mat& A, const FluidMode& md, Scalar scale) {
 template <class Vec>
 typename Vec::Scalar coupled(const FluidMode& md, const Vec& v) {
   using S = typename Vec::Scalar;
-  S out = v[md.body];
+  S out = static_cast<S>(md.own) * v[md.body];
   for (const auto& [j, r] : md.lever) out += static_cast<S>(r) * v[j];
   return out;
 }

@@ -46,7 +46,7 @@ Eigen::Matrix<std::complex<Real>, Eigen::Dynamic, Eigen::Dynamic> first_order_ma
   for (int l = 0; l < nm; ++l) {
     const FluidMode& md = m.modes[l];
     CMat row = CMat::Zero(n, 1);  // the coupling row as a column
-    row(md.body, 0) = 1;
+    row(md.body, 0) = static_cast<C>(md.own);
     for (const auto& [j, r] : md.lever) row(j, 0) = static_cast<C>(r);
     B.block(n, 2 * n + l, n, 1) = (I * C(md.E_c()) * C(md.nu_c())) * (Minv * row);
     // w' = -i nu w - i lambda w_rowᵀ u'      [fluid equation of (26) in w = z + w_rowᵀ u-dot]
