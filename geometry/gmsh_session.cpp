@@ -66,4 +66,10 @@ void GmshSession::throw_if_error(const std::string& context) {
   log_seen_ = log.size();
 }
 
+void GmshSession::forgive_logged() {
+  std::vector<std::string> log;
+  gmsh::logger::get(log);
+  log_seen_ = log.size();
+}
+
 }  // namespace rc::geometry::detail

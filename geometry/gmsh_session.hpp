@@ -25,6 +25,10 @@ class GmshSession {
   // session started (or since the last call).
   void throw_if_error(const std::string& context);
 
+  // Forgets what gmsh logged so far: for a step whose errors the caller judges by its result instead (the high-order
+  // optimiser's "failed to reach" leaves a mesh that check_jacobians accepts or refuses).
+  void forgive_logged();
+
  private:
   std::unique_lock<std::recursive_mutex> lock_;
   bool outermost_ = false;
