@@ -177,6 +177,24 @@ int grade_towards_wall(const MeshOptions& options, double size, const std::strin
                             (size - options.wall_size) / std::max(options.wall_growth, 1e-3));
 }
 
+// A partially filled tank's free surface as OpenCASCADE has it: the area of its faces on the cylinder ρ = b (the mesh's
+// faces found there must cover it: modes/volume/volume_free_surface.cpp).
+double free_surface_cad_area(double radius, const std::array<double, 2>& axis) {
+  gmsh::vectorpair surfaces;
+  gmsh::model::getEntities(surfaces, 2);
+  double area = 0;
+  for (const auto& [dim, tag] : surfaces) {
+    std::vector<double> lo, hi, xyz;
+    gmsh::model::getParametrizationBounds(2, tag, lo, hi);
+    gmsh::model::getValue(2, tag, {0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1])}, xyz);
+    if (!on_free_surface({xyz[0], xyz[1], xyz[2]}, radius, axis)) continue;
+    double mass = 0;
+    gmsh::model::occ::getMass(2, tag, mass);
+    area += mass;
+  }
+  return area;
+}
+
 // A partially filled tank's contact lines: the curves where its free surface ρ = b meets the wall (those that bound
 // both a surface on the cylinder and one off it, not the cylinder's seam).
 std::vector<double> contact_curves(double radius, const std::array<double, 2>& axis) {
@@ -187,7 +205,7 @@ std::vector<double> contact_curves(double radius, const std::array<double, 2>& a
     std::vector<double> lo, hi, xyz;
     gmsh::model::getParametrizationBounds(2, tag, lo, hi);
     gmsh::model::getValue(2, tag, {0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1])}, xyz);
-    const bool free = on_free_surface({xyz[0], xyz[1], xyz[2]}, radius, axis, 1e-6);
+    const bool free = on_free_surface({xyz[0], xyz[1], xyz[2]}, radius, axis);
     gmsh::vectorpair boundary;
     gmsh::model::getBoundary({{2, tag}}, boundary, false, false, false);
     for (const auto& [d, c] : boundary) ++(free ? on_free : on_wall)[std::abs(c)];
@@ -308,7 +326,7 @@ GmshTets read_tets(const std::string& where) {
 }
 
 GmshTets mesh_in_gmsh(const VolumeShapeSpec& shape, const MeshOptions& options, const std::string& where,
-                      double& size, double& surface_radius, const LinearMeshCheck& check) {
+                      double& size, double& surface_radius, double& surface_area, const LinearMeshCheck& check) {
   return detail::with_gmsh(where, [&](detail::GmshSession& session) {
     gmsh::model::add("volume");
     if (shape.kind == "volume")
@@ -316,6 +334,7 @@ GmshTets mesh_in_gmsh(const VolumeShapeSpec& shape, const MeshOptions& options, 
     else
       surface_radius = build_shape(shape);
     session.throw_if_error(where);
+    if (surface_radius > 0) surface_area = free_surface_cad_area(surface_radius, shape.spin_axis);
     if (shape.kind == "volume" && shape.file.extension() == ".msh") {
       size = 0;
       return read_tets(where);
@@ -423,10 +442,11 @@ VolumeMesh mesh_volume(const VolumeShapeSpec& shape, const MeshOptions& options,
     tilt_file_mesh(shape, layered);
     return layered;
   }
-  double size = 0, surface_radius = 0;
-  const GmshTets g = mesh_in_gmsh(shape, options, where, size, surface_radius, check);
+  double size = 0, surface_radius = 0, surface_area = 0;
+  const GmshTets g = mesh_in_gmsh(shape, options, where, size, surface_radius, surface_area, check);
   VolumeMesh m;
   m.free_surface_radius = surface_radius;
+  m.free_surface_area = surface_area;
   m.spin_axis = shape.spin_axis;
   m.order = g.order;
   m.nodes_per_element = (g.order + 1) * (g.order + 2) * (g.order + 3) / 6;

@@ -42,6 +42,7 @@ struct VolumeMesh {
   // (parallel to z); 0 when the cavity is full.
   double free_surface_radius = 0.0;
   std::array<double, 2> spin_axis{};
+  double free_surface_area = 0.0;  // OpenCASCADE's area of the free surface's faces (0: unknown), the mesh's check
   std::size_t num_tetrahedra() const { return tetrahedra.size() / nodes_per_element; }
 };
 

@@ -329,7 +329,7 @@ int VolumeCommands::run_partial_fill(const VolumeTableRequest& request, const st
   ModeTable t = free_surface_table(r, request.shape, settings);
   set_provenance(t, command_line);
   write_mode_table(t, common_.output);
-  fmt::print("wrote {} ({} rows; chain-rom takes it on a fixed body's joint: docs/volume.md §8)\n", common_.output, t.size());
+  fmt::print("wrote {} ({} rows; chain-rom takes it on the first body of a fixed or a free chain: docs/volume.md §8)\n", common_.output, t.size());
   return 0;
 }
 

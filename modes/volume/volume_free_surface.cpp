@@ -76,6 +76,13 @@ VolumeFreeSurface::VolumeFreeSurface(const VolumeSpace& space)
     }
   }
   if (points_.empty()) throw std::runtime_error("no face of the 3-D mesh lies on its free surface");
+  // The faces found must cover the CAD surface (to the curved faces' geometric error: 1e-3 from order 2, 1e-2 for flat
+  // P1 faces on the cylinder): a face missed is a piece of surface treated as a wall.
+  const double cad = m.free_surface_area, tolerance = p > 1 ? 1e-3 : 1e-2;
+  if (cad > 0 && std::abs(area_ - cad) > tolerance * cad)
+    throw std::runtime_error("the mesh's faces on the free surface cover an area of " + std::to_string(area_) +
+                             " where the surface has " + std::to_string(cad) + ": some of its faces were not found "
+                             "(try another --mesh-size)");
   for (const auto& pt : points_)
     for (int d : pt.surface) index_[d] = 0;
   for (int d = 0; d < space.ndof(); ++d)
