@@ -42,19 +42,28 @@ double volume_of(const gmsh::vectorpair& parts) {
   return v;
 }
 
-// The liquid's volume beyond the cylinder of this radius; the cavity kept.
+// The liquid's volume beyond the cylinder of this radius; the cavity kept. Each cut takes a copy of the cavity:
+// OpenCASCADE's cut of a sphere two radii off the axis by the cylinder of radius 1.185854 returns nothing and leaves
+// the cavity unusable for every later cut (2026-12-07), so a cut that returns nothing is tried again on a fresh copy
+// with the radius moved by 1e-9 of itself, which changes the volume far below the bisection's tolerance.
 double liquid_volume(int tag, const Box& box, const std::array<double, 2>& axis, double radius) {
   if (radius <= 0) {
     double v = 0;
     occ::getMass(3, tag, v);
     return v;
   }
-  gmsh::vectorpair out;
-  std::vector<gmsh::vectorpair> map;
-  occ::cut({{3, tag}}, {{3, gas_cylinder(box, axis, radius)}}, out, map, -1, false, true);
-  const double v = volume_of(out);
-  occ::remove(out, true);
-  return v;
+  for (int attempt = 0; attempt < 4; ++attempt) {
+    gmsh::vectorpair copy, out;
+    std::vector<gmsh::vectorpair> map;
+    occ::copy({{3, tag}}, copy);
+    occ::cut(copy, {{3, gas_cylinder(box, axis, radius * (1 + 1e-9 * attempt))}}, out, map, -1, true, true);
+    if (out.empty()) continue;
+    const double v = volume_of(out);
+    occ::remove(out, true);
+    return v;
+  }
+  throw std::runtime_error("OpenCASCADE's cut of the tank by the cylinder of radius " + std::to_string(radius) +
+                           " about the spin axis failed: try a slightly different --fill or --axis-distance");
 }
 
 // The distance from the axis to the farthest corner of the box (in x, y): every point of the cavity is nearer.
