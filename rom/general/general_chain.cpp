@@ -99,11 +99,11 @@ std::vector<std::pair<CavitySpec, std::string>> body_tanks(const BodySpec& b, in
 // ~1e-6 of the trace on an upright ellipsoid at the default order): below kProductTolerance of the trace the products
 // are taken as that error and dropped.
 void require_balanced(const Scene& scene, int k, const Eigen::Matrix3d& I, const Eigen::Vector2d& first_moment,
-                      double mass_arm, bool cut_liquid) {
-  // A 3-D partial fill's liquid is cut from the tank and meshed, and its centroid carries that error: two P3 meshes of
-  // one half-full sphere placed 0.6 m either side of the axis leave 6e-5 of the arm (2026-12-02; docs/volume.md §8),
-  // which is their error, not an imbalance. Other tanks keep 1e-6.
-  if (first_moment.norm() > (cut_liquid ? 1e-4 : 1e-6) * mass_arm) {
+                      double mass_arm, bool meshed) {
+  // A 3-D table's liquid is meshed, and its centroid carries that error: two P3 meshes of one half-full sphere placed
+  // 0.6 m either side of the axis leave 6e-5 of the arm (2026-12-02; docs/volume.md §8), two full P3 spheres there
+  // 3.5e-6 (2026-12-07), which is their error, not an imbalance. Axisymmetric tables keep 1e-6.
+  if (first_moment.norm() > (meshed ? 1e-4 : 1e-6) * mass_arm) {
     std::ostringstream os;
     os << "the body's centre of mass with its tanks lies off its axis (mass times offset " << first_moment.transpose()
        << " kg m): it cannot spin steadily about its axis; place the tanks in balance";
@@ -189,7 +189,7 @@ std::vector<GeneralBody> general_bodies(const Scene& scene, TableCache& tables) 
     b.inertia = shell_inertia(spec);
     Eigen::Vector2d first_moment = Eigen::Vector2d::Zero();
     double mass_arm = 0;
-    bool cut_liquid = false;
+    bool meshed = false;
     for (const auto& [cav, key] : body_tanks(spec, k)) {
       GeneralTank tank = general_tank(scene, k, cav, key, read_table(scene, key, cav, tables));
       b.com = (b.mass * b.com + tank.mass * tank.centroid.z()) / (b.mass + tank.mass);
@@ -198,11 +198,11 @@ std::vector<GeneralBody> general_bodies(const Scene& scene, TableCache& tables) 
       // The scale the balance is judged on: the tank's arm and its own size (a meshed centroid errs by a fraction of
       // the tank, wherever it sits: two tanks on the axis have no arm).
       mass_arm += tank.mass * (tank.centroid.norm() + cav.scale);
-      cut_liquid = cut_liquid || tank.cut_liquid;
+      meshed = meshed || tank.three_d;
       b.inertia += tank.inertia;
       b.tanks.push_back(std::move(tank));
     }
-    require_balanced(scene, k, b.inertia, first_moment, mass_arm, cut_liquid);
+    require_balanced(scene, k, b.inertia, first_moment, mass_arm, meshed);
     out.push_back(std::move(b));
   }
   return out;

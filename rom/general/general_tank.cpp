@@ -364,7 +364,6 @@ GeneralTank general_tank(const Scene& scene, int k, const CavitySpec& cav, const
     require_fixed_joint(scene, k, cav, w, true);
     require_axial_field(scene);
     require_on_the_spin_axis(scene, cav, w, t, offset, L);
-    tank.cut_liquid = true;
   }
   if (t.free_surface.present()) {
     require_fixed_joint(scene, k, cav, w, false);

@@ -52,7 +52,6 @@ struct GeneralTank {
   int unsettled_rows = 0;
   int pruned_rows = 0;      // a response table's rows left out as no root needs them (response_row_pruning.hpp)
   double worst_bound = 0;
-  bool cut_liquid = false;  // a 3-D partial fill: its liquid cut from the tank and meshed (its centroid has that error)
   // A 3-D partial fill in a free chain (free_recoil.hpp): its re-centring form and λ = 0 weight over the velocities
   // (δω_x, δω_y, δω_z, τ_x, τ_y) about the joint, τ = J V the base's translation as its T̂ directions see it. Their
   // first 3 × 3 blocks are in `inertia` and `geostrophic`.
