@@ -162,13 +162,24 @@ int fluid_group(const std::string& where) {
 // Isotropic grading towards the wall (MeshOptions::wall_size, wall_growth): elements of wall_size on the wall
 // surfaces, growing by wall_growth per unit distance up to `size`. The geometry error of isoparametric elements
 // lives on the wall, so this buys accuracy at the cost of surface, not volume, elements. Returns the size field, or −1.
-int grade_towards_wall(const MeshOptions& options, double size, const std::string& where) {
+// A partially filled tank (`filled` false) has no wall layers yet: its refusal names the lowest Ekman number its
+// default wall size 2 Ek^(1/2) reaches and what takes a lower one.
+int grade_towards_wall(const MeshOptions& options, double size, const std::string& where, bool filled) {
   if (options.wall_size <= 0 || options.wall_size >= size) return -1;
-  if (model_extent() / options.wall_size > kMaxCellsPerExtent)
-    throw std::runtime_error(where + ": wall mesh size " + number(options.wall_size) + " is too small for isotropic "
+  const double smallest = model_extent() / kMaxCellsPerExtent;
+  if (options.wall_size < smallest) {
+    const std::string head = where + ": wall mesh size " + number(options.wall_size) + " is too small for isotropic "
                              "grading (at least the model's extent / " + number(kMaxCellsPerExtent) + " = " +
-                             number(model_extent() / kMaxCellsPerExtent) + "); thinner walls take anisotropic layers "
-                             "(--wall-layer with --wall-size, docs/volume.md §7)");
+                             number(smallest) + ")";
+    if (filled)
+      throw std::runtime_error(head + "; thinner walls take anisotropic layers (--wall-layer with --wall-size, "
+                                      "docs/volume.md §7)");
+    throw std::runtime_error(head + "; a partially filled tank has no wall layers yet, so its mesh grades down to "
+                             "Ek = " + number(0.25 * smallest * smallest) + " at most here (--ekman's wall size is "
+                             "2 Ek^(1/2); the memory may stop it sooner); "
+                             "a lower Ek takes the ideal table (without --ekman) or, on the spin axis, the "
+                             "axisymmetric fill (cavity-modes response SHAPE --fill F --ekman Ek; docs/volume.md §8)");
+  }
   gmsh::vectorpair surfaces;
   gmsh::model::getEntities(surfaces, 2);
   DistanceTo walls;
@@ -262,7 +273,8 @@ void generate(detail::GmshSession& session, int order, double size, const std::s
     throw std::runtime_error(where + ": mesh size " + number(size) + " is too small for a model of extent " +
                              number(model_extent()));
   std::vector<int> fields;
-  if (const int wall = grade_towards_wall(options, size, where); wall >= 0) fields.push_back(wall);
+  if (const int wall = grade_towards_wall(options, size, where, !(surface_radius > 0)); wall >= 0)
+    fields.push_back(wall);
   if (surface_radius > 0 && options.wall_size > 0)
     if (const int contact = refine_contact_lines(size, surface_radius, axis); contact >= 0) fields.push_back(contact);
   use_smallest(fields);

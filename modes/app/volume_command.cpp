@@ -1,5 +1,7 @@
 #include "volume_command.hpp"
 
+#include "progress.hpp"
+
 #include "free_surface_run.hpp"
 #include "free_surface_table.hpp"
 
@@ -362,7 +364,8 @@ std::vector<double> shared_from_root(std::vector<double> out, std::string error)
 // The ideal table of the same cavity on the interior mesh (the same order and --mesh-size; no wall grading and no
 // layers: the ideal fluid's), made by every rank together (the ideal 3-D path is distributed); rank 0's is the table.
 ModeTable ideal_tensors_table(const VolumeTableRequest& ideal, const std::string& what_for) {
-  if (is_root_rank()) std::cerr << "3-D viscous: the ideal table first (" << what_for << ")\n";
+  Progress lines(print_progress);  // "[  1.2 s] ..." lines while it runs
+  lines.note("3-D viscous: the ideal table first (" + what_for + ")");
   VolumeTableRequest request = ideal;
   request.fields = false;
   request.mesh.wall_size = 0;
@@ -375,7 +378,8 @@ ModeTable ideal_tensors_table(const VolumeTableRequest& ideal, const std::string
 // its static parts: the frozen liquid, the surface's axis and Gram matrices (docs/volume.md §8). One rank.
 ModeTable ideal_fill_table(const VolumeTableRequest& ideal) {
   require_one_rank();
-  std::cerr << "3-D viscous fill: the ideal table first (the liquid's tensors)\n";
+  Progress lines(print_progress);
+  lines.note("3-D viscous fill: the ideal table first (the liquid's tensors)");
   geometry::MeshOptions mesh = ideal.mesh;
   mesh.wall_size = 0;
   mesh.wall_layer = 0;

@@ -162,6 +162,9 @@ expect_error "a fill above 1" "must lie in (0, 1]" "$BIN" ellipsoid --a 1 --b 1 
 expect_error "a 3-D fill with --fields" "--fields is not written for a partially filled 3-D tank" "$BIN" ellipsoid --a 1 --b 1 --c 1 --fill 0.5 --fields -o out.h5
 expect_error "a 3-D fill's table as CSV" "writes a mode table: a .h5 file" "$BIN" ellipsoid --a 1 --b 1 --c 1 --fill 0.5 -o out.csv
 expect_error "a 3-D fill's damped modes" "its damped modes are not built yet" "$BIN" ellipsoid --a 1 --b 1 --c 1 --fill 0.5 --ekman 1e-3
+# Below what its isotropic grading reaches: the refusal gives that Ek and what takes a lower one.
+expect_error "a 3-D viscous fill below its mesh's Ek" "has no wall layers yet, so its mesh grades down to Ek" "$BIN" ellipsoid \
+  --a 1 --b 1 --c 1 --fill 0.5 --ekman 1e-6 --sigma 0:1:3 --order 2 --mesh-size 0.8 -o out.h5
 expect_error "a 3-D fill's response table off the real axis" "window is real" "$BIN" ellipsoid --a 1 --b 1 --c 1 --fill 0.5 --ekman 1e-3 --sigma 0:1:3 --sigma-imag 0.1 -o out.h5
 expect_error "a 3-D fill's wall layers" "--wall-layer is not taken with --fill" "$BIN" ellipsoid --a 1 --b 1 --c 1 --fill 0.5 --ekman 1e-3 --sigma 0.5 --wall-layer 0.01 -o out.csv
 expect_error "an ideal 3-D fill's --sigma" "--sigma needs --ekman" "$BIN" ellipsoid --a 1 --b 1 --c 1 --fill 0.5 --sigma 0.5 -o out.h5
