@@ -11,10 +11,11 @@ spectrum --json on it (the free chain, its base recoiling with the liquid: docs/
    above the craft's centre of mass they are not (its joint O then moves: by more than 1e-5).
 usage: fill_tanks_scene_check.py CAVITY_MODES CHAIN_ROM SCENES_DIR WORKDIR
 """
-import json, os, re, shlex, subprocess, sys
+import json, os, re, shlex, shutil, subprocess, sys
 
 modes_bin, rom_bin, scenes, work = sys.argv[1:5]
-os.makedirs(work, exist_ok=True)
+shutil.rmtree(work, ignore_errors=True)  # the tables made by this build, not an earlier run's
+os.makedirs(work)
 os.chdir(work)
 failures = []
 
