@@ -188,6 +188,14 @@ int grade_towards_wall(const MeshOptions& options, double size, const std::strin
                             (size - options.wall_size) / std::max(options.wall_growth, 1e-3));
 }
 
+// True when the CAD surface `tag` is a piece of the free surface ρ = b (its parametric middle lies on the cylinder).
+bool is_free_surface_entity(int tag, double radius, const std::array<double, 2>& axis) {
+  std::vector<double> lo, hi, xyz;
+  gmsh::model::getParametrizationBounds(2, tag, lo, hi);
+  gmsh::model::getValue(2, tag, {0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1])}, xyz);
+  return on_free_surface({xyz[0], xyz[1], xyz[2]}, radius, axis);
+}
+
 // A partially filled tank's free surface as OpenCASCADE has it: the area of its faces on the cylinder ρ = b (the mesh's
 // faces found there must cover it: modes/volume/volume_free_surface.cpp).
 double free_surface_cad_area(double radius, const std::array<double, 2>& axis) {
@@ -195,10 +203,7 @@ double free_surface_cad_area(double radius, const std::array<double, 2>& axis) {
   gmsh::model::getEntities(surfaces, 2);
   double area = 0;
   for (const auto& [dim, tag] : surfaces) {
-    std::vector<double> lo, hi, xyz;
-    gmsh::model::getParametrizationBounds(2, tag, lo, hi);
-    gmsh::model::getValue(2, tag, {0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1])}, xyz);
-    if (!on_free_surface({xyz[0], xyz[1], xyz[2]}, radius, axis)) continue;
+    if (!is_free_surface_entity(tag, radius, axis)) continue;
     double mass = 0;
     gmsh::model::occ::getMass(2, tag, mass);
     area += mass;
@@ -213,10 +218,7 @@ std::vector<double> contact_curves(double radius, const std::array<double, 2>& a
   gmsh::model::getEntities(surfaces, 2);
   std::map<int, int> on_free, on_wall;  // curve -> how many free / wall surfaces it bounds
   for (const auto& [dim, tag] : surfaces) {
-    std::vector<double> lo, hi, xyz;
-    gmsh::model::getParametrizationBounds(2, tag, lo, hi);
-    gmsh::model::getValue(2, tag, {0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1])}, xyz);
-    const bool free = on_free_surface({xyz[0], xyz[1], xyz[2]}, radius, axis);
+    const bool free = is_free_surface_entity(tag, radius, axis);
     gmsh::vectorpair boundary;
     gmsh::model::getBoundary({{2, tag}}, boundary, false, false, false);
     for (const auto& [d, c] : boundary) ++(free ? on_free : on_wall)[std::abs(c)];

@@ -71,18 +71,11 @@ Eigen::MatrixXd base_surface_form(const std::vector<GeneralBody>& bodies, int n_
   return S;
 }
 
-// δω = P Q̇ + R Q of the extended chain (general_system.hpp's maps).
-void velocity_maps(const GeneralChain& e, Eigen::MatrixXd& P, Eigen::MatrixXd& R) {
-  const FluidMaps f = fluid_maps(e);
-  P = f.P;
-  R = f.R;
-}
-
-// A kinetic form ½ wᵀ S w over the velocities w = P Q̇ + R Q adds, by Lagrange's equations,
+// A kinetic form ½ wᵀ S w over the velocities w = P Q̇ + R Q (general_system.hpp's maps) adds, by Lagrange's equations,
 // PᵀSP Q̈ + (PᵀSR − RᵀSP) Q̇ − RᵀSR Q (for a tilt's P = J, R = −ω0: (26)'s M, −2ω0 M's gyroscopic block, −ω0² M).
 void add_kinetic_form(const Eigen::MatrixXd& S, GeneralChain& e) {
-  Eigen::MatrixXd P, R;
-  velocity_maps(e, P, R);
+  const FluidMaps f = fluid_maps(e);
+  const Eigen::MatrixXd &P = f.P, &R = f.R;
   e.M += P.transpose() * S * P;
   e.C += P.transpose() * S * R - R.transpose() * S * P;
   e.K -= R.transpose() * S * R;
