@@ -165,6 +165,16 @@ ReferenceTetrahedron reference_tetrahedron(int order, int quadrature_degree) {
   return cached(order, quadrature_degree, build_tetrahedron);
 }
 
+TetrahedronBasis tetrahedron_basis_at(int order, const std::vector<std::array<double, 3>>& points) {
+  check_arguments("tetrahedron_basis_at", order, 1);
+  std::vector<double> uvw;
+  for (const auto& p : points) uvw.insert(uvw.end(), {p[0], p[1], p[2]});
+  const Basis b = detail::with_gmsh("tetrahedron_basis_at", [&](detail::GmshSession&) {
+    return lagrange_basis(gmsh::model::mesh::getElementType("Tetrahedron", order), uvw);
+  });
+  return {b.N, b.dN};
+}
+
 ReferenceEdge reference_edge(int order, int quadrature_degree) {
   check_arguments("reference_edge", order, quadrature_degree);
   return cached(order, quadrature_degree, build_edge);

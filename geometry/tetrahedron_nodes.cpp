@@ -3,6 +3,7 @@
 #include "tetrahedron_nodes.hpp"
 
 #include "gmsh_lagrange_element.hpp"
+#include "lagrange_nodes.hpp"
 
 #include <cmath>
 #include <map>
@@ -88,6 +89,29 @@ std::array<int, 4> tetrahedron_lattice(const std::array<double, 3>& uvw, int ord
   const int i = static_cast<int>(std::lround(uvw[0] * order)), j = static_cast<int>(std::lround(uvw[1] * order)),
             k = static_cast<int>(std::lround(uvw[2] * order));
   return {order - i - j - k, i, j, k};
+}
+
+std::array<int, 3> face_vertices(int opposite) {
+  std::array<int, 3> f{};
+  for (int v = 0, i = 0; v < 4; ++v)
+    if (v != opposite) f[i++] = v;
+  return f;
+}
+
+std::vector<int> tetrahedron_face_nodes(int order, int opposite) {
+  const auto tet = tetrahedron_nodes(order);
+  std::map<std::array<int, 4>, int> by_lattice;
+  for (int a = 0; a < tet.nodes_per_element; ++a) by_lattice[tetrahedron_lattice(tet.points[a], order)] = a;
+  const std::array<int, 3> f = face_vertices(opposite);
+  std::vector<int> out;
+  for (const auto& [u, v] : triangle_nodes(order).points) {
+    std::array<int, 4> l{};
+    l[f[1]] = static_cast<int>(std::lround(u * order));
+    l[f[2]] = static_cast<int>(std::lround(v * order));
+    l[f[0]] = order - l[f[1]] - l[f[2]];
+    out.push_back(by_lattice.at(l));
+  }
+  return out;
 }
 
 }  // namespace rc::geometry

@@ -28,4 +28,10 @@ TetrahedronNodes tetrahedron_nodes(int order);
 // weights on the same global vertices whatever their local orientations.
 std::array<int, 4> tetrahedron_lattice(const std::array<double, 3>& uvw, int order);
 
+// The tetrahedron's local node at each node of the triangle on its face opposite vertex `opposite`, the face's
+// vertices (face_vertices) taken in ascending local order: triangle node (u, v) has barycentric weights 1 − u − v, u, v
+// on them, in lagrange_nodes.hpp's triangle order.
+std::vector<int> tetrahedron_face_nodes(int order, int opposite);
+std::array<int, 3> face_vertices(int opposite);
+
 }  // namespace rc::geometry

@@ -74,4 +74,12 @@ struct ReferenceTetrahedron {
 };
 ReferenceTetrahedron reference_tetrahedron(int order, int quadrature_degree);
 
+// The Lagrange basis of `order` on the reference tetrahedron at given points (u, v, w), in the local node order of
+// VolumeMesh::tetrahedra: N[i * nodes_per_element + a] and dN[(i * nodes_per_element + a) * 3 + d] (d/du, d/dv, d/dw).
+// For integrals over a tetrahedron's face with its volume basis (the wall's boundary layer, wall_quadrature.hpp).
+struct TetrahedronBasis {
+  std::vector<double> N, dN;
+};
+TetrahedronBasis tetrahedron_basis_at(int order, const std::vector<std::array<double, 3>>& points);
+
 }  // namespace rc::geometry

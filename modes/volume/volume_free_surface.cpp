@@ -1,36 +1,13 @@
 #include "volume_free_surface.hpp"
 
-#include "lagrange_nodes.hpp"
 #include "partial_volume.hpp"
 #include "tetrahedron_nodes.hpp"
 
 #include <algorithm>
-#include <map>
 #include <stdexcept>
 
 namespace rc::modes {
 namespace {
-
-// The tetrahedron's local node at each node of the triangle on its face opposite vertex `opposite`, the face's vertices
-// taken in ascending local order: triangle (u, v) has barycentric weights 1 − u − v, u, v on them.
-std::vector<int> face_nodes(int order, int opposite) {
-  const auto tet = geometry::tetrahedron_nodes(order);
-  std::map<std::array<int, 4>, int> by_lattice;
-  for (int a = 0; a < tet.nodes_per_element; ++a) by_lattice[geometry::tetrahedron_lattice(tet.points[a], order)] = a;
-  std::array<int, 3> f{};
-  for (int v = 0, i = 0; v < 4; ++v)
-    if (v != opposite) f[i++] = v;
-  const auto tri = geometry::triangle_nodes(order);
-  std::vector<int> out;
-  for (const auto& [u, v] : tri.points) {
-    std::array<int, 4> l{};
-    l[f[1]] = static_cast<int>(std::lround(u * order));
-    l[f[2]] = static_cast<int>(std::lround(v * order));
-    l[f[0]] = order - l[f[1]] - l[f[2]];
-    out.push_back(by_lattice.at(l));
-  }
-  return out;
-}
 
 // The faces found must cover the CAD surface (`cad`, 0 when unknown) to the curved faces' geometric error: a face
 // missed is a piece of surface treated as a wall. Measured on half-full spheres (2026-12-07): P1 h 0.5 1.8e-2, P2 h 0.8
@@ -52,7 +29,7 @@ VolumeFreeSurface::VolumeFreeSurface(const VolumeSpace& space)
   const int npe = m.nodes_per_element, p = m.order;
   const auto tri = geometry::reference_triangle(p, 2 * p + 2);
   std::array<std::vector<int>, 4> local;
-  for (int o = 0; o < 4; ++o) local[o] = face_nodes(p, o);
+  for (int o = 0; o < 4; ++o) local[o] = geometry::tetrahedron_face_nodes(p, o);
   index_.assign(space.ndof(), -1);
   for (const auto& [e, o] : geometry::wall_faces(m)) {
     const int* v = &m.tetrahedra[e * npe];
