@@ -11,6 +11,7 @@
 #include "ellipsoid_closed_form.hpp"
 #include "viscous_volume_run.hpp"
 #include "viscous_volume_table.hpp"
+#include "boundary_layer_response.hpp"
 #include "viscous_volume_response.hpp"
 #include "viscous_volume_response_table.hpp"
 #include "cavity_response.hpp"
@@ -78,6 +79,9 @@ void add_common_options(CLI::App* cmd, Common& o) {
   cmd->add_option("--krylov-vectors", o.krylov_vectors, "with --sigma -o FILE.h5: Krylov vectors per input and "
                                                         "expansion point, 1..16 (default 4)");
   cmd->add_option("--sigma-imag", o.sigma_imag, "with --sigma FROM:TO:N: the imaginary part of every frequency");
+  cmd->add_flag("--boundary-layer", o.boundary_layer, "with --ekman --sigma -o FILE.csv: the forced response of the "
+                                                      "ideal liquid with Ekman layers on its walls, on the ideal mesh, at "
+                                                      "any small Ek (docs/volume.md §9)");
 }
 
 // Progress lines on stderr, from the root rank only.
@@ -264,7 +268,18 @@ void VolumeCommands::set_provenance(ModeTable& table, const std::string& command
 }
 
 int VolumeCommands::run(const std::string& command_line) const {
+  if (common_.boundary_layer) {
+    const auto& o = common_;
+    if (o.ekman == 0 || o.sigma.empty() || std::filesystem::path(o.output).extension() != ".csv")
+      throw std::runtime_error("--boundary-layer gives the forced response as CSV: --ekman Ek --sigma LIST -o FILE.csv "
+                               "(its response table is not built yet; the viscous one is --ekman Ek --sigma FROM:TO:N "
+                               "-o T.h5 without --boundary-layer)");
+    if (o.wall_size > 0 || o.wall_layer > 0 || o.near_wall_size > 0)
+      throw std::runtime_error("--boundary-layer meshes the ideal liquid: drop --wall-size, --wall-layer and "
+                               "--near-wall-size (the layers are in its wall conditions)");
+  }
   const VolumeTableRequest request = resolve();
+  if (common_.boundary_layer) return run_boundary_layer_response(request);
   if (request.shape.fill < 1 && common_.ekman > 0 && std::filesystem::path(common_.output).extension() == ".h5")
     return run_response_table(request, command_line);
   if (request.shape.fill < 1 && common_.ekman > 0) return run_fill_response(request);
@@ -567,6 +582,41 @@ int VolumeCommands::run_fill_response(const VolumeTableRequest& ideal) const {
     const FillResponse& R = r.R[i];
     std::cout << fmt::format("{:.6f}{:+.6f}i", request.sigmas[i].real(), request.sigmas[i].imag());
     for (int k : {0, 1, 2, 3}) std::cout << fmt::format("  {:.8e} {:+.8e}", R(k, k).real(), R(k, k).imag());
+    std::cout << "\n";
+  }
+  std::cout << std::flush;
+  return 0;
+}
+
+int VolumeCommands::run_boundary_layer_response(const VolumeTableRequest& ideal) const {
+  require_one_rank();
+  const bool fill = ideal.shape.fill < 1;
+  const VolumeSpace space(geometry::mesh_volume(ideal.shape, ideal.mesh), 0, !fill);
+  const std::vector<std::complex<double>> sigmas = parse_sigma_spec(common_.sigma, common_.sigma_imag);
+  const BoundaryLayerResponse r = boundary_layer_response(space, common_.ekman, sigmas, print_progress);
+  const std::string method = fmt::format(
+      "ideal liquid with Ekman layers on its walls at Ek = {}{}; forced solves on 3-D P{} ({} tetrahedra, {} pressure "
+      "unknowns, {} wall points)", common_.ekman,
+      fill ? fmt::format(", fill {}, free surface b = {:.10g}", ideal.shape.fill, r.surface_radius) : std::string(),
+      ideal.mesh.order, space.num_elements(), r.unknowns, r.wall_points);
+  const std::vector<std::string> names = fill ? std::vector<std::string>{"Ux", "Uy", "Uz", "Tx", "Ty"}
+                                              : std::vector<std::string>{"x", "y", "z"};
+  write_response_csv(common_.output, fmt::format("# cavity-modes 3-D response: {}\n# R_jk(sigma), the viscous "
+                                                 "response's to first order in Ek^(1/2), {} (docs/volume.md, section 9)\n",
+                                                 method, fill ? fmt::format("over Ux, Uy, Uz, Tx, Ty about P0 = ({}, {}, {})",
+                                                 r.origin[0], r.origin[1], r.origin[2]) : std::string("about the centroid")),
+                     names, sigmas, r.R);
+  std::cout << "3-D boundary-layer response: " << method << ", " << r.seconds << " s  -> " << common_.output << "\n";
+  const std::complex<double> I(0, 1);
+  for (std::size_t i = 0; i < sigmas.size(); ++i) {
+    const Eigen::MatrixXcd& R = r.R[i];
+    const std::complex<double> m1 = 0.5 * (R(0, 0) + I * R(0, 1) - I * R(1, 0) + R(1, 1));
+    std::cout << fmt::format("{:.6f}{:+.6f}i  R_m1 {:.10e} {:+.10e}", sigmas[i].real(), sigmas[i].imag(), m1.real(),
+                             m1.imag());
+    if (fill) {
+      const std::complex<double> gg = 0.5 * (R(3, 3) + I * R(3, 4) - I * R(4, 3) + R(4, 4));
+      std::cout << fmt::format("  offset m1 {:.10e} {:+.10e}", gg.real(), gg.imag());
+    }
     std::cout << "\n";
   }
   std::cout << std::flush;

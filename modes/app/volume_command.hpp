@@ -37,6 +37,7 @@ class VolumeCommands {
   int run_response_table(const VolumeTableRequest& ideal, const std::string& command_line) const;
   int run_partial_fill(const VolumeTableRequest& request, const std::string& command_line) const;
   int run_fill_response(const VolumeTableRequest& ideal) const;
+  int run_boundary_layer_response(const VolumeTableRequest& ideal) const;
   void set_provenance(ModeTable& table, const std::string& command_line) const;
   CLI::App *ellipsoid_ = nullptr, *volume_ = nullptr;
   double a_ = 0, b_ = 0, c_ = 0, tilt_degrees_ = 0;
@@ -58,6 +59,7 @@ class VolumeCommands {
     double max_fit_error = 1e-4;  // with --sigma -o FILE.h5: the response table's tolerance
     int krylov_vectors = 4;       // and its Krylov vectors per input and expansion point
     std::string exact_at;         // and the complex frequencies where its R must be exact
+    bool boundary_layer = false;  // with --ekman --sigma: the ideal liquid with Ekman layers on its walls (docs/volume.md §9)
   } common_;
 };
 
