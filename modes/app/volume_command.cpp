@@ -12,6 +12,7 @@
 #include "viscous_volume_run.hpp"
 #include "viscous_volume_table.hpp"
 #include "boundary_layer_response.hpp"
+#include "boundary_layer_table.hpp"
 #include "viscous_volume_response.hpp"
 #include "viscous_volume_response_table.hpp"
 #include "cavity_response.hpp"
@@ -270,15 +271,19 @@ void VolumeCommands::set_provenance(ModeTable& table, const std::string& command
 int VolumeCommands::run(const std::string& command_line) const {
   if (common_.boundary_layer) {
     const auto& o = common_;
-    if (o.ekman == 0 || o.sigma.empty() || std::filesystem::path(o.output).extension() != ".csv")
-      throw std::runtime_error("--boundary-layer gives the forced response as CSV: --ekman Ek --sigma LIST -o FILE.csv "
-                               "(its response table is not built yet; the viscous one is --ekman Ek --sigma FROM:TO:N "
-                               "-o T.h5 without --boundary-layer)");
+    const auto ext = std::filesystem::path(o.output).extension();
+    if (o.ekman == 0 || o.sigma.empty() || (ext != ".csv" && ext != ".h5"))
+      throw std::runtime_error("--boundary-layer gives the forced response (--ekman Ek --sigma LIST -o FILE.csv) or "
+                               "its response table (--ekman Ek --sigma FROM:TO:N -o T.h5)");
+    if (!o.exact_at.empty() && ext != ".h5")
+      throw std::runtime_error("--exact-at belongs to a response table (-o T.h5)");
     if (o.wall_size > 0 || o.wall_layer > 0 || o.near_wall_size > 0)
       throw std::runtime_error("--boundary-layer meshes the ideal liquid: drop --wall-size, --wall-layer and "
                                "--near-wall-size (the layers are in its wall conditions)");
   }
   const VolumeTableRequest request = resolve();
+  if (common_.boundary_layer && std::filesystem::path(common_.output).extension() == ".h5")
+    return run_boundary_layer_table(request, command_line);
   if (common_.boundary_layer) return run_boundary_layer_response(request);
   if (request.shape.fill < 1 && common_.ekman > 0 && std::filesystem::path(common_.output).extension() == ".h5")
     return run_response_table(request, command_line);
@@ -593,7 +598,9 @@ int VolumeCommands::run_boundary_layer_response(const VolumeTableRequest& ideal)
   const bool fill = ideal.shape.fill < 1;
   const VolumeSpace space(geometry::mesh_volume(ideal.shape, ideal.mesh), 0, !fill);
   const std::vector<std::complex<double>> sigmas = parse_sigma_spec(common_.sigma, common_.sigma_imag);
-  const BoundaryLayerResponse r = boundary_layer_response(space, common_.ekman, sigmas, print_progress);
+  Progress progress(print_progress);
+  const BoundaryLayerResponse r = boundary_layer_response(
+      space, common_.ekman, sigmas, [&](std::size_t done, std::size_t total) { progress.step("forced solves", done, total); });
   const std::string method = fmt::format(
       "ideal liquid with Ekman layers on its walls at Ek = {}{}; forced solves on 3-D P{} ({} tetrahedra, {} pressure "
       "unknowns, {} wall points)", common_.ekman,
@@ -620,6 +627,24 @@ int VolumeCommands::run_boundary_layer_response(const VolumeTableRequest& ideal)
     std::cout << "\n";
   }
   std::cout << std::flush;
+  return 0;
+}
+
+int VolumeCommands::run_boundary_layer_table(const VolumeTableRequest& ideal, const std::string& command_line) const {
+  require_one_rank();
+  BoundaryLayerTableRequest request{ideal.shape, ideal.mesh, common_.ekman, {}, 0, 0};
+  if (!common_.exact_at.empty()) request.exact_at = parse_sigma_spec(common_.exact_at, 0.0);
+  const std::vector<std::complex<double>> window = parse_sigma_spec(common_.sigma, 0.0);
+  request.lo = window.front().real();
+  request.hi = window.back().real();
+  if (!(request.lo >= 0 && request.hi > request.lo))
+    throw std::runtime_error("a boundary-layer table's window --sigma FROM:TO:N is real, 0 <= FROM < TO");
+  const ModeTable tensors = ideal.shape.fill < 1 ? ideal_fill_table(ideal) : ideal_tensors_table(ideal, "the ideal rows");
+  BoundaryLayerTableResult r = boundary_layer_table(tensors, request);
+  set_provenance(r.table, command_line);
+  write_mode_table(r.table, common_.output);
+  std::cout << table_text(r.table) << "boundary-layer table: " << r.table.solver << "; " << r.seconds << " s\n"
+            << std::flush;
   return 0;
 }
 

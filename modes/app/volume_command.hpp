@@ -38,6 +38,7 @@ class VolumeCommands {
   int run_partial_fill(const VolumeTableRequest& request, const std::string& command_line) const;
   int run_fill_response(const VolumeTableRequest& ideal) const;
   int run_boundary_layer_response(const VolumeTableRequest& ideal) const;
+  int run_boundary_layer_table(const VolumeTableRequest& ideal, const std::string& command_line) const;
   void set_provenance(ModeTable& table, const std::string& command_line) const;
   CLI::App *ellipsoid_ = nullptr, *volume_ = nullptr;
   double a_ = 0, b_ = 0, c_ = 0, tilt_degrees_ = 0;

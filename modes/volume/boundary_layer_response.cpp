@@ -319,7 +319,7 @@ Eigen::MatrixXcd ResponseAtSigma::operator()(cd sigma) const {
 }  // namespace
 
 BoundaryLayerResponse boundary_layer_response(const VolumeSpace& space, double ekman, const std::vector<cd>& sigmas,
-                                              const std::function<void(const std::string&)>& progress) {
+                                              const std::function<void(std::size_t, std::size_t)>& progress) {
   if (!(ekman >= 0 && ekman < 1)) throw std::runtime_error("boundary-layer response: Ek must be in [0, 1)");
   const auto t0 = std::chrono::steady_clock::now();
   const bool fill = space.mesh().free_surface_radius > 0;
@@ -341,7 +341,7 @@ BoundaryLayerResponse boundary_layer_response(const VolumeSpace& space, double e
   const ResponseAtSigma at(space, dirs, in, surface, wall, ekman);
   for (std::size_t i = 0; i < sigmas.size(); ++i) {
     out.R.push_back(at(sigmas[i]));
-    if (progress) progress("sigma " + std::to_string(i + 1) + " of " + std::to_string(sigmas.size()));
+    if (progress) progress(i + 1, sigmas.size());
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;

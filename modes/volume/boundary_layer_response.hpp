@@ -44,6 +44,6 @@ struct BoundaryLayerResponse {
 // eigenvalue at Ek = 0).
 BoundaryLayerResponse boundary_layer_response(const VolumeSpace& space, double ekman,
                                               const std::vector<std::complex<double>>& sigmas,
-                                              const std::function<void(const std::string&)>& progress = {});
+                                              const std::function<void(std::size_t done, std::size_t total)>& progress = {});
 
 }  // namespace rc::modes

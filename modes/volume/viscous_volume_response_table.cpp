@@ -63,6 +63,27 @@ std::string solver_line(const VolumeResponseTableRequest& req, const VolumeRespo
 
 }  // namespace
 
+void add_response_table_rows(ModeTable& t, const std::vector<VolumePole>& poles) {
+  auto& vf = t.volume_free_surface;  // a partially filled tank's (docs/volume.md §8): its five directions' residues
+  for (const VolumePole& p : poles) {
+    add_viscous_volume_row(t, {p.lambda.real(), std::max(p.lambda.imag(), 0.0)}, p.H.topLeftCorner<3, 3>(), 0.0);
+    if (!vf.present()) continue;
+    for (int i = 0; i < 5; ++i)
+      for (int j = 0; j < 5; ++j) {
+        vf.coupling_re.push_back(p.H(i, j).real());
+        vf.coupling_im.push_back(p.H(i, j).imag());
+      }
+  }
+  t.normalisation = "3-D viscous response table: each row a pole lambda + i decay of the response with its "
+                    "rank-one residue H (its conjugate at -conj(lambda) implied; a row with lambda = 0 carries half "
+                    "its own), R(s) = sum H/(s - lambda) + conj(H)/(s + conj(lambda)); E + i E_imag = H_xx + H_yy, "
+                    "a + i a_imag = sqrt((E + i E_imag)/2), N2 = 1 (docs/volume.md section 7)";
+  if (vf.present()) t.normalisation += "; a partially filled tank's H over (U_x, U_y, U_z, T_x, T_y) about P0 (section 8)";
+  double kept = 0;
+  for (const double E : t.E) kept += E;
+  t.coverage = t.sum_rule > 0 ? kept / t.sum_rule : 0;
+}
+
 VolumeResponseTableResult viscous_volume_response_table(const ModeTable* ideal,
                                                         const VolumeResponseTableRequest& request,
                                                         const std::function<void(const std::string&)>& progress) {
@@ -87,27 +108,11 @@ VolumeResponseTableResult viscous_volume_response_table(const ModeTable* ideal,
   auto& vf = t.volume_free_surface;  // a partially filled tank's (docs/volume.md §8): its five directions' residues
   std::fill(vf.geostrophic_re.begin(), vf.geostrophic_re.end(), 0.0);
   std::fill(vf.geostrophic_im.begin(), vf.geostrophic_im.end(), 0.0);
-  for (const VolumePole& p : r.poles) {
-    add_viscous_volume_row(t, {p.lambda.real(), std::max(p.lambda.imag(), 0.0)}, p.H.topLeftCorner<3, 3>(), 0.0);
-    if (!vf.present()) continue;
-    for (int i = 0; i < 5; ++i)
-      for (int j = 0; j < 5; ++j) {
-        vf.coupling_re.push_back(p.H(i, j).real());
-        vf.coupling_im.push_back(p.H(i, j).imag());
-      }
-  }
+  add_response_table_rows(t, r.poles);
   t.fit_lo = request.window.front();
   t.fit_hi = request.window.back();
   t.fit_error = std::max({r.reduction.estimate, r.reduction.check_error, r.rows_error});
   t.solver = solver_line(request, r, window.size(), beyond);
-  t.normalisation = "3-D viscous response table: each row a pole lambda + i decay of the reduced response with its "
-                    "rank-one residue H (its conjugate at -conj(lambda) implied; a row with lambda = 0 carries half "
-                    "its own), R(s) = sum H/(s - lambda) + conj(H)/(s + conj(lambda)); E + i E_imag = H_xx + H_yy, "
-                    "a + i a_imag = sqrt((E + i E_imag)/2), N2 = 1 (docs/volume.md section 7)";
-  if (vf.present()) t.normalisation += "; a partially filled tank's H over (U_x, U_y, U_z, T_x, T_y) about P0 (section 8)";
-  double kept = 0;
-  for (const double E : t.E) kept += E;
-  t.coverage = t.sum_rule > 0 ? kept / t.sum_rule : 0;
   t.wall_seconds = r.seconds + ideal->wall_seconds;
   t.sort_by_energy();
   t.validate();

@@ -41,4 +41,10 @@ VolumeResponseTableResult viscous_volume_response_table(const ModeTable* ideal,
                                                         const VolumeResponseTableRequest& request,
                                                         const std::function<void(const std::string&)>& progress = {});
 
+// The rows of a 3-D response table started by viscous_volume_table_start: one per pole, its rank-one residue H as the
+// row's coupling tensor (a partially filled tank's 5 × 5 H into /volume_free_surface), with the normalisation line and
+// the rows' coverage of the sum rule. Shared by the Krylov table above and the boundary-layer one
+// (boundary_layer_table.hpp).
+void add_response_table_rows(ModeTable& t, const std::vector<VolumePole>& poles);
+
 }  // namespace rc::modes

@@ -222,6 +222,11 @@ void check_general_refinable(const Scene& scene) {
                        "response SHAPE --ekman Ek --sigma FROM:TO:N -o FILE.h5), and this is not one");
     if (t.command_line.empty())
       throw SceneError(scene.file.string() + ": " + key + ".table " + file.string() + ": it records no command line");
+    if (t.command_line.find("--boundary-layer") != std::string::npos)
+      throw SceneError(scene.file.string() + ": " + key + ".table " + file.string() + ": a boundary-layer table is "
+                       "exact where it was made exact (value and slope): remake it with --exact-at at the root that "
+                       "matters until the root stays (one or two rounds), and measure its mesh error on a finer "
+                       "--mesh-size (docs/volume.md section 9; bench/boundary_layer_spacecraft.py)");
   }
 }
 

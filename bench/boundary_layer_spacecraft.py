@@ -1,0 +1,128 @@
+#!/usr/bin/env python3
+"""The nutation decay of spacecraft with boundary-layer tables (docs/volume.md section 9), measured against the viscous
+solver where it can be: cavity-modes ellipsoid ... --boundary-layer tables remade exact at the nutation root (value
+and slope) until it settles, then chain-rom spectrum's root.
+
+  python3 bench/boundary_layer_spacecraft.py [BUILD_DIR] [OUT_DIR]     (about 6 minutes on 2 cores)
+
+1. On the spin axis, against the converged meridian viscous decays of docs/trust.md (the spacecraft of
+   data/scenes/spacecraft_nutation.toml with one spherical tank of radius 0.4 m, 0.3 m above the centre of mass):
+   60 % full at Ek = 9.05192e-7 (2.9726e-4 1/s, P4/P5 on h 0.0145) and 50 % full at Ek = 1e-6 (3.92675e-4 1/s).
+2. The two-tank craft of data/scenes/spacecraft_fill_tanks.toml (two half-full spheres of radius 0.3 m at +-0.6 m,
+   hydrazine, 60 rpm: Ek = 1.60924e-6) on three meshes of the ideal liquid.
+Writes OUT_DIR/boundary_layer_spacecraft.csv and prints the rows."""
+import json
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+BUILD = os.path.abspath(sys.argv[1]) if len(sys.argv) > 1 else os.path.join(ROOT, "build")
+OUT = os.path.abspath(sys.argv[2]) if len(sys.argv) > 2 else os.path.join(ROOT, "bench", "results")
+MODES = os.path.join(BUILD, "modes", "cavity-modes")
+ROM = os.path.join(BUILD, "rom", "chain-rom")
+SPIN = 6.2832
+
+
+def run(args):
+    subprocess.run(args, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+
+
+def roots(scene):
+    out = subprocess.run([ROM, "spectrum", scene, "--json"], check=True, capture_output=True, text=True).stdout
+    return [complex(a, b) for a, b in json.loads(out)["roots"]]
+
+
+def nutation(scene, near):
+    """The weakly damped root nearest the previous one (the nutation, followed from the ideal chain's)."""
+    slow = [r for r in roots(scene) if abs(r.imag) < 0.01 * abs(r.real)]
+    return min(slow, key=lambda r: abs(r - near))
+
+
+def settle(scene, tables, start):
+    """Remakes every (table, shape args) exact at the root's tank frequency until the root moves by < 1e-9."""
+    root, rounds = start, 0
+    while rounds < 6:
+        s = root / SPIN
+        for path, args in tables:
+            run([MODES, "ellipsoid"] + args + ["--boundary-layer", "--sigma", "0:2:3",
+                                               "--exact-at=%.12g%+.12gi" % (s.real, s.imag), "-o", path])
+        new = nutation(scene, root)
+        rounds += 1
+        if abs(new - root) < 1e-9 * abs(root):
+            return new, rounds
+        root = new
+    return root, rounds
+
+
+def scene_text(template, replace):
+    text = open(os.path.join(ROOT, "data", "scenes", template)).read()
+    for a, b in replace:
+        text = re.sub(a, b, text, flags=re.M)
+    return text
+
+
+def on_axis(work, fill, ek, reference, mesh):
+    ideal = os.path.join(work, "ideal.h5")
+    run([MODES, "ellipsoid", "--a", "1", "--b", "1", "--c", "1", "--fill", str(fill)] + mesh + ["-o", ideal])
+    base = [(r'"../../out/tables/sphere_fill0.6_hydrazine.h5"', '"%s"' % ideal), (r"^viscosity = .*\n", "")]
+    open(os.path.join(work, "ideal.toml"), "w").write(scene_text("spacecraft_nutation.toml", base))
+    start = nutation(os.path.join(work, "ideal.toml"), complex(-1.53, 0))
+    table = os.path.join(work, "bl.h5")
+    nu = ek * SPIN * 0.16
+    open(os.path.join(work, "bl.toml"), "w").write(scene_text("spacecraft_nutation.toml", [
+        (r'"../../out/tables/sphere_fill0.6_hydrazine.h5"', '"%s"' % table), (r"^viscosity = .*", "viscosity = %r" % nu)]))
+    args = ["--a", "1", "--b", "1", "--c", "1", "--fill", str(fill), "--ekman", repr(ek)] + mesh
+    t = time.time()
+    root, rounds = settle(os.path.join(work, "bl.toml"), [(table, args)], start)
+    return root, rounds, time.time() - t
+
+
+def two_tanks(work, mesh):
+    tables = []
+    replace = [(r"^viscosity = .*\n", "")]
+    for d in ("0", "180"):
+        ideal = os.path.join(work, "ideal_%s.h5" % d)
+        run([MODES, "ellipsoid", "--a", "1", "--b", "1", "--c", "1", "--fill", "0.5", "--axis-distance", "2",
+             "--axis-direction", d] + mesh + ["-o", ideal])
+        replace.append((r'"../../out/tables/fill_tank_%s.h5"' % d, '"%s"' % ideal))
+    open(os.path.join(work, "ideal.toml"), "w").write(scene_text("spacecraft_fill_tanks.toml", replace))
+    start = nutation(os.path.join(work, "ideal.toml"), complex(-2.1, 0))
+    replace = []
+    for d in ("0", "180"):
+        table = os.path.join(work, "bl_%s.h5" % d)
+        replace.append((r'"../../out/tables/fill_tank_%s.h5"' % d, '"%s"\nviscosity = 9.1e-7' % table))
+        tables.append((table, ["--a", "1", "--b", "1", "--c", "1", "--fill", "0.5", "--axis-distance", "2",
+                               "--axis-direction", d, "--ekman", "1.60924e-6"] + mesh))
+    open(os.path.join(work, "bl.toml"), "w").write(scene_text("spacecraft_fill_tanks.toml", replace))
+    t = time.time()
+    root, rounds = settle(os.path.join(work, "bl.toml"), tables, start)
+    return start, root, rounds, time.time() - t
+
+
+def main():
+    os.makedirs(OUT, exist_ok=True)
+    rows = ["case,mesh,ekman,ideal_root,nutation_re,decay,reference_decay,relative,rounds,seconds"]
+    meshes = [["--order", "3", "--mesh-size", "0.3"], ["--order", "3", "--mesh-size", "0.2"],
+              ["--order", "4", "--mesh-size", "0.3"]]
+    with tempfile.TemporaryDirectory() as work:
+        for fill, ek, ref in ((0.6, 9.05192e-7, 2.9726e-4), (0.5, 1e-6, 3.92675e-4)):
+            for mesh in meshes:
+                root, rounds, sec = on_axis(work, fill, ek, ref, mesh)
+                rows.append("on-axis sphere %g,%s,%g,,%.9f,%.6e,%.6e,%+.4f,%d,%.1f" % (
+                    fill, " ".join(mesh), ek, root.real, root.imag, ref, root.imag / ref - 1, rounds, sec))
+                print(rows[-1], flush=True)
+        for mesh in meshes:
+            start, root, rounds, sec = two_tanks(work, mesh)
+            rows.append("two tanks 0.5 at +-0.6 m,%s,1.60924e-6,%.6f,%.9f,%.6e,,,%d,%.1f" % (
+                " ".join(mesh), start.real, root.real, root.imag, rounds, sec))
+            print(rows[-1], flush=True)
+    with open(os.path.join(OUT, "boundary_layer_spacecraft.csv"), "w") as f:
+        f.write("\n".join(rows) + "\n")
+
+
+if __name__ == "__main__":
+    main()
