@@ -8,7 +8,10 @@ spectrum --json on it (the free chain, its base recoiling with the liquid: docs/
 3. the verdict stable, and NOT CONVERGED said for the tanks' unsettled rows;
 4. the craft's mirror symmetry about the tanks' plane through its centre of mass decouples the tilts from the base's
    translation, so the free chain's tilt roots are the fixed chain's (to 1e-9 of the nutation); with the tanks 0.1 m
-   above the craft's centre of mass they are not (its joint O then moves: by more than 1e-5).
+   above the craft's centre of mass they are not (its joint O then moves: by more than 1e-5);
+and with the liquid viscous (spacecraft_fill_tanks_viscous.toml, boundary-layer tables: docs/volume.md section 9):
+5. stable, the nutation decays, and the recipes' --exact-at is the root's (remade there, it moves by < 1e-6; measured
+   2026-12-08 at P3: 2.3e-9, the nutation 2.112656 + 1.2292e-4i rad/s).
 usage: fill_tanks_scene_check.py CAVITY_MODES CHAIN_ROM SCENES_DIR WORKDIR
 """
 import json, os, re, shlex, shutil, subprocess, sys
@@ -24,9 +27,10 @@ def run(*args):
     if p.returncode != 0: sys.exit("failed: " + " ".join(args) + "\n" + p.stderr[-2000:])
     return p.stdout
 
-def scene_with_tables(name, extra, tag, edit=lambda s: s, kind=None):
-    """The scene pointed at its recipes' tables made with `extra` options (once per tag), as <name>_<tag>.toml."""
-    text = open(os.path.join(scenes, name + ".toml")).read()
+def scene_with_tables(name, extra, tag, edit=lambda s: s, kind=None, recipe=lambda s: s):
+    """The scene pointed at its recipes' tables made with `extra` options (once per tag), as <name>_<tag>.toml;
+    `recipe` edits the scene's text before its recipes are read."""
+    text = recipe(open(os.path.join(scenes, name + ".toml")).read())
     for table, args in re.findall(r"^# recipe: ([^:]+): (.*)$", text, re.M):
         made = "%s_%s" % (tag, table)
         if not os.path.exists(made): run(modes_bin, *shlex.split(args), *extra, "-o", made)
@@ -66,5 +70,23 @@ for name in ("spacecraft_fill_tanks", "spacecraft_four_fill_tanks"):
           % (abs(fixed / nut - 1), abs(up_fixed / up_free - 1)))
     if not abs(fixed / nut - 1) < 1e-9: failures.append("free and fixed differ by %.1e on the plane" % abs(fixed / nut - 1))
     if not abs(up_fixed / up_free - 1) > 1e-5: failures.append("free and fixed agree off the plane")
+
+# The viscous craft (spacecraft_fill_tanks_viscous.toml): boundary-layer tables exact at the nutation's tank frequency.
+def viscous_nutation(sp, near):
+    slow = [complex(*r) for r in sp["roots"] if 0.5 < r[0] < 4 and abs(r[1]) < 1e-2]
+    return min(slow, key=lambda r: abs(r - near))
+
+name = "spacecraft_fill_tanks_viscous"
+sp = spectrum(scene_with_tables(name, low, "p3"))
+root = viscous_nutation(sp, 2.1127)
+print("%s: stable %s, nutation %.6f%+.4ei" % (name, sp["stable"], root.real, root.imag))
+if not sp["stable"]: failures.append(name + ": not stable")
+if not 0 < root.imag: failures.append(name + ": the nutation does not decay")
+# 5. Remade exact at the root found, the table moves it by less than 1e-6: the recipes' --exact-at is the root's.
+s = -root.conjugate() / 6.2832
+exact = lambda text: re.sub(r"--exact-at=\S+", "--exact-at=%.12g%+.12gi" % (s.real, s.imag), text)
+again = viscous_nutation(spectrum(scene_with_tables(name, low, "again", recipe=exact)), root)
+print("  remade at the root: moved %.1e" % (abs(again / root - 1)))
+if not abs(again / root - 1) < 1e-6: failures.append("the recipes' exact frequency is not the root's")
 print("FAILED: " + "; ".join(failures) if failures else "passed")
 sys.exit(1 if failures else 0)
