@@ -179,8 +179,8 @@ void VolumeCommands::check_partial_fill_options() const {
   if (o.ekman != 0) {
     if (o.sigma.empty() || (ext != ".csv" && ext != ".h5"))
       throw std::runtime_error("--ekman with --fill in 3-D gives the forced response (--ekman Ek --sigma LIST -o "
-                               "FILE.csv) and the response table (--ekman Ek --sigma FROM:TO:N -o T.h5); its damped "
-                               "modes are not built yet");
+                               "FILE.csv) and the response table (--ekman Ek --sigma FROM:TO:N -o T.h5), with "
+                               "--boundary-layer at any Ek; its damped modes are not built yet");
     if (!(o.ekman > 0 && o.ekman < 1)) throw std::runtime_error("--ekman must be in (0, 1)");
     if (ext == ".h5") {
       if (!(o.max_fit_error > 0 && o.max_fit_error < 1)) throw std::runtime_error("--max-fit-error must be in (0, 1)");

@@ -139,8 +139,8 @@ BoundaryLayerTableResult boundary_layer_table(const ModeTable& ideal, const Boun
   r.exact_at = folded(request.exact_at);
   if (r.exact_at.empty())
     throw std::runtime_error("a boundary-layer table is exact where a chain's roots are: give --exact-at (the tank "
-                             "frequencies of the roots, e.g. from chain-rom spectrum on the ideal table; chain-rom "
-                             "confirm then remakes it at the roots it finds)");
+                             "frequencies of the roots, e.g. from chain-rom spectrum on the ideal table; remade at "
+                             "the root it gives, it settles in one or two rounds: docs/volume.md section 9)");
   const bool fill = request.shape.fill < 1;
   const VolumeSpace space(geometry::mesh_volume(request.shape, request.mesh), 0, !fill);
   // Each point and a companion a step h off it, so that the table's R matches the response's value and slope there: a
@@ -189,7 +189,7 @@ BoundaryLayerTableResult boundary_layer_table(const ModeTable& ideal, const Boun
       "ideal liquid with Ekman layers on its walls (docs/volume.md section 9): the ideal table's rows damped as the "
       "boundary-layer response at each row's frequency says, its lambda = 0 weight spinning up at Ek^(1/2), and {} correction dipole(s) (poles at Re s + {:g}i, + {:g}i and + {:g}i) making R and its slope the "
       "boundary-layer response's at s = {} (to {:.1e}; the corrections {:.2g} of R there); P{} tetrahedra, {} pressure unknowns, {} "
-      "wall points; exact only there: confirm the roots (chain-rom confirm)",
+      "wall points; exact only there: remake it at the roots until they stay",
       C.size(), request.width, 2 * request.width, 4 * request.width, points, r.exact_error, r.correction, request.mesh.order, r.unknowns, bl.wall_points);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   t.wall_seconds = r.seconds + ideal.wall_seconds;

@@ -8,8 +8,8 @@
 // rounding, and whose tails fall off as 1/|s − p_e|² away from it:
 //   R(s) = Σ_rows [H/(s − λ) + conj(H)/(s + conj(λ))] + Σ_e [C_e (1/(s − p_e) − 1/(s − p_e − iw)) + mirror].
 // A chain's root at an exact-at frequency is then the root of its characteristic equation with the boundary-layer
-// response; `chain-rom confirm` remakes the table exact at the roots it follows until they stop moving (docs/rom.md,
-// "Confirmed roots"). Roots elsewhere hold the ideal liquid's rows and the corrections' tails.
+// response; remade exact at the root it gives, the table settles it in one or two rounds (the slope is matched too).
+// Roots elsewhere hold the damped ideal rows and the corrections' tails.
 #pragma once
 
 #include "mode_table.hpp"

@@ -168,6 +168,21 @@ expect_error "a 3-D viscous fill below its mesh's Ek" "has no wall layers yet, s
 expect_error "a 3-D fill's response table off the real axis" "window is real" "$BIN" ellipsoid --a 1 --b 1 --c 1 --fill 0.5 --ekman 1e-3 --sigma 0:1:3 --sigma-imag 0.1 -o out.h5
 expect_error "a 3-D fill's wall layers" "--wall-layer is not taken with --fill" "$BIN" ellipsoid --a 1 --b 1 --c 1 --fill 0.5 --ekman 1e-3 --sigma 0.5 --wall-layer 0.01 -o out.csv
 expect_error "an ideal 3-D fill's --sigma" "--sigma needs --ekman" "$BIN" ellipsoid --a 1 --b 1 --c 1 --fill 0.5 --sigma 0.5 -o out.h5
+# The liquid with Ekman layers on its walls (docs/volume.md §9): its forced response as CSV on the ideal mesh (the
+# checks against the meridian solver are BoundaryLayerResponse.*, the chain's scenes_boundary_layer_table), and its
+# refusals.
+if "$BIN" ellipsoid --a 1 --b 1 --c 1 --fill 0.5 --axis-distance 2 --ekman 1e-6 --order 2 --mesh-size 0.6 \
+     --sigma=0.3,-0.3 --boundary-layer -o bl.csv > bl.txt 2>&1 &&
+   grep -q "^3-D boundary-layer response: ideal liquid with Ekman layers on its walls at Ek = 1e-06, fill 0.5" bl.txt &&
+   [ "$(grep -vc '^#' bl.csv)" = 3 ]; then
+  ok "ellipsoid --fill 0.5 --boundary-layer"
+else
+  bad "ellipsoid --fill 0.5 --boundary-layer: $(tail -3 bl.txt)"
+fi
+expect_error "a boundary-layer table without --exact-at" "give --exact-at" "$BIN" ellipsoid --a 1 --b 1 --c 1 --fill 0.5 --ekman 1e-6 --boundary-layer --sigma 0:2:3 --order 2 --mesh-size 0.6 -o out.h5
+expect_error "a boundary-layer response with --wall-size" "drop --wall-size" "$BIN" ellipsoid --a 1 --b 1 --c 1 --fill 0.5 --ekman 1e-6 --boundary-layer --sigma 0.3 --wall-size 0.01 -o out.csv
+expect_error "a boundary-layer response without --sigma" "--boundary-layer gives the forced response" "$BIN" ellipsoid --a 1 --b 1 --c 1 --ekman 1e-6 --boundary-layer -o out.csv
+expect_error "a boundary-layer response at the band's edge" "sigma must differ from 0 and +-2" "$BIN" ellipsoid --a 1 --b 1 --c 1 --ekman 1e-6 --boundary-layer --sigma 2 --order 2 --mesh-size 0.6 -o out.csv
 # Its viscous forced response (docs/volume.md §8, "The viscous liquid"): the 5 x 5 response about P0 as CSV, every
 # entry finite (the check against the meridian solver is ViscousFill3d.SphereOnTheAxisIsTheMeridianFill).
 if "$BIN" ellipsoid --a 1 --b 1 --c 1 --fill 0.5 --axis-distance 2 --ekman 1e-2 --order 2 --mesh-size 0.5 \
