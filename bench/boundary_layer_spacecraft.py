@@ -3,7 +3,8 @@
 solver where it can be: cavity-modes ellipsoid ... --boundary-layer tables remade exact at the nutation root (value
 and slope) until it settles, then chain-rom spectrum's root.
 
-  python3 bench/boundary_layer_spacecraft.py [BUILD_DIR] [OUT_DIR]     (about 6 minutes on 2 cores)
+  python3 bench/boundary_layer_spacecraft.py [BUILD_DIR] [OUT_DIR]     (about 25 minutes on one core)
+  PART="four" or PART="sweep" for the four-tank craft or the two-tank craft's fill sweep (0.2 to 0.95)
 
 1. On the spin axis, against the converged meridian viscous decays of docs/trust.md (the spacecraft of
    data/scenes/spacecraft_nutation.toml with one spherical tank of radius 0.4 m, 0.3 m above the centre of mass):
@@ -81,46 +82,60 @@ def on_axis(work, fill, ek, reference, mesh):
     return root, rounds, time.time() - t
 
 
-def two_tanks(work, mesh):
+def craft(work, template, directions, mesh, fill=0.5, guess=-2.1):
+    """The craft of `template` with its tanks (one per direction, 0.6 m off the axis) at `fill`: the ideal rows'
+    nutation, then the boundary-layer tables' settled root."""
     tables = []
     replace = [(r"^viscosity = .*\n", "")]
-    for d in ("0", "180"):
+    for d in directions:
         ideal = os.path.join(work, "ideal_%s.h5" % d)
-        run([MODES, "ellipsoid", "--a", "1", "--b", "1", "--c", "1", "--fill", "0.5", "--axis-distance", "2",
+        run([MODES, "ellipsoid", "--a", "1", "--b", "1", "--c", "1", "--fill", str(fill), "--axis-distance", "2",
              "--axis-direction", d] + mesh + ["-o", ideal])
         replace.append((r'"../../out/tables/fill_tank_%s.h5"' % d, '"%s"' % ideal))
-    open(os.path.join(work, "ideal.toml"), "w").write(scene_text("spacecraft_fill_tanks.toml", replace))
-    start = nutation(os.path.join(work, "ideal.toml"), complex(-2.1, 0))
+    open(os.path.join(work, "ideal.toml"), "w").write(scene_text(template, replace))
+    start = nutation(os.path.join(work, "ideal.toml"), complex(guess, 0))
     replace = []
-    for d in ("0", "180"):
+    for d in directions:
         table = os.path.join(work, "bl_%s.h5" % d)
         replace.append((r'"../../out/tables/fill_tank_%s.h5"' % d, '"%s"\nviscosity = 9.1e-7' % table))
-        tables.append((table, ["--a", "1", "--b", "1", "--c", "1", "--fill", "0.5", "--axis-distance", "2",
+        tables.append((table, ["--a", "1", "--b", "1", "--c", "1", "--fill", str(fill), "--axis-distance", "2",
                                "--axis-direction", d, "--ekman", "1.60924e-6"] + mesh))
-    open(os.path.join(work, "bl.toml"), "w").write(scene_text("spacecraft_fill_tanks.toml", replace))
+    open(os.path.join(work, "bl.toml"), "w").write(scene_text(template, replace))
     t = time.time()
     root, rounds = settle(os.path.join(work, "bl.toml"), tables, start)
     return start, root, rounds, time.time() - t
 
 
 def main():
+    part = os.environ.get("PART", "axis two")
     os.makedirs(OUT, exist_ok=True)
     rows = ["case,mesh,ekman,ideal_root,nutation_re,decay,reference_decay,relative,rounds,seconds"]
     meshes = [["--order", "3", "--mesh-size", "0.3"], ["--order", "3", "--mesh-size", "0.2"],
               ["--order", "4", "--mesh-size", "0.3"]]
     with tempfile.TemporaryDirectory() as work:
-        for fill, ek, ref in ((0.6, 9.05192e-7, 2.9726e-4), (0.5, 1e-6, 3.92675e-4)):
+        for fill, ek, ref in ((0.6, 9.05192e-7, 2.9726e-4), (0.5, 1e-6, 3.92675e-4)) if "axis" in part else ():
             for mesh in meshes:
                 root, rounds, sec = on_axis(work, fill, ek, ref, mesh)
                 rows.append("on-axis sphere %g,%s,%g,,%.9f,%.6e,%.6e,%+.4f,%d,%.1f" % (
                     fill, " ".join(mesh), ek, root.real, root.imag, ref, root.imag / ref - 1, rounds, sec))
                 print(rows[-1], flush=True)
-        for mesh in meshes:
-            start, root, rounds, sec = two_tanks(work, mesh)
-            rows.append("two tanks 0.5 at +-0.6 m,%s,1.60924e-6,%.6f,%.9f,%.6e,,,%d,%.1f" % (
-                " ".join(mesh), start.real, root.real, root.imag, rounds, sec))
+        crafts = []
+        if "two" in part:
+            crafts += [("two tanks 0.5 at +-0.6 m", "spacecraft_fill_tanks.toml", ("0", "180"), mesh, 0.5) for mesh in meshes]
+        if "four" in part:
+            crafts.append(("four tanks 0.5 at 0.6 m", "spacecraft_four_fill_tanks.toml", ("0", "90", "180", "270"),
+                           meshes[2], 0.5))
+        if "sweep" in part:  # the two-tank craft's fill, on P3 h 0.3
+            crafts += [("two tanks %g at +-0.6 m" % f, "spacecraft_fill_tanks.toml", ("0", "180"), meshes[0], f)
+                       for f in (0.2, 0.35, 0.5, 0.65, 0.8, 0.95)]
+        for name, template, directions, mesh, fill in crafts:
+            guess = -2.34 if len(directions) == 4 else -2.1
+            start, root, rounds, sec = craft(work, template, directions, mesh, fill, guess)
+            rows.append("%s,%s,1.60924e-6,%.6f,%.9f,%.6e,,,%d,%.1f" % (
+                name, " ".join(mesh), start.real, root.real, root.imag, rounds, sec))
             print(rows[-1], flush=True)
-    with open(os.path.join(OUT, "boundary_layer_spacecraft.csv"), "w") as f:
+    name = "boundary_layer_spacecraft.csv" if part == "axis two" else "boundary_layer_spacecraft_%s.csv" % part.replace(" ", "_")
+    with open(os.path.join(OUT, name), "w") as f:
         f.write("\n".join(rows) + "\n")
 
 

@@ -11,7 +11,6 @@
 
 #include <chrono>
 #include <cmath>
-#include <memory>
 #include <optional>
 #include <stdexcept>
 
@@ -173,9 +172,9 @@ class ResponseAtSigma {
 
  private:
   Eigen::SparseMatrix<cd> stiffness(cd sigma, const Coriolis& L, const std::vector<LayerFrame>& frames) const;
-  std::vector<Eigen::VectorXcd> loads(cd sigma, const Coriolis& L, const std::vector<LayerFrame>& frames) const;
+  std::vector<Eigen::VectorXcd> loads(const Coriolis& L, const std::vector<LayerFrame>& frames) const;
   std::vector<Eigen::VectorXcd> solve(const Eigen::SparseMatrix<cd>& K, const std::vector<Eigen::VectorXcd>& rhs) const;
-  Eigen::MatrixXcd moments(cd sigma, const Coriolis& L, const std::vector<LayerFrame>& frames,
+  Eigen::MatrixXcd moments(const Coriolis& L, const std::vector<LayerFrame>& frames,
                            const std::vector<Eigen::VectorXcd>& Pi) const;
 
   const VolumeSpace& space_;
@@ -214,7 +213,7 @@ Eigen::SparseMatrix<cd> ResponseAtSigma::stiffness(cd sigma, const Coriolis& L,
   return K + W;
 }
 
-std::vector<Eigen::VectorXcd> ResponseAtSigma::loads(cd sigma, const Coriolis& L,
+std::vector<Eigen::VectorXcd> ResponseAtSigma::loads(const Coriolis& L,
                                                      const std::vector<LayerFrame>& frames) const {
   std::vector<Eigen::VectorXcd> rhs;
   const int npe = space_.nodes_per_element();
@@ -274,9 +273,8 @@ std::vector<Eigen::VectorXcd> ResponseAtSigma::solve(const Eigen::SparseMatrix<c
   return out;
 }
 
-Eigen::MatrixXcd ResponseAtSigma::moments(cd sigma, const Coriolis& L, const std::vector<LayerFrame>& frames,
+Eigen::MatrixXcd ResponseAtSigma::moments(const Coriolis& L, const std::vector<LayerFrame>& frames,
                                           const std::vector<Eigen::VectorXcd>& Pi) const {
-  (void)sigma;
   const int nd = static_cast<int>(dirs_.size()), npe = space_.nodes_per_element();
   Eigen::MatrixXcd R = L.alpha * in_.Uh.cast<cd>() + L.beta * in_.Ux.cast<cd>() + L.gamma * in_.Uz.cast<cd>();
   for (int j = 0; j < nd; ++j)
@@ -312,8 +310,8 @@ Eigen::MatrixXcd ResponseAtSigma::operator()(cd sigma) const {
   std::vector<LayerFrame> frames;
   if (s_ > 0)
     for (const auto& p : wall_) frames.emplace_back(p, sigma);
-  const auto Pi = solve(stiffness(sigma, L, frames), loads(sigma, L, frames));
-  return moments(sigma, L, frames, Pi);
+  const auto Pi = solve(stiffness(sigma, L, frames), loads(L, frames));
+  return moments(L, frames, Pi);
 }
 
 }  // namespace
