@@ -137,6 +137,31 @@ def main():
     name = "boundary_layer_spacecraft.csv" if part == "axis two" else "boundary_layer_spacecraft_%s.csv" % part.replace(" ", "_")
     with open(os.path.join(OUT, name), "w") as f:
         f.write("\n".join(rows) + "\n")
+    if "sweep" in part:
+        plot_sweep(rows[1:], os.path.join(OUT, "boundary_layer_fill_sweep.png"))
+
+
+def plot_sweep(rows, path):
+    """The two-tank craft's nutation decay and frequency against the fill (matplotlib, where installed)."""
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print("no matplotlib: no plot")
+        return
+    fills = [float(r.split(",")[0].split()[2]) for r in rows]
+    decay = [float(r.split(",")[5]) for r in rows]
+    freq = [-float(r.split(",")[4]) for r in rows]
+    fig, ax = plt.subplots(2, 1, figsize=(6, 6), sharex=True)
+    ax[0].plot(fills, [1e4 * d for d in decay], "o-")
+    ax[0].set_ylabel("nutation decay (1e-4 1/s)")
+    ax[0].set_title("two tanks 0.6 m off the axis, hydrazine, 60 rpm", fontsize=10)
+    ax[1].plot(fills, freq, "o-")
+    ax[1].set_ylabel("nutation (rad/s, turning frame)")
+    ax[1].set_xlabel("fill of each tank")
+    fig.tight_layout()
+    fig.savefig(path, dpi=90)
 
 
 if __name__ == "__main__":
