@@ -3,7 +3,7 @@
 solver where it can be: cavity-modes ellipsoid ... --boundary-layer tables remade exact at the nutation root (value
 and slope) until it settles, then chain-rom spectrum's root.
 
-  python3 bench/boundary_layer_spacecraft.py [BUILD_DIR] [OUT_DIR]     (about 25 minutes on one core)
+  python3 bench/boundary_layer_spacecraft.py [BUILD_DIR] [OUT_DIR]     (about 25 minutes on one core on 2026-12-08, before --ideal-table)
   PART="four" or PART="sweep" for the four-tank craft or the two-tank craft's fill sweep (0.2 to 0.95)
 
 1. On the spin axis, against the converged meridian viscous decays of docs/trust.md (the spacecraft of
@@ -76,7 +76,7 @@ def on_axis(work, fill, ek, reference, mesh):
     nu = ek * SPIN * 0.16
     open(os.path.join(work, "bl.toml"), "w").write(scene_text("spacecraft_nutation.toml", [
         (r'"../../out/tables/sphere_fill0.6_hydrazine.h5"', '"%s"' % table), (r"^viscosity = .*", "viscosity = %r" % nu)]))
-    args = ["--a", "1", "--b", "1", "--c", "1", "--fill", str(fill), "--ekman", repr(ek)] + mesh
+    args = ["--a", "1", "--b", "1", "--c", "1", "--fill", str(fill), "--ekman", repr(ek), "--ideal-table", ideal] + mesh
     t = time.time()
     root, rounds = settle(os.path.join(work, "bl.toml"), [(table, args)], start)
     return root, rounds, time.time() - t
@@ -99,7 +99,8 @@ def craft(work, template, directions, mesh, fill=0.5, guess=-2.1):
         table = os.path.join(work, "bl_%s.h5" % d)
         replace.append((r'"../../out/tables/fill_tank_%s.h5"' % d, '"%s"\nviscosity = 9.1e-7' % table))
         tables.append((table, ["--a", "1", "--b", "1", "--c", "1", "--fill", str(fill), "--axis-distance", "2",
-                               "--axis-direction", d, "--ekman", "1.60924e-6"] + mesh))
+                               "--axis-direction", d, "--ekman", "1.60924e-6",
+                               "--ideal-table", os.path.join(work, "ideal_%s.h5" % d)] + mesh))
     open(os.path.join(work, "bl.toml"), "w").write(scene_text(template, replace))
     t = time.time()
     root, rounds = settle(os.path.join(work, "bl.toml"), tables, start)

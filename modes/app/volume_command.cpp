@@ -83,6 +83,9 @@ void add_common_options(CLI::App* cmd, Common& o) {
   cmd->add_flag("--boundary-layer", o.boundary_layer, "with --ekman --sigma -o FILE.csv: the forced response of the "
                                                       "ideal liquid with Ekman layers on its walls, on the ideal mesh, at "
                                                       "any small Ek (docs/volume.md §9)");
+  cmd->add_option("--ideal-table", o.ideal_table, "with --boundary-layer -o T.h5: this tank's ideal table (the same "
+                                                  "command without --ekman), whose rows the table takes instead of "
+                                                  "surveying the liquid again");
 }
 
 // Progress lines on stderr, from the root rank only.
@@ -277,9 +280,13 @@ int VolumeCommands::run(const std::string& command_line) const {
                                "its response table (--ekman Ek --sigma FROM:TO:N -o T.h5)");
     if (!o.exact_at.empty() && ext != ".h5")
       throw std::runtime_error("--exact-at belongs to a response table (-o T.h5)");
+    if (!o.ideal_table.empty() && ext != ".h5")
+      throw std::runtime_error("--ideal-table belongs to a boundary-layer table (-o T.h5)");
     if (o.wall_size > 0 || o.wall_layer > 0 || o.near_wall_size > 0)
       throw std::runtime_error("--boundary-layer meshes the ideal liquid: drop --wall-size, --wall-layer and "
                                "--near-wall-size (the layers are in its wall conditions)");
+  } else if (!common_.ideal_table.empty()) {
+    throw std::runtime_error("--ideal-table belongs to a boundary-layer table (--boundary-layer ... -o T.h5)");
   }
   const VolumeTableRequest request = resolve();
   if (common_.boundary_layer && std::filesystem::path(common_.output).extension() == ".h5")
@@ -630,6 +637,25 @@ int VolumeCommands::run_boundary_layer_response(const VolumeTableRequest& ideal)
   return 0;
 }
 
+namespace {
+
+// An ideal table given for a boundary-layer table (--ideal-table): a 3-D one of this tank, its fill and spin axis.
+ModeTable given_ideal_table(const std::string& path, const geometry::VolumeShapeSpec& shape) {
+  ModeTable t = read_mode_table(path);
+  const auto& vf = t.volume_free_surface;
+  const bool fill = shape.fill < 1;
+  const bool same = t.volume_cavity.present() && !t.viscous() && vf.present() == fill &&
+                    (!fill || (std::abs(vf.fill - shape.fill) < 1e-9 && vf.axis.size() == 2 &&
+                               std::abs(vf.axis[0] - shape.spin_axis[0]) < 1e-9 &&
+                               std::abs(vf.axis[1] - shape.spin_axis[1]) < 1e-9));
+  if (!same)
+    throw std::runtime_error("--ideal-table " + path + " is not this tank's ideal 3-D table (make it with the same "
+                             "command without --ekman, --boundary-layer and --sigma)");
+  return t;
+}
+
+}  // namespace
+
 int VolumeCommands::run_boundary_layer_table(const VolumeTableRequest& ideal, const std::string& command_line) const {
   require_one_rank();
   BoundaryLayerTableRequest request{ideal.shape, ideal.mesh, common_.ekman, {}, 0, 0};
@@ -639,7 +665,9 @@ int VolumeCommands::run_boundary_layer_table(const VolumeTableRequest& ideal, co
   request.hi = window.back().real();
   if (!(request.lo >= 0 && request.hi > request.lo))
     throw std::runtime_error("a boundary-layer table's window --sigma FROM:TO:N is real, 0 <= FROM < TO");
-  const ModeTable tensors = ideal.shape.fill < 1 ? ideal_fill_table(ideal) : ideal_tensors_table(ideal, "the ideal rows");
+  const ModeTable tensors = !common_.ideal_table.empty() ? given_ideal_table(common_.ideal_table, ideal.shape)
+                            : ideal.shape.fill < 1      ? ideal_fill_table(ideal)
+                                                        : ideal_tensors_table(ideal, "the ideal rows");
   BoundaryLayerTableResult r = boundary_layer_table(tensors, request);
   set_provenance(r.table, command_line);
   write_mode_table(r.table, common_.output);

@@ -61,6 +61,7 @@ class VolumeCommands {
     int krylov_vectors = 4;       // and its Krylov vectors per input and expansion point
     std::string exact_at;         // and the complex frequencies where its R must be exact
     bool boundary_layer = false;  // with --ekman --sigma: the ideal liquid with Ekman layers on its walls (docs/volume.md §9)
+    std::string ideal_table;      // and with -o T.h5: the ideal table to take its rows from (no survey)
   } common_;
 };
 

@@ -182,6 +182,9 @@ fi
 expect_error "a boundary-layer table without --exact-at" "give --exact-at" "$BIN" ellipsoid --a 1 --b 1 --c 1 --fill 0.5 --ekman 1e-6 --boundary-layer --sigma 0:2:3 --order 2 --mesh-size 0.6 -o out.h5
 expect_error "a boundary-layer response with --wall-size" "drop --wall-size" "$BIN" ellipsoid --a 1 --b 1 --c 1 --fill 0.5 --ekman 1e-6 --boundary-layer --sigma 0.3 --wall-size 0.01 -o out.csv
 expect_error "a boundary-layer response without --sigma" "--boundary-layer gives the forced response" "$BIN" ellipsoid --a 1 --b 1 --c 1 --ekman 1e-6 --boundary-layer -o out.csv
+"$BIN" ellipsoid --a 1 --b 1 --c 1 --fill 0.5 --order 2 --mesh-size 0.6 -o blideal.h5 > /dev/null 2>&1
+expect_error "a boundary-layer table with another tank's ideal table" "is not this tank's ideal 3-D table" "$BIN" ellipsoid --a 1 --b 1 --c 1 --fill 0.6 --ekman 1e-6 --boundary-layer --sigma 0:2:3 --exact-at 0.3 --ideal-table blideal.h5 --order 2 --mesh-size 0.6 -o out.h5
+expect_error "--ideal-table without --boundary-layer" "--ideal-table belongs to a boundary-layer table" "$BIN" ellipsoid --a 1 --b 1 --c 1 --fill 0.5 --ekman 1e-6 --sigma 0.3 --ideal-table blideal.h5 -o out.csv
 expect_error "a boundary-layer response at the band's edge" "sigma must differ from 0 and +-2" "$BIN" ellipsoid --a 1 --b 1 --c 1 --ekman 1e-6 --boundary-layer --sigma 2 --order 2 --mesh-size 0.6 -o out.csv
 # Its viscous forced response (docs/volume.md §8, "The viscous liquid"): the 5 x 5 response about P0 as CSV, every
 # entry finite (the check against the meridian solver is ViscousFill3d.SphereOnTheAxisIsTheMeridianFill).

@@ -50,7 +50,8 @@ root = nutation(scene("ideal.h5", False), viscous)
 for rounds in range(3):
     s = root / SPIN
     out = run(modes_bin, "ellipsoid", "--a", "1", "--b", "1", "--c", "1", "--fill", "0.6", "--ekman", repr(EK), *mesh,
-              "--boundary-layer", "--sigma", "0:2:3", "--exact-at=%.12g%+.12gi" % (s.real, s.imag), "-o", "bl.h5")
+              "--boundary-layer", "--sigma", "0:2:3", "--exact-at=%.12g%+.12gi" % (s.real, s.imag),
+              "--ideal-table", "ideal.h5", "-o", "bl.h5")
     new = nutation(scene("bl.h5", True), root)
     moved, root = abs(new - root) / abs(new), new
 print("nutation: viscous %.9f%+.6ei, boundary-layer %.9f%+.6ei (last move %.1e)" % (
