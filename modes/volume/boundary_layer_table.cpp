@@ -57,15 +57,20 @@ std::vector<IdealRow> table_rows(const ModeTable& ideal) {
 // mode R ≈ H/(s − λ − iΓ), so Γ = H_jj / Im R_jj(λ) on the row's heaviest direction j. A row in a dense cluster or
 // under the response's background gets a larger Γ than its own, which a chain's body roots barely feel; where the
 // response is not passive there, Γ = Ek^{1/2}. Every row then decays, as the liquid's modes do.
-std::vector<double> row_dampings(const VolumeSpace& space, double ekman, const std::vector<IdealRow>& rows) {
+// The frequencies at which row_dampings reads the response: each row's λ (kept off the band's edge, where the
+// formulation's 4 − σ² vanishes).
+std::vector<cd> row_frequencies(const std::vector<IdealRow>& rows) {
   std::vector<cd> at;
   for (const auto& r : rows) at.emplace_back(std::abs(std::abs(r.lambda) - 2) < 1e-6 ? r.lambda * (1 - 1e-5) : r.lambda, 0);
-  const BoundaryLayerResponse bl = boundary_layer_response(space, ekman, at);
+  return at;
+}
+
+std::vector<double> row_dampings(double ekman, const std::vector<IdealRow>& rows, const Eigen::MatrixXcd* R) {
   std::vector<double> out;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     Eigen::Index j = 0;
     rows[i].H.diagonal().real().maxCoeff(&j);
-    const double im = bl.R[i](j, j).imag(), h = rows[i].H(j, j).real();
+    const double im = R[i](j, j).imag(), h = rows[i].H(j, j).real();
     out.push_back(im > 0 && h > 0 ? std::max(h / im, std::sqrt(ekman) * 1e-3) : std::sqrt(ekman));
   }
   return out;
@@ -130,39 +135,28 @@ std::vector<Eigen::MatrixXcd> corrections(const std::vector<cd>& s, const std::v
   return C;
 }
 
-}  // namespace
-
-BoundaryLayerTableResult boundary_layer_table(const ModeTable& ideal, const BoundaryLayerTableRequest& request) {
-  const auto t0 = std::chrono::steady_clock::now();
-  if (!(request.ekman > 0 && request.ekman < 1)) throw std::runtime_error("--ekman must be in (0, 1)");
-  BoundaryLayerTableResult r;
-  r.exact_at = folded(request.exact_at);
-  if (r.exact_at.empty())
-    throw std::runtime_error("a boundary-layer table is exact where a chain's roots are: give --exact-at (the tank "
-                             "frequencies of the roots, e.g. from chain-rom spectrum on the ideal table; remade at "
-                             "the root it gives, it settles in one or two rounds: docs/volume.md section 9)");
-  const bool fill = request.shape.fill < 1;
-  const VolumeSpace space(geometry::mesh_volume(request.shape, request.mesh), 0, !fill);
-  // Each point and a companion a step h off it, so that the table's R matches the response's value and slope there: a
-  // root found near a point then moves with the square of its distance, and remaking the table at the roots converges
-  // at once (the ideal rows may miss a third of the response where the survey did not settle).
+// Each exact point and a companion a step h off it, so that the table's R matches the response's value and slope
+// there: a root found near a point then moves with the square of its distance, and remaking the table at the roots
+// converges at once (the ideal rows may miss a third of the response where the survey did not settle).
+std::vector<cd> with_companions(const std::vector<cd>& points) {
   constexpr double h = 1e-4;
   std::vector<cd> matched;
-  for (const cd s : r.exact_at) matched.insert(matched.end(), {s, s + cd(0, -h)});
-  const BoundaryLayerResponse bl = boundary_layer_response(space, request.ekman, matched);
-  r.unknowns = bl.unknowns;
-  const std::vector<IdealRow> ideal_table_rows = table_rows(ideal);
-  std::vector<VolumePole> rows =
-      damped_rows(ideal, ideal_table_rows, row_dampings(space, request.ekman, ideal_table_rows), request.ekman);
+  for (const cd s : points) matched.insert(matched.end(), {s, s + cd(0, -h)});
+  return matched;
+}
+
+// Adds the correction dipoles that make the rows' R the response R[e] at every matched point (the companion's dipole
+// twice as wide), and records how large they are and how exact the result is.
+void add_corrections(std::vector<VolumePole>& rows, const std::vector<cd>& matched, const Eigen::MatrixXcd* R,
+                     double width, BoundaryLayerTableResult& r) {
   std::vector<cd> poles;
   std::vector<Eigen::MatrixXcd> mismatch;
   double top = 0;
   for (std::size_t e = 0; e < matched.size(); ++e) {
     const cd s = matched[e];
-    const double w = e % 2 == 0 ? request.width : 2 * request.width;  // the companion's dipole twice as wide
-    poles.emplace_back(s.real() > 1e-6 ? s.real() : request.width, w);
-    mismatch.push_back(bl.R[e] - pole_sum(rows, s));
-    top = std::max(top, bl.R[e].cwiseAbs().maxCoeff());
+    poles.emplace_back(s.real() > 1e-6 ? s.real() : width, e % 2 == 0 ? width : 2 * width);
+    mismatch.push_back(R[e] - pole_sum(rows, s));
+    top = std::max(top, R[e].cwiseAbs().maxCoeff());
   }
   const std::vector<Eigen::MatrixXcd> C = corrections(matched, poles, mismatch);
   for (std::size_t e = 0; e < C.size(); ++e) {
@@ -171,11 +165,14 @@ BoundaryLayerTableResult boundary_layer_table(const ModeTable& ideal, const Boun
     add_rank_one(rows, far_pole(poles[e]), -C[e]);
   }
   for (std::size_t e = 0; e < matched.size(); ++e)
-    r.exact_error = std::max(r.exact_error, (pole_sum(rows, matched[e]) - bl.R[e]).cwiseAbs().maxCoeff() / top);
+    r.exact_error = std::max(r.exact_error, (pole_sum(rows, matched[e]) - R[e]).cwiseAbs().maxCoeff() / top);
+}
 
-  ModeTable& t = r.table;
-  t = viscous_volume_table_start(ideal, request.mesh, space.mesh().size, r.unknowns, request.ekman);
-  // The λ = 0 weight is a row (above), as a Krylov table's spin-up is.
+// The table: the ideal table's tensors, the rows, the window and how it was made.
+ModeTable table_of(const ModeTable& ideal, const BoundaryLayerTableRequest& request, const BoundaryLayerTableResult& r,
+                   const std::vector<VolumePole>& rows, double mesh_h, std::size_t wall_points) {
+  ModeTable t = viscous_volume_table_start(ideal, request.mesh, mesh_h, r.unknowns, request.ekman);
+  // The λ = 0 weight is a row (damped_rows), as a Krylov table's spin-up is.
   for (auto* g : {&t.volume_cavity.geostrophic_re, &t.volume_cavity.geostrophic_im,
                   &t.volume_free_surface.geostrophic_re, &t.volume_free_surface.geostrophic_im})
     std::fill(g->begin(), g->end(), 0.0);
@@ -187,14 +184,43 @@ BoundaryLayerTableResult boundary_layer_table(const ModeTable& ideal, const Boun
   for (const cd s : r.exact_at) points += fmt::format("{}{:.6g}{:+.6g}i", points.empty() ? "" : ", ", s.real(), s.imag());
   t.solver = fmt::format(
       "ideal liquid with Ekman layers on its walls (docs/volume.md section 9): the ideal table's rows damped as the "
-      "boundary-layer response at each row's frequency says, its lambda = 0 weight spinning up at Ek^(1/2), and {} correction dipole(s) (poles at Re s + {:g}i, + {:g}i and + {:g}i) making R and its slope the "
-      "boundary-layer response's at s = {} (to {:.1e}; the corrections {:.2g} of R there); P{} tetrahedra, {} pressure unknowns, {} "
+      "boundary-layer response at each row's frequency says, its lambda = 0 weight spinning up at Ek^(1/2), and {} "
+      "correction dipole(s) (poles at Re s + {:g}i, + {:g}i and + {:g}i) making R and its slope the boundary-layer "
+      "response's at s = {} (to {:.1e}; the corrections {:.2g} of R there); P{} tetrahedra, {} pressure unknowns, {} "
       "wall points; exact only there: remake it at the roots until they stay",
-      C.size(), request.width, 2 * request.width, 4 * request.width, points, r.exact_error, r.correction, request.mesh.order, r.unknowns, bl.wall_points);
+      2 * r.exact_at.size(), request.width, 2 * request.width, 4 * request.width, points, r.exact_error, r.correction,
+      request.mesh.order, r.unknowns, wall_points);
+  return t;
+}
+
+}  // namespace
+
+BoundaryLayerTableResult boundary_layer_table(const ModeTable& ideal, const BoundaryLayerTableRequest& request) {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (!(request.ekman > 0 && request.ekman < 1)) throw std::runtime_error("--ekman must be in (0, 1)");
+  BoundaryLayerTableResult r;
+  r.exact_at = folded(request.exact_at);
+  if (r.exact_at.empty())
+    throw std::runtime_error("a boundary-layer table is exact where a chain's roots are: give --exact-at (the tank "
+                             "frequencies of the roots, e.g. from chain-rom spectrum on the ideal table; remade at "
+                             "the root it gives, it settles in one or two rounds: docs/volume.md section 9)");
+  const VolumeSpace space(geometry::mesh_volume(request.shape, request.mesh), 0, !(request.shape.fill < 1));
+  // One assembly for every frequency: the matched points, then the rows' own.
+  const std::vector<cd> matched = with_companions(r.exact_at);
+  const std::vector<IdealRow> ideal_rows = table_rows(ideal);
+  std::vector<cd> at = matched;
+  for (const cd s : row_frequencies(ideal_rows)) at.push_back(s);
+  const BoundaryLayerResponse bl = boundary_layer_response(space, request.ekman, at);
+  r.unknowns = bl.unknowns;
+  const Eigen::MatrixXcd* at_rows = bl.R.data() + matched.size();
+  std::vector<VolumePole> rows =
+      damped_rows(ideal, ideal_rows, row_dampings(request.ekman, ideal_rows, at_rows), request.ekman);
+  add_corrections(rows, matched, bl.R.data(), request.width, r);
+  r.table = table_of(ideal, request, r, rows, space.mesh().size, bl.wall_points);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  t.wall_seconds = r.seconds + ideal.wall_seconds;
-  t.sort_by_energy();
-  t.validate();
+  r.table.wall_seconds = r.seconds + ideal.wall_seconds;
+  r.table.sort_by_energy();
+  r.table.validate();
   return r;
 }
 
